@@ -1,0 +1,463 @@
+"""Kinematic results: positions and exact analogs as named arrays.
+
+Glossary (BRIEF.md): ``phi`` link angle φ [rad]; ``dphi`` angular-velocity analog
+φ' = dφ/dq [rad/m or rad/rad]; ``ddphi`` second-order analog φ'' ; ``ratio(i, j)``
+the transfer ratio U_ij = φ_i'/φ_j' [-]; ``transmission(point)`` the transmission
+number I = dY/dS of a point [m/m] (the load P on the point gives the rod force
+P·I/η by virtual work).
+
+Shapes: a quantity is returned with the shape of the coordinates passed to
+:meth:`assur.Mechanism.solve` — ``(n,)`` for one design, ``(m, n)`` for a batch —
+plus trailing axes for derivatives: ``(..., k)`` for first-order and
+``(..., k, k)`` for second-order analogs. When the mechanism has one coordinate
+(k = 1) or ``wrt`` names one, those trailing axes are dropped.
+
+Real-time quantities follow from the analogs for any coordinate rates
+(DESIGN.md §2): ``v = J·q̇`` and ``a = J·q̈ + q̇ᵀ·H·q̇``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .errors import AssemblyError, SingularPositionError
+
+#: |φ_j'| below this fraction of its largest magnitude over the range counts as zero
+SINGULAR_RTOL = 1e-9
+
+
+class Kinematics:
+    """Positions and kinematic analogs of a mechanism over its coordinate range.
+
+    Produced by :meth:`assur.Mechanism.solve`; not constructed directly.
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+        The (parameter-resolved) mechanism.
+    coordinates : tuple of str
+        Names of the generalized coordinates.
+    shape : tuple of int
+        Shape of every quantity (without derivative axes).
+    ok : ndarray of bool, shape (m, n)
+        True where the mechanism assembled.
+    failures : list of str
+        Messages of failed elements when solved with ``on_failure="report"``.
+    """
+
+    def __init__(self, mechanism, prog, q, raw, shape, ok):
+        self.mechanism = mechanism
+        self.coordinates = mechanism.coordinates
+        self.k = len(self.coordinates)
+        self._q = q  # (k, m, n)
+        self.m, self.n = q.shape[1], q.shape[2]
+        self.shape = tuple(shape)
+        self.ok = ok
+        self.failures = []
+        self._pidx = {p: i for i, p in enumerate(prog["out_pts"])}
+        self._sidx = {s: i for i, s in enumerate(prog["out_sca"])}
+        self._kinds = prog["kinds"]
+        k, m, n = self.k, self.m, self.n
+        self._pv = raw["pv"].reshape(-1, 2, m, n)
+        self._pd = raw["pd"].reshape(-1, 2, k, m, n)
+        self._pdd = raw["pdd"].reshape(-1, 2, k, k, m, n)
+        sv = raw["sv"].reshape(-1, m, n)
+        # continuous link angles along the positions (one coordinate, a range)
+        if k == 1 and n > 1:
+            for name, i in self._sidx.items():
+                if self._kinds[name] == "angle":
+                    sv[i] = np.unwrap(sv[i], axis=-1)
+        self._sv = sv
+        self._sd = raw["sd"].reshape(-1, k, m, n)
+        self._sdd = raw["sdd"].reshape(-1, k, k, m, n)
+
+    # ---- helpers -----------------------------------------------------------------
+    @property
+    def points(self):
+        """Names of the points in this result."""
+        return tuple(self._pidx)
+
+    @property
+    def links(self):
+        """Names of the links (angles) in this result."""
+        return tuple(s for s in self._sidx if self._kinds[s] == "angle")
+
+    def _out(self, a):
+        """(m, n, *tail) -> shape + tail."""
+        tail = a.shape[2:]
+        return a.reshape(self.shape + tail)
+
+    def _wrt(self, wrt):
+        if wrt is None:
+            return 0 if self.k == 1 else None
+        if wrt not in self.coordinates:
+            raise KeyError(f"unknown coordinate {wrt!r}; coordinates: {self.coordinates}")
+        return self.coordinates.index(wrt)
+
+    def _p(self, point):
+        try:
+            return self._pidx[point]
+        except KeyError:
+            raise KeyError(f"no point {point!r} in this result; points: {list(self._pidx)}") \
+                from None
+
+    def _s(self, name, kind=None):
+        if name not in self._sidx or (kind and self._kinds[name] != kind):
+            have = [s for s in self._sidx if kind is None or self._kinds[s] == kind]
+            raise KeyError(f"no {kind or 'link/distance'} {name!r} in this result; have: {have}")
+        return self._sidx[name]
+
+    def _d1(self, arr, wrt):
+        """arr: (k, m, n) -> shape (+ (k,))"""
+        j = self._wrt(wrt)
+        if j is None:
+            return self._out(np.moveaxis(arr, 0, -1))
+        return self._out(arr[j])
+
+    def _d2(self, arr, wrt):
+        """arr: (k, k, m, n)"""
+        j = self._wrt(wrt)
+        if j is None:
+            return self._out(np.moveaxis(arr, (0, 1), (-2, -1)))
+        return self._out(arr[j, j])
+
+    # ---- coordinates and points ---------------------------------------------------
+    def q(self, name=None):
+        """Generalized coordinate values [m or rad]."""
+        j = 0 if name is None and self.k == 1 else self.coordinates.index(name)
+        return self._out(self._q[j])
+
+    def x(self, point):
+        """X coordinate of a point [m]."""
+        return self._out(self._pv[self._p(point), 0])
+
+    def y(self, point):
+        """Y coordinate of a point [m]."""
+        return self._out(self._pv[self._p(point), 1])
+
+    def point(self, point):
+        """Position of a point, shape (..., 2) [m]."""
+        return self._out(np.moveaxis(self._pv[self._p(point)], 0, -1))
+
+    def dx(self, point, wrt=None):
+        """Velocity analog dX/dq of a point [m/m or m/rad]."""
+        return self._d1(self._pd[self._p(point), 0], wrt)
+
+    def dy(self, point, wrt=None):
+        """Velocity analog dY/dq of a point [m/m or m/rad]."""
+        return self._d1(self._pd[self._p(point), 1], wrt)
+
+    def ddx(self, point, wrt=None):
+        """Acceleration analog d²X/dq² of a point [1/m or m/rad²]."""
+        return self._d2(self._pdd[self._p(point), 0], wrt)
+
+    def ddy(self, point, wrt=None):
+        """Acceleration analog d²Y/dq² of a point [1/m or m/rad²]."""
+        return self._d2(self._pdd[self._p(point), 1], wrt)
+
+    def transmission(self, point, axis="y", wrt=None):
+        """Transmission number I = dY/dS (``axis="y"``) or dX/dS of a point [m/m].
+
+        Seed 003 §3.1: I56 = dφ3·U53·L56·cos φ5 = dY56/dS; IS6 = dY_S6/dS.
+        A vertical load P [N] at the point needs the rod force P·I (before efficiency).
+        """
+        if axis not in ("x", "y"):
+            raise ValueError("axis must be one of: ['x', 'y']")
+        return self.dy(point, wrt) if axis == "y" else self.dx(point, wrt)
+
+    # ---- links -------------------------------------------------------------------------
+    def phi(self, link, degrees=False):
+        """Angle φ of a link from +x, counter-clockwise [rad] (or [°])."""
+        v = self._out(self._sv[self._s(link, "angle")])
+        return np.degrees(v) if degrees else v
+
+    def dphi(self, link, wrt=None):
+        """Angular-velocity analog φ' = dφ/dq [rad/m or rad/rad]."""
+        return self._d1(self._sd[self._s(link, "angle")], wrt)
+
+    def ddphi(self, link, wrt=None):
+        """Angular-acceleration analog φ'' = d²φ/dq² [rad/m² or rad/rad²]."""
+        return self._d2(self._sdd[self._s(link, "angle")], wrt)
+
+    def length(self, name):
+        """A named distance [m]."""
+        return self._out(self._sv[self._s(name, "distance")])
+
+    def dlength(self, name, wrt=None):
+        """First analog of a named distance [m/m]."""
+        return self._d1(self._sd[self._s(name, "distance")], wrt)
+
+    def ddlength(self, name, wrt=None):
+        """Second analog of a named distance [1/m]."""
+        return self._d2(self._sdd[self._s(name, "distance")], wrt)
+
+    def _singular_mask(self, den, what, singular):
+        scale = np.max(np.abs(den), axis=-1, keepdims=True) if den.ndim else abs(den)
+        bad = np.abs(den) <= SINGULAR_RTOL * np.maximum(scale, 1e-300)
+        if bad.any():
+            if singular == "raise":
+                idx = np.argwhere(bad)[0]
+                qv = {c: float(self._q[j].reshape(self.shape)[tuple(idx)])
+                      for j, c in enumerate(self.coordinates)}
+                raise SingularPositionError(
+                    f"{what} is singular at {int(bad.sum())} position(s), first at {qv}: the "
+                    f"denominator analog is zero there (the link is at rest, e.g. a dead "
+                    f"point); use singular='mask' to get a masked array")
+        return bad
+
+    def ratio(self, i, j, wrt=None, singular="raise"):
+        """Transfer ratio U_ij = φ_i'/φ_j' [-] (seed 003 §3.1: U43, U53, U65, U75).
+
+        Parameters
+        ----------
+        i, j : str
+            Link names.
+        singular : {"raise", "mask"}
+            Where φ_j' = 0 the ratio is undefined: raise :class:`SingularPositionError`
+            (default) or return a :class:`numpy.ma.MaskedArray` masking those positions.
+        """
+        if singular not in ("raise", "mask"):
+            raise ValueError("singular must be one of: ['raise', 'mask']")
+        wrt = wrt if wrt is not None or self.k == 1 else self.coordinates[0]
+        num, den = self.dphi(i, wrt), self.dphi(j, wrt)
+        bad = self._singular_mask(den, f"ratio U{i}{j} = φ{i}'/φ{j}'", singular)
+        safe = np.where(bad, 1.0, den)
+        r = num / safe
+        return np.ma.masked_array(r, mask=bad) if singular == "mask" else r
+
+    def dratio(self, i, j, wrt=None, singular="raise"):
+        """Derivative dU_ij/dq = (φ_i''φ_j' − φ_i'φ_j'')/φ_j'² [1/m]."""
+        wrt = wrt if wrt is not None or self.k == 1 else self.coordinates[0]
+        a, b = self.dphi(i, wrt), self.dphi(j, wrt)
+        aa, bb = self.ddphi(i, wrt), self.ddphi(j, wrt)
+        bad = self._singular_mask(b, f"dU{i}{j}/dq", singular)
+        safe = np.where(bad, 1.0, b)
+        r = (aa * b - a * bb) / safe ** 2
+        return np.ma.masked_array(r, mask=bad) if singular == "mask" else r
+
+    # ---- real-time quantities ------------------------------------------------------
+    def _rates(self, qdot, qddot=None):
+        qd = np.asarray(qdot, dtype=float)
+        qd = np.broadcast_to(qd[..., None] if self.k == 1 else qd, self.shape + (self.k,))
+        if qddot is None:
+            return qd, None
+        qdd = np.asarray(qddot, dtype=float)
+        qdd = np.broadcast_to(qdd[..., None] if self.k == 1 else qdd, self.shape + (self.k,))
+        return qd, qdd
+
+    def velocity(self, point, qdot):
+        """Velocity of a point v = J·q̇ [m/s], shape (..., 2), for coordinate rates q̇
+        [m/s or rad/s] (scalar or array broadcastable to the result shape, ``(..., k)``
+        for k > 1)."""
+        qd, _ = self._rates(qdot)
+        J = self._out(np.moveaxis(self._pd[self._p(point)], (0, 1), (-2, -1)))  # (...,2,k)
+        return np.einsum("...ik,...k->...i", J, qd)
+
+    def acceleration(self, point, qdot, qddot):
+        """Acceleration a = J·q̈ + q̇ᵀ·H·q̇ of a point [m/s²], shape (..., 2)."""
+        qd, qdd = self._rates(qdot, qddot)
+        J = self._out(np.moveaxis(self._pd[self._p(point)], (0, 1), (-2, -1)))
+        H = self._out(np.moveaxis(self._pdd[self._p(point)], (0, 1, 2), (-3, -2, -1)))
+        return (np.einsum("...ik,...k->...i", J, qdd)
+                + np.einsum("...k,...ikl,...l->...i", qd, H, qd))
+
+    def angular_velocity(self, link, qdot):
+        """ω = φ'·q̇ [rad/s]."""
+        qd, _ = self._rates(qdot)
+        J = self._out(np.moveaxis(self._sd[self._s(link, "angle")], 0, -1))
+        return np.einsum("...k,...k->...", J, qd)
+
+    def angular_acceleration(self, link, qdot, qddot):
+        """ε = φ'·q̈ + q̇ᵀ·φ''·q̇ [rad/s²]."""
+        qd, qdd = self._rates(qdot, qddot)
+        i = self._s(link, "angle")
+        J = self._out(np.moveaxis(self._sd[i], 0, -1))
+        H = self._out(np.moveaxis(self._sdd[i], (0, 1), (-2, -1)))
+        return np.einsum("...k,...k->...", J, qdd) + np.einsum("...k,...kl,...l->...", qd, H, qd)
+
+    # ---- checks ----------------------------------------------------------------------
+    def instant_centre(self, link, wrt=None):
+        """Instantaneous centre of rotation of a link relative to the frame [m].
+
+        From the velocity analog of the link's tail point A and its angular analog:
+        ``P = A + (−A'_y, A'_x)/φ'``. Seed 003 finds it as the intersection of
+        rockers 5 and 7 (Xp) and checks I56 = φ6'·(X56 − Xp).
+
+        Returns
+        -------
+        xp, yp : ndarray
+        """
+        lk = next(l for l in self.mechanism.links if l.name == link)
+        w = self.dphi(link, wrt)
+        bad = self._singular_mask(w, f"instantaneous centre of link {link}", "raise")
+        ax, ay = self.x(lk.tail), self.y(lk.tail)
+        vx, vy = self.dx(lk.tail, wrt), self.dy(lk.tail, wrt)
+        del bad
+        return ax - vy / w, ay + vx / w
+
+    def closure_residual(self):
+        """Largest violation of any group's closure equations [m], shape ``shape``.
+
+        Recomputes every constraint of every group from the returned points:
+        lengths of RRR links, rigid offsets, slider lines.
+        """
+        from .groups import CylinderLever, Dyad, RigidPoint, SliderDyad
+        mech = self.mechanism
+        res = np.zeros(self.shape)
+
+        def P(p):
+            return self.x(p), self.y(p)
+
+        def val(ref, p=None):
+            if isinstance(ref, str) and ref in self.coordinates:
+                return self.q(ref)
+            return np.asarray(mech.value_of(ref))[..., None] if np.ndim(mech.value_of(ref)) \
+                else mech.value_of(ref)
+
+        for g in mech.groups:
+            if isinstance(g, (Dyad, CylinderLever)):
+                cx, cy = P(g.out)
+                for pt, r in ((g.a, g.ra), (g.b, g.rb)):
+                    px, py = P(pt)
+                    res = np.maximum(res, np.abs(np.hypot(cx - px, cy - py) - val(r)))
+            elif isinstance(g, RigidPoint) and g.angle is not None:
+                cx, cy = P(g.out)
+                px, py = P(g.origin)
+                res = np.maximum(res, np.abs(np.hypot(cx - px, cy - py) - val(g.length)))
+            elif isinstance(g, SliderDyad):
+                cx, cy = P(g.out)
+                px, py = P(g.a)
+                res = np.maximum(res, np.abs(np.hypot(cx - px, cy - py) - val(g.radius)))
+        return res
+
+    def transmission_angle(self, group, degrees=False):
+        """Transmission angle μ of a dyad: the angle at its middle joint between its
+        two links [rad] (or [°]); 0 or π is a dead point."""
+        g = self.mechanism.group(group)
+        cx, cy = self.x(g.out), self.y(g.out)
+        ax, ay = self.x(g.a), self.y(g.a)
+        bx, by = self.x(g.b), self.y(g.b)
+        u = (ax - cx, ay - cy)
+        v = (bx - cx, by - cy)
+        mu = np.arctan2(np.abs(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1])
+        return np.degrees(mu) if degrees else mu
+
+    def _check_continuity(self, on_failure):
+        """No dyad may open (or pass a dead point) between consecutive positions.
+
+        For each RRR dyad the squared height g = h² of the triangle A-B-C over
+        the base AB is positive at every solved position; with its exact
+        derivative g' = 2 h h' the cubic Hermite interpolant on each interval must
+        stay positive too, otherwise the mechanism cannot move continuously from
+        one position to the next on the chosen branch.
+        """
+        from .groups import CylinderLever, Dyad
+        if not self.ok.all():
+            return
+        qv = self._q[0]
+        for g in self.mechanism.groups:
+            if not isinstance(g, (Dyad, CylinderLever)):
+                continue
+            if any(p not in self._pidx for p in (g.a, g.b, g.out)):
+                continue
+            A = self._pv[self._pidx[g.a]]
+            B = self._pv[self._pidx[g.b]]
+            C = self._pv[self._pidx[g.out]]
+            dA = self._pd[self._pidx[g.a], :, 0]
+            dB = self._pd[self._pidx[g.b], :, 0]
+            dC = self._pd[self._pidx[g.out], :, 0]
+            ux, uy = B[0] - A[0], B[1] - A[1]
+            wx, wy = C[0] - A[0], C[1] - A[1]
+            L2 = ux * ux + uy * uy
+            cr = ux * wy - uy * wx  # = L * h (signed)
+            dux, duy = dB[0] - dA[0], dB[1] - dA[1]
+            dwx, dwy = dC[0] - dA[0], dC[1] - dA[1]
+            dcr = dux * wy + ux * dwy - duy * wx - uy * dwx
+            dL2 = 2 * (ux * dux + uy * duy)
+            gval = cr * cr / L2
+            gder = (2 * cr * dcr * L2 - cr * cr * dL2) / (L2 * L2)
+            h = np.diff(qv, axis=-1)
+            t = np.linspace(0.0, 1.0, 17)[1:-1, None, None]
+            h00 = 2 * t**3 - 3 * t**2 + 1
+            h10 = t**3 - 2 * t**2 + t
+            h01 = -2 * t**3 + 3 * t**2
+            h11 = t**3 - t**2
+            interp = (h00 * gval[:, :-1] + h10 * h * gder[:, :-1] + h01 * gval[:, 1:]
+                      + h11 * h * gder[:, 1:])
+            scale = np.maximum(gval[:, :-1], gval[:, 1:])
+            bad = interp.min(axis=0) < -1e-9 * scale
+            if bad.any():
+                d, i = np.argwhere(bad)[0]
+                c = self.coordinates[0]
+                msg = (f"{g.kind} {g.name!r} (links {', '.join(g.group_links())}) cannot move "
+                       f"continuously from {c} = {qv[d, i]:.6g} to {c} = {qv[d, i + 1]:.6g}"
+                       f"{f' (design {d})' if self.m > 1 else ''}: its triangle flattens or "
+                       f"opens between these positions (dead point or assembly lost between "
+                       f"samples); refine the positions or check the range and branch")
+                if on_failure == "raise":
+                    raise AssemblyError(msg, group=g.name, links=g.group_links(),
+                                        coordinate={c: float(qv[d, i])}, design=int(d),
+                                        position=int(i))
+                self.failures.append(msg)
+                self.ok[d, i:i + 2] = False
+
+    # ---- tables ----------------------------------------------------------------------
+    def to_frame(self, degrees=True):
+        """A pandas DataFrame of every quantity under the seeds' symbols.
+
+        Columns: the coordinate(s); ``phi<link>`` [° if ``degrees``], ``dphi<link>``,
+        ``ddphi<link>``; ``X<point>``, ``Y<point>``, ``dX…``, ``dY…``, ``ddX…``, ``ddY…``;
+        ``U<i><j>`` for the ratios and ``I<point>`` for the transmission numbers listed
+        in the mechanism's ``tables`` (seed 003: U43, U53, U65, U75, I56, IS6);
+        ``<distance>`` for named distances. For k > 1 the analog columns carry the
+        coordinate name (``dphi3_S1``). A batch gets a (design, position) index.
+        """
+        import pandas as pd
+
+        cols = {}
+        for j, c in enumerate(self.coordinates):
+            cols[c] = self._q[j].ravel()
+        suffixes = [""] if self.k == 1 else [f"_{c}" for c in self.coordinates]
+        wrts = [None] if self.k == 1 else list(self.coordinates)
+        for name in self._sidx:
+            kind = self._kinds[name]
+            if kind == "angle":
+                cols[f"phi{name}"] = (self.phi(name, degrees=degrees)).ravel()
+                for sfx, w in zip(suffixes, wrts):
+                    cols[f"dphi{name}{sfx}"] = self.dphi(name, w).ravel()
+                    cols[f"ddphi{name}{sfx}"] = self.ddphi(name, w).ravel()
+            else:
+                cols[name] = self.length(name).ravel()
+                for sfx, w in zip(suffixes, wrts):
+                    cols[f"d{name}{sfx}"] = self.dlength(name, w).ravel()
+        for p in self._pidx:
+            cols[f"X{p}"] = self.x(p).ravel()
+            cols[f"Y{p}"] = self.y(p).ravel()
+            for sfx, w in zip(suffixes, wrts):
+                cols[f"dX{p}{sfx}"] = self.dx(p, w).ravel()
+                cols[f"dY{p}{sfx}"] = self.dy(p, w).ravel()
+                cols[f"ddX{p}{sfx}"] = self.ddx(p, w).ravel()
+                cols[f"ddY{p}{sfx}"] = self.ddy(p, w).ravel()
+        tab = self.mechanism.tables
+        for i, j in tab.get("ratios", ()):
+            for sfx, w in zip(suffixes, wrts):
+                r = self.ratio(i, j, w, singular="mask")
+                # singular positions are missing (pandas NA), never a number
+                cols[f"U{i}{j}{sfx}"] = pd.array(np.ma.getdata(r).ravel(), dtype="Float64",
+                                                 ) if not np.ma.is_masked(r) else \
+                    pd.arrays.FloatingArray(np.ma.getdata(r).ravel(),
+                                            np.ma.getmaskarray(r).ravel())
+        for p in tab.get("transmissions", ()):
+            for sfx, w in zip(suffixes, wrts):
+                cols[f"I{p}{sfx}"] = self.transmission(p, wrt=w).ravel()
+        index = None
+        if len(self.shape) == 2 or self.m > 1:
+            index = pd.MultiIndex.from_product([range(self.m), range(self.n)],
+                                               names=["design", "position"])
+        return pd.DataFrame(cols, index=index)
+
+    def __repr__(self):
+        return (f"Kinematics({self.mechanism.name!r}, shape={self.shape}, "
+                f"points={len(self._pidx)}, links={len(self.links)})")
