@@ -1,40 +1,48 @@
-"""Compiled position and analog kernel: one fused, parallel loop over positions.
+"""Compiled position and analog kernel, generated per mechanism structure.
 
 A mechanism is compiled (see :mod:`assur.mechanism`) into a small *program*: an
 integer table ``ops`` whose rows are the structural groups in solving order, and a
 parameter table ``params`` of shape ``(n_params, m)`` (one column per design).
-This kernel interprets the program for every element (design, position) in a
-single pass, carrying for each point its value, first and second derivatives with
-respect to the ``k`` generalized coordinates (a second-order forward "jet"), so
-the kinematic analogs are exact to rounding — no finite differences anywhere.
+This module turns the program into the source of one fused, parallel numba loop
+over all elements (design, position) — straight-line code, every point's value,
+first and second derivatives with respect to the ``k`` generalized coordinates
+held in local variables (a second-order forward "jet") — so that the kinematic
+analogs are exact to rounding and a sweep runs at the speed of hand-written
+compiled code. Only the requested outputs are written to memory.
 
 Every group is solved in closed form for the position; its velocity and
 acceleration analogs come from the classical group-wise linear solve: the
 closure equations differentiated once and twice (e.g. for an RRR dyad
 ``(C-A)·(C'-A') = r_a r_a'``), which share the position's 2x2 matrix.
 
-Intermediate points live in a small per-thread scratch buffer; only the
-requested outputs are written to memory, so a sweep that asks for one angle
-and its analogs moves 24 bytes per position.
+The generated source depends only on the structure (group types, their
+connections, k and the requested outputs), never on parameter values; it is
+written to a cache directory (``$ASSUR_CACHE_DIR`` or ``~/.cache/assur``) and
+compiled with numba's on-disk cache, so a structure is compiled once per machine.
 
-Element status codes (``status`` array, 0 = assembled) are decoded into
-:class:`assur.errors.AssemblyError` messages by :mod:`assur.mechanism`.
+Failures never produce NaN in a result: each element carries a status
+(``-1`` assembled, else ``16·op + code``) and the amount by which the group's
+inequality is violated; failed elements get zeros and the caller raises
+:class:`assur.errors.AssemblyError` (or reports them, for batches).
 """
 
 from __future__ import annotations
 
+import hashlib
 import math
-
-import numpy as np
-from numba import njit, prange
+import importlib.util
+import os
+import sys
+import threading
+from pathlib import Path
 
 # ---- op codes -----------------------------------------------------------------
 OP_FRAME = 0  # [op, out, px, py]
 OP_RRR = 1  # [op, out, A, B, ra_ref, rb_ref, branch]
 OP_CRANK = 2  # [op, out, A, r_ref, coord, angle0_param]
 OP_SLIDE = 3  # [op, out, A, coord, s0_param, beta_param]
-OP_RIGID = 4  # [op, out, P, Q, len_ref, beta_param, mode, base_p, opp_p, branch]
-OP_RRP = 5  # [op, out, A, r_ref, L0, dirP, dirQ, beta_param, branch]
+OP_RIGID = 4  # [op, out, P, Q, len_ref, trig_row, mode, base_p, opp_p, branch]
+OP_RRP = 5  # [op, out, A, r_ref, L0, dirP, dirQ, trig_row, branch]
 OP_ANGLE = 6  # [op, out_scalar, P, Q]
 OP_DIST = 7  # [op, out_scalar, P, Q]
 
@@ -47,388 +55,510 @@ FAIL_TRIANGLE = 3  # three given sides cannot form a triangle
 FAIL_LINE = 4  # circle does not reach the slider line
 FAIL_COINCIDENT = 5  # two points that must define a direction coincide
 FAIL_DEAD_POINT = 6  # the group assembles but its Jacobian is singular
+FAIL_CONTINUITY = 7  # a dyad opens or flattens between two consecutive positions
 
-#: Relative size of the closure Jacobian below which a position is a dead point.
-DEAD_POINT_TOL = 1e-12
+#: relative depth below zero of the interpolated squared triangle height that fails
+#: the continuity check (see :func:`generate`)
+CONTINUITY_TOL = 1e-9
+
+#: |sin μ| of a dyad (μ the transmission angle) below which a position is a dead point.
+#: At a dead point the squared triangle height h² is ~0 up to rounding (~ε·L²), so the
+#: computed h, and with it sin μ, is only known to ~√ε ≈ 1.5e-8: below 1e-7 the analogs
+#: (∝ 1/sin μ) are rounding noise and the position is reported as a dead point.
+DEAD_POINT_TOL = 1e-7
+
+#: elements per parallel work item
+CHUNK = 1024
+
+_VERSION = "6"  # bump when the generator changes what it emits
 
 
-@njit(cache=True, inline="always")
-def _ref(ref, params, d, q, e):
-    """Value of a length reference: >= 0 a parameter row, < 0 a coordinate."""
+class _Emitter:
+    """Source emitter for one element's straight-line code."""
+
+    def __init__(self, K):
+        self.K = K
+        self.lines = []
+        self.pairs = [(a, b) for a in range(K) for b in range(a, K)]
+
+    def __call__(self, line, indent=3):
+        self.lines.append("    " * indent + line)
+
+
+def _pt(s):
+    return f"x{s}", f"y{s}"
+
+
+def _d(v, a):
+    return f"{v}_{a}"
+
+
+def _dd(v, a, b):
+    a, b = min(a, b), max(a, b)
+    return f"{v}_{a}{b}"
+
+
+def _lref(ref, K):
+    """Expression and derivative literals of a length reference."""
     if ref >= 0:
-        return params[ref, d]
-    return q[-ref - 1, e]
+        return f"params[{ref}, d]", ["0.0"] * K
+    j = -ref - 1
+    return f"q[{j}, e]", ["1.0" if a == j else "0.0" for a in range(K)]
 
 
-@njit(cache=True)
-def _unit(P, dP, ddP, p, qq, beta, K, u, du, ddu):
-    """Unit vector of ``Q - P`` rotated by ``beta`` with its jets.
+def _fail(E, i, code, amount, cond):
+    E(f"if st < 0 and ({cond}):", 3)
+    E(f"st = {i * 16 + code}", 4)
+    E(f"amt = {amount}", 4)
 
-    Writes into ``u`` (2,), ``du`` (2, K), ``ddu`` (2, K, K). Returns the
-    length |Q - P| [m] (0 signals coincident points).
+
+def _emit_unit(E, i, p, q, cb, sb):
+    """u = R(beta)(Q-P)/|Q-P| with jets, into u{i}x, u{i}y (+ _a, _ab). Returns r name."""
+    K = E.K
+    px, py = _pt(p)
+    qx, qy = _pt(q)
+    t = f"t{i}"
+    E(f"{t}dx = {qx} - {px}")
+    E(f"{t}dy = {qy} - {py}")
+    E(f"{t}r = math.sqrt({t}dx * {t}dx + {t}dy * {t}dy)")
+    _fail(E, i, FAIL_COINCIDENT, "0.0", f"{t}r == 0.0")
+    E(f"{t}ir = 1.0 / {t}r if {t}r > 0.0 else 0.0")
+    E(f"u{i}x = ({cb} * {t}dx - {sb} * {t}dy) * {t}ir")
+    E(f"u{i}y = ({sb} * {t}dx + {cb} * {t}dy) * {t}ir")
+    for a in range(K):
+        E(f"{t}dx_{a} = {_d(qx, a)} - {_d(px, a)}")
+        E(f"{t}dy_{a} = {_d(qy, a)} - {_d(py, a)}")
+        E(f"{t}vx_{a} = {cb} * {t}dx_{a} - {sb} * {t}dy_{a}")
+        E(f"{t}vy_{a} = {sb} * {t}dx_{a} + {cb} * {t}dy_{a}")
+        E(f"{t}p_{a} = u{i}x * {t}vx_{a} + u{i}y * {t}vy_{a}")
+        E(f"u{i}x_{a} = ({t}vx_{a} - u{i}x * {t}p_{a}) * {t}ir")
+        E(f"u{i}y_{a} = ({t}vy_{a} - u{i}y * {t}p_{a}) * {t}ir")
+    for a, b in E.pairs:
+        E(f"{t}d2x = {_dd(qx, a, b)} - {_dd(px, a, b)}")
+        E(f"{t}d2y = {_dd(qy, a, b)} - {_dd(py, a, b)}")
+        E(f"{t}v2x = {cb} * {t}d2x - {sb} * {t}d2y")
+        E(f"{t}v2y = {sb} * {t}d2x + {cb} * {t}d2y")
+        # d(p_a)/db = u'_b . v'_a + u . v''_ab
+        E(f"{t}dp = u{i}x_{b} * {t}vx_{a} + u{i}y_{b} * {t}vy_{a} + u{i}x * {t}v2x"
+          f" + u{i}y * {t}v2y")
+        # u''_ab = (v''_ab - u'_b p_a - u dp_a/db)/r - (v'_a - u p_a) p_b / r^2
+        for c in "xy":
+            E(f"{_dd(f'u{i}{c}', a, b)} = ({t}v2{c} - u{i}{c}_{b} * {t}p_{a} - u{i}{c} * {t}dp)"
+              f" * {t}ir - ({t}v{c}_{a} - u{i}{c} * {t}p_{a}) * {t}p_{b} * {t}ir * {t}ir")
+
+
+def _emit_zero_jets(E, v):
+    for a in range(E.K):
+        E(f"{_d(v, a)} = 0.0")
+    for a, b in E.pairs:
+        E(f"{_dd(v, a, b)} = 0.0")
+
+
+def generate(ops, K, out_pts, out_sca):
+    """Python source of the kernel for a program (see module docstring).
+
+    Continuity (k = 1, when the caller passes ``check=True``): for every RRR dyad the
+    squared height g = h² of its triangle over the base AB is positive at each solved
+    position; with its exact derivative the cubic Hermite interpolant of g over each
+    interval between consecutive positions of a design must stay positive too,
+    otherwise the dyad flattens (dead point) or cannot assemble somewhere between the
+    samples, and the mechanism cannot move from one position to the next on its branch.
     """
-    dx = P[qq, 0] - P[p, 0]
-    dy = P[qq, 1] - P[p, 1]
-    r = math.sqrt(dx * dx + dy * dy)
-    if r == 0.0:
-        return 0.0
-    cb = math.cos(beta)
-    sb = math.sin(beta)
-    # rotated, not normalised: v = R(beta) (Q - P), |v| = r
-    vx = cb * dx - sb * dy
-    vy = sb * dx + cb * dy
-    ux = vx / r
-    uy = vy / r
-    u[0] = ux
-    u[1] = uy
-    # derivatives of v
-    for a in range(K):
-        ddx = dP[qq, 0, a] - dP[p, 0, a]
-        ddy = dP[qq, 1, a] - dP[p, 1, a]
-        dvx = cb * ddx - sb * ddy
-        dvy = sb * ddx + cb * ddy
-        pa = ux * dvx + uy * dvy  # r'_a
-        du[0, a] = (dvx - ux * pa) / r
-        du[1, a] = (dvy - uy * pa) / r
-    for a in range(K):
-        ddxa = dP[qq, 0, a] - dP[p, 0, a]
-        ddya = dP[qq, 1, a] - dP[p, 1, a]
-        dvxa = cb * ddxa - sb * ddya
-        dvya = sb * ddxa + cb * ddya
-        pa = ux * dvxa + uy * dvya
-        for b in range(K):
-            ddxb = dP[qq, 0, b] - dP[p, 0, b]
-            ddyb = dP[qq, 1, b] - dP[p, 1, b]
-            dvxb = cb * ddxb - sb * ddyb
-            dvyb = sb * ddxb + cb * ddyb
-            pb = ux * dvxb + uy * dvyb
-            d2x = ddP[qq, 0, a, b] - ddP[p, 0, a, b]
-            d2y = ddP[qq, 1, a, b] - ddP[p, 1, a, b]
-            d2vx = cb * d2x - sb * d2y
-            d2vy = sb * d2x + cb * d2y
-            # d(p_a)/db = u'_b . v'_a + u . v''_ab
-            dpa_b = du[0, b] * dvxa + du[1, b] * dvya + ux * d2vx + uy * d2vy
-            # u''_ab = (v''_ab - u'_b p_a - u dp_a/db)/r - (v'_a - u p_a) p_b / r^2
-            ddu[0, a, b] = (d2vx - du[0, b] * pa - ux * dpa_b) / r - (dvxa - ux * pa) * pb / (r * r)
-            ddu[1, a, b] = (d2vy - du[1, b] * pa - uy * dpa_b) / r - (dvya - uy * pa) * pb / (r * r)
-    return r
-
-
-@njit(cache=True)
-def _run_element(ops, params, q, e, d, K, P, dP, ddP, Sv, Sd, Sdd, u, du, ddu, rr):
-    """Solve all groups for one element. Returns (status, op index, code, amount)."""
-    nops = ops.shape[0]
-    for i in range(nops):
-        op = ops[i, 0]
-        o = ops[i, 1]
+    E = _Emitter(K)
+    ops = [list(map(int, r)) for r in ops]
+    dyads = [i for i, r in enumerate(ops) if int(r[0]) == OP_RRR] if K == 1 else []
+    for i, r in enumerate(ops):
+        op, o = r[0], r[1]
+        E(f"# op {i}: code {op}")
         if op == OP_FRAME:
-            P[o, 0] = params[ops[i, 2], d]
-            P[o, 1] = params[ops[i, 3], d]
+            x, y = _pt(o)
+            E(f"{x} = params[{r[2]}, d]")
+            E(f"{y} = params[{r[3]}, d]")
+            _emit_zero_jets(E, x)
+            _emit_zero_jets(E, y)
         elif op == OP_RRR:
-            A = ops[i, 2]
-            B = ops[i, 3]
-            refa = ops[i, 4]
-            refb = ops[i, 5]
-            sig = float(ops[i, 6])
-            ra = _ref(refa, params, d, q, e)
-            rb = _ref(refb, params, d, q, e)
-            # radius jets: coordinate refs have unit first derivative
+            A, B, refa, refb, sig = r[2], r[3], r[4], r[5], r[6]
+            ax, ay = _pt(A)
+            bx, by = _pt(B)
+            x, y = _pt(o)
+            ra, dra = _lref(refa, K)
+            rb, drb = _lref(refb, K)
+            t = f"t{i}"
+            E(f"{t}ra = {ra}")
+            E(f"{t}rb = {rb}")
+            E(f"{t}dx = {bx} - {ax}")
+            E(f"{t}dy = {by} - {ay}")
+            E(f"{t}L = math.sqrt({t}dx * {t}dx + {t}dy * {t}dy)")
+            _fail(E, i, FAIL_COINCIDENT, "0.0", f"{t}L == 0.0")
+            _fail(E, i, FAIL_TOO_FAR, f"{t}L - ({t}ra + {t}rb)", f"{t}L > {t}ra + {t}rb")
+            _fail(E, i, FAIL_TOO_CLOSE, f"abs({t}ra - {t}rb) - {t}L",
+                  f"{t}L < abs({t}ra - {t}rb)")
+            E(f"{t}iL = 1.0 / {t}L if {t}L > 0.0 else 0.0")
+            E(f"{t}a = 0.5 * ({t}ra * {t}ra - {t}rb * {t}rb + {t}L * {t}L) * {t}iL")
+            E(f"{t}h2 = {t}ra * {t}ra - {t}a * {t}a")
+            E(f"{t}h = math.sqrt({t}h2) if {t}h2 > 0.0 else 0.0")
+            E(f"{t}ux = {t}dx * {t}iL")
+            E(f"{t}uy = {t}dy * {t}iL")
+            E(f"{x} = {ax} + {t}a * {t}ux - ({sig}.0) * {t}h * {t}uy")
+            E(f"{y} = {ay} + {t}a * {t}uy + ({sig}.0) * {t}h * {t}ux")
+            E(f"{t}m11 = {x} - {ax}")
+            E(f"{t}m12 = {y} - {ay}")
+            E(f"{t}m21 = {x} - {bx}")
+            E(f"{t}m22 = {y} - {by}")
+            E(f"{t}det = {t}m11 * {t}m22 - {t}m12 * {t}m21")
+            E(f"{t}rr = {t}ra * {t}rb")
+            _fail(E, i, FAIL_DEAD_POINT, f"{t}det / {t}rr if {t}rr != 0.0 else 0.0",
+                  f"abs({t}det) <= {DEAD_POINT_TOL!r} * abs({t}rr)")
+            E(f"{t}idet = 1.0 / {t}det if {t}det != 0.0 else 0.0")
             for a in range(K):
-                rr[0, a] = 0.0
-                rr[1, a] = 0.0
-            if refa < 0:
-                rr[0, -refa - 1] = 1.0
-            if refb < 0:
-                rr[1, -refb - 1] = 1.0
-            dx = P[B, 0] - P[A, 0]
-            dy = P[B, 1] - P[A, 1]
-            L = math.sqrt(dx * dx + dy * dy)
-            if L == 0.0:
-                return i, FAIL_COINCIDENT, 0.0
-            if L > ra + rb:
-                return i, FAIL_TOO_FAR, L - (ra + rb)
-            if L < abs(ra - rb):
-                return i, FAIL_TOO_CLOSE, abs(ra - rb) - L
-            aa = (ra * ra - rb * rb + L * L) / (2.0 * L)
-            h2 = ra * ra - aa * aa
-            h = math.sqrt(h2) if h2 > 0.0 else 0.0
-            ux = dx / L
-            uy = dy / L
-            cx = P[A, 0] + aa * ux - sig * h * uy
-            cy = P[A, 1] + aa * uy + sig * h * ux
-            P[o, 0] = cx
-            P[o, 1] = cy
-            # Jacobian rows: (C-A)^T, (C-B)^T
-            m11 = cx - P[A, 0]
-            m12 = cy - P[A, 1]
-            m21 = cx - P[B, 0]
-            m22 = cy - P[B, 1]
-            det = m11 * m22 - m12 * m21
-            if abs(det) <= DEAD_POINT_TOL * (ra * rb + 1e-300):
-                return i, FAIL_DEAD_POINT, det / (ra * rb)
-            for a in range(K):
-                r1 = ra * rr[0, a] + m11 * dP[A, 0, a] + m12 * dP[A, 1, a]
-                r2 = rb * rr[1, a] + m21 * dP[B, 0, a] + m22 * dP[B, 1, a]
-                dP[o, 0, a] = (r1 * m22 - m12 * r2) / det
-                dP[o, 1, a] = (m11 * r2 - m21 * r1) / det
-            for a in range(K):
-                for b in range(K):
-                    va_x = dP[o, 0, a] - dP[A, 0, a]
-                    va_y = dP[o, 1, a] - dP[A, 1, a]
-                    vb_x = dP[o, 0, b] - dP[A, 0, b]
-                    vb_y = dP[o, 1, b] - dP[A, 1, b]
-                    wa_x = dP[o, 0, a] - dP[B, 0, a]
-                    wa_y = dP[o, 1, a] - dP[B, 1, a]
-                    wb_x = dP[o, 0, b] - dP[B, 0, b]
-                    wb_y = dP[o, 1, b] - dP[B, 1, b]
-                    r1 = (rr[0, a] * rr[0, b] - (va_x * vb_x + va_y * vb_y)
-                          + m11 * ddP[A, 0, a, b] + m12 * ddP[A, 1, a, b])
-                    r2 = (rr[1, a] * rr[1, b] - (wa_x * wb_x + wa_y * wb_y)
-                          + m21 * ddP[B, 0, a, b] + m22 * ddP[B, 1, a, b])
-                    ddP[o, 0, a, b] = (r1 * m22 - m12 * r2) / det
-                    ddP[o, 1, a, b] = (m11 * r2 - m21 * r1) / det
+                r1 = f"{t}ra * {dra[a]} + {t}m11 * {_d(ax, a)} + {t}m12 * {_d(ay, a)}"
+                r2 = f"{t}rb * {drb[a]} + {t}m21 * {_d(bx, a)} + {t}m22 * {_d(by, a)}"
+                E(f"{t}r1 = {r1}")
+                E(f"{t}r2 = {r2}")
+                E(f"{_d(x, a)} = ({t}r1 * {t}m22 - {t}m12 * {t}r2) * {t}idet")
+                E(f"{_d(y, a)} = ({t}m11 * {t}r2 - {t}m21 * {t}r1) * {t}idet")
+            if K == 1:
+                # squared height g = cr²/L² with cr = (B-A) x (C-A), and its derivative
+                E(f"{t}cr = {t}dx * {t}m12 - {t}dy * {t}m11")
+                E(f"{t}dcr = ({_d(bx, 0)} - {_d(ax, 0)}) * {t}m12 + {t}dx * ({_d(y, 0)} - "
+                  f"{_d(ay, 0)}) - ({_d(by, 0)} - {_d(ay, 0)}) * {t}m11 - {t}dy * ({_d(x, 0)} - "
+                  f"{_d(ax, 0)})")
+                E(f"{t}dL2 = 2.0 * ({t}dx * ({_d(bx, 0)} - {_d(ax, 0)}) + {t}dy * ({_d(by, 0)} - "
+                  f"{_d(ay, 0)}))")
+                E(f"g{i} = {t}cr * {t}cr * {t}iL * {t}iL")
+                E(f"gd{i} = (2.0 * {t}cr * {t}dcr - {t}cr * {t}cr * {t}dL2 * {t}iL * {t}iL)"
+                  f" * {t}iL * {t}iL")
+            for a, b in E.pairs:
+                va = f"({_d(x, a)} - {_d(ax, a)})", f"({_d(y, a)} - {_d(ay, a)})"
+                vb = f"({_d(x, b)} - {_d(ax, b)})", f"({_d(y, b)} - {_d(ay, b)})"
+                wa = f"({_d(x, a)} - {_d(bx, a)})", f"({_d(y, a)} - {_d(by, a)})"
+                wb = f"({_d(x, b)} - {_d(bx, b)})", f"({_d(y, b)} - {_d(by, b)})"
+                E(f"{t}r1 = {dra[a]} * {dra[b]} - ({va[0]} * {vb[0]} + {va[1]} * {vb[1]})"
+                  f" + {t}m11 * {_dd(ax, a, b)} + {t}m12 * {_dd(ay, a, b)}")
+                E(f"{t}r2 = {drb[a]} * {drb[b]} - ({wa[0]} * {wb[0]} + {wa[1]} * {wb[1]})"
+                  f" + {t}m21 * {_dd(bx, a, b)} + {t}m22 * {_dd(by, a, b)}")
+                E(f"{_dd(x, a, b)} = ({t}r1 * {t}m22 - {t}m12 * {t}r2) * {t}idet")
+                E(f"{_dd(y, a, b)} = ({t}m11 * {t}r2 - {t}m21 * {t}r1) * {t}idet")
         elif op == OP_CRANK:
-            A = ops[i, 2]
-            r = _ref(ops[i, 3], params, d, q, e)
-            j = ops[i, 4]
-            th = q[j, e] + params[ops[i, 5], d]
-            c = math.cos(th)
-            s = math.sin(th)
-            P[o, 0] = P[A, 0] + r * c
-            P[o, 1] = P[A, 1] + r * s
+            A, refr, j, ph = r[2], r[3], r[4], r[5]
+            ax, ay = _pt(A)
+            x, y = _pt(o)
+            rr, _ = _lref(refr, K)
+            t = f"t{i}"
+            E(f"{t}r = {rr}")
+            E(f"{t}th = q[{j}, e] + params[{ph}, d]")
+            E(f"{t}c = math.cos({t}th)")
+            E(f"{t}s = math.sin({t}th)")
+            E(f"{x} = {ax} + {t}r * {t}c")
+            E(f"{y} = {ay} + {t}r * {t}s")
             for a in range(K):
-                jd = 1.0 if a == j else 0.0
-                dP[o, 0, a] = dP[A, 0, a] - r * s * jd
-                dP[o, 1, a] = dP[A, 1, a] + r * c * jd
-            for a in range(K):
-                for b in range(K):
-                    jd = 1.0 if (a == j and b == j) else 0.0
-                    ddP[o, 0, a, b] = ddP[A, 0, a, b] - r * c * jd
-                    ddP[o, 1, a, b] = ddP[A, 1, a, b] - r * s * jd
+                if a == j:
+                    E(f"{_d(x, a)} = {_d(ax, a)} - {t}r * {t}s")
+                    E(f"{_d(y, a)} = {_d(ay, a)} + {t}r * {t}c")
+                else:
+                    E(f"{_d(x, a)} = {_d(ax, a)}")
+                    E(f"{_d(y, a)} = {_d(ay, a)}")
+            for a, b in E.pairs:
+                if a == j and b == j:
+                    E(f"{_dd(x, a, b)} = {_dd(ax, a, b)} - {t}r * {t}c")
+                    E(f"{_dd(y, a, b)} = {_dd(ay, a, b)} - {t}r * {t}s")
+                else:
+                    E(f"{_dd(x, a, b)} = {_dd(ax, a, b)}")
+                    E(f"{_dd(y, a, b)} = {_dd(ay, a, b)}")
         elif op == OP_SLIDE:
-            A = ops[i, 2]
-            j = ops[i, 3]
-            t = q[j, e] + params[ops[i, 4], d]
-            beta = params[ops[i, 5], d]
-            c = math.cos(beta)
-            s = math.sin(beta)
-            P[o, 0] = P[A, 0] + t * c
-            P[o, 1] = P[A, 1] + t * s
+            A, j, s0, trow = r[2], r[3], r[4], r[5]
+            ax, ay = _pt(A)
+            x, y = _pt(o)
+            t = f"t{i}"
+            E(f"{t}t = q[{j}, e] + params[{s0}, d]")
+            E(f"{t}c = trig[{trow}, d]")
+            E(f"{t}s = trig[{trow + 1}, d]")
+            E(f"{x} = {ax} + {t}t * {t}c")
+            E(f"{y} = {ay} + {t}t * {t}s")
             for a in range(K):
-                jd = 1.0 if a == j else 0.0
-                dP[o, 0, a] = dP[A, 0, a] + c * jd
-                dP[o, 1, a] = dP[A, 1, a] + s * jd
-            for a in range(K):
-                for b in range(K):
-                    ddP[o, 0, a, b] = ddP[A, 0, a, b]
-                    ddP[o, 1, a, b] = ddP[A, 1, a, b]
+                extra = (f" + {t}c", f" + {t}s") if a == j else ("", "")
+                E(f"{_d(x, a)} = {_d(ax, a)}{extra[0]}")
+                E(f"{_d(y, a)} = {_d(ay, a)}{extra[1]}")
+            for a, b in E.pairs:
+                E(f"{_dd(x, a, b)} = {_dd(ax, a, b)}")
+                E(f"{_dd(y, a, b)} = {_dd(ay, a, b)}")
         elif op == OP_RIGID:
-            p = ops[i, 2]
-            qq = ops[i, 3]
-            ell = _ref(ops[i, 4], params, d, q, e)
-            mode = ops[i, 6]
-            if mode == 0:
-                beta = params[ops[i, 5], d]
-            else:
-                # triangle: sides base (origin->toward), ell (origin->new), opp (toward->new)
-                base = params[ops[i, 7], d]
-                opp = params[ops[i, 8], d]
-                if ell > base + opp:
-                    return i, FAIL_TRIANGLE, ell - (base + opp)
-                if base > ell + opp:
-                    return i, FAIL_TRIANGLE, base - (ell + opp)
-                if opp > ell + base:
-                    return i, FAIL_TRIANGLE, opp - (ell + base)
-                cosb = (base * base + ell * ell - opp * opp) / (2.0 * base * ell)
-                if cosb > 1.0:
-                    cosb = 1.0
-                elif cosb < -1.0:
-                    cosb = -1.0
-                beta = float(ops[i, 9]) * math.acos(cosb)
-            r = _unit(P, dP, ddP, p, qq, beta, K, u, du, ddu)
-            if r == 0.0:
-                return i, FAIL_COINCIDENT, 0.0
-            P[o, 0] = P[p, 0] + ell * u[0]
-            P[o, 1] = P[p, 1] + ell * u[1]
+            P, Q, lref, trow, mode = r[2], r[3], r[4], r[5], r[6]
+            x, y = _pt(o)
+            px, py = _pt(P)
+            ell, dell = _lref(lref, K)
+            t = f"t{i}"
+            E(f"{t}l = {ell}")
+            if mode == 1:
+                E(f"{t}b = params[{r[7]}, d]")
+                E(f"{t}o = params[{r[8]}, d]")
+                _fail(E, i, FAIL_TRIANGLE, f"{t}l - ({t}b + {t}o)", f"{t}l > {t}b + {t}o")
+                _fail(E, i, FAIL_TRIANGLE, f"{t}b - ({t}l + {t}o)", f"{t}b > {t}l + {t}o")
+                _fail(E, i, FAIL_TRIANGLE, f"{t}o - ({t}l + {t}b)", f"{t}o > {t}l + {t}b")
+            _emit_unit(E, i, P, Q, f"trig[{trow}, d]", f"trig[{trow + 1}, d]")
+            E(f"{x} = {px} + {t}l * u{i}x")
+            E(f"{y} = {py} + {t}l * u{i}y")
             for a in range(K):
-                dP[o, 0, a] = dP[p, 0, a] + ell * du[0, a]
-                dP[o, 1, a] = dP[p, 1, a] + ell * du[1, a]
-                for b in range(K):
-                    ddP[o, 0, a, b] = ddP[p, 0, a, b] + ell * ddu[0, a, b]
-                    ddP[o, 1, a, b] = ddP[p, 1, a, b] + ell * ddu[1, a, b]
+                for c, pc in (("x", px), ("y", py)):
+                    E(f"{_d(c + str(o), a)} = {_d(pc, a)} + {t}l * u{i}{c}_{a}"
+                      + (f" + {dell[a]} * u{i}{c}" if dell[a] != "0.0" else ""))
+            for a, b in E.pairs:
+                for c, pc in (("x", px), ("y", py)):
+                    extra = ""
+                    if dell[a] != "0.0":
+                        extra += f" + {dell[a]} * u{i}{c}_{b}"
+                    if dell[b] != "0.0":
+                        extra += f" + {dell[b]} * u{i}{c}_{a}"
+                    E(f"{_dd(c + str(o), a, b)} = {_dd(pc, a, b)} + {t}l * "
+                      f"{_dd(f'u{i}{c}', a, b)}{extra}")
         elif op == OP_RRP:
-            A = ops[i, 2]
-            refr = ops[i, 3]
-            r = _ref(refr, params, d, q, e)
-            for a in range(K):
-                rr[0, a] = 0.0
-            if refr < 0:
-                rr[0, -refr - 1] = 1.0
-            L0 = ops[i, 4]
-            dp_ = ops[i, 5]
-            dq_ = ops[i, 6]
-            beta = params[ops[i, 7], d]
-            sig = float(ops[i, 8])
-            if dp_ >= 0:
-                if _unit(P, dP, ddP, dp_, dq_, beta, K, u, du, ddu) == 0.0:
-                    return i, FAIL_COINCIDENT, 0.0
+            A, refr, L0, dP_, dQ_, trow, sig = r[2], r[3], r[4], r[5], r[6], r[7], r[8]
+            ax, ay = _pt(A)
+            lx, ly = _pt(L0)
+            x, y = _pt(o)
+            rr, dr = _lref(refr, K)
+            t = f"t{i}"
+            if dP_ >= 0:
+                _emit_unit(E, i, dP_, dQ_, f"trig[{trow}, d]", f"trig[{trow + 1}, d]")
             else:
-                u[0] = math.cos(beta)
-                u[1] = math.sin(beta)
-                for a in range(K):
-                    du[0, a] = 0.0
-                    du[1, a] = 0.0
-                    for b in range(K):
-                        ddu[0, a, b] = 0.0
-                        ddu[1, a, b] = 0.0
-            wx = P[L0, 0] - P[A, 0]
-            wy = P[L0, 1] - P[A, 1]
-            bb = u[0] * wx + u[1] * wy
-            cc = wx * wx + wy * wy - r * r
-            disc = bb * bb - cc
-            if disc < 0.0:
-                # distance from A to the line minus r
-                dist = abs(u[0] * wy - u[1] * wx)
-                return i, FAIL_LINE, dist - r
-            t = -bb + sig * math.sqrt(disc)
-            den = 2.0 * (t + bb)
-            if abs(den) <= DEAD_POINT_TOL * (abs(r) + 1e-300):
-                return i, FAIL_DEAD_POINT, den
-            P[o, 0] = P[L0, 0] + t * u[0]
-            P[o, 1] = P[L0, 1] + t * u[1]
-            # t'_a stored in rr[1, a]
+                E(f"u{i}x = trig[{trow}, d]")
+                E(f"u{i}y = trig[{trow + 1}, d]")
+                _emit_zero_jets(E, f"u{i}x")
+                _emit_zero_jets(E, f"u{i}y")
+            E(f"{t}r = {rr}")
+            E(f"{t}wx = {lx} - {ax}")
+            E(f"{t}wy = {ly} - {ay}")
+            E(f"{t}b = u{i}x * {t}wx + u{i}y * {t}wy")
+            E(f"{t}c = {t}wx * {t}wx + {t}wy * {t}wy - {t}r * {t}r")
+            E(f"{t}disc = {t}b * {t}b - {t}c")
+            _fail(E, i, FAIL_LINE, f"abs(u{i}x * {t}wy - u{i}y * {t}wx) - {t}r", f"{t}disc < 0.0")
+            E(f"{t}sq = math.sqrt({t}disc) if {t}disc > 0.0 else 0.0")
+            E(f"{t}t = -{t}b + ({sig}.0) * {t}sq")
+            E(f"{t}den = 2.0 * ({t}t + {t}b)")
+            _fail(E, i, FAIL_DEAD_POINT, f"{t}den",
+                  f"abs({t}den) <= {DEAD_POINT_TOL!r} * abs({t}r)")
+            E(f"{t}iden = 1.0 / {t}den if {t}den != 0.0 else 0.0")
+            E(f"{x} = {lx} + {t}t * u{i}x")
+            E(f"{y} = {ly} + {t}t * u{i}y")
             for a in range(K):
-                wxa = dP[L0, 0, a] - dP[A, 0, a]
-                wya = dP[L0, 1, a] - dP[A, 1, a]
-                ba = du[0, a] * wx + du[1, a] * wy + u[0] * wxa + u[1] * wya
-                ca = 2.0 * (wx * wxa + wy * wya) - 2.0 * r * rr[0, a]
-                rr[1, a] = -(2.0 * t * ba + ca) / den
+                E(f"{t}wx_{a} = {_d(lx, a)} - {_d(ax, a)}")
+                E(f"{t}wy_{a} = {_d(ly, a)} - {_d(ay, a)}")
+                E(f"{t}b_{a} = u{i}x_{a} * {t}wx + u{i}y_{a} * {t}wy + u{i}x * {t}wx_{a}"
+                  f" + u{i}y * {t}wy_{a}")
+                E(f"{t}c_{a} = 2.0 * ({t}wx * {t}wx_{a} + {t}wy * {t}wy_{a}) - 2.0 * {t}r * {dr[a]}")
+                E(f"{t}t_{a} = -(2.0 * {t}t * {t}b_{a} + {t}c_{a}) * {t}iden")
+                E(f"{_d(x, a)} = {_d(lx, a)} + {t}t_{a} * u{i}x + {t}t * u{i}x_{a}")
+                E(f"{_d(y, a)} = {_d(ly, a)} + {t}t_{a} * u{i}y + {t}t * u{i}y_{a}")
+            for a, b in E.pairs:
+                E(f"{t}wxab = {_dd(lx, a, b)} - {_dd(ax, a, b)}")
+                E(f"{t}wyab = {_dd(ly, a, b)} - {_dd(ay, a, b)}")
+                E(f"{t}bab = ({_dd(f'u{i}x', a, b)} * {t}wx + {_dd(f'u{i}y', a, b)} * {t}wy"
+                  f" + u{i}x_{a} * {t}wx_{b} + u{i}y_{a} * {t}wy_{b}"
+                  f" + u{i}x_{b} * {t}wx_{a} + u{i}y_{b} * {t}wy_{a}"
+                  f" + u{i}x * {t}wxab + u{i}y * {t}wyab)")
+                E(f"{t}cab = 2.0 * ({t}wx_{a} * {t}wx_{b} + {t}wy_{a} * {t}wy_{b} + {t}wx * {t}wxab"
+                  f" + {t}wy * {t}wyab) - 2.0 * {dr[a]} * {dr[b]}")
+                E(f"{t}tab = -(2.0 * {t}t_{a} * {t}t_{b} + 2.0 * {t}t_{a} * {t}b_{b}"
+                  f" + 2.0 * {t}t_{b} * {t}b_{a} + 2.0 * {t}t * {t}bab + {t}cab) * {t}iden")
+                for c, lc in (("x", lx), ("y", ly)):
+                    E(f"{_dd(c + str(o), a, b)} = {_dd(lc, a, b)} + {t}tab * u{i}{c}"
+                      f" + {t}t_{a} * u{i}{c}_{b} + {t}t_{b} * u{i}{c}_{a} + {t}t * "
+                      f"{_dd(f'u{i}{c}', a, b)}")
+        elif op in (OP_ANGLE, OP_DIST):
+            P, Q = r[2], r[3]
+            px, py = _pt(P)
+            qx, qy = _pt(Q)
+            s = f"s{o}"
+            t = f"t{i}"
+            E(f"{t}dx = {qx} - {px}")
+            E(f"{t}dy = {qy} - {py}")
+            E(f"{t}r2 = {t}dx * {t}dx + {t}dy * {t}dy")
+            _fail(E, i, FAIL_COINCIDENT, "0.0", f"{t}r2 == 0.0")
+            E(f"{t}ir2 = 1.0 / {t}r2 if {t}r2 > 0.0 else 0.0")
             for a in range(K):
-                ta = rr[1, a]
-                wxa = dP[L0, 0, a] - dP[A, 0, a]
-                wya = dP[L0, 1, a] - dP[A, 1, a]
-                ba = du[0, a] * wx + du[1, a] * wy + u[0] * wxa + u[1] * wya
-                dP[o, 0, a] = dP[L0, 0, a] + ta * u[0] + t * du[0, a]
-                dP[o, 1, a] = dP[L0, 1, a] + ta * u[1] + t * du[1, a]
-                for b in range(K):
-                    tb = rr[1, b]
-                    wxb = dP[L0, 0, b] - dP[A, 0, b]
-                    wyb = dP[L0, 1, b] - dP[A, 1, b]
-                    bbb = du[0, b] * wx + du[1, b] * wy + u[0] * wxb + u[1] * wyb
-                    wxab = ddP[L0, 0, a, b] - ddP[A, 0, a, b]
-                    wyab = ddP[L0, 1, a, b] - ddP[A, 1, a, b]
-                    bab = (ddu[0, a, b] * wx + ddu[1, a, b] * wy
-                           + du[0, a] * wxb + du[1, a] * wyb
-                           + du[0, b] * wxa + du[1, b] * wya
-                           + u[0] * wxab + u[1] * wyab)
-                    cab = 2.0 * (wxa * wxb + wya * wyb + wx * wxab + wy * wyab) - 2.0 * rr[0, a] * rr[0, b]
-                    tab = -(2.0 * ta * tb + 2.0 * ta * bbb + 2.0 * tb * ba + 2.0 * t * bab + cab) / den
-                    ddP[o, 0, a, b] = (ddP[L0, 0, a, b] + tab * u[0] + ta * du[0, b]
-                                       + tb * du[0, a] + t * ddu[0, a, b])
-                    ddP[o, 1, a, b] = (ddP[L0, 1, a, b] + tab * u[1] + ta * du[1, b]
-                                       + tb * du[1, a] + t * ddu[1, a, b])
-        elif op == OP_ANGLE or op == OP_DIST:
-            p = ops[i, 2]
-            qq = ops[i, 3]
-            dx = P[qq, 0] - P[p, 0]
-            dy = P[qq, 1] - P[p, 1]
-            r2 = dx * dx + dy * dy
-            if r2 == 0.0:
-                return i, FAIL_COINCIDENT, 0.0
+                E(f"{t}dx_{a} = {_d(qx, a)} - {_d(px, a)}")
+                E(f"{t}dy_{a} = {_d(qy, a)} - {_d(py, a)}")
             if op == OP_ANGLE:
-                Sv[o] = math.atan2(dy, dx)
+                E(f"{s} = math.atan2({t}dy, {t}dx)")
                 for a in range(K):
-                    dxa = dP[qq, 0, a] - dP[p, 0, a]
-                    dya = dP[qq, 1, a] - dP[p, 1, a]
-                    ca = dx * dya - dy * dxa  # d x d'_a
-                    Sd[o, a] = ca / r2
-                    for b in range(K):
-                        dxb = dP[qq, 0, b] - dP[p, 0, b]
-                        dyb = dP[qq, 1, b] - dP[p, 1, b]
-                        d2x = ddP[qq, 0, a, b] - ddP[p, 0, a, b]
-                        d2y = ddP[qq, 1, a, b] - ddP[p, 1, a, b]
-                        # phi''_ab = [d'_b x d'_a + d x d''_ab]/r2 - 2 (d x d'_a)(d . d'_b)/r2^2
-                        Sdd[o, a, b] = ((dxb * dya - dyb * dxa) + (dx * d2y - dy * d2x)) / r2 \
-                            - 2.0 * ca * (dx * dxb + dy * dyb) / (r2 * r2)
+                    E(f"{t}c_{a} = {t}dx * {t}dy_{a} - {t}dy * {t}dx_{a}")
+                    E(f"{_d(s, a)} = {t}c_{a} * {t}ir2")
+                for a, b in E.pairs:
+                    # phi''_ab = [d'_b x d'_a + d x d''_ab]/r2 - 2 (d x d'_a)(d . d'_b)/r2^2
+                    E(f"{_dd(s, a, b)} = (({t}dx_{b} * {t}dy_{a} - {t}dy_{b} * {t}dx_{a})"
+                      f" + ({t}dx * ({_dd(qy, a, b)} - {_dd(py, a, b)}) - {t}dy * "
+                      f"({_dd(qx, a, b)} - {_dd(px, a, b)}))) * {t}ir2"
+                      f" - 2.0 * {t}c_{a} * ({t}dx * {t}dx_{b} + {t}dy * {t}dy_{b}) * {t}ir2 * {t}ir2")
             else:
-                rlen = math.sqrt(r2)
-                Sv[o] = rlen
+                E(f"{s} = math.sqrt({t}r2)")
+                E(f"{t}il = 1.0 / {s} if {s} > 0.0 else 0.0")
                 for a in range(K):
-                    dxa = dP[qq, 0, a] - dP[p, 0, a]
-                    dya = dP[qq, 1, a] - dP[p, 1, a]
-                    Sd[o, a] = (dx * dxa + dy * dya) / rlen
+                    E(f"{_d(s, a)} = ({t}dx * {t}dx_{a} + {t}dy * {t}dy_{a}) * {t}il")
+                for a, b in E.pairs:
+                    E(f"{_dd(s, a, b)} = ({t}dx_{a} * {t}dx_{b} + {t}dy_{a} * {t}dy_{b}"
+                      f" + {t}dx * ({_dd(qx, a, b)} - {_dd(px, a, b)}) + {t}dy * "
+                      f"({_dd(qy, a, b)} - {_dd(py, a, b)}) - {_d(s, a)} * {_d(s, b)}) * {t}il")
+        else:  # pragma: no cover
+            raise ValueError(f"unknown op code {op}")
+    body = E.lines
+    out = []
+    w = out.append
+    if dyads:
+        w("            if check:")
+        w("                if d == pd_ and st < 0 and pst < 0:")
+        w("                    hq = q[0, e] - pq")
+        for i in dyads:
+            w(f"                    mn = _hermite_min(pg{i}, pgd{i}, g{i}, gd{i}, hq)")
+            w(f"                    if st < 0 and mn < -{CONTINUITY_TOL!r} * max(pg{i}, g{i}):")
+            w(f"                        st = {i * 16 + FAIL_CONTINUITY}")
+            w("                        amt = mn")
+        w("                pd_ = d")
+        w("                pq = q[0, e]")
+        w("                pst = st")
+        for i in dyads:
+            w(f"                pg{i} = g{i}")
+            w(f"                pgd{i} = gd{i}")
+    w("            if e < e0:")
+    w("                continue")
+    w("            status[e] = st")
+    w("            amount[e] = amt")
+    for ok in (True, False):
+        w("            if st < 0:" if ok else "            else:")
+        for k, s_ in enumerate(out_pts):
+            for c, v in ((0, f"x{s_}"), (1, f"y{s_}")):
+                w(f"                Pv[{k}, {c}, e] = {v if ok else '0.0'}")
                 for a in range(K):
-                    dxa = dP[qq, 0, a] - dP[p, 0, a]
-                    dya = dP[qq, 1, a] - dP[p, 1, a]
+                    w(f"                Pd[{k}, {c}, {a}, e] = {_d(v, a) if ok else '0.0'}")
                     for b in range(K):
-                        dxb = dP[qq, 0, b] - dP[p, 0, b]
-                        dyb = dP[qq, 1, b] - dP[p, 1, b]
-                        d2x = ddP[qq, 0, a, b] - ddP[p, 0, a, b]
-                        d2y = ddP[qq, 1, a, b] - ddP[p, 1, a, b]
-                        Sdd[o, a, b] = (dxa * dxb + dya * dyb + dx * d2x + dy * d2y
-                                        - Sd[o, a] * Sd[o, b]) / rlen
-    return -1, 0, 0.0
+                        w(f"                Pdd[{k}, {c}, {a}, {b}, e] = "
+                          f"{_dd(v, a, b) if ok else '0.0'}")
+        for k, s_ in enumerate(out_sca):
+            v = f"s{s_}"
+            w(f"                Sv[{k}, e] = {v if ok else '0.0'}")
+            for a in range(K):
+                w(f"                Sd[{k}, {a}, e] = {_d(v, a) if ok else '0.0'}")
+                for b in range(K):
+                    w(f"                Sdd[{k}, {a}, {b}, e] = {_dd(v, a, b) if ok else '0.0'}")
+        w("                pass")
+    init = "".join(f"        pg{i} = 0.0\n        pgd{i} = 0.0\n" for i in dyads)
+    src = f'''"""Generated by assur._kernel (format {_VERSION}); do not edit."""
+import math
+from numba import njit, prange
 
 
-@njit(cache=True, parallel=True)
-def run(ops, params, q, n_per_design, n_points, n_scalars, K,
-        out_pts, out_sca, Pv, Pd, Pdd, Sv, Sd, Sdd, status, amount, chunk):
-    """Interpret ``ops`` for every element.
+@njit(cache=True, inline="always", error_model="numpy")
+def _hermite_min(g0, d0, g1, d1, h):
+    """Minimum of the cubic Hermite interpolant on [0, 1] sampled at 15 inner points."""
+    mn = min(g0, g1)
+    # h10 in [0, 4/27], h11 in [-4/27, 0] and h00 + h01 = 1: a cheap lower bound first
+    if mn - (4.0 / 27.0) * abs(h) * (abs(d0) + abs(d1)) > 0.0:
+        return mn
+    for i in range(1, 16):
+        t = i / 16.0
+        t2 = t * t
+        t3 = t2 * t
+        v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0 + (t3 - 2.0 * t2 + t) * h * d0
+             + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * h * d1)
+        if v < mn:
+            mn = v
+    return mn
 
-    Parameters
-    ----------
-    ops : int64 array, shape (n_ops, NCOL)
-    params : float64 array, shape (n_params, m)
-    q : float64 array, shape (K, E)
-        Generalized coordinates of every element; element ``e`` belongs to
-        design ``e // n_per_design``.
-    out_pts, out_sca : int64 arrays
-        Scratch slots of the points and scalars to write out.
-    Pv, Pd, Pdd : float64 arrays, shapes (len(out_pts), 2, E), (…, 2, K, E), (…, 2, K, K, E)
-    Sv, Sd, Sdd : float64 arrays, shapes (len(out_sca), E), (…, K, E), (…, K, K, E)
-    status : int64 array, shape (E,)
-        ``-1`` where assembled, else the index of the first failing op.
-    amount : float64 array, shape (E,)
-        Failure code * 1 (in ``status``' companion, see below) and amount [m].
-    """
+
+@njit(cache=True, parallel=True, error_model="numpy", nogil=True)
+def kernel(params, trig, q, npd, check, Pv, Pd, Pdd, Sv, Sd, Sdd, status, amount):
     E = q.shape[1]
-    nchunks = (E + chunk - 1) // chunk
-    nop = out_pts.shape[0]
-    nos = out_sca.shape[0]
+    nchunks = (E + {CHUNK} - 1) // {CHUNK}
     for c in prange(nchunks):
-        P = np.zeros((n_points, 2))
-        dP = np.zeros((n_points, 2, K))
-        ddP = np.zeros((n_points, 2, K, K))
-        Ss = np.zeros(max(n_scalars, 1))
-        Sds = np.zeros((max(n_scalars, 1), K))
-        Sdds = np.zeros((max(n_scalars, 1), K, K))
-        u = np.zeros(2)
-        du = np.zeros((2, K))
-        ddu = np.zeros((2, K, K))
-        rr = np.zeros((2, K))
-        e0 = c * chunk
-        e1 = min(E, e0 + chunk)
-        for e in range(e0, e1):
-            d = e // n_per_design
-            i, code, amt = _run_element(ops, params, q, e, d, K, P, dP, ddP, Ss, Sds, Sdds,
-                                        u, du, ddu, rr)
-            status[e] = i
-            if i >= 0:
-                amount[e] = amt
-                status[e] = i * 16 + code
-                continue
-            for k in range(nop):
-                s = out_pts[k]
-                for x in range(2):
-                    Pv[k, x, e] = P[s, x]
-                    for a in range(K):
-                        Pd[k, x, a, e] = dP[s, x, a]
-                        for b in range(K):
-                            Pdd[k, x, a, b, e] = ddP[s, x, a, b]
-            for k in range(nos):
-                s = out_sca[k]
-                Sv[k, e] = Ss[s]
-                for a in range(K):
-                    Sd[k, a, e] = Sds[s, a]
-                    for b in range(K):
-                        Sdd[k, a, b, e] = Sdds[s, a, b]
+        e0 = c * {CHUNK}
+        e1 = min(E, e0 + {CHUNK})
+        es = e0 - 1 if (check and e0 > 0) else e0
+        pd_ = -1
+        pq = 0.0
+        pst = 0
+        d = es // npd
+        dnext = (d + 1) * npd
+{init}        for e in range(es, e1):
+            if e == dnext:
+                d += 1
+                dnext += npd
+            st = -1
+            amt = 0.0
+''' + "\n".join(body) + "\n" + "\n".join(out) + "\n"
+    return src
+
+
+_lock = threading.Lock()
+_loaded: dict[str, object] = {}
+
+
+def cache_dir() -> Path:
+    """Directory of generated kernels (``$ASSUR_CACHE_DIR`` or ``~/.cache/assur``)."""
+    d = os.environ.get("ASSUR_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "assur")
+    p = Path(d) / "kernels"
+    p.mkdir(parents=True, exist_ok=True)
+    return p
+
+
+_by_structure: dict = {}
+
+
+def get_kernel(ops, K, out_pts, out_sca):
+    """The compiled kernel for a program structure (generated, cached, loaded once)."""
+    skey = (ops.tobytes(), ops.shape, K, tuple(out_pts), tuple(out_sca))
+    fn = _by_structure.get(skey)
+    if fn is not None:
+        return fn
+    fn = _load(generate(ops, K, out_pts, out_sca))
+    _by_structure[skey] = fn
+    return fn
+
+
+def _load(src):
+    key = hashlib.sha1(src.encode()).hexdigest()[:20]
+    with _lock:
+        fn = _loaded.get(key)
+        if fn is not None:
+            return fn
+        path = cache_dir() / f"k_{key}.py"
+        if not path.exists() or path.read_text() != src:
+            tmp = path.with_suffix(f".{os.getpid()}.tmp")
+            tmp.write_text(src)
+            os.replace(tmp, path)
+        name = f"assur_kernel_{key}"
+        spec = importlib.util.spec_from_file_location(name, path)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[name] = mod
+        spec.loader.exec_module(mod)
+        _loaded[key] = mod.kernel
+        return mod.kernel
+
+
+def _unwrap_impl():
+    from numba import njit, prange
+
+    @njit(cache=True, parallel=True)
+    def unwrap_rows(sv, rows, n):
+        """Make angles continuous along positions, in place: sv shape (ns, E), E = m·n;
+        each run of n positions (one design) starts at its principal value [rad]."""
+        m = sv.shape[1] // n
+        two_pi = 2.0 * math.pi
+        for job in prange(rows.shape[0] * m):
+            r = rows[job // m]
+            d = job % m
+            off = 0.0
+            prev = sv[r, d * n]
+            for i in range(d * n + 1, (d + 1) * n):
+                cur = sv[r, i]
+                step = cur - prev
+                if step > math.pi:
+                    off -= two_pi
+                elif step < -math.pi:
+                    off += two_pi
+                prev = cur
+                sv[r, i] = cur + off
+
+    return unwrap_rows
+
+
+unwrap_rows = _unwrap_impl()

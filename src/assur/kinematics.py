@@ -47,7 +47,7 @@ class Kinematics:
         Messages of failed elements when solved with ``on_failure="report"``.
     """
 
-    def __init__(self, mechanism, prog, q, raw, shape, ok):
+    def __init__(self, mechanism, prog, q, raw, shape, ok, params):
         self.mechanism = mechanism
         self.coordinates = mechanism.coordinates
         self.k = len(self.coordinates)
@@ -63,21 +63,38 @@ class Kinematics:
         self._pv = raw["pv"].reshape(-1, 2, m, n)
         self._pd = raw["pd"].reshape(-1, 2, k, m, n)
         self._pdd = raw["pdd"].reshape(-1, 2, k, k, m, n)
-        sv = raw["sv"].reshape(-1, m, n)
-        # continuous link angles along the positions (one coordinate, a range)
-        if k == 1 and n > 1:
-            for name, i in self._sidx.items():
-                if self._kinds[name] == "angle":
-                    sv[i] = np.unwrap(sv[i], axis=-1)
-        self._sv = sv
+        self._sv = raw["sv"].reshape(-1, m, n)
+        # frame points are design constants: served from the parameters, not the kernel
+        self._frame = {}
+        for name, (rx, ry) in prog["frame_rows"].items():
+            xy = np.stack([params[rx], params[ry]])[:, :, None]  # (2, m, 1)
+            self._frame[name] = np.broadcast_to(xy, (2, m, n))
         self._sd = raw["sd"].reshape(-1, k, m, n)
         self._sdd = raw["sdd"].reshape(-1, k, k, m, n)
 
     # ---- helpers -----------------------------------------------------------------
     @property
     def points(self):
-        """Names of the points in this result."""
+        """Names of the moving points in this result (frame points are available too)."""
         return tuple(self._pidx)
+
+    def _val(self, point):
+        """(2, m, n) position of any point, frame points included."""
+        if point in self._frame:
+            return self._frame[point]
+        return self._pv[self._p(point)]
+
+    def _jet1(self, point):
+        """(2, k, m, n) first analogs (zero for frame points)."""
+        if point in self._frame:
+            return np.zeros((2, self.k, self.m, self.n))
+        return self._pd[self._p(point)]
+
+    def _jet2(self, point):
+        """(2, k, k, m, n) second analogs (zero for frame points)."""
+        if point in self._frame:
+            return np.zeros((2, self.k, self.k, self.m, self.n))
+        return self._pdd[self._p(point)]
 
     @property
     def links(self):
@@ -131,31 +148,31 @@ class Kinematics:
 
     def x(self, point):
         """X coordinate of a point [m]."""
-        return self._out(self._pv[self._p(point), 0])
+        return self._out(self._val(point)[0])
 
     def y(self, point):
         """Y coordinate of a point [m]."""
-        return self._out(self._pv[self._p(point), 1])
+        return self._out(self._val(point)[1])
 
     def point(self, point):
         """Position of a point, shape (..., 2) [m]."""
-        return self._out(np.moveaxis(self._pv[self._p(point)], 0, -1))
+        return self._out(np.moveaxis(self._val(point), 0, -1))
 
     def dx(self, point, wrt=None):
         """Velocity analog dX/dq of a point [m/m or m/rad]."""
-        return self._d1(self._pd[self._p(point), 0], wrt)
+        return self._d1(self._jet1(point)[0], wrt)
 
     def dy(self, point, wrt=None):
         """Velocity analog dY/dq of a point [m/m or m/rad]."""
-        return self._d1(self._pd[self._p(point), 1], wrt)
+        return self._d1(self._jet1(point)[1], wrt)
 
     def ddx(self, point, wrt=None):
         """Acceleration analog d²X/dq² of a point [1/m or m/rad²]."""
-        return self._d2(self._pdd[self._p(point), 0], wrt)
+        return self._d2(self._jet2(point)[0], wrt)
 
     def ddy(self, point, wrt=None):
         """Acceleration analog d²Y/dq² of a point [1/m or m/rad²]."""
-        return self._d2(self._pdd[self._p(point), 1], wrt)
+        return self._d2(self._jet2(point)[1], wrt)
 
     def transmission(self, point, axis="y", wrt=None):
         """Transmission number I = dY/dS (``axis="y"``) or dX/dS of a point [m/m].
@@ -252,14 +269,14 @@ class Kinematics:
         [m/s or rad/s] (scalar or array broadcastable to the result shape, ``(..., k)``
         for k > 1)."""
         qd, _ = self._rates(qdot)
-        J = self._out(np.moveaxis(self._pd[self._p(point)], (0, 1), (-2, -1)))  # (...,2,k)
+        J = self._out(np.moveaxis(self._jet1(point), (0, 1), (-2, -1)))  # (...,2,k)
         return np.einsum("...ik,...k->...i", J, qd)
 
     def acceleration(self, point, qdot, qddot):
         """Acceleration a = J·q̈ + q̇ᵀ·H·q̇ of a point [m/s²], shape (..., 2)."""
         qd, qdd = self._rates(qdot, qddot)
-        J = self._out(np.moveaxis(self._pd[self._p(point)], (0, 1), (-2, -1)))
-        H = self._out(np.moveaxis(self._pdd[self._p(point)], (0, 1, 2), (-3, -2, -1)))
+        J = self._out(np.moveaxis(self._jet1(point), (0, 1), (-2, -1)))
+        H = self._out(np.moveaxis(self._jet2(point), (0, 1, 2), (-3, -2, -1)))
         return (np.einsum("...ik,...k->...i", J, qdd)
                 + np.einsum("...k,...ikl,...l->...i", qd, H, qd))
 
@@ -343,65 +360,6 @@ class Kinematics:
         v = (bx - cx, by - cy)
         mu = np.arctan2(np.abs(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1])
         return np.degrees(mu) if degrees else mu
-
-    def _check_continuity(self, on_failure):
-        """No dyad may open (or pass a dead point) between consecutive positions.
-
-        For each RRR dyad the squared height g = h² of the triangle A-B-C over
-        the base AB is positive at every solved position; with its exact
-        derivative g' = 2 h h' the cubic Hermite interpolant on each interval must
-        stay positive too, otherwise the mechanism cannot move continuously from
-        one position to the next on the chosen branch.
-        """
-        from .groups import CylinderLever, Dyad
-        if not self.ok.all():
-            return
-        qv = self._q[0]
-        for g in self.mechanism.groups:
-            if not isinstance(g, (Dyad, CylinderLever)):
-                continue
-            if any(p not in self._pidx for p in (g.a, g.b, g.out)):
-                continue
-            A = self._pv[self._pidx[g.a]]
-            B = self._pv[self._pidx[g.b]]
-            C = self._pv[self._pidx[g.out]]
-            dA = self._pd[self._pidx[g.a], :, 0]
-            dB = self._pd[self._pidx[g.b], :, 0]
-            dC = self._pd[self._pidx[g.out], :, 0]
-            ux, uy = B[0] - A[0], B[1] - A[1]
-            wx, wy = C[0] - A[0], C[1] - A[1]
-            L2 = ux * ux + uy * uy
-            cr = ux * wy - uy * wx  # = L * h (signed)
-            dux, duy = dB[0] - dA[0], dB[1] - dA[1]
-            dwx, dwy = dC[0] - dA[0], dC[1] - dA[1]
-            dcr = dux * wy + ux * dwy - duy * wx - uy * dwx
-            dL2 = 2 * (ux * dux + uy * duy)
-            gval = cr * cr / L2
-            gder = (2 * cr * dcr * L2 - cr * cr * dL2) / (L2 * L2)
-            h = np.diff(qv, axis=-1)
-            t = np.linspace(0.0, 1.0, 17)[1:-1, None, None]
-            h00 = 2 * t**3 - 3 * t**2 + 1
-            h10 = t**3 - 2 * t**2 + t
-            h01 = -2 * t**3 + 3 * t**2
-            h11 = t**3 - t**2
-            interp = (h00 * gval[:, :-1] + h10 * h * gder[:, :-1] + h01 * gval[:, 1:]
-                      + h11 * h * gder[:, 1:])
-            scale = np.maximum(gval[:, :-1], gval[:, 1:])
-            bad = interp.min(axis=0) < -1e-9 * scale
-            if bad.any():
-                d, i = np.argwhere(bad)[0]
-                c = self.coordinates[0]
-                msg = (f"{g.kind} {g.name!r} (links {', '.join(g.group_links())}) cannot move "
-                       f"continuously from {c} = {qv[d, i]:.6g} to {c} = {qv[d, i + 1]:.6g}"
-                       f"{f' (design {d})' if self.m > 1 else ''}: its triangle flattens or "
-                       f"opens between these positions (dead point or assembly lost between "
-                       f"samples); refine the positions or check the range and branch")
-                if on_failure == "raise":
-                    raise AssemblyError(msg, group=g.name, links=g.group_links(),
-                                        coordinate={c: float(qv[d, i])}, design=int(d),
-                                        position=int(i))
-                self.failures.append(msg)
-                self.ok[d, i:i + 2] = False
 
     # ---- tables ----------------------------------------------------------------------
     def to_frame(self, degrees=True):

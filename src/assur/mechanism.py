@@ -22,7 +22,6 @@ from .errors import AssemblyError, ModelError
 from .groups import Crank, CylinderLever, Distance, Dyad, Frame, Group, Link, RigidPoint, \
     SliderDyad, SliderInput
 
-_CHUNK = 512
 
 
 def _fmt(v):
@@ -381,19 +380,18 @@ class Mechanism:
                              f"designs but the coordinates {m}")
         ptab = np.ascontiguousarray(ptab)
         pose_failures = mech._fill_pose_rows(prog, ptab)
-        res = _execute(prog, ptab, qarr, n)
+        check = bool(check_continuity and len(self.coordinates) == 1 and n > 1)
+        res = _execute(prog, ptab, qarr, n, check)
         status = res["status"]
         failed = status >= 0
         if pose_failures and not failed.any():
             raise pose_failures[0]
         kin = Kinematics(mech, prog, qarr.reshape((len(self.coordinates), m, n)), res, shape,
-                         ok=~failed.reshape(m, n))
+                         ok=~failed.reshape(m, n), params=ptab)
         if failed.any():
             if on_failure == "raise":
                 raise mech._assembly_error(prog, ptab, qarr, status, res["amount"], n, kin)
             kin.failures = mech._describe_failures(prog, ptab, qarr, status, res["amount"], n)
-        if check_continuity and len(self.coordinates) == 1 and n > 1 and outputs is None:
-            kin._check_continuity(on_failure)
         return kin
 
     # ---- compilation ---------------------------------------------------------------
@@ -460,12 +458,20 @@ class Mechanism:
         slot = {}
         ops = []
         pose_rows = []
+        frame_rows = {}
+        trig = []  # (kind, data): each takes two rows (cos, sin) of the trig table
+
+        def trow(kind, *data):
+            trig.append((kind,) + data)
+            return 2 * (len(trig) - 1)
+
         for g in self.groups:
             row = [0] * K.NCOL
             for o in g.outputs():
                 slot[o] = len(slot)
             if isinstance(g, Frame):
                 row[:4] = [K.OP_FRAME, slot[g.name], pref(g.x), pref(g.y)]
+                frame_rows[g.name] = (row[2], row[3])
             elif isinstance(g, (Dyad, CylinderLever)):
                 row[:7] = [K.OP_RRR, slot[g.out], slot[g.a], slot[g.b], lref(g.ra), lref(g.rb),
                            g.branch]
@@ -474,25 +480,29 @@ class Mechanism:
                            self.coordinates.index(g.angle), pref(g.phase)]
             elif isinstance(g, SliderInput):
                 row[:6] = [K.OP_SLIDE, slot[g.out], slot[g.origin],
-                           self.coordinates.index(g.s), pref(g.offset), pref(g.direction)]
+                           self.coordinates.index(g.s), pref(g.offset),
+                           trow("angle", pref(g.direction))]
             elif isinstance(g, RigidPoint):
                 if g.angle is not None:
                     row[:7] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward],
-                               lref(g.length), pref(g.angle), 0]
+                               lref(g.length), trow("angle", pref(g.angle)), 0]
                 else:
+                    pl, pb, po = pref(g.length), pref(g.base), pref(g.opposite)
                     row[:10] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward],
-                                lref(g.length), 0, 1, pref(g.base), pref(g.opposite), g.branch]
+                                pl, trow("triangle", pb, pl, po, g.branch), 1, pb, po,
+                                g.branch]
             elif isinstance(g, PosePoint):
                 rb = len(rows)
                 rows.append(np.array([0.0]))
                 rl = len(rows)
                 rows.append(np.array([0.0]))
-                row[:7] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward], rl, rb, 0]
+                row[:7] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward], rl,
+                           trow("angle", rb), 0]
                 pose_rows.append((len(ops), g, rb, rl))
             elif isinstance(g, SliderDyad):
                 dp, dq = (slot[g.line_link[0]], slot[g.line_link[1]]) if g.line_link else (-1, -1)
                 row[:9] = [K.OP_RRP, slot[g.out], slot[g.a], lref(g.radius), slot[g.line_point],
-                           dp, dq, pref(g.direction), g.branch]
+                           dp, dq, trow("angle", pref(g.direction)), g.branch]
             else:  # pragma: no cover - guarded by the type checks above
                 raise ModelError(f"unknown group type {type(g).__name__}")
             ops.append(row)
@@ -516,8 +526,9 @@ class Mechanism:
         ptab = np.empty((len(rows), m))
         for i, r in enumerate(rows):
             ptab[i] = r
+        frame = {g.name for g in self.groups if isinstance(g, Frame)}
         if outputs is None:
-            out_pts = list(slot)
+            out_pts = [p for p in slot if p not in frame]
             out_sca = list(scal)
         else:
             outputs = list(outputs)
@@ -525,11 +536,12 @@ class Mechanism:
             if bad:
                 raise ModelError(f"unknown outputs {bad}; points: {list(slot)}, links and "
                                  f"distances: {list(scal)}")
-            out_pts = [o for o in outputs if o in slot]
+            out_pts = [o for o in outputs if o in slot and o not in frame]
             out_sca = [o for o in outputs if o in scal]
         return dict(ops=np.array(ops, dtype=np.int64).reshape(-1, K.NCOL), params=ptab, m=m,
                     slot=slot, scal=scal, kinds=kinds, out_pts=out_pts, out_sca=out_sca,
-                    n_points=n_points, pose_rows=pose_rows, pnames=pnames,
+                    n_points=n_points, pose_rows=pose_rows, pnames=pnames, trig=trig,
+                    frame_rows=frame_rows,
                     literal_rows=literal_rows, lref=lref, pref=pref)
 
     def _fill_pose_rows(self, prog, ptab):
@@ -549,7 +561,7 @@ class Mechanism:
                     raise ModelError(f"pose of {g.name!r} must be given by numbers or parameters")
                 qpose[j] = ptab[r]
             sub = dict(prog, ops=prog["ops"][:opi], out_pts=[g.origin, g.toward], out_sca=[])
-            res = _execute(sub, ptab, qpose, 1)
+            res = _execute(sub, ptab, qpose, 1, False)
             if (res["status"] >= 0).any():
                 e = int(np.flatnonzero(res["status"] >= 0)[0])
                 msg, _ = self._failure_message(prog, ptab, qpose, res["status"], res["amount"],
@@ -651,6 +663,15 @@ class Mechanism:
                    f"{amt * 1e3:.3g} mm")
         elif code == K.FAIL_COINCIDENT:
             msg = f"two points that must define a direction coincide ({', '.join(g.inputs())})"
+        elif code == K.FAIL_CONTINUITY:
+            c = self.coordinates[0]
+            head = (f"{g.kind} {g.name!r}{ltxt} cannot move continuously from {c} = "
+                    f"{qarr[0, e - 1]:.6g} to {c} = {qarr[0, e]:.6g}"
+                    f"{f' (design {d})' if ptab.shape[1] > 1 else ''}: ")
+            msg = ("its triangle flattens or opens between these positions (the squared "
+                   f"height, interpolated with its exact slope, dips to {amt:.3g} m²): a dead "
+                   "point or a loss of assembly between samples; refine the positions, or "
+                   "check the range and the branch")
         elif code == K.FAIL_DEAD_POINT:
             msg = (f"dead point: the links are collinear (sine of the transmission angle "
                    f"{amt:.3g}), the analogs are singular")
@@ -696,13 +717,38 @@ class _NumericRigid(RigidPoint):
         pts[self.out] = (px + self._ell * ux, py + self._ell * uy)
 
 
-def _execute(prog, ptab, qarr, n):
+def _trig_table(prog, ptab):
+    """cos and sin of every fixed angle of the program, per design, shape (2·n, m).
+
+    A triangle-defined angle is ``branch·acos((b² + l² − o²)/(2·b·l))`` (seed 000
+    DELFI); its argument is clipped here only so that the table is finite — a
+    triangle that cannot close is detected and reported by the kernel.
+    """
+    m = ptab.shape[1]
+    out = np.empty((max(2 * len(prog["trig"]), 1), m))
+    for i, item in enumerate(prog["trig"]):
+        if item[0] == "angle":
+            beta = ptab[item[1]]
+        else:
+            _, pb, pl, po, br = item
+            b, ell, o = ptab[pb], ptab[pl], ptab[po]
+            den = 2.0 * b * ell
+            ok = den > 0
+            c = np.divide(b * b + ell * ell - o * o, den, out=np.ones(m), where=ok)
+            beta = br * np.arccos(np.clip(c, -1.0, 1.0))
+        out[2 * i] = np.cos(beta)
+        out[2 * i + 1] = np.sin(beta)
+    return out
+
+
+def _execute(prog, ptab, qarr, n, check=False):
     """Run the compiled kernel; returns the raw output arrays."""
     k = qarr.shape[0]
     E = qarr.shape[1]
     slot, scal = prog["slot"], prog["scal"]
-    out_pts = np.array([slot[p] for p in prog["out_pts"]], dtype=np.int64)
-    out_sca = np.array([scal[s] for s in prog["out_sca"]], dtype=np.int64)
+    out_pts = [slot[p] for p in prog["out_pts"]]
+    out_sca = [scal[s] for s in prog["out_sca"]]
+    kern = K.get_kernel(prog["ops"], k, out_pts, out_sca)
     npo, nso = len(out_pts), len(out_sca)
     pv = np.zeros((npo, 2, E))
     pd = np.zeros((npo, 2, k, E))
@@ -711,7 +757,10 @@ def _execute(prog, ptab, qarr, n):
     sd = np.zeros((nso, k, E))
     sdd = np.zeros((nso, k, k, E))
     status = np.empty(E, dtype=np.int64)
-    amount = np.zeros(E)
-    K.run(prog["ops"], ptab, qarr, n, prog["n_points"], max(len(scal), 1), k, out_pts, out_sca,
-          pv, pd, pdd, sv, sd, sdd, status, amount, _CHUNK)
+    amount = np.empty(E)
+    kern(ptab, _trig_table(prog, ptab), qarr, n, check, pv, pd, pdd, sv, sd, sdd, status, amount)
+    angles = np.array([i for i, s in enumerate(prog["out_sca"]) if prog["kinds"][s] == "angle"],
+                      dtype=np.int64)
+    if check and len(angles) and n > 1:
+        K.unwrap_rows(sv, angles, n)
     return dict(pv=pv, pd=pd, pdd=pdd, sv=sv, sd=sd, sdd=sdd, status=status, amount=amount)

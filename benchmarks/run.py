@@ -1,0 +1,372 @@
+"""Throughput benchmark of ``assur`` against a plain-numpy port of seed 003.
+
+``make bench`` runs this file. What is measured, for N = 1e3, 1e5 and 1e6
+positions of the cylinder length S evenly spaced over [0.42, 0.67] m (the seed's
+own range, ``S := Smin, Smin + ΔS .. Smax``, with N instead of 10 positions):
+
+(a) the cylinder–lever group I (2,3) alone, with φ3, φ3' and φ3'':
+    ``assur`` — a :class:`assur.Mechanism` with frame points 01, 03, one
+    ``cylinder_lever(..., branch=-1)`` and ``link("3", "03", "23")``, solved with
+    ``outputs=["3"]`` — against the seed's closed forms φ3(S), dφ3(S) and the
+    analytic φ3''(S) in numpy (``seed003_numpy.lever_phi3``).
+(b) the whole seed-003 hitch: ``examples.hitch_003().solve(S)`` (all 10 points, all
+    7 links, first *and* second analogs; once with the default continuity check and
+    once with ``check_continuity=False``) against the seed's §2–§3 pipeline in numpy
+    (``seed003_numpy.hitch``: all angles, all point coordinates, U43, U53, U65, U75,
+    dφ3, φ41…φ71, I56, IS6 — first order only, because the seed has no second order).
+
+For each line: the best time of several repetitions (≥ 3; more for small N, until
+about a second has been spent) after a warm-up call, as positions per second, for
+``assur`` and for the numpy peer, and their ratio. The two are timed interleaved in
+the same process, so the ratio is what carries over between machines. The first
+(cold) calls — numba loading its cache or compiling — are reported separately as
+"start-up". The targets of the issue ((a) ≥ 1e8, (b) ≥ 2e7 positions/s on the
+2-core machine) are printed next to the figures.
+
+Before any figure is trusted, the benchmark checks that ``assur`` and the numpy
+peer agree on every compared quantity (e.g. max |Δφ3| < 1e-9 rad, max |ΔIS6| <
+1e-9), and that the φ3'' formula matches a finite difference of φ3'. These are
+printed checks of the benchmark, not tests.
+
+These figures are ratios to a peer measured in the same process, for people to
+read. Nothing here is — and no test should ever be — a timed assertion: the test
+suite checks correctness only.
+
+Usage: ``python benchmarks/run.py [--sizes 1e3,1e5,1e6] [--budget 1.0]``
+"""
+
+from __future__ import annotations
+
+import argparse
+import gc
+import glob
+import importlib.util
+import math
+import os
+import platform
+import sys
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import seed003_numpy as peer  # noqa: E402  (plain numpy, does not import assur)
+
+S_MIN, S_MAX = 0.42, 0.67
+TARGET_A = 1e8  # positions/s, issue target for the cylinder–lever group alone
+TARGET_B = 2e7  # positions/s, issue target for the whole hitch with analogs
+TOL = 1e-9      # agreement: max |Δ| < TOL for every compared quantity (absolute)
+
+
+# ---- timing ------------------------------------------------------------------------
+def time_interleaved(funcs, min_reps, budget, max_reps=2000):
+    """Best wall time of each callable, run interleaved (a, b, c, a, b, c, ...).
+
+    Repeats at least ``min_reps`` times and until every callable has spent
+    ``budget`` seconds in total (at most ``max_reps``). The garbage collector is
+    off while timing. Returns (best times, repetitions, last results).
+    """
+    best = {k: math.inf for k in funcs}
+    spent = {k: 0.0 for k in funcs}
+    last = {}
+    reps = 0
+    gc.collect()
+    gc.disable()
+    try:
+        while reps < min_reps or (min(spent.values()) < budget and reps < max_reps):
+            for k, f in funcs.items():
+                last.pop(k, None)  # free the previous result before the next call
+                t0 = time.perf_counter()
+                last[k] = f()
+                dt = time.perf_counter() - t0
+                best[k] = min(best[k], dt)
+                spent[k] += dt
+            reps += 1
+    finally:
+        gc.enable()
+    return best, reps, last
+
+
+def min_reps_for(n):
+    return 20 if n <= 1e3 else 5 if n <= 1e5 else 3
+
+
+# ---- assur side ----------------------------------------------------------------------
+def lever_mechanism(assur, p):
+    """Group I (2,3) of seed 003 alone: frame 01, 03, cylinder 01–23, lever 03–23."""
+    keys = ("X01", "Y01", "X03", "Y03", "L3")
+    return (assur.Mechanism("lever_003", coordinates=("S",), params={k: p[k] for k in keys},
+                            title="Seed 003 group I (2,3)")
+            .frame("01", "X01", "Y01").frame("03", "X03", "Y03")
+            .cylinder_lever("I (2,3)", base="01", pivot="03", out="23", lever="L3", s="S",
+                            branch=-1, links=("2", "3"))
+            .link("3", "03", "23"))
+
+
+def solve_lever(mech, S):
+    r = mech.solve(S, outputs=["3"])
+    return r.phi("3"), r.dphi("3"), r.ddphi("3")
+
+
+# ---- agreement -----------------------------------------------------------------------
+def wrap(a):
+    """Angle difference mapped to (−π, π] (assur unwraps along the positions)."""
+    return (a + math.pi) % (2.0 * math.pi) - math.pi
+
+
+class Check:
+    """Collects max |Δ| per quantity and whether it is within tolerance."""
+
+    def __init__(self):
+        self.rows = []  # (label, max|Δ|, tolerance, ok)
+
+    def add(self, label, a, b, angle=False):
+        a = np.asarray(a, dtype=float)
+        b = np.asarray(b, dtype=float)
+        d = np.abs(wrap(a - b) if angle else a - b)
+        dmax = float(np.max(d)) if d.size else 0.0
+        tol = TOL
+        ok = bool(np.all(np.isfinite(a))) and bool(np.all(np.isfinite(b))) and dmax < tol
+        self.rows.append((label, dmax, tol, ok))
+
+    def group(self, label, pairs, angle=False):
+        """Several quantities reported as one line (the worst of them)."""
+        c = Check()
+        for name, a, b in pairs:
+            c.add(name, a, b, angle)
+        name, dmax, tol, _ = max(c.rows, key=lambda r: (not r[3], r[1] / r[2]))
+        self.rows.append((f"{label}, worst {name}", dmax, tol, c.ok))
+
+    @property
+    def ok(self):
+        return all(r[3] for r in self.rows)
+
+
+def check_lever(res, ref):
+    c = Check()
+    c.add("φ3 [rad]", res[0], ref[0], angle=True)
+    c.add("φ3' [rad/m]", res[1], ref[1])
+    c.add("φ3'' [rad/m²]", res[2], ref[2])
+    return c
+
+
+def check_hitch(r, g):
+    c = Check()
+    c.group("angles φ2 φ3 φ34 φ4 φ5 φ6 φ7 [rad]",
+            [(f"φ{k}", r.phi(k), g[f"phi{'12' if k == '2' else k}"])
+             for k in ("2", "3", "34", "4", "5", "6", "7")], angle=True)
+    c.group("points X, Y of 23 34 45 56 67 S6 [m]",
+            [(f"{ax}{p}", getattr(r, ax.lower())(p), g[f"{ax}{p}"])
+             for p in ("23", "34", "45", "56", "67", "S6") for ax in ("X", "Y")])
+    c.group("U43 U53 U65 U75 [-]",
+            [(f"U{i}{j}", r.ratio(i, j), g[f"U{i}{j}"])
+             for i, j in (("4", "3"), ("5", "3"), ("6", "5"), ("7", "5"))])
+    c.group("dφ3, φ41 φ51 φ61 φ71 [rad/m]",
+            [(f"dφ{k}", r.dphi(k), g[f"dphi{k}"]) for k in ("3", "4", "5", "6", "7")])
+    c.add("I56 [m/m]", r.transmission("56"), g["I56"])
+    c.add("IS6 [m/m]", r.transmission("S6"), g["IS6"])
+    return c
+
+
+def fd_check_ddphi3():
+    """φ3'' (seed 001 lab 5 form) against a central difference of φ3' (seed 003)."""
+    h = 1e-6
+    S = np.linspace(S_MIN + h, S_MAX - h, 1001)
+    _, d, dd = peer.lever_phi3(S)
+    fd = (peer.lever_phi3(S + h)[1] - peer.lever_phi3(S - h)[1]) / (2 * h)
+    fd1 = (peer.lever_phi3(S + h)[0] - peer.lever_phi3(S - h)[0]) / (2 * h)
+    return (float(np.max(np.abs(fd - dd) / np.max(np.abs(dd)))),
+            float(np.max(np.abs(fd1 - d) / np.max(np.abs(d)))))
+
+
+# ---- start-up --------------------------------------------------------------------------
+def cache_dirs(pkg_dir):
+    """Directories where numba may keep assur's compiled kernels."""
+    dirs = [pkg_dir]
+    try:  # generated kernels live outside the package (optional helper of the kernel)
+        from assur import _kernel
+        if hasattr(_kernel, "cache_dir"):
+            dirs.append(str(_kernel.cache_dir()))
+    except Exception:  # noqa: BLE001 - informative only
+        pass
+    if os.environ.get("NUMBA_CACHE_DIR"):
+        dirs.append(os.environ["NUMBA_CACHE_DIR"])
+    return dirs
+
+
+def cache_snapshot(dirs):
+    """Numba cache files (index and data) with their modification times."""
+    snap = {}
+    for d in dirs:
+        for f in glob.glob(os.path.join(d, "**", "*.nb[ic]"), recursive=True):
+            try:
+                snap[f] = os.path.getmtime(f)
+            except OSError:
+                pass
+    return snap
+
+
+def cold(f, dirs):
+    """Time one cold call; say whether numba compiled (wrote cache files) or loaded."""
+    before = cache_snapshot(dirs)
+    t0 = time.perf_counter()
+    f()
+    dt = time.perf_counter() - t0
+    after = cache_snapshot(dirs)
+    k = sum(1 for p, t in after.items() if before.get(p) != t)
+    return dt, (f"numba compiled: {k} cache files written" if k else
+                "numba loaded its on-disk cache (or had it in memory)")
+
+
+# ---- printing -------------------------------------------------------------------------
+def fmt_n(n):
+    e = int(round(math.log10(n)))
+    return f"1e{e}" if 10 ** e == n else f"{n:g}"
+
+
+def rate(n, t):
+    return n / t if t > 0 else math.inf
+
+
+HEAD = (f"  {'N':>5}  {'variant':<33} {'reps':>4}  {'assur ms':>9} {'assur pos/s':>11}  "
+        f"{'numpy ms':>9} {'numpy pos/s':>11}  {'assur/numpy':>11}  {'target':>7}  {'met':>3}")
+
+
+def line(n, variant, reps, ta, tn, target):
+    ra, rn = rate(n, ta), rate(n, tn)
+    return (f"  {fmt_n(n):>5}  {variant:<33} {reps:>4}  {ta * 1e3:>9.3f} {ra:>11.3e}  "
+            f"{tn * 1e3:>9.3f} {rn:>11.3e}  {ra / rn:>10.2f}x  {target:>7.0e}  "
+            f"{'yes' if ra >= target else 'no':>3}")
+
+
+def print_checks(title, checks):
+    print(f"  agreement assur vs numpy peer ({title}); pass if max|Δ| < {TOL:g} (absolute)")
+    for n, c in checks:
+        for label, dmax, tol, ok in c.rows:
+            print(f"    N={fmt_n(n):>4}  {label:<52} max|Δ| = {dmax:9.2e}  "
+                  f"{'ok' if ok else 'MISMATCH'}")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--sizes", default="1e3,1e5,1e6",
+                    help="comma-separated numbers of positions (default 1e3,1e5,1e6)")
+    ap.add_argument("--budget", type=float, default=1.0,
+                    help="seconds to spend per callable and size before stopping repeats")
+    args = ap.parse_args(argv)
+    sizes = [int(float(s)) for s in args.sizes.split(",")]
+
+    # ---- start-up: import and first (cold) calls ------------------------------------
+    spec = importlib.util.find_spec("assur")
+    pkg_dir = os.path.dirname(spec.origin)
+    t0 = time.perf_counter()
+    import numba
+
+    import assur
+    from assur import examples
+    t_import = time.perf_counter() - t0
+
+    lever = lever_mechanism(assur, peer.PARAMS)
+    hitch = examples.hitch_003()
+    hp = dict(hitch.params)
+    same = all(abs(hp[k] - v) <= 1e-12 for k, v in peer.PARAMS.items()) and \
+        set(hp) == set(peer.PARAMS)
+    S0 = np.linspace(S_MIN, S_MAX, 1000)
+    dirs = cache_dirs(pkg_dir)
+    t_cold_a, how_a = cold(lambda: solve_lever(lever, S0), dirs)
+    t_cold_b, how_b = cold(lambda: hitch.solve(S0), dirs)
+    t0 = time.perf_counter()
+    peer.hitch(S0)
+    t_cold_np = time.perf_counter() - t0
+
+    print("assur benchmark — positions per second, assur vs a plain-numpy port of seed 003")
+    print(f"  python {platform.python_version()}, numpy {np.__version__}, numba "
+          f"{numba.__version__}, assur {getattr(assur, '__version__', '?')}")
+    try:
+        layer = numba.threading_layer()
+    except ValueError:
+        layer = "?"
+    try:
+        affinity = len(os.sched_getaffinity(0))
+    except AttributeError:  # pragma: no cover - not on Linux
+        affinity = os.cpu_count()
+    print(f"  machine: {platform.machine()}, os.cpu_count() = {os.cpu_count()}, usable CPUs = "
+          f"{affinity}; numba threads = {numba.get_num_threads()} (NUMBA_NUM_THREADS = "
+          f"{numba.config.NUMBA_NUM_THREADS}, threading layer {layer})")
+    print(f"  S evenly spaced over [{S_MIN}, {S_MAX}] m; best of the repetitions after a "
+          f"warm-up call; assur and numpy timed interleaved in this process")
+    print(f"  parameters of examples.hitch_003() == seed003_numpy.PARAMS: "
+          f"{'yes' if same else 'NO'}")
+    print()
+    print("start-up (cold first calls in this process, not part of the figures below)")
+    print(f"  import assur (+ numba)                             {t_import:8.3f} s")
+    print(f"  first solve, group (a), N=1e3                      {t_cold_a:8.3f} s   ({how_a})")
+    print(f"  first solve, hitch_003 (b), N=1e3                  {t_cold_b:8.3f} s   ({how_b})")
+    print(f"  first call, numpy peer (b), N=1e3                  {t_cold_np:8.3f} s")
+    print()
+
+    ok_all = True
+
+    # ---- (a) the cylinder–lever group alone -----------------------------------------
+    print("(a) cylinder–lever group I (2,3) alone: φ3, φ3', φ3''")
+    print("    assur: Mechanism(frame 01, 03; cylinder_lever branch=-1; link 3)"
+          ".solve(S, outputs=['3'])")
+    print("    numpy: φ3 = acos((L3²+L13²−S²)/(2·L3·L13)) − φ13, φ3' = dφ3(S) (seed 003 §3.1),")
+    print("           φ3'' = 2·[S⁴ − (L3² − L13²)²]/(4·L13²·L3² − [S² − (L13² + L3²)]²)^(3/2)")
+    fd2, fd1 = fd_check_ddphi3()
+    ok_fd = fd2 < 1e-6 and fd1 < 1e-6
+    ok_all &= ok_fd
+    print(f"    check of the closed forms: φ3' vs central difference of φ3: max rel. err "
+          f"{fd1:.1e}; φ3'' vs central difference of φ3': {fd2:.1e} "
+          f"({'ok' if ok_fd else 'WRONG FORMULA'})")
+    print(HEAD)
+    checks = []
+    for n in sizes:
+        S = np.linspace(S_MIN, S_MAX, n)
+        funcs = {"assur": lambda: solve_lever(lever, S), "numpy": lambda: peer.lever_phi3(S)}
+        for f in funcs.values():  # warm-up at this size
+            f()
+        best, reps, last = time_interleaved(funcs, min_reps_for(n), args.budget)
+        print(line(n, "solve(S, outputs=['3'])", reps, best["assur"], best["numpy"], TARGET_A))
+        checks.append((n, check_lever(last["assur"], last["numpy"])))
+        del last
+    print_checks("φ3, φ3', φ3''", checks)
+    ok_all &= all(c.ok for _, c in checks)
+    print()
+
+    # ---- (b) the whole hitch ---------------------------------------------------------
+    print("(b) whole seed-003 hitch: examples.hitch_003().solve(S) vs the seed's §2–§3 in numpy")
+    print("    assur: 10 points, 7 links, positions + first + second analogs (all outputs)")
+    print("    numpy: all angles and points, U43 U53 U65 U75, dφ3, φ41…φ71, I56, IS6 — first "
+          "order only:")
+    print("           the seed has no second-order analogs, so assur does more work per position")
+    print(HEAD)
+    checks = []
+    for n in sizes:
+        S = np.linspace(S_MIN, S_MAX, n)
+        funcs = {"cc": lambda: hitch.solve(S),
+                 "nocc": lambda: hitch.solve(S, check_continuity=False),
+                 "numpy": lambda: peer.hitch(S)}
+        for f in funcs.values():
+            f()
+        best, reps, last = time_interleaved(funcs, min_reps_for(n), args.budget)
+        print(line(n, "solve(S)", reps, best["cc"], best["numpy"], TARGET_B))
+        print(line(n, "solve(S, check_continuity=False)", reps, best["nocc"], best["numpy"],
+                   TARGET_B))
+        checks.append((n, check_hitch(last["cc"], last["numpy"])))
+        del last
+    print_checks("hitch_003", checks)
+    ok_all &= all(c.ok for _, c in checks)
+    print()
+    print("targets (issue): (a) ≥ 1e8 positions/s, (b) ≥ 2e7 positions/s on this 2-core "
+          "machine; 'met' compares the assur column only.")
+    print("These are throughputs and ratios to a numpy peer in the same process, for reading; "
+          "no test asserts on time.")
+    if not ok_all:
+        print("AGREEMENT CHECK FAILED: the figures above do not compare like with like.")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
