@@ -215,7 +215,7 @@ def cold(f, dirs):
     after = cache_snapshot(dirs)
     k = sum(1 for p, t in after.items() if before.get(p) != t)
     return dt, (f"numba compiled: {k} cache files written" if k else
-                "numba loaded its on-disk cache (or had it in memory)")
+                "nothing compiled: numba cache loaded")
 
 
 # ---- printing -------------------------------------------------------------------------
