@@ -750,15 +750,19 @@ def _execute(prog, ptab, qarr, n, check=False):
     out_sca = [scal[s] for s in prog["out_sca"]]
     kern = K.get_kernel(prog["ops"], k, out_pts, out_sca)
     npo, nso = len(out_pts), len(out_sca)
-    pv = np.zeros((npo, 2, E))
-    pd = np.zeros((npo, 2, k, E))
-    pdd = np.zeros((npo, 2, k, k, E))
-    sv = np.zeros((nso, E))
-    sd = np.zeros((nso, k, E))
-    sdd = np.zeros((nso, k, k, E))
+    # one block, rows: point values, first, second analogs, then scalars likewise
+    sizes = [npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k]
+    out = np.empty((sum(sizes), E))
+    parts = np.split(out, np.cumsum(sizes)[:-1])
+    pv = parts[0].reshape(npo, 2, E)
+    pd = parts[1].reshape(npo, 2, k, E)
+    pdd = parts[2].reshape(npo, 2, k, k, E)
+    sv = parts[3].reshape(nso, E)
+    sd = parts[4].reshape(nso, k, E)
+    sdd = parts[5].reshape(nso, k, k, E)
     status = np.empty(E, dtype=np.int64)
     amount = np.empty(E)
-    kern(ptab, _trig_table(prog, ptab), qarr, n, check, pv, pd, pdd, sv, sd, sdd, status, amount)
+    kern(ptab, _trig_table(prog, ptab), qarr, n, check, out, status, amount)
     angles = np.array([i for i, s in enumerate(prog["out_sca"]) if prog["kinds"][s] == "angle"],
                       dtype=np.int64)
     if check and len(angles) and n > 1:
