@@ -235,7 +235,7 @@ class Builder:
             self.coordinate(length_coord, ell, 0.2 * ell, ell)
         self.add("rigid_point", name, origin=origin, toward=toward, out=out,
                  length=length_coord or self.par("l" + out, ell), angle=self.par("b" + out, beta),
-                 links=(name,))
+                 )
 
     def rigid_triangle(self, name, origin, toward, out, tau):
         """Rigid point by the three sides of its triangle, turn side ``tau``; the angle
@@ -247,7 +247,7 @@ class Builder:
         self.pos[out] = self.pos[origin] + ell[:, None] * self._unit(origin, toward, tau * gam)
         self.add("rigid_point", name, origin=origin, toward=toward, out=out,
                  length=self.par("l" + out, ell), base=self.par("base" + out, base),
-                 opposite=self.par("opp" + out, opp), branch=tau, links=(name,))
+                 opposite=self.par("opp" + out, opp), branch=tau)
 
     def slider_dyad(self, name, a, out, line_point, sigma, beta, line_link=None,
                     radius_coord=None):
@@ -273,7 +273,7 @@ class Builder:
         self.pos[out] = self.pos[origin] + off
         self.add("pose_point", name, origin=origin, toward=toward, out=out,
                  dx=self.par("dx" + out, off[:, 0]), dy=self.par("dy" + out, off[:, 1]),
-                 at=self.par("pose", self.q0[coord]), links=(name,))
+                 at=self.par("pose", self.q0[coord]))
 
     def input(self, kind, coord, sigma=-1):
         """A crank (frame A0, end A) or a cylinder–lever (frames 01, 03, lever end 23)
@@ -837,23 +837,18 @@ def test_rigid_length_and_slider_radius_as_coordinates(data):
     check(b.build())
 
 
-# BUG (assur._kernel, OP_CRANK): this test FAILS until the kernel carries the radius'
-# derivative of a crank whose radius is a coordinate — see the docstring.
 @SETTINGS
 @given(st.data())
 def test_crank_radius_as_coordinate(data):
     """A crank whose ``radius`` is the second coordinate R (polar drive), k = 2,
-    followed by an RRR dyad.
+    followed by an RRR dyad: dA/dR = (cos θ, sin θ), d²A/dθdR = (−sin θ, cos θ).
 
-    KNOWN BUG (fails until the kernel is fixed): the builder and evaluate_positions
-    accept ``radius`` = a coordinate, but the generated kernel ignores dR/dq for
-    OP_CRANK — it returns dA/dR = 0 instead of (cos θ, sin θ) and d²A/dθdR = 0
-    instead of (−sin θ, cos θ). Minimal reproducer::
+    Regression: the first generated kernel dropped dR/dq for the crank (found by this
+    test); minimal case::
 
         m = (Mechanism("polar", coordinates=("th", "R")).frame("O", 0.0, 0.0)
              .crank("c", pivot="O", out="A", radius="R", angle="th"))
-        r = m.solve(np.array([[0.4, 0.8]]))
-        r.dx("A")  # [[-0.3115, 0.0]], expected [[-0.3115, cos 0.4 = 0.9211]]
+        m.solve(np.array([[0.4, 0.8]])).dx("A")  # [[-0.3115, cos 0.4 = 0.9211]]
     """
     b = Builder(data, "polar crank", ("th", "R"))
     b.frame_random("A0")

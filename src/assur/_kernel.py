@@ -70,7 +70,7 @@ DEAD_POINT_TOL = 1e-7
 #: elements per parallel work item
 CHUNK = 256
 
-_VERSION = "7"  # bump when the generator changes what it emits
+_VERSION = "8"  # bump when the generator changes what it emits
 
 
 class _Emitter:
@@ -113,7 +113,12 @@ def _fail(E, i, code, amount, cond):
 
 
 def _emit_unit(E, i, p, q, cb, sb):
-    """u = R(beta)(Q-P)/|Q-P| with jets, into u{i}x, u{i}y (+ _a, _ab). Returns r name."""
+    """u = R(beta)(Q-P)/|Q-P| with jets, into u{i}x, u{i}y (+ _a, _ab).
+
+    P and Q are points of one rigid link (the mechanism validates this), so |Q-P|
+    is constant and u is a linear map of Q - P: u' = R(beta)(Q'-P')/|Q-P|, and
+    likewise u''.
+    """
     K = E.K
     px, py = _pt(p)
     qx, qy = _pt(q)
@@ -123,28 +128,20 @@ def _emit_unit(E, i, p, q, cb, sb):
     E(f"{t}r = math.sqrt({t}dx * {t}dx + {t}dy * {t}dy)")
     _fail(E, i, FAIL_COINCIDENT, "0.0", f"{t}r == 0.0")
     E(f"{t}ir = 1.0 / {t}r if {t}r > 0.0 else 0.0")
-    E(f"u{i}x = ({cb} * {t}dx - {sb} * {t}dy) * {t}ir")
-    E(f"u{i}y = ({sb} * {t}dx + {cb} * {t}dy) * {t}ir")
+    E(f"{t}cb = {cb} * {t}ir")
+    E(f"{t}sb = {sb} * {t}ir")
+    E(f"u{i}x = {t}cb * {t}dx - {t}sb * {t}dy")
+    E(f"u{i}y = {t}sb * {t}dx + {t}cb * {t}dy")
     for a in range(K):
         E(f"{t}dx_{a} = {_d(qx, a)} - {_d(px, a)}")
         E(f"{t}dy_{a} = {_d(qy, a)} - {_d(py, a)}")
-        E(f"{t}vx_{a} = {cb} * {t}dx_{a} - {sb} * {t}dy_{a}")
-        E(f"{t}vy_{a} = {sb} * {t}dx_{a} + {cb} * {t}dy_{a}")
-        E(f"{t}p_{a} = u{i}x * {t}vx_{a} + u{i}y * {t}vy_{a}")
-        E(f"u{i}x_{a} = ({t}vx_{a} - u{i}x * {t}p_{a}) * {t}ir")
-        E(f"u{i}y_{a} = ({t}vy_{a} - u{i}y * {t}p_{a}) * {t}ir")
+        E(f"u{i}x_{a} = {t}cb * {t}dx_{a} - {t}sb * {t}dy_{a}")
+        E(f"u{i}y_{a} = {t}sb * {t}dx_{a} + {t}cb * {t}dy_{a}")
     for a, b in E.pairs:
         E(f"{t}d2x = {_dd(qx, a, b)} - {_dd(px, a, b)}")
         E(f"{t}d2y = {_dd(qy, a, b)} - {_dd(py, a, b)}")
-        E(f"{t}v2x = {cb} * {t}d2x - {sb} * {t}d2y")
-        E(f"{t}v2y = {sb} * {t}d2x + {cb} * {t}d2y")
-        # d(p_a)/db = u'_b . v'_a + u . v''_ab
-        E(f"{t}dp = u{i}x_{b} * {t}vx_{a} + u{i}y_{b} * {t}vy_{a} + u{i}x * {t}v2x"
-          f" + u{i}y * {t}v2y")
-        # u''_ab = (v''_ab - u'_b p_a - u dp_a/db)/r - (v'_a - u p_a) p_b / r^2
-        for c in "xy":
-            E(f"{_dd(f'u{i}{c}', a, b)} = ({t}v2{c} - u{i}{c}_{b} * {t}p_{a} - u{i}{c} * {t}dp)"
-              f" * {t}ir - ({t}v{c}_{a} - u{i}{c} * {t}p_{a}) * {t}p_{b} * {t}ir * {t}ir")
+        E(f"{_dd(f'u{i}x', a, b)} = {t}cb * {t}d2x - {t}sb * {t}d2y")
+        E(f"{_dd(f'u{i}y', a, b)} = {t}sb * {t}d2x + {t}cb * {t}d2y")
 
 
 def _emit_zero_jets(E, v):
@@ -243,7 +240,7 @@ def generate(ops, K, out_pts, out_sca):
             A, refr, j, ph = r[2], r[3], r[4], r[5]
             ax, ay = _pt(A)
             x, y = _pt(o)
-            rr, _ = _lref(refr, K)
+            rr, dr = _lref(refr, K)
             t = f"t{i}"
             E(f"{t}r = {rr}")
             E(f"{t}th = q[{j}, e] + params[{ph}, d]")
@@ -251,20 +248,29 @@ def generate(ops, K, out_pts, out_sca):
             E(f"{t}s = math.sin({t}th)")
             E(f"{x} = {ax} + {t}r * {t}c")
             E(f"{y} = {ay} + {t}r * {t}s")
+            # A = pivot + r(q)·(cos θ, sin θ): θ' = δ_aj; r may itself be a coordinate
             for a in range(K):
+                ex, ey = "", ""
                 if a == j:
-                    E(f"{_d(x, a)} = {_d(ax, a)} - {t}r * {t}s")
-                    E(f"{_d(y, a)} = {_d(ay, a)} + {t}r * {t}c")
-                else:
-                    E(f"{_d(x, a)} = {_d(ax, a)}")
-                    E(f"{_d(y, a)} = {_d(ay, a)}")
+                    ex += f" - {t}r * {t}s"
+                    ey += f" + {t}r * {t}c"
+                if dr[a] != "0.0":
+                    ex += f" + {t}c"
+                    ey += f" + {t}s"
+                E(f"{_d(x, a)} = {_d(ax, a)}{ex}")
+                E(f"{_d(y, a)} = {_d(ay, a)}{ey}")
             for a, b in E.pairs:
+                ex, ey = "", ""
                 if a == j and b == j:
-                    E(f"{_dd(x, a, b)} = {_dd(ax, a, b)} - {t}r * {t}c")
-                    E(f"{_dd(y, a, b)} = {_dd(ay, a, b)} - {t}r * {t}s")
-                else:
-                    E(f"{_dd(x, a, b)} = {_dd(ax, a, b)}")
-                    E(f"{_dd(y, a, b)} = {_dd(ay, a, b)}")
+                    ex += f" - {t}r * {t}c"
+                    ey += f" - {t}r * {t}s"
+                for u_, v_ in ((a, b), (b, a)):
+                    # r'_u · θ'_v · (−sin, cos), both orders of the mixed derivative
+                    if dr[u_] != "0.0" and v_ == j:
+                        ex += f" - {t}s"
+                        ey += f" + {t}c"
+                E(f"{_dd(x, a, b)} = {_dd(ax, a, b)}{ex}")
+                E(f"{_dd(y, a, b)} = {_dd(ay, a, b)}{ey}")
         elif op == OP_SLIDE:
             A, j, s0, trow = r[2], r[3], r[4], r[5]
             ax, ay = _pt(A)
@@ -379,7 +385,11 @@ def generate(ops, K, out_pts, out_sca):
                 E(f"{t}dx_{a} = {_d(qx, a)} - {_d(px, a)}")
                 E(f"{t}dy_{a} = {_d(qy, a)} - {_d(py, a)}")
             if op == OP_ANGLE:
-                E(f"{s} = math.atan2({t}dy, {t}dx)")
+                # the angle itself is atan2(dy, dx), taken after the kernel by numpy's
+                # vectorized arctan2 (an order of magnitude faster than a scalar libm
+                # call): the kernel outputs dy as the value and dx in an extra row
+                E(f"{s} = {t}dy")
+                E(f"{s}_dx = {t}dx")
                 for a in range(K):
                     E(f"{t}c_{a} = {t}dx * {t}dy_{a} - {t}dy * {t}dx_{a}")
                     E(f"{_d(s, a)} = {t}c_{a} * {t}ir2")
@@ -438,6 +448,9 @@ def generate(ops, K, out_pts, out_sca):
     quantities += [f"s{s_}" for s_ in out_sca]
     quantities += [_d(f"s{s_}", a) for s_ in out_sca for a in range(K)]
     quantities += [_dd(f"s{s_}", a, b) for s_ in out_sca for a in range(K) for b in range(K)]
+    # the dx of every output angle (see OP_ANGLE), in the order of out_sca
+    angle_slots = {int(r[1]) for r in ops if int(r[0]) == OP_ANGLE}
+    quantities += [f"s{s_}_dx" for s_ in out_sca if s_ in angle_slots]
     if quantities:
         w("            j = e - e0")
         w("            if st < 0:")

@@ -276,6 +276,10 @@ class RigidPoint(Group):
     with ``branch`` = ±1 the side of the turn (000: the bell-crank L3, L4, L34,
     DELFI = acos((L3² + L4² − L34²)/(2·L3·L4))). A triangle that cannot close
     fails with the violated inequality.
+
+    ``links = (name,)`` optionally names the existing link that carries the point
+    (checked); by default it is the one rigid link holding both ``origin`` and
+    ``toward``. A ``length`` that is a generalized coordinate makes a telescopic arm.
     """
 
     origin: str = ""

@@ -245,6 +245,7 @@ class Mechanism:
                 if p not in known:
                     raise ModelError(f"mechanism {self.name!r}: link/distance {obj.name!r} refers "
                                      f"to unknown point {p!r} (known: {sorted(known)})")
+        self._bodies = self._topology()
         lnames = [l.name for l in self.links] + [d.name for d in self.distances]
         dup = {n for n in lnames if lnames.count(n) > 1}
         if dup:
@@ -254,6 +255,93 @@ class Mechanism:
             if a.ndim > 1 or not np.all(np.isfinite(a)):
                 raise ModelError(f"mechanism {self.name!r}: parameter {n!r} must be a finite "
                                  f"number or a 1-D array over designs, got {v!r}")
+
+    @property
+    def bodies(self):
+        """Rigid bodies: ``{name: {"points": [...], "variable": bool}}``; the frame is "0".
+
+        Derived from the groups: a dyad's two links (a link whose length is a
+        generalized coordinate — a cylinder — is ``variable``), the lever and the
+        cylinder of the cylinder–lever group, a crank, a slider, and the points
+        that rigid points add to existing links. Links not named in a group get
+        the name ``"<group>:a"``/``":b"``.
+        """
+        return {k: {"points": list(v["points"]), "variable": v["variable"]}
+                for k, v in self._bodies.items()}
+
+    def _topology(self):
+        bodies: dict = {"0": {"points": [], "variable": False}}
+
+        def new(name, g, points, variable=False):
+            if name in bodies:
+                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r} names its link "
+                                 f"{name!r}, but an earlier group already has a link of that "
+                                 f"name (a group adds new links; name them uniquely)")
+            bodies[name] = {"points": list(points), "variable": variable}
+
+        def names(g, n):
+            given = tuple(getattr(g, "links", ()) or ())
+            if given and len(given) != n:
+                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r} has {n} link(s), "
+                                 f"got links={given!r}")
+            return given or tuple(f"{g.name}:{c}" for c in "ab"[:n])
+
+        def is_coord(ref):
+            return isinstance(ref, str) and ref in self.coordinates
+
+        def carrier(g, p, q, given):
+            """The one rigid body that holds both p and q."""
+            cands = [b for b, v in bodies.items() if p in v["points"] and q in v["points"]]
+            if given:
+                if given[0] not in bodies:
+                    raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: link "
+                                     f"{given[0]!r} is not defined by an earlier group")
+                if given[0] not in cands:
+                    raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: points {p!r} "
+                                     f"and {q!r} are not both on link {given[0]!r}")
+                cands = [given[0]]
+            if len(cands) != 1:
+                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: points {p!r} "
+                                 f"and {q!r} must lie on one rigid link, found "
+                                 f"{cands or 'none'}")
+            if bodies[cands[0]]["variable"]:
+                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: link "
+                                 f"{cands[0]!r} has a variable length (a cylinder) and cannot "
+                                 f"carry a rigid point or a slider line")
+            return cands[0]
+
+        for g in self.groups:
+            if isinstance(g, Frame):
+                bodies["0"]["points"].append(g.name)
+            elif isinstance(g, CylinderLever):
+                cyl, lev = names(g, 2)
+                new(cyl, g, (g.base, g.out), variable=True)
+                new(lev, g, (g.pivot, g.out), variable=is_coord(g.lever))
+            elif isinstance(g, Dyad):
+                la, lb = names(g, 2)
+                new(la, g, (g.a, g.out), variable=is_coord(g.ra))
+                new(lb, g, (g.b, g.out), variable=is_coord(g.rb))
+            elif isinstance(g, Crank):
+                (l,) = names(g, 1)
+                new(l, g, (g.pivot, g.out), variable=is_coord(g.radius))
+            elif isinstance(g, SliderInput):
+                (l,) = names(g, 1)
+                new(l, g, (g.out,))
+            elif isinstance(g, (RigidPoint, PosePoint)):
+                given = tuple(getattr(g, "links", ()) or ())
+                b = carrier(g, g.origin, g.toward, given)
+                if isinstance(g, RigidPoint) and is_coord(g.length):
+                    # a telescopic arm: the new point is on a link of its own
+                    new(f"{g.name}:arm", g, (g.origin, g.out), variable=True)
+                else:
+                    bodies[b]["points"].append(g.out)
+            elif isinstance(g, SliderDyad):
+                la, lb = names(g, 2)
+                if g.line_link:
+                    carrier(g, g.line_link[0], g.line_link[1], ())
+                new(la, g, (g.a, g.out), variable=is_coord(g.radius))
+                new(lb, g, (g.out,))
+        return bodies
 
     def _check_ref(self, g, role, ref):
         if ref is None:
@@ -751,7 +839,8 @@ def _execute(prog, ptab, qarr, n, check=False):
     kern = K.get_kernel(prog["ops"], k, out_pts, out_sca)
     npo, nso = len(out_pts), len(out_sca)
     # one block, rows: point values, first, second analogs, then scalars likewise
-    sizes = [npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k]
+    ang = [i for i, s in enumerate(prog["out_sca"]) if prog["kinds"][s] == "angle"]
+    sizes = [npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang)]
     out = np.empty((sum(sizes), E))
     parts = np.split(out, np.cumsum(sizes)[:-1])
     pv = parts[0].reshape(npo, 2, E)
@@ -763,8 +852,9 @@ def _execute(prog, ptab, qarr, n, check=False):
     status = np.empty(E, dtype=np.int64)
     amount = np.empty(E)
     kern(ptab, _trig_table(prog, ptab), qarr, n, check, out, status, amount)
-    angles = np.array([i for i, s in enumerate(prog["out_sca"]) if prog["kinds"][s] == "angle"],
-                      dtype=np.int64)
+    for row, i in enumerate(ang):  # angle = atan2(dy, dx); the kernel left dy in sv[i]
+        np.arctan2(sv[i], parts[6][row], out=sv[i])
+    angles = np.array(ang, dtype=np.int64)
     if check and len(angles) and n > 1:
         K.unwrap_rows(sv, angles, n)
     return dict(pv=pv, pd=pd, pdd=pdd, sv=sv, sd=sd, sdd=sdd, status=status, amount=amount)
