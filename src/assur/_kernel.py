@@ -70,7 +70,7 @@ DEAD_POINT_TOL = 1e-7
 #: elements per parallel work item
 CHUNK = 256
 
-_VERSION = "8"  # bump when the generator changes what it emits
+_VERSION = "9"  # bump when the generator changes what it emits
 
 
 class _Emitter:
@@ -493,10 +493,14 @@ def kernel(params, trig, q, npd, check, out, status, amount):
     E = q.shape[1]
     NQ = out.shape[0]
     nchunks = (E + {CHUNK} - 1) // {CHUNK}
-    for c in prange(nchunks):
+    # a few parallel work items, each with one staging buffer for its run of chunks
+    nwork = min(nchunks, 16)
+    per = (nchunks + nwork - 1) // nwork
+    for wi in prange(nwork):
+      buf = np.empty((max(NQ, 1), {CHUNK}))
+      for c in range(wi * per, min(nchunks, (wi + 1) * per)):
         e0 = c * {CHUNK}
         e1 = min(E, e0 + {CHUNK})
-        buf = np.empty((max(NQ, 1), {CHUNK}))
         es = e0 - 1 if (check and e0 > 0) else e0
         pd_ = -1
         pq = 0.0
