@@ -55,13 +55,21 @@ def hitch_003(**params) -> Mechanism:
         L3=0.200, L5=0.480, L6=0.595 - 0.08, L34=0.325, L56=1.035,
         phiBD=math.radians(22.0),
         X6=0.857, Y6=0.156,
+        P6=27500.0,  # implement weight [N]
+        Dgc=0.08, Pgc_max=17.5e6, eta=0.84, kgc=2,  # §1.5: k_gc is a count, not [м]
         **HITCH_003_FOUND,
     )
     p.update(params)
     m = (Mechanism("hitch_003", coordinates=("S",), params=p,
                    title="Mini-tractor mounted-implement hitch (seed 003)",
                    tables={"ratios": [("4", "3"), ("5", "3"), ("6", "5"), ("7", "5")],
-                           "transmissions": ["56", "S6"]},
+                           "transmissions": ["56", "S6"],
+                           # seed name: (i, j, sign of the printed components relative
+                           # to the force of i on j) — see assur.statics.SEED_003_SIGN_NOTE
+                           "reactions": {"R56": ("5", "6", 1), "R07": ("0", "7", 1),
+                                         "R23": ("2", "3", 1), "R05": ("0", "5", -1),
+                                         "R34": ("3", "4", -1), "R45": ("4", "5", -1),
+                                         "R03": ("0", "3", 1), "R01": ("0", "2", 1)}},
                    notes=("φBD is an angle (the seed writes [м])",
                           "seed check X23s, Y23s uses φ12 = φ13 − acos(…); the correct "
                           "cylinder angle is π − φ13 − acos(…) (the printed check is off by up "
@@ -82,7 +90,9 @@ def hitch_003(**params) -> Mechanism:
                      dy="Y6", at="Sp", links=("6",))
          .link("2", "01", "23").link("3", "03", "23").link("34", "03", "34")
          .link("4", "34", "45").link("5", "05", "45").link("6", "56", "67")
-         .link("7", "07", "67"))
+         .link("7", "07", "67")
+         .weight("S6", "P6", name="P6")
+         .cylinder("ГЦ", "S", bore="Dgc", count="kgc", eta_hyd="eta", p_relief="Pgc_max"))
     return m
 
 
@@ -108,6 +118,8 @@ def header_000(**params) -> Mechanism:
         X01=0.196, Y01=0.693, X03=0.049, Y03=1.327, X05=0.283, Y05=0.521,
         L3=0.17194, L4=0.657, L34=0.4804, L5=0.513, L6=0.938,
         XN=1.259, YN=0.482, X56_0=0.767, Y56_0=0.355, S_ref=0.650,
+        P=1500 * 9.81,  # header weight: the seed's P = 1500 is in kgf (its Fmax is p·SS·kg/9.81)
+        D=0.080, p=15e6, km=0.85, kg=0.96,
     )
     p.update(params)
     p["dXN"] = p["XN"] - p["X56_0"]
@@ -128,7 +140,9 @@ def header_000(**params) -> Mechanism:
          .pose_point("centre of mass S6", origin="56", toward="46", out="S6", dx="dXN",
                      dy="dYN", at="S_ref", links=("6",))
          .link("2", "01", "23").link("3", "03", "23").link("4", "03", "46")
-         .link("5", "05", "56").link("6", "56", "46"))
+         .link("5", "05", "56").link("6", "56", "46")
+         .weight("S6", "P", name="P")
+         .cylinder("ГЦ", "S", bore="D", count=2, eta_mech="km", eta_hyd="kg", p_relief="p"))
     return m
 
 

@@ -97,7 +97,8 @@ class Mechanism:
                  params: Mapping[str, object] | None = None, title: str | None = None,
                  groups: Iterable = (), links: Iterable[Link] = (),
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
-                 notes: Iterable[str] = ()):
+                 notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
+                 machine=None):
         self.name = name
         self.title = title or name
         self.coordinates = tuple(coordinates)
@@ -113,13 +114,20 @@ class Mechanism:
         self.tables = MappingProxyType(dict(tables or {}))
         #: notes on seed slips resolved in this model (shown in reports)
         self.notes = tuple(notes)
+        #: applied loads (:mod:`assur.loads`): weights, forces, moments, springs, masses
+        self.loads = tuple(loads)
+        #: hydraulic cylinders acting as generalized coordinates (:class:`assur.loads.Cylinder`)
+        self.cylinders = tuple(cylinders)
+        #: machine data for stability (:class:`assur.stability.Machine`) or None
+        self.machine = machine
         self._validate()
 
     # ---- building (each returns a new mechanism) -------------------------------
     def _with(self, **kw):
         d = dict(name=self.name, coordinates=self.coordinates, params=self.params,
                  title=self.title, groups=self.groups, links=self.links,
-                 distances=self.distances, tables=self.tables, notes=self.notes)
+                 distances=self.distances, tables=self.tables, notes=self.notes,
+                 loads=self.loads, cylinders=self.cylinders, machine=self.machine)
         d.update(kw)
         return Mechanism(**d)
 
@@ -177,6 +185,44 @@ class Mechanism:
     def distance(self, name, a, b) -> "Mechanism":
         """Name the distance |a–b| [m] (e.g. a dependent cylinder length)."""
         return self._with(distances=self.distances + (Distance(name, a, b),))
+
+    # ---- loads and actuators ---------------------------------------------------
+    def weight(self, point, P, link=None, name=None) -> "Mechanism":
+        """Add a weight ``P`` [N] acting downward at ``point`` (see :mod:`assur.loads`)."""
+        from .loads import Weight
+        return self._with(loads=self.loads + (Weight(point, P, link, name),))
+
+    def force(self, point, fx=0.0, fy=0.0, link=None, name=None) -> "Mechanism":
+        """Add a force ``(fx, fy)`` [N] at ``point``."""
+        from .loads import PointForce
+        return self._with(loads=self.loads + (PointForce(point, fx, fy, link, name),))
+
+    def moment(self, link, M, name=None) -> "Mechanism":
+        """Add a moment ``M`` [N·m] (counter-clockwise positive) on ``link``."""
+        from .loads import Couple
+        return self._with(loads=self.loads + (Couple(link, M, name),))
+
+    def spring(self, name, a, b, rate, free_length, preload=0.0, links=None) -> "Mechanism":
+        """Add a spring between points ``a`` and ``b`` (rate [N/m], free length [m],
+        preload [N]); tension pulls the points together."""
+        from .loads import Spring
+        links = tuple(links) if links else None
+        return self._with(loads=self.loads + (Spring(name, a, b, rate, free_length, preload,
+                                                     links),))
+
+    def mass(self, link, m, point, J=0.0) -> "Mechanism":
+        """Give ``link`` a mass ``m`` [kg] at ``point`` and inertia ``J`` [kg·m²]."""
+        from .loads import Mass
+        return self._with(loads=self.loads + (Mass(link, m, point, J),))
+
+    def cylinder(self, name, coordinate, **kw) -> "Mechanism":
+        """Add hydraulic cylinder data for a coordinate (see :class:`assur.loads.Cylinder`)."""
+        from .loads import Cylinder
+        return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
+
+    def with_machine(self, machine) -> "Mechanism":
+        """Attach machine data for the stability analysis (:class:`assur.stability.Machine`)."""
+        return self._with(machine=machine)
 
     def with_params(self, **values) -> "Mechanism":
         """Return a copy with some parameters replaced (scalars or arrays over designs)."""
@@ -246,6 +292,7 @@ class Mechanism:
                     raise ModelError(f"mechanism {self.name!r}: link/distance {obj.name!r} refers "
                                      f"to unknown point {p!r} (known: {sorted(known)})")
         self._bodies = self._topology()
+        self._validate_loads(known)
         lnames = [l.name for l in self.links] + [d.name for d in self.distances]
         dup = {n for n in lnames if lnames.count(n) > 1}
         if dup:
@@ -255,6 +302,79 @@ class Mechanism:
             if a.ndim > 1 or not np.all(np.isfinite(a)):
                 raise ModelError(f"mechanism {self.name!r}: parameter {n!r} must be a finite "
                                  f"number or a 1-D array over designs, got {v!r}")
+
+    def _validate_loads(self, known):
+        from .loads import Couple, Cylinder, Mass, PointForce, Spring, Weight
+        where = f"mechanism {self.name!r}"
+
+        def ref_ok(what, ref):
+            if _is_number(ref):
+                if not math.isfinite(float(ref)):
+                    raise ModelError(f"{where}: {what} = {ref!r} is not finite")
+            elif not (isinstance(ref, str) and ref in self.params):
+                raise ModelError(f"{where}: {what} refers to {ref!r}, which is not a parameter "
+                                 f"{sorted(self.params)}")
+
+        def point_ok(what, p):
+            if p not in known:
+                raise ModelError(f"{where}: {what} is at unknown point {p!r} (known: "
+                                 f"{sorted(known)})")
+
+        def link_ok(what, l):
+            if l is not None and l not in self._bodies:
+                raise ModelError(f"{where}: {what} acts on unknown link {l!r} (links: "
+                                 f"{sorted(self._bodies)})")
+
+        for ld in self.loads:
+            if isinstance(ld, Weight):
+                point_ok("weight", ld.point)
+                ref_ok(f"weight at {ld.point}", ld.P)
+                link_ok("weight", ld.link)
+            elif isinstance(ld, PointForce):
+                point_ok("force", ld.point)
+                ref_ok(f"force at {ld.point}: fx", ld.fx)
+                ref_ok(f"force at {ld.point}: fy", ld.fy)
+                link_ok("force", ld.link)
+            elif isinstance(ld, Couple):
+                link_ok("moment", ld.link)
+                ref_ok(f"moment on {ld.link}", ld.M)
+            elif isinstance(ld, Spring):
+                point_ok(f"spring {ld.name!r}", ld.a)
+                point_ok(f"spring {ld.name!r}", ld.b)
+                for r in (ld.rate, ld.free_length, ld.preload):
+                    ref_ok(f"spring {ld.name!r}", r)
+                for l in ld.links or ():
+                    link_ok(f"spring {ld.name!r}", l)
+            elif isinstance(ld, Mass):
+                link_ok("mass", ld.link)
+                point_ok(f"mass of link {ld.link}", ld.point)
+                ref_ok(f"mass of link {ld.link}", ld.m)
+                ref_ok(f"inertia of link {ld.link}", ld.J)
+            else:
+                raise ModelError(f"{where}: unknown load {ld!r}")
+        seen = set()
+        for c in self.cylinders:
+            if not isinstance(c, Cylinder):
+                raise ModelError(f"{where}: cylinders must be assur.loads.Cylinder, got {c!r}")
+            if c.coordinate not in self.coordinates:
+                raise ModelError(f"{where}: cylinder {c.name!r} drives {c.coordinate!r}, which is "
+                                 f"not a generalized coordinate {list(self.coordinates)}")
+            if c.coordinate in seen:
+                raise ModelError(f"{where}: two cylinder entries drive {c.coordinate!r}")
+            seen.add(c.coordinate)
+            if c.side not in ("piston", "rod"):
+                raise ModelError(f"{where}: cylinder {c.name!r}: side must be one of: "
+                                 f"['piston', 'rod'], got {c.side!r}")
+            for f in ("bore", "rod", "count", "eta_mech", "eta_hyd", "p_relief", "dp_throttle",
+                      "dp_line"):
+                ref_ok(f"cylinder {c.name!r}: {f}", getattr(c, f))
+
+    def owner(self, point):
+        """The link that owns ``point``: loads at the point and later groups attached
+        there act on it. Frame points belong to "0"; a dyad's middle joint to its
+        second link; a rigid point to its link; a crank or slider end to the crank
+        or slider."""
+        return self._owner[point]
 
     @property
     def bodies(self):
@@ -271,6 +391,9 @@ class Mechanism:
 
     def _topology(self):
         bodies: dict = {"0": {"points": [], "variable": False}}
+        owner: dict = {}
+        self._owner = owner
+        self._group_links = {}
 
         def new(name, g, points, variable=False):
             if name in bodies:
@@ -313,34 +436,49 @@ class Mechanism:
         for g in self.groups:
             if isinstance(g, Frame):
                 bodies["0"]["points"].append(g.name)
+                owner[g.name] = "0"
             elif isinstance(g, CylinderLever):
                 cyl, lev = names(g, 2)
                 new(cyl, g, (g.base, g.out), variable=True)
                 new(lev, g, (g.pivot, g.out), variable=is_coord(g.lever))
+                owner[g.out] = lev
+                self._group_links[g.name] = (cyl, lev)
             elif isinstance(g, Dyad):
                 la, lb = names(g, 2)
                 new(la, g, (g.a, g.out), variable=is_coord(g.ra))
                 new(lb, g, (g.b, g.out), variable=is_coord(g.rb))
+                owner[g.out] = lb
+                self._group_links[g.name] = (la, lb)
             elif isinstance(g, Crank):
                 (l,) = names(g, 1)
                 new(l, g, (g.pivot, g.out), variable=is_coord(g.radius))
+                owner[g.out] = l
+                self._group_links[g.name] = (l,)
             elif isinstance(g, SliderInput):
                 (l,) = names(g, 1)
                 new(l, g, (g.out,))
+                owner[g.out] = l
+                self._group_links[g.name] = (l,)
             elif isinstance(g, (RigidPoint, PosePoint)):
                 given = tuple(getattr(g, "links", ()) or ())
                 b = carrier(g, g.origin, g.toward, given)
                 if isinstance(g, RigidPoint) and is_coord(g.length):
                     # a telescopic arm: the new point is on a link of its own
                     new(f"{g.name}:arm", g, (g.origin, g.out), variable=True)
+                    owner[g.out] = f"{g.name}:arm"
+                    self._group_links[g.name] = (f"{g.name}:arm",)
                 else:
                     bodies[b]["points"].append(g.out)
+                    owner[g.out] = b
+                    self._group_links[g.name] = (b,)
             elif isinstance(g, SliderDyad):
                 la, lb = names(g, 2)
-                if g.line_link:
-                    carrier(g, g.line_link[0], g.line_link[1], ())
+                guide = (carrier(g, g.line_link[0], g.line_link[1], ()) if g.line_link
+                         else owner[g.line_point])
                 new(la, g, (g.a, g.out), variable=is_coord(g.radius))
                 new(lb, g, (g.out,))
+                owner[g.out] = la
+                self._group_links[g.name] = (la, lb, guide)
         return bodies
 
     def _check_ref(self, g, role, ref):
@@ -481,6 +619,12 @@ class Mechanism:
                 raise mech._assembly_error(prog, ptab, qarr, status, res["amount"], n, kin)
             kin.failures = mech._describe_failures(prog, ptab, qarr, status, res["amount"], n)
         return kin
+
+    def analyze(self, q, params=None, *, qdot=None, qddot=None, **kw):
+        """Kinematics, actuator forces, joint reactions, cylinders and stability in one
+        call; returns :class:`assur.analysis.Analysis` (see :func:`assur.analysis.analyze`)."""
+        from .analysis import analyze
+        return analyze(self, q, params=params, qdot=qdot, qddot=qddot, **kw)
 
     # ---- compilation ---------------------------------------------------------------
     def _coordinates_array(self, q, m_params):

@@ -1,0 +1,57 @@
+"""One call for the whole worksheet: kinematics, forces, cylinders and stability.
+
+``Mechanism.analyze(q)`` returns an :class:`Analysis`: the seed worksheets' §2–§6
+as result objects (tables, reports and the page are views of it).
+"""
+
+from __future__ import annotations
+
+from . import statics as _statics
+from .hydraulics import CylinderResult
+
+
+class Analysis:
+    """Results of :meth:`assur.Mechanism.analyze`.
+
+    Attributes
+    ----------
+    kinematics : Kinematics
+    statics : Statics
+    cylinders : dict of str to CylinderResult
+        By cylinder name.
+    stability : StabilityResult or None
+        When the mechanism has machine data (:meth:`Mechanism.with_machine`).
+    """
+
+    def __init__(self, kinematics, statics, cylinders, stability):
+        self.kinematics = kinematics
+        self.statics = statics
+        self.cylinders = cylinders
+        self.stability = stability
+
+    @property
+    def mechanism(self):
+        return self.kinematics.mechanism
+
+    def cylinder(self, name=None):
+        """The result of one cylinder group (the only one when ``name`` is None)."""
+        if name is None:
+            if len(self.cylinders) != 1:
+                raise ValueError(f"name the cylinder: one of {list(self.cylinders)}")
+            return next(iter(self.cylinders.values()))
+        return self.cylinders[name]
+
+
+def analyze(mech, q, params=None, qdot=None, qddot=None, g=_statics.G_SEEDS, **solve_kw):
+    """Solve positions and analogs, forces, reactions, cylinders and stability.
+
+    Parameters are those of :meth:`Mechanism.solve` and :func:`assur.statics.solve`.
+    """
+    kin = mech.solve(q, params=params, **solve_kw)
+    st = _statics.solve(kin, qdot=qdot, qddot=qddot, g=g)
+    cyl = {c.name: CylinderResult(kin, st, c) for c in kin.mechanism.cylinders}
+    stab = None
+    machine = kin.mechanism.machine
+    if machine is not None:
+        stab = machine.evaluate(kin)
+    return Analysis(kin, st, cyl, stab)

@@ -1,0 +1,133 @@
+"""Loads and actuators of a mechanism: descriptions only (immutable dataclasses).
+
+Sign conventions
+----------------
+* Forces are vectors in the mechanism's x–y frame [N]; a *weight* ``P`` at a point
+  is the force ``(0, −P)``.
+* Moments are counter-clockwise positive [N·m].
+* A spring between points ``a`` and ``b`` pulls them together with its tension
+  ``T = preload + rate·(|ab| − free_length)`` [N] (a negative T pushes them apart)::
+
+      a o--> T      T <--o b
+
+* The actuator force of a cylinder (generalized coordinate = its pin-to-pin length
+  S) is positive when it pushes (extends); for a crank coordinate it is the driving
+  moment, counter-clockwise positive.
+
+Every value may be a number or the name of a model parameter (so it may vary over
+a batch of designs).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Union
+
+Ref = Union[str, float, int]
+
+
+@dataclass(frozen=True)
+class Weight:
+    """Weight ``P`` [N] acting downward at ``point``, carried by ``link`` (by default
+    the link that owns the point)."""
+
+    point: str
+    P: Ref
+    link: str | None = None
+    name: str | None = None
+
+
+@dataclass(frozen=True)
+class PointForce:
+    """Force ``(fx, fy)`` [N] at ``point``, carried by ``link`` (default: owner)."""
+
+    point: str
+    fx: Ref = 0.0
+    fy: Ref = 0.0
+    link: str | None = None
+    name: str | None = None
+
+
+@dataclass(frozen=True)
+class Couple:
+    """Moment ``M`` [N·m], counter-clockwise positive, acting on ``link``."""
+
+    link: str
+    M: Ref
+    name: str | None = None
+
+
+@dataclass(frozen=True)
+class Spring:
+    """Linear spring between points ``a`` and ``b`` (links ``links`` or the owners).
+
+    Tension ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate`` [N/m],
+    ``free_length`` [m], ``preload`` [N].
+    """
+
+    name: str
+    a: str
+    b: str
+    rate: Ref
+    free_length: Ref
+    preload: Ref = 0.0
+    links: tuple[str, str] | None = None
+
+
+@dataclass(frozen=True)
+class Mass:
+    """Mass ``m`` [kg] of a link with its centre of mass at ``point`` and moment of
+    inertia ``J`` [kg·m²] about it: its weight m·g, and for a motion in time its
+    inertia force −m·a and moment −J·ε (d'Alembert)."""
+
+    link: str
+    m: Ref
+    point: str
+    J: Ref = 0.0
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """Hydraulic cylinder(s) acting as the generalized coordinate ``coordinate``.
+
+    Parameters
+    ----------
+    name : str
+    coordinate : str
+        The generalized coordinate (the cylinders' pin-to-pin length) [m].
+    bore : float or str
+        Piston diameter D [m].
+    rod : float or str
+        Rod diameter d [m] (used when ``side="rod"``).
+    count : int or str
+        Number of identical cylinders acting in parallel, k [-] (seed 003 k_gc = 2).
+    eta_mech : float or str
+        Mechanical efficiency of the linkage η_m [-]: the rod must push F/η_m
+        (seed 000 km = 0.85).
+    eta_hyd : float or str
+        Hydraulic efficiency η_h [-]: pressure p = F/(k·A·η_h) (seed 003 η = 0.84,
+        seed 000 kg = 0.96).
+    p_relief : float or str
+        Relief-valve setting p_relief [Pa].
+    dp_throttle, dp_line : float or str
+        Pressure losses at the throttle and in the line [Pa]; the largest working
+        pressure is p_max = p_relief − (Δp_throttle + Δp_line) (001 lab 1 eq. 1).
+    side : {"piston", "rod"}
+        Which chamber is pressurised: piston area π·D²/4 or annulus π·(D² − d²)/4.
+    """
+
+    name: str
+    coordinate: str
+    bore: Ref
+    rod: Ref = 0.0
+    count: Ref = 1
+    eta_mech: Ref = 1.0
+    eta_hyd: Ref = 1.0
+    p_relief: Ref = 0.0
+    dp_throttle: Ref = 0.0
+    dp_line: Ref = 0.0
+    side: str = "piston"
+
+
+LOAD_TYPES = {"weight": Weight, "force": PointForce, "moment": Couple, "spring": Spring,
+              "mass": Mass}

@@ -1,0 +1,482 @@
+"""Machine stability: axle reactions, load shares and the 20 % steerability rule.
+
+A tractor or loader carrying an implement is a rigid body on two axles. All
+weights act vertically downward, the ground reactions of the axles vertically
+upward; the implement's centre of mass moves with the mechanism, so its
+horizontal coordinate is an array over positions (e.g. ``XS6(S)`` from the
+kinematics). The machine is *steerable* when the steered axle carries at least
+``min_share`` (20 % in the seeds) of the total weight (seed 003 §6; seed 001,
+lab 1, eqs. 15–18).
+
+Sign convention
+---------------
+``x`` is the horizontal coordinate of the mechanism's frame [m] (the seeds' X
+axis); axles, machine weights and counterweights sit at fixed ``x``. A weight
+``P`` [N] at ``x`` is the force ``(0, −P)``; an axle reaction ``R`` [N] at its
+``x`` is the force ``(0, +R)``. Seed 003, with the rear axle B at the origin of
+the hitch frame and the implement behind it::
+
+       P_гр          P_мсха                       P6
+        |              |                          |
+        v              v                          v
+   -----+------o-------+----------------o---------+-------> x
+     −(a+L)    ^ A    −b                ^ B       XS6(S)
+               | R_A  (x = −L)          | R_B  (x = 0)
+
+Moments about the other axle give the reaction of each axle,
+
+.. math::
+
+    R_s = \\frac{\\sum_i P_i\\,(x_i - x_o)}{x_s - x_o}, \\qquad
+    R_o = \\frac{\\sum_i P_i\\,(x_s - x_i)}{x_s - x_o},
+
+so ``R_s + R_o = ΣP`` (balance of vertical forces) and ``R_s·x_s + R_o·x_o =
+ΣP_i·x_i`` (balance of moments) hold to rounding.
+
+Maximum implement weight
+------------------------
+With the implement weight ``P`` as the unknown, the steered reaction is linear
+in it, ``R_s(P) = R_0 + c·P`` with ``c = ∂R_s/∂P = (x_imp − x_o)/(x_s − x_o)``
+[-] and ``R_0`` the steered reaction of the machine alone; the rule
+``R_s(P) ≥ m·(W_0 + P)`` (``m`` = ``min_share``, ``W_0`` the machine's weight)
+gives, for ``c < m``,
+
+.. math::
+
+    P \\le P_{max} = \\frac{R_0 - m\\,W_0}{m - c}.
+
+``max_implement_weight`` is the largest weight of the admissible set
+``{P ≥ 0 : R_s(P) ≥ m·(W_0 + P)}``:
+
+* ``c < m`` and ``R_0 ≥ m·W_0``: the finite ``P_max`` above;
+* ``c ≥ m`` (the implement sits over or beyond the steered axle's side enough to
+  load it by at least the share ``m`` of its own weight): no upper limit, the
+  value is ``np.inf`` — a real "no limit", not a failure. When also ``R_0 <
+  m·W_0`` the admissible set is ``[P_min, ∞)``: light implements fail while heavy
+  ones pass, see ``steerable`` for the actual weight;
+* ``c ≤ m`` and ``R_0 < m·W_0`` (the machine alone already violates the rule and
+  the implement cannot help): the admissible set is empty and the value is 0;
+  ``steerable`` is False there for every weight.
+
+The other axle is not checked: a reaction ``R_o < 0`` (the machine tips over
+the steered axle) is returned as computed.
+
+Seed 001, lab 1, eqs. (16) and (18) are this limit for one geometry (see
+``tests/test_stability.py``). Seed 003 §6 prints a dimensionally inconsistent
+limit; :func:`seed003_gs6max` reproduces it with flags, never the main result.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping, NamedTuple, Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+__all__ = ["Machine", "StabilityResult", "axle_reactions", "FlaggedValue", "seed003_gs6max"]
+
+
+def _finite(value, what: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{what} must be a finite number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{what} must be a finite number, got {value!r}")
+    return v
+
+
+def _weights(items, kind: str) -> tuple[tuple[str, float, float], ...]:
+    out = []
+    for k, item in enumerate(items):
+        if isinstance(item, (str, bytes)) or len(item) != 3:
+            raise ValueError(f"each of {kind} must be a tuple (name, weight [N], x [m]); "
+                             f"item {k} is {item!r}")
+        name, p, x = item
+        if not isinstance(name, str):
+            raise ValueError(f"the name of {kind} item {k} must be a string, got {name!r}")
+        p = _finite(p, f"weight of {kind} {name!r} [N]")
+        if p < 0:
+            raise ValueError(f"weights act downward and must be ≥ 0: {kind} {name!r} has "
+                             f"weight {p} N")
+        out.append((name, p, _finite(x, f"x of {kind} {name!r} [m]")))
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class Machine:
+    """A machine on two axles with fixed weights (machine parts and counterweights).
+
+    Parameters
+    ----------
+    axles : mapping of str to float
+        Exactly two axles, name → horizontal coordinate ``x`` of the wheel contact
+        (the axle's reaction line) [m]. Their order is kept for tables.
+    steered : str
+        Name of the steered axle; must be one of ``axles``.
+    weights : sequence of (str, float, float)
+        The machine itself: ``(name, weight P, x)``, weight [N] ≥ 0, x [m]. May be
+        several parts (frame, engine, tanks…).
+    counterweights : sequence of (str, float, float), optional
+        Ballast, same form as ``weights``. Kept apart so that the limit can be given
+        with and without it (seed 001 eq. 16 vs 18). Default: none.
+    min_share : float, optional
+        The steered axle must carry at least this share of the total weight [-];
+        ``0 ≤ min_share < 1``. Default 0.2 (the 20 % rule of seeds 001 and 003).
+
+    Raises
+    ------
+    ValueError
+        If there are not exactly two axles, they share one ``x``, ``steered`` is
+        not an axle name, a number is not finite, a weight is negative, a name is
+        repeated, ``min_share`` is outside [0, 1) or the machine weighs nothing.
+
+    Examples
+    --------
+    Seed 003 §6 (rear axle B at the hitch origin, front axle A steered):
+
+    >>> m = Machine({"A": -2.96, "B": 0.0}, steered="A",
+    ...             weights=[("tractor", 56000.0, -1.62)],
+    ...             counterweights=[("front ballast", 8000.0, -3.56)])
+    >>> m.other, m.weight
+    ('B', 64000.0)
+    """
+
+    axles: Mapping[str, float]
+    steered: str
+    weights: Sequence[tuple[str, float, float]] = ()
+    counterweights: Sequence[tuple[str, float, float]] = ()
+    min_share: float = 0.2
+
+    def __post_init__(self):
+        try:
+            items = list(dict(self.axles).items())
+        except (TypeError, ValueError):
+            raise ValueError(f"axles must be a mapping name → x [m], "
+                             f"got {self.axles!r}") from None
+        if len(items) != 2:
+            raise ValueError(f"a machine needs exactly two axles (name → x [m]); got "
+                             f"{len(items)}: {[n for n, _ in items]}")
+        axles = {}
+        for name, x in items:
+            if not isinstance(name, str):
+                raise ValueError(f"axle names must be strings, got {name!r}")
+            axles[name] = _finite(x, f"x of axle {name!r} [m]")
+        (na, xa), (nb, xb) = axles.items()
+        if xa == xb:
+            raise ValueError(f"the two axles must be at different x; {na!r} and {nb!r} are "
+                             f"both at x = {xa} m")
+        if self.steered not in axles:
+            raise ValueError(f"steered must be one of: {list(axles)}; got {self.steered!r}")
+        weights = _weights(self.weights, "weights")
+        counterweights = _weights(self.counterweights, "counterweights")
+        names = [w[0] for w in weights + counterweights]
+        repeated = sorted({n for n in names if names.count(n) > 1})
+        if repeated:
+            raise ValueError(f"weight names must be unique; repeated: {repeated}")
+        min_share = _finite(self.min_share, "min_share [-]")
+        if not 0.0 <= min_share < 1.0:
+            raise ValueError(f"min_share is a share of the total weight and must satisfy "
+                             f"0 ≤ min_share < 1; got {min_share}")
+        if not sum(w[1] for w in weights + counterweights) > 0:
+            raise ValueError("the machine must have a positive total weight "
+                             "(weights + counterweights > 0 N)")
+        object.__setattr__(self, "axles", axles)
+        object.__setattr__(self, "weights", weights)
+        object.__setattr__(self, "counterweights", counterweights)
+        object.__setattr__(self, "min_share", min_share)
+
+    @property
+    def other(self) -> str:
+        """Name of the axle that does not steer."""
+        return next(n for n in self.axles if n != self.steered)
+
+    @property
+    def weight(self) -> float:
+        """Total weight of the machine with its counterweights [N]."""
+        return sum(w[1] for w in self.weights + self.counterweights)
+
+    def _steered_reaction(self, items) -> float:
+        """Reaction of the steered axle under ``items`` alone [N] (moments about the
+        other axle)."""
+        xs, xo = self.axles[self.steered], self.axles[self.other]
+        return sum(p * (x - xo) for _, p, x in items) / (xs - xo)
+
+
+@dataclass(frozen=True)
+class StabilityResult:
+    """Axle reactions and steerability over positions (and designs).
+
+    Every array has the broadcast shape of ``implement_weight`` and ``implement_x``
+    passed to :func:`axle_reactions`.
+
+    Attributes
+    ----------
+    reactions : dict of str to ndarray
+        Upward reaction of each axle [N], in the machine's axle order.
+    shares : dict of str to ndarray
+        Each axle's share of the total weight, ``100·R/ΣP`` [%] (seed 003 ΔR_A, ΔR_B).
+    steered : str
+        Name of the steered axle.
+    min_share : float
+        The rule's minimum share of the steered axle [-].
+    total_weight : ndarray
+        Machine, counterweights and implement [N].
+    steered_share : ndarray
+        ``shares[steered]`` [%].
+    steerable : ndarray of bool
+        ``R_steered ≥ min_share·total_weight``.
+    max_implement_weight : ndarray
+        Largest implement weight at this ``x`` that keeps the rule, with the
+        counterweights [N]; ``np.inf`` when there is no upper limit, 0 when no
+        weight satisfies the rule (see the module notes).
+    max_implement_weight_without_counterweights : ndarray
+        The same limit with the counterweights removed [N].
+    """
+
+    reactions: dict[str, np.ndarray]
+    shares: dict[str, np.ndarray]
+    steered: str
+    min_share: float
+    total_weight: np.ndarray
+    steered_share: np.ndarray
+    steerable: np.ndarray
+    max_implement_weight: np.ndarray
+    max_implement_weight_without_counterweights: np.ndarray
+
+    def _pick(self, table: dict, name: str) -> np.ndarray:
+        if name not in table:
+            raise ValueError(f"axle must be one of: {list(table)}; got {name!r}")
+        return table[name]
+
+    def reaction(self, axle: str) -> np.ndarray:
+        """Reaction of ``axle`` [N]."""
+        return self._pick(self.reactions, axle)
+
+    def share(self, axle: str) -> np.ndarray:
+        """Share of the total weight on ``axle`` [%]."""
+        return self._pick(self.shares, axle)
+
+    def to_frame(self, index: ArrayLike | None = None, index_name: str = "S"):
+        """Seed-like table (seed 003, table 6.1) as a pandas DataFrame.
+
+        Parameters
+        ----------
+        index : array_like, shape (n,), optional
+            Row labels, e.g. the generalized coordinate S [m]. Default 0…n−1.
+        index_name : str, optional
+            Name of the index column. Default ``"S"``.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Columns ``R<axle>`` [N], ``dR<axle>`` [%] per axle, ``G_max`` and
+            ``G_max_no_cw`` [N], ``steerable``. Axle names are lower-cased as in the
+            seed (axles "A", "B" give ``Ra``, ``dRa``, ``Rb``, ``dRb``) unless two
+            names differ only in case, then they are kept as given.
+
+        Raises
+        ------
+        ValueError
+            If the result has more than one axis (select one design first) or
+            ``index`` has the wrong length.
+        """
+        import pandas as pd
+
+        shape = self.total_weight.shape
+        if len(shape) > 1:
+            raise ValueError(f"to_frame needs a result over one axis (positions); this one "
+                             f"has shape {shape}: compute it for one design at a time")
+        names = list(self.reactions)
+        lower = [n.lower() for n in names]
+        labels = lower if len(set(lower)) == len(lower) else names
+        cols = {}
+        for n, lab in zip(names, labels):
+            cols[f"R{lab}"] = np.atleast_1d(self.reactions[n])
+        for n, lab in zip(names, labels):
+            cols[f"dR{lab}"] = np.atleast_1d(self.shares[n])
+        cols["G_max"] = np.atleast_1d(self.max_implement_weight)
+        cols["G_max_no_cw"] = np.atleast_1d(self.max_implement_weight_without_counterweights)
+        cols["steerable"] = np.atleast_1d(self.steerable)
+        n = len(cols["G_max"])
+        if index is not None:
+            index = np.atleast_1d(np.asarray(index))
+            if index.shape != (n,):
+                raise ValueError(f"index must have shape ({n},), got {index.shape}")
+            index = pd.Index(index, name=index_name)
+        return pd.DataFrame(cols, index=index)
+
+
+def _limit(r0: float, w0: float, c: np.ndarray, m: float) -> np.ndarray:
+    """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty."""
+    excess = r0 - m * w0          # R_0 − m·W_0 [N]
+    den = m - c                   # m − ∂R_s/∂P [-]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        finite = max(excess, 0.0) / den
+    unbounded = (den < 0) | ((den == 0) & (excess >= 0))
+    return np.where(den > 0, finite, np.where(unbounded, np.inf, 0.0))
+
+
+def axle_reactions(machine: Machine, implement_weight: ArrayLike,
+                   implement_x: ArrayLike) -> StabilityResult:
+    """Axle reactions, load shares and the maximum implement weight (20 % rule).
+
+    Parameters
+    ----------
+    machine : Machine
+        Axles, steered axle, machine weights and counterweights.
+    implement_weight : array_like
+        Weight of the implement [N] ≥ 0: a scalar, or an array over designs that
+        broadcasts against ``implement_x`` (e.g. shape (n_designs, 1)).
+    implement_x : array_like
+        Horizontal coordinate of the implement's centre of mass [m], any shape,
+        e.g. ``XS6(S)`` of shape (n_positions,) or (n_designs, n_positions).
+
+    Returns
+    -------
+    StabilityResult
+        All arrays with the broadcast shape of the two inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is not finite or the implement weight is negative.
+
+    Notes
+    -----
+    Moments about the other axle give each reaction (module notes; seed 003 §6,
+    ``R_A·L = P_гр·(a + L) + P_мсха·b − P6·XS6``; seed 001 lab 1 eq. 15, 17). The
+    maximum implement weight solves ``R_s(P) = m·(W_0 + P)`` with the implement at
+    ``implement_x``; it does not depend on ``implement_weight`` and is ``np.inf``
+    when the implement loads the steered axle by at least ``m`` of its own weight
+    (``c ≥ m``), 0 when no weight keeps the rule.
+
+    Examples
+    --------
+    >>> m = Machine({"A": -2.96, "B": 0.0}, steered="A",
+    ...             weights=[("tractor", 56000.0, -1.62)],
+    ...             counterweights=[("front ballast", 8000.0, -3.56)])
+    >>> r = axle_reactions(m, 27500.0, [1.992, 1.753])
+    >>> r.reaction("A").round(0), r.share("A").round(1)
+    (array([21764., 23984.]), array([23.8, 26.2]))
+    >>> r.max_implement_weight.round(0)
+    array([31467., 34675.])
+    """
+    p = np.asarray(implement_weight, dtype=float)
+    x = np.asarray(implement_x, dtype=float)
+    if not np.all(np.isfinite(p)):
+        raise ValueError("implement_weight [N] must be finite")
+    if np.any(p < 0):
+        raise ValueError(f"implement_weight acts downward and must be ≥ 0 N; smallest is "
+                         f"{p.min()} N")
+    if not np.all(np.isfinite(x)):
+        raise ValueError("implement_x [m] must be finite")
+    shape = np.broadcast_shapes(p.shape, x.shape)
+    p, x = np.broadcast_to(p, shape), np.broadcast_to(x, shape)
+
+    s, o = machine.steered, machine.other
+    xs, xo = machine.axles[s], machine.axles[o]
+    span = xs - xo
+    fixed = machine.weights + machine.counterweights
+    # moments about the other axle give R_s, about the steered axle R_o (module notes)
+    r_s = (sum(pi * (xi - xo) for _, pi, xi in fixed) + p * (x - xo)) / span
+    r_o = (sum(pi * (xs - xi) for _, pi, xi in fixed) + p * (xs - x)) / span
+    total = machine.weight + p
+    reactions = {n: (r_s if n == s else r_o) for n in machine.axles}
+    shares = {n: 100.0 * reactions[n] / total for n in machine.axles}
+
+    c = (x - xo) / span                       # ∂R_s/∂P [-]
+    m = machine.min_share
+    g_cw = _limit(machine._steered_reaction(fixed), machine.weight, c, m)
+    w_bare = sum(w[1] for w in machine.weights)
+    g_bare = _limit(machine._steered_reaction(machine.weights), w_bare, c, m)
+    return StabilityResult(
+        reactions=reactions, shares=shares, steered=s, min_share=m,
+        total_weight=total, steered_share=shares[s],
+        steerable=r_s >= m * total,
+        max_implement_weight=g_cw,
+        max_implement_weight_without_counterweights=g_bare)
+
+
+class FlaggedValue(NamedTuple):
+    """A value reproduced from a seed together with the seed's slips.
+
+    Attributes
+    ----------
+    value : ndarray
+        The value as the seed computes it (units of the formula).
+    flags : tuple of str
+        Explanations of what is wrong with the formula, for reports.
+    """
+
+    value: np.ndarray
+    flags: tuple[str, ...]
+
+
+SEED003_GS6MAX_FLAGS = (
+    "seed 003 §6: GS6max = (P_мсха·b + P_гр·(a + L) − R_amin)/XS6 subtracts a force R_amin "
+    "[N] from a moment P_мсха·b + P_гр·(a + L) [N·m]; the result is not a weight.",
+    "seed 003 §6: R_amin = 0.2·(P6 + P_мсха + P_гр) uses the current implement weight P6 "
+    "instead of the unknown limit weight, so even (… − R_amin·L)/XS6 would not keep the "
+    "20 % rule at the limit.",
+    "the dimensionally correct limit is (P_мсха·b + P_гр·(a + L) − 0.2·L·(P_мсха + P_гр))"
+    "/(XS6 + 0.2·L): StabilityResult.max_implement_weight.",
+)
+
+
+def seed003_gs6max(tractor_weight: float, counterweight: float, implement_weight: float,
+                   a: float, b: float, wheelbase: float,
+                   implement_x: ArrayLike) -> FlaggedValue:
+    """Seed 003's printed "maximum lift capacity" GS6max(S), reproduced as printed.
+
+    **Dimensionally inconsistent** (see ``flags``): kept only to reproduce the
+    seed's table 6.1 and to show it beside the correct limit
+    (:func:`axle_reactions`, ``max_implement_weight``).
+
+    Parameters
+    ----------
+    tractor_weight : float
+        P_мсха, weight of the mini-tractor at ``x = −b`` [N].
+    counterweight : float
+        P_гр, front ballast at ``x = −(a + L)`` [N].
+    implement_weight : float
+        P6, the current implement weight, used by the seed only in R_amin [N].
+    a : float
+        Overhang of the ballast ahead of the front axle [m].
+    b : float
+        Distance of the tractor's centre of mass ahead of the rear axle [m].
+    wheelbase : float
+        L, distance between the axles [m].
+    implement_x : array_like
+        XS6(S), x of the implement's centre of mass behind the rear axle [m].
+
+    Returns
+    -------
+    FlaggedValue
+        ``value``: GS6max as printed [the seed labels it N]; ``flags``: the slips.
+
+    Notes
+    -----
+    Seed 003 §6 (003_b1551261b108abd1.txt, before table 6.1)::
+
+        R_amin := 0.2·(P6 + P_мсха + P_гр)
+        GS6max(S) := (P_мсха·b + P_гр·(a + L) − R_amin)/XS6(S)
+
+    Examples
+    --------
+    >>> r = seed003_gs6max(56000.0, 8000.0, 27500.0, 0.6, 1.62, 2.96, 1.992)
+    >>> float(r.value.round(0)), len(r.flags)
+    (50653.0, 3)
+    """
+    p_m = _finite(tractor_weight, "tractor_weight [N]")
+    p_g = _finite(counterweight, "counterweight [N]")
+    p_6 = _finite(implement_weight, "implement_weight [N]")
+    a = _finite(a, "a [m]")
+    b = _finite(b, "b [m]")
+    L = _finite(wheelbase, "wheelbase [m]")
+    x = np.asarray(implement_x, dtype=float)
+    r_amin = 0.2 * (p_6 + p_m + p_g)                      # seed 003 §6, R_amin
+    value = (p_m * b + p_g * (a + L) - r_amin) / x        # seed 003 §6, GS6max (as printed)
+    return FlaggedValue(value, SEED003_GS6MAX_FLAGS)
