@@ -267,3 +267,18 @@ def test_inputs_and_picks_validated(seed003):
         seed003.reaction("C")
     with pytest.raises(ValueError, match=r"index must have shape \(10,\)"):
         seed003.to_frame(index=[1, 2])
+
+
+def test_table_6_1_from_the_model_analysis():
+    """Seed 003 table 6.1 through ``examples.hitch_003().analyze(...)``: the model
+    carries its machine (axles, tractor, ballast) and the implement P6 at S6; the
+    analysis gives the correct limit and, beside it, the seed's GS6max flagged."""
+    a = examples.hitch_003().analyze(examples.hitch_003_range())
+    st = a.stability
+    assert_printed(st.reaction("A"), T003_6_1, "Ra")
+    assert_printed(st.reaction("B"), T003_6_1, "Rb")
+    assert_printed(st.share("A"), T003_6_1, "dRa")
+    assert_printed(st.share("B"), T003_6_1, "dRb")
+    assert_printed(st.seed["GS6max"].value, T003_6_1, "GS6max")
+    assert st.flags and "subtracts a force" in st.flags[0]
+    assert np.all(st.max_implement_weight < st.seed["GS6max"].value - 1e4)

@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from .mechanism import Mechanism
+from .stability import Machine
 
 #: seed 003: the exact roots of its three Find blocks (printed rounded to 4 digits:
 #: L4 = 0.6613, Sp = 0.4694, L7 = 0.7522; the printed tables used these values)
@@ -57,6 +58,7 @@ def hitch_003(**params) -> Mechanism:
         X6=0.857, Y6=0.156,
         P6=27500.0,  # implement weight [N]
         Dgc=0.08, Pgc_max=17.5e6, eta=0.84, kgc=2,  # §1.5: k_gc is a count, not [м]
+        a=0.6, b=1.62, L=2.960, P_gr=8000.0, P_mcxa=56000.0,  # §1.6 machine data
         **HITCH_003_FOUND,
     )
     p.update(params)
@@ -93,7 +95,17 @@ def hitch_003(**params) -> Mechanism:
          .link("7", "07", "67")
          .weight("S6", "P6", name="P6")
          .cylinder("ГЦ", "S", bore="Dgc", count="kgc", eta_hyd="eta", p_relief="Pgc_max"))
-    return m
+    pp = m.params
+    # §6: rear axle B at the hitch origin, front (steered) axle A a wheelbase ahead; the
+    # tractor's centre of mass b ahead of B, the ballast a ahead of A. The seed's moment
+    # equation "P_гр·(a + Lb)" means (a + L).
+    machine = Machine({"A": -float(pp["L"]), "B": 0.0}, steered="A",
+                      weights=[("МСХА", float(pp["P_mcxa"]), -float(pp["b"]))],
+                      counterweights=[("противовесы", float(pp["P_gr"]),
+                                       -(float(pp["a"]) + float(pp["L"])))])
+    return m.with_machine(machine, "S6", "P6",
+                          seed_gs6max=dict(tractor_weight="P_mcxa", counterweight="P_gr",
+                                           a="a", b="b", wheelbase="L"))
 
 
 def hitch_003_range() -> np.ndarray:

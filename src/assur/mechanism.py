@@ -220,9 +220,11 @@ class Mechanism:
         from .loads import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
-    def with_machine(self, machine) -> "Mechanism":
-        """Attach machine data for the stability analysis (:class:`assur.stability.Machine`)."""
-        return self._with(machine=machine)
+    def with_machine(self, machine, point, weight, seed_gs6max=None) -> "Mechanism":
+        """Carry the implement (weight [N] at ``point``) on a machine for the stability
+        analysis (:class:`assur.stability.Machine`, :class:`assur.stability.Carrying`)."""
+        from .stability import Carrying
+        return self._with(machine=Carrying(machine, point, weight, seed_gs6max))
 
     def with_params(self, **values) -> "Mechanism":
         """Return a copy with some parameters replaced (scalars or arrays over designs)."""
@@ -352,6 +354,11 @@ class Mechanism:
                 ref_ok(f"inertia of link {ld.link}", ld.J)
             else:
                 raise ModelError(f"{where}: unknown load {ld!r}")
+        if self.machine is not None:
+            point_ok("the machine's implement", self.machine.point)
+            ref_ok("the machine's implement weight", self.machine.weight)
+            for k, v in (self.machine.seed_gs6max or {}).items():
+                ref_ok(f"seed GS6max {k}", v)
         seen = set()
         for c in self.cylinders:
             if not isinstance(c, Cylinder):

@@ -480,3 +480,62 @@ def seed003_gs6max(tractor_weight: float, counterweight: float, implement_weight
     r_amin = 0.2 * (p_6 + p_m + p_g)                      # seed 003 §6, R_amin
     value = (p_m * b + p_g * (a + L) - r_amin) / x        # seed 003 §6, GS6max (as printed)
     return FlaggedValue(value, SEED003_GS6MAX_FLAGS)
+
+
+@dataclass(frozen=True)
+class Carrying:
+    """A :class:`Machine` carrying the mechanism's implement.
+
+    Parameters
+    ----------
+    machine : Machine
+    point : str
+        The mechanism point where the implement's weight acts (its centre of mass,
+        seed 003 S6) — its x over the positions comes from the kinematics.
+    weight : float or str
+        The implement's weight [N], a number or a model parameter (seed 003 P6).
+    seed_gs6max : mapping, optional
+        Keyword references for :func:`seed003_gs6max` (``tractor_weight``,
+        ``counterweight``, ``a``, ``b``, ``wheelbase``) when a model reproduces seed
+        003's printed (flagged) formula beside the correct limit.
+    """
+
+    machine: Machine
+    point: str
+    weight: object
+    seed_gs6max: Mapping[str, object] | None = None
+
+    def evaluate(self, kin):
+        """Axle reactions and limits over the kinematics' positions; a
+        :class:`StabilityResult` with ``seed`` values attached when declared."""
+        mech = kin.mechanism
+
+        def val(ref):
+            v = np.asarray(mech.value_of(ref), float)
+            if v.ndim == 1 and v.shape[0] > 1:
+                return v.reshape((-1,) + (1,) * (len(kin.shape) - 1))
+            return v.reshape(()) if v.ndim == 1 else v
+
+        res = axle_reactions(self.machine, val(self.weight), kin.x(self.point))
+        seed = {}
+        if self.seed_gs6max is not None:
+            kw = {k: float(val(v)) for k, v in self.seed_gs6max.items()}
+            seed["GS6max"] = seed003_gs6max(implement_weight=float(val(self.weight)),
+                                            implement_x=kin.x(self.point), **kw)
+        return _WithSeed(res, seed)
+
+
+class _WithSeed:
+    """A StabilityResult with the seed's own (flagged) values beside it."""
+
+    def __init__(self, result, seed):
+        self._r = result
+        #: {name: FlaggedValue} of seed formulas reproduced as printed
+        self.seed = seed
+
+    def __getattr__(self, name):
+        return getattr(self._r, name)
+
+    @property
+    def flags(self):
+        return tuple(f for v in self.seed.values() for f in v.flags)
