@@ -519,9 +519,15 @@ class Carrying:
         res = axle_reactions(self.machine, val(self.weight), kin.x(self.point))
         seed = {}
         if self.seed_gs6max is not None:
-            kw = {k: float(val(v)) for k, v in self.seed_gs6max.items()}
-            seed["GS6max"] = seed003_gs6max(implement_weight=float(val(self.weight)),
-                                            implement_x=kin.x(self.point), **kw)
+            # per design (the seed formula takes scalars); designs are few here
+            args = {k: np.broadcast_to(val(v), kin.shape) for k, v in self.seed_gs6max.items()}
+            w = np.broadcast_to(val(self.weight), kin.shape)
+            x = kin.x(self.point)
+            rows = [seed003_gs6max(implement_weight=float(w[i].flat[0]), implement_x=x[i],
+                                   **{k: float(v[i].flat[0]) for k, v in args.items()})
+                    for i in np.ndindex(kin.shape[:-1])]
+            seed["GS6max"] = FlaggedValue(np.stack([r.value for r in rows]).reshape(kin.shape),
+                                          SEED003_GS6MAX_FLAGS)
         return _WithSeed(res, seed)
 
 
