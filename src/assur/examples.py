@@ -141,7 +141,12 @@ def header_000(**params) -> Mechanism:
                    tables={"ratios": [("5", "3"), ("6", "3")], "transmissions": ["56", "S6"]},
                    notes=("the seed's triangle L3, L34, L4 cannot close (L4 > L3 + L34)",
                           "FIS6 is overwritten by hand in the seed (4.894 rad instead of the "
-                          "computed real part 4.866); here it is derived at S = 0.650 m"))
+                          "computed real part 4.866); here it is derived at S = 0.650 m",
+                          "the seed's delI = DFI3·U65·LS6·cos(FI6 + FIS6) lacks the factor U54 "
+                          "(its U65 is ω6/ω5): IS = dY_S6/dS = DFI3·U54·(L5·cos FI5 + "
+                          "U65·LS6·cos(FI6 + FIS6))",
+                          "the seed's P = 1500 is in kgf (its Fmax divides by 9.81): "
+                          "P = 1500·9.81 N here"))
          .frame("01", "X01", "Y01").frame("03", "X03", "Y03").frame("05", "X05", "Y05")
          .cylinder_lever("I (2,3)", base="01", pivot="03", out="23", lever="L3", s="S",
                          branch=-1, links=("2", "3"))
