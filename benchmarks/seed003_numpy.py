@@ -16,6 +16,23 @@ Two deliberate departures from the worksheet, both also made by
 
 The seed has no second-order analogs for the hitch; only group I (φ3'') gets one
 here, from seed 001 lab 5 (verified against a finite difference in ``run.py``).
+
+:func:`pipeline` adds the rest of the worksheet — §4 cylinder force, pressure and
+lift capacity, §5 the closed-form joint reactions of §5.1–5.3 *as printed*, §6 the
+axle reactions and GS6max — with the data of §1.4–1.6 (:data:`LOAD`). Two remarks,
+both about the print, not departures from it:
+
+* §4 prints ``G56(S) := k·P·η·S_gc/IS6(S)``, the same formula as GS6; its table 4.1
+  column G56 is k·P·η·S_gc/I56 (the capacity at the suspension axis), used here;
+* §5.2–5.3 give R05, R34, R45 (and so R43) with the opposite sign to their names
+  (``assur.statics.SEED_003_SIGN_NOTE``); they are kept as printed here, the
+  comparison in ``run.py`` applies the documented sign.
+
+The printed §5 closed forms have removable singularities inside the stroke:
+R56y divides by d1 = X67 − X56, which changes sign near S ≈ 0.47 m, and R01y
+by b3 = X23 − X01, which changes sign near S ≈ 0.43 m (R01x carries the factor
+b3, so R01y stays well conditioned). Next to d1 = 0 the printed R56y loses
+digits by cancellation (about 1e−16/|d1| relative); ``run.py`` reports it.
 """
 
 from __future__ import annotations
@@ -32,6 +49,15 @@ PARAMS = dict(
     phiBD=math.radians(22.0),
     L4=0.661283167, L7=0.752169525, Sp=0.469356940,
     X6=0.857, Y6=0.156,
+)
+
+#: seed 003 §1.4–1.6 loads, hydraulics and machine data [N, m, Pa, -]
+LOAD = dict(
+    P6=27500.0,                       # implement weight [N]
+    Dgc=0.08, Pgc_max=17.5e6,         # piston diameter [m], system pressure [Pa]
+    eta=0.84, kgc=2,                  # hydraulic efficiency, number of cylinders
+    a=0.6, b=1.62, L=2.960,           # ballast overhang, tractor CM, wheelbase [m]
+    P_gr=8000.0, P_mcxa=56000.0,      # ballast, mini-tractor weight [N]
 )
 
 
@@ -172,4 +198,116 @@ def hitch(S, p=PARAMS):
     g.update(U43=U43, U53=U53, U65=U65, U75=U75, dphi3=dphi3, dphi4=dphi3 * U43,
              dphi5=dphi5, dphi6=dphi6, dphi7=dphi5 * U75, I56=I56, IS6=IS6,
              phiS6=phiS6, LS6=LS6)
+    return g
+
+
+def pipeline(S, p=PARAMS, q=LOAD):
+    """The whole seed-003 worksheet over the positions S: §2–§3 (:func:`hitch`),
+    §4 lift capacity, §5 joint reactions, §6 machine stability.
+
+    Every formula is the seed's, written as printed (names as in the seed; the
+    seed's Cyrillic subscripts: P_гр → P_gr, P_мсха → P_mcxa).
+
+    Returns
+    -------
+    dict of str to ndarray
+        Everything of :func:`hitch`, and
+        §4: Fgc [N], Pgc [Pa], G56, GS6 [N], dGS65 [%];
+        §5: R56x, R56y, R07x, R07y, R67x, R67y, R05x, R05y, R34x, R34y, R45x, R45y,
+        R03x, R03y, R01x, R01y, R23x, R23y and the magnitudes R56, R07, R67, R05,
+        R34, R45, R03, R01, R23 [N] (components of R05, R34, R45 with the seed's
+        printed sign);
+        §6: Ra, Rb [N], dRa, dRb [%], GS6max [as printed; N·m/m − N/m, see
+        ``assur.stability.SEED003_GS6MAX_FLAGS``], and — not in the seed — Gmax,
+        the dimensionally correct limit of the 20 % rule [N].
+    """
+    g = hitch(S, p)
+    X01, Y01, X03, Y03, X05, Y05, X07, Y07 = (
+        p[k] for k in ("X01", "Y01", "X03", "Y03", "X05", "Y05", "X07", "Y07"))
+    P6, Dgc, Pgc_max, eta, kgc = (q[k] for k in ("P6", "Dgc", "Pgc_max", "eta", "kgc"))
+    a, b, L, P_gr, P_mcxa = (q[k] for k in ("a", "b", "L", "P_gr", "P_mcxa"))
+    X23, Y23, X34, Y34, X45, Y45 = (g[k] for k in ("X23", "Y23", "X34", "Y34", "X45", "Y45"))
+    X56, Y56, X67, Y67, XS6 = (g[k] for k in ("X56", "Y56", "X67", "Y67", "XS6"))
+    I56, IS6 = g["I56"], g["IS6"]
+    hyp = np.hypot
+
+    # §4 lift capacity
+    S_gc = 0.25 * math.pi * Dgc ** 2
+    Fgc = P6 * IS6
+    Pgc = Fgc / (kgc * S_gc * eta)
+    G0 = kgc * Pgc_max * eta * S_gc
+    G56 = G0 / I56                      # table 4.1 (the print's formula says IS6)
+    GS6 = G0 / IS6
+    dGS65 = (GS6 - P6) / P6 * 100.0
+
+    # §5.1 group I (6,7)
+    a1 = Y07 - Y67
+    b1 = X67 - X07
+    c1 = Y67 - Y56
+    d1 = X67 - X56
+    e1 = XS6 - X67
+    R56x = P6 * b1 * (d1 + e1) / (a1 * d1 + b1 * c1)
+    R56y = -(P6 * e1 - R56x * c1) / d1
+    R07x = -R56x
+    R07y = P6 - R56y
+    R67x = R56x
+    R67y = R56y - P6
+    # §5.2 group II (4,5)
+    R65x = -R56x
+    R65y = -R56y
+    a2 = Y34 - Y45
+    b2 = X34 - X45
+    c2 = Y05 - Y45
+    d2 = X45 - X05
+    e2 = R65x * (Y45 - Y56) + R65y * (X56 - X45)
+    den2 = a2 * d2 + b2 * c2
+    R05x = -(b2 * e2 - R65x * a2 * d2 + R65y * b2 * d2) / den2
+    R05y = -(e2 + R05x * c2) / d2
+    R34x = (b2 * e2 + R65x * b2 * c2 + R65y * b2 * d2) / den2
+    R34y = R34x * a2 / b2
+    R45x = R34x
+    R45y = R34y
+    # §5.3 group I (2,3)
+    R43x = -R34x
+    R43y = -R34y
+    a3 = Y23 - Y01
+    c3 = Y03 - Y23
+    b3 = X23 - X01
+    d3 = X03 - X23
+    e3 = R43x * (Y23 - Y34) + R43y * (X34 - X23)
+    den3 = a3 * d3 - b3 * c3
+    R03x = (b3 * e3 + R43x * a3 * d3 - R43y * b3 * d3) / den3
+    R03y = (e3 + R03x * c3) / d3
+    R01x = -(b3 * e3 + R43x * b3 * c3 - R43y * b3 * d3) / den3
+    R01y = R01x * a3 / b3
+    R23x = R01x
+    R23y = R01y
+    R34 = hyp(R34x, R34y)
+    R01 = hyp(R01x, R01y)
+
+    # §6 machine stability
+    W = P6 + P_mcxa + P_gr
+    Ra = (P_gr * (a + L) + P_mcxa * b - P6 * XS6) / L
+    Rb = P_gr + P_mcxa + P6 - Ra
+    dRa = Ra / W * 100.0
+    dRb = Rb / W * 100.0
+    R_amin = 0.2 * W
+    GS6max = (P_mcxa * b + P_gr * (a + L) - R_amin) / XS6
+    # not in the seed: the 20 % rule solved for the implement weight
+    # (assur.stability module notes), compared with StabilityResult.max_implement_weight
+    Gmax = (P_mcxa * b + P_gr * (a + L) - 0.2 * L * (P_mcxa + P_gr)) / (XS6 + 0.2 * L)
+
+    g.update(
+        Fgc=Fgc, Pgc=Pgc, G56=G56, GS6=GS6, dGS65=dGS65,
+        R56x=R56x, R56y=R56y, R56=hyp(R56x, R56y),
+        R07x=R07x, R07y=R07y, R07=hyp(R07x, R07y),
+        R67x=R67x, R67y=R67y, R67=hyp(R67x, R67y),
+        R05x=R05x, R05y=R05y, R05=hyp(R05x, R05y),
+        R34x=R34x, R34y=R34y, R34=R34,
+        R45x=R45x, R45y=R45y, R45=R34,
+        R03x=R03x, R03y=R03y, R03=hyp(R03x, R03y),
+        R01x=R01x, R01y=R01y, R01=R01,
+        R23x=R23x, R23y=R23y, R23=R01,
+        Ra=Ra, Rb=Rb, dRa=dRa, dRb=dRb, GS6max=GS6max, Gmax=Gmax,
+    )
     return g
