@@ -1002,7 +1002,7 @@ def _execute(prog, ptab, qarr, n, check=False):
     sdd = parts[5].reshape(nso, k, k, E)
     status = np.empty(E, dtype=np.int64)
     amount = np.empty(E)
-    kern(ptab, _trig_table(prog, ptab), qarr, n, check, out, status, amount)
+    K.run(kern, ptab, _trig_table(prog, ptab), qarr, n, check, out, status, amount)
     for row, i in enumerate(ang):  # angle = atan2(dy, dx); the kernel left dy in sv[i]
         np.arctan2(sv[i], parts[6][row], out=sv[i])
     angles = np.array(ang, dtype=np.int64)
