@@ -1002,7 +1002,13 @@ def _execute(prog, ptab, qarr, n, check=False):
     sdd = parts[5].reshape(nso, k, k, E)
     status = np.empty(E, dtype=np.int64)
     amount = np.empty(E)
-    K.run(kern, ptab, _trig_table(prog, ptab), qarr, n, check, out, status, amount)
+    dyads = [i for i, r in enumerate(prog["ops"]) if r[0] == K.OP_RRR] if k == 1 else []
+    gout = np.empty((2 * len(dyads), E if check else 1))
+    K.run(kern, ptab, _trig_table(prog, ptab), qarr, n, check, out, gout, status, amount)
+    if check and dyads:
+        codes = np.array([i * 16 + K.FAIL_CONTINUITY for i in dyads], dtype=np.int64)
+        if K.continuity(gout, qarr, n, status, amount, codes):
+            out[:, (status % 16 == K.FAIL_CONTINUITY) & (status >= 0)] = 0.0
     for row, i in enumerate(ang):  # angle = atan2(dy, dx); the kernel left dy in sv[i]
         np.arctan2(sv[i], parts[6][row], out=sv[i])
     angles = np.array(ang, dtype=np.int64)
