@@ -29,10 +29,12 @@ both about the print, not departures from it:
   comparison in ``run.py`` applies the documented sign.
 
 The printed §5 closed forms have removable singularities inside the stroke:
-R56y divides by d1 = X67 − X56, which changes sign near S ≈ 0.47 m, and R01y
-by b3 = X23 − X01, which changes sign near S ≈ 0.43 m (R01x carries the factor
-b3, so R01y stays well conditioned). Next to d1 = 0 the printed R56y loses
-digits by cancellation (about 1e−16/|d1| relative); ``run.py`` reports it.
+R56y divides by d1 = X67 − X56, which is 0 at S = Sp (φ6 = 90°, link 6 vertical),
+and R01y by b3 = X23 − X01, which changes sign near S ≈ 0.436 m (R01x carries the
+factor b3, so R01y stays well conditioned). Next to d1 = 0 the printed R56y loses
+digits by cancellation (relative error about 1e−16 m/|d1|, carried into R07y, R67y
+and §5.2–5.3); ``run.py`` reports it. The functions are dtype-generic: ``run.py``
+re-evaluates them in ``np.longdouble`` at such positions.
 """
 
 from __future__ import annotations
