@@ -22,7 +22,7 @@ app = typer.Typer(add_completion=False, no_args_is_help=True,
 console = Console(stderr=False)
 err = Console(stderr=True)
 
-FORMATS = ("csv", "xlsx", "html", "png", "svg")
+FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")  # = assur.report.FORMATS
 
 
 def _fail(message: str, code: int = 1):
@@ -84,12 +84,12 @@ def _formats(value: str):
 
 
 def _run_report(model, out: Path, lang: str, fmts):
-    from .report import write_report
+    from .report import report_steps, write_report
 
     analysis = _assemble(model)
     with Progress(SpinnerColumn(), TextColumn("[progress.description]{task.description}"),
                   BarColumn(), TimeElapsedColumn(), console=console, transient=True) as prog:
-        task = prog.add_task("writing the report", total=None)
+        task = prog.add_task("writing the report", total=len(report_steps(fmts)))
 
         def step(name):
             prog.update(task, description=f"writing: {name}", advance=1)
@@ -104,7 +104,7 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                         help="Output directory."),
             lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
             format: str = typer.Option(",".join(FORMATS), "--format",
-                                       help="Comma-separated: csv,xlsx,html,png,svg.")):
+                                       help="Comma-separated: csv,xlsx,html,png,svg,gif.")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
     if lang not in ("ru", "en"):
         _fail(f"--lang must be one of: ['ru', 'en']; got {lang!r}")

@@ -1,0 +1,337 @@
+"""Drawings of the mechanism at chosen positions and its animation over the range.
+
+The drawing is made from the model's rigid bodies (:attr:`assur.Mechanism.bodies`):
+
+* a rigid link with two points is a line between them; with three or more (a
+  bell-crank, the implement with its centre of mass) a lightly filled polygon
+  (their convex hull);
+* a link of variable length (a hydraulic cylinder) is a thick barrel from its
+  base and a thin rod from its other end, of fixed lengths, so the rod slides
+  out of the barrel over the stroke;
+* frame pivots are hatched triangles; joints are open circles, other points
+  (a centre of mass) dots; a weight is an arrow down labelled with its name;
+* every point is labelled with its name, every link with its name in its colour.
+
+:func:`draw` returns a figure with the mechanism at one or several positions
+(the first drawn in colour with labels, the others as light outlines).
+:func:`render_frames` renders the animation frames (Agg) and :func:`write_gif`
+writes them as an animated GIF (Pillow, as ``matplotlib.animation.PillowWriter``
+does); the HTML report plays the same frames.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import numpy as np
+from matplotlib.patches import Polygon, Rectangle
+
+from ..loads import Weight
+from .figures import new_figure
+from .labels import check_lang, t, unit
+from .tables import _View
+
+__all__ = ["draw", "render_frames", "write_gif", "frames_png_bytes"]
+
+
+class _Geometry:
+    """Point positions of one design over a set of positions: ``xy[name]`` (n, 2)."""
+
+    def __init__(self, view, kin=None):
+        kin = kin if kin is not None else view.kin
+        mech = view.mech
+        self.mech = mech
+        self.kin = kin
+        design = view.design if len(kin.shape) == 2 else None
+        n = kin.shape[-1]
+
+        def pick(a):
+            a = np.asarray(a)
+            if a.ndim == 2:
+                a = a[design]
+            return np.broadcast_to(a, (n,))
+
+        self.n = n
+        self.xy = {}
+        for p in list(mech.frame_points) + list(kin.points):
+            self.xy[p] = np.stack([pick(kin.x(p)), pick(kin.y(p))], axis=-1)
+        self.q = {c: pick(kin.q(c)) for c in kin.coordinates}
+        self.bodies = {b: v for b, v in mech.bodies.items()}
+        used = {}
+        for b, v in self.bodies.items():
+            for p in v["points"]:
+                used.setdefault(p, []).append(b)
+        self.joints = {p for p, bs in used.items() if len(bs) > 1 or p in mech.frame_points}
+        self.weights = [(ld.point, ld.name or (ld.P if isinstance(ld.P, str) else "P"))
+                        for ld in mech.loads if isinstance(ld, Weight)]
+        allxy = np.concatenate([v for v in self.xy.values()]) if self.xy else np.zeros((1, 2))
+        lo, hi = allxy.min(axis=0), allxy.max(axis=0)
+        self.span = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
+        self.lo, self.hi = lo, hi
+        self.centre = allxy.mean(axis=0)
+        # fixed barrel and rod lengths of each variable link (a cylinder)
+        self.cyl = {}
+        for b, v in self.bodies.items():
+            if v["variable"] and len(v["points"]) >= 2:
+                p0, p1 = v["points"][:2]
+                L = np.hypot(*(self.xy[p1] - self.xy[p0]).T)
+                lmin, lmax = float(L.min()), float(L.max())
+                barrel = 0.7 * lmin
+                rod = min(max(lmax - barrel + 0.08 * lmin, 0.35 * lmin), 0.95 * lmin)
+                self.cyl[b] = (barrel, rod)
+
+
+def _hull(pts):
+    """Convex hull of a few points, counter-clockwise (collinear points give 2)."""
+    pts = sorted(set(map(tuple, np.round(pts, 12))))
+    if len(pts) <= 2:
+        return np.array(pts)
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return np.array(lower[:-1] + upper[:-1])
+
+
+def _ground(ax, x, y, h, color, alpha):
+    """A hatched triangle under the frame pivot (x, y)."""
+    tri = Polygon([(x, y), (x - 0.55 * h, y - h), (x + 0.55 * h, y - h)], closed=True,
+                  facecolor="white", edgecolor=color, lw=1.0, alpha=alpha, zorder=3)
+    ax.add_patch(tri)
+    ax.add_patch(Rectangle((x - 0.8 * h, y - 1.35 * h), 1.6 * h, 0.35 * h, facecolor="none",
+                           edgecolor=color, hatch="////", lw=0.0, alpha=alpha, zorder=3))
+    ax.plot([x - 0.8 * h, x + 0.8 * h], [y - h, y - h], color=color, lw=1.0, alpha=alpha,
+            zorder=3)
+
+
+def _pose(ax, geo, i, ghost=False, labels=True, colors=None):
+    """Draw the mechanism at position ``i``."""
+    xy = {p: v[i] for p, v in geo.xy.items()}
+    alpha = 0.25 if ghost else 1.0
+    h = 0.035 * geo.span
+    colors = colors or {}
+    k = 0
+    for b, v in geo.bodies.items():
+        if b == "0":
+            continue
+        pts = [xy[p] for p in v["points"] if p in xy]
+        if len(pts) < 1:
+            continue
+        col = "0.5" if ghost else colors.get(b, f"C{k % 10}")
+        k += 1
+        if b in geo.cyl:
+            a, c = np.array(pts[0]), np.array(pts[1])
+            L = float(np.hypot(*(c - a)))
+            u = (c - a) / L if L > 0 else np.zeros(2)
+            barrel, rod = geo.cyl[b]
+            e1 = a + u * min(barrel, L)
+            e2 = c - u * min(rod, L)
+            ax.plot([a[0], e1[0]], [a[1], e1[1]], color="0.55" if ghost else "#4a7ab8", lw=7,
+                    solid_capstyle="butt", alpha=alpha, zorder=2)
+            ax.plot([e2[0], c[0]], [e2[1], c[1]], color="0.3" if ghost else "#222222", lw=2.2,
+                    alpha=alpha, zorder=2.5)
+            mid = a + u * 0.5 * min(barrel, L)
+        else:
+            hull = _hull(np.array(pts))
+            if len(hull) >= 3:
+                ax.add_patch(Polygon(hull, closed=True, facecolor=col, alpha=0.12 * alpha,
+                                     edgecolor="none", zorder=1))
+                ring = np.vstack([hull, hull[:1]])
+                ax.plot(ring[:, 0], ring[:, 1], color=col, lw=2.2, alpha=alpha, zorder=2)
+            elif len(hull) == 2:
+                ax.plot(hull[:, 0], hull[:, 1], color=col, lw=2.6, alpha=alpha, zorder=2,
+                        solid_capstyle="round")
+            mid = np.mean(hull, axis=0) if len(hull) else np.array(pts[0])
+        if labels and not ghost:
+            d = mid - geo.centre
+            off = 0.0 if not np.any(d) else 1.0
+            ax.annotate(b, mid, textcoords="offset points",
+                        xytext=(7 * off * np.sign(d[0] or 1), 7 * off * np.sign(d[1] or 1)),
+                        color="#4a7ab8" if b in geo.cyl else col, fontsize=10,
+                        fontweight="bold", fontstyle="italic", zorder=6,
+                        bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.7))
+    for p in geo.mech.frame_points:
+        _ground(ax, *xy[p], h, "0.55" if ghost else "black", alpha)
+    for p, (x, y) in xy.items():
+        if p in geo.joints:
+            ax.plot(x, y, "o", ms=6, mfc="white", mec="0.5" if ghost else "black", mew=1.3,
+                    alpha=alpha, zorder=4)
+        else:
+            ax.plot(x, y, "o", ms=4, color="0.5" if ghost else "black", alpha=alpha, zorder=4)
+        if labels and not ghost:
+            d = np.array([x, y]) - geo.centre
+            n = np.hypot(*d)
+            off = d / n * 12 if n > 0 else np.array([8.0, 8.0])
+            ax.annotate(p, (x, y), textcoords="offset points", xytext=tuple(off), fontsize=8,
+                        ha="center", va="center", zorder=6)
+    if not ghost:
+        for p, name in geo.weights:
+            if p in xy:
+                x, y = xy[p]
+                ax.annotate("", xy=(x, y - 0.12 * geo.span), xytext=(x, y),
+                            arrowprops=dict(arrowstyle="-|>", color="C3", lw=1.5), zorder=5)
+                ax.annotate(str(name), (x, y - 0.12 * geo.span), textcoords="offset points",
+                            xytext=(4, 0), color="C3", fontsize=9, va="top")
+
+
+def _limits(ax, geo):
+    m = 0.12 * geo.span
+    ax.set_xlim(geo.lo[0] - m, geo.hi[0] + m)
+    ax.set_ylim(geo.lo[1] - 1.6 * m, geo.hi[1] + m)
+    ax.set_aspect("equal", adjustable="box")
+
+
+def _qtext(geo, v, i, lang):
+    parts = []
+    for c, q in geo.q.items():
+        val = np.degrees(q[i]) if v.is_angle(c) else q[i]
+        parts.append(f"{c} = {val:.4g} {unit(v.coord_unit(c), lang)}")
+    return ", ".join(parts)
+
+
+def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.0,
+         height=5.5):
+    """A drawing of the mechanism at some of the analysis' positions.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    positions : sequence of int, optional
+        Indices of the positions; the first is drawn in colour with labels, the
+        others as light outlines. Default: the first and the last position.
+    lang : {"en", "ru"}
+    design : int, optional
+        Design of a batch.
+    labels : bool
+        Label points and links.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    check_lang(lang)
+    v = _View(analysis, design)
+    geo = _Geometry(v)
+    if positions is None:
+        positions = sorted({0, geo.n - 1})
+    positions = [int(i) for i in positions]
+    for i in positions:
+        if not -geo.n <= i < geo.n:
+            raise ValueError(f"positions must be in 0…{geo.n - 1}, got {i}")
+    fig = new_figure(width, height)
+    ax = fig.add_subplot()
+    for i in positions[1:]:
+        _pose(ax, geo, i, ghost=True)
+    _pose(ax, geo, positions[0], labels=labels)
+    _limits(ax, geo)
+    ax.set_xlabel(f"{t('x_m', lang)} [{unit('m', lang)}]")
+    ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
+    ax.grid(True, alpha=0.3)
+    shown = "; ".join(_qtext(geo, v, i, lang) for i in positions)
+    ax.set_title(f"{v.mech.title}\n{shown}", fontsize=10)
+    return fig
+
+
+def _animation_geometry(v, frames):
+    """Geometry on a finer grid of the coordinate (one coordinate, one design), else the
+    analysis' own positions."""
+    if frames and v.k == 1 and len(v.kin.shape) == 1:
+        q = v.kin.q()
+        try:
+            kin = v.mech.solve(np.linspace(q[0], q[-1], int(frames)))
+            return _Geometry(v, kin)
+        except Exception:  # noqa: BLE001 - any failure: fall back to the solved positions
+            pass
+    return _Geometry(v)
+
+
+def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4, height=5.0):
+    """Frames of the animation over the range, as PIL images.
+
+    The mechanism is solved again on ``frames`` evenly spaced values of its
+    coordinate (one coordinate and one design; otherwise the analysis' positions
+    are used), drawn on fixed axes, rendered with Agg.
+
+    Returns
+    -------
+    list of PIL.Image.Image
+    """
+    from PIL import Image
+
+    check_lang(lang)
+    v = _View(analysis, design)
+    geo = _animation_geometry(v, frames)
+    fig = new_figure(width, height)
+    fig.set_dpi(dpi)
+    ax = fig.add_subplot()
+    ax.set_xlabel(f"{t('x_m', lang)} [{unit('m', lang)}]")
+    ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
+    ax.grid(True, alpha=0.3)
+    out = []
+    for i in range(geo.n):
+        for art in list(ax.lines) + list(ax.patches) + list(ax.texts):
+            art.remove()
+        _pose(ax, geo, i)
+        _limits(ax, geo)
+        ax.set_title(f"{v.mech.title}\n{_qtext(geo, v, i, lang)}", fontsize=9)
+        fig.canvas.draw()
+        if i == 0:  # the axes are fixed: lay the figure out once
+            fig.set_layout_engine("none")
+        buf = np.asarray(fig.canvas.buffer_rgba())
+        out.append(Image.fromarray(buf[..., :3].copy()))
+    return out
+
+
+def _palette(frames):
+    """The frames as palette images sharing one palette (no dithering): small GIF and
+    PNG files, and a GIF that stores only what changes."""
+    from PIL import Image
+    picks = [frames[0], frames[len(frames) // 2], frames[-1]]
+    w, h = picks[0].size
+    sheet = Image.new("RGB", (w * len(picks), h))
+    for k, f in enumerate(picks):
+        sheet.paste(f.convert("RGB"), (k * w, 0))
+    pal = sheet.quantize(colors=64, dither=Image.Dither.NONE)
+    return [f.convert("RGB").quantize(palette=pal, dither=Image.Dither.NONE) for f in frames]
+
+
+def write_gif(frames, path, duration=120, bounce=True) -> Path:
+    """Write frames (PIL images) as an animated GIF that loops forever.
+
+    Parameters
+    ----------
+    frames : list of PIL.Image.Image
+    path : str or Path
+    duration : int
+        Time per frame [ms].
+    bounce : bool
+        Play forward then backward (the mechanism goes up and down).
+    """
+    if not frames:
+        raise ValueError("no frames to write")
+    seq = _palette(list(frames))
+    seq = seq + (seq[-2:0:-1] if bounce else [])
+    path = Path(path)
+    seq[0].save(path, format="GIF", save_all=True, append_images=seq[1:], duration=duration,
+                loop=0)
+    return path
+
+
+def frames_png_bytes(frames) -> list:
+    """The frames as small palette PNGs (bytes), for the HTML player."""
+    out = []
+    for f in _palette(list(frames)):
+        buf = io.BytesIO()
+        f.save(buf, format="PNG")
+        out.append(buf.getvalue())
+    return out

@@ -1,0 +1,362 @@
+"""The seeds' diagrams against the generalized coordinate (matplotlib, Agg).
+
+Each function takes an :class:`~assur.analysis.Analysis` and returns a
+:class:`matplotlib.figure.Figure` drawn on an Agg canvas (no pyplot, no GUI, no
+global state), with a title, axis labels with units and a legend in Russian or
+English (``lang``):
+
+==============  =====================================================  ===========
+name            what                                                   seed 003
+==============  =====================================================  ===========
+``angles``      link angles φ [°]                                      tables 2.1
+``analogs``     angular-velocity analogs dφ/dq [rad/m]                 fig. 3.1
+``transmission`` transmission numbers I = dY/dq [-]                    fig. 3.2
+``capacity``    lift capacity G at the transmission points [kN], with  fig. 4.1
+                the load there
+``force``       cylinder force [kN] with the available force           fig. 4.2
+``pressure``    cylinder pressure [MPa] with p_max                     fig. 4.3
+``reactions``   magnitudes of the joint reactions [kN]                 fig. 5.4
+``hodograph``   Ry against Rx of the largest frame reaction [kN]       —
+``stability``   steered axle's share of the weight [%], 20 % line      fig. 6.2
+==============  =====================================================  ===========
+
+:func:`figures` makes those whose data exist; :func:`save` writes PNG or SVG.
+For k > 1 coordinates the abscissa is the position number.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from .labels import check_lang, t, unit
+from .tables import _View
+
+__all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "analogs", "transmission",
+           "capacity", "force", "pressure", "reactions", "hodograph", "stability"]
+
+_SPECIAL = set("_^$\\{}%#&~")
+
+
+def _math(sym, idx, prime=False):
+    """``φ_{34}`` in mathtext (plain text if the name has TeX specials)."""
+    if any(ch in _SPECIAL for ch in str(idx)):
+        return f"{sym}{idx}"
+    return f"${sym}{chr(39) if prime else ''}_{{\\mathrm{{{idx}}}}}$"
+
+
+_PHI = r"\varphi"
+
+
+def new_figure(width=6.4, height=4.0) -> Figure:
+    """An empty figure on an Agg canvas with a constrained layout."""
+    fig = Figure(figsize=(width, height), layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig
+
+
+class _Plot:
+    """Shared abscissa and labels for one design."""
+
+    def __init__(self, analysis, lang, design):
+        self.lang = check_lang(lang)
+        self.v = _View(analysis, design)
+        v = self.v
+        if v.k == 1:
+            c = v.coords[0]
+            self.x = v.coord_values(c)
+            self.xlabel = f"{v.coord_label(c)[lang]} [{unit(v.coord_unit(c), lang)}]"
+            self.c = c
+        else:
+            self.x = np.arange(v.n)
+            self.xlabel = t("position", lang)
+            self.c = v.coords[0]
+
+    def axes(self, title, ylabel, yunit, width=6.4, height=4.0):
+        fig = new_figure(width, height)
+        ax = fig.add_subplot()
+        ax.set_title(title)
+        ax.set_xlabel(self.xlabel)
+        ax.set_ylabel(f"{ylabel} [{unit(yunit, self.lang)}]")
+        ax.grid(True, alpha=0.35)
+        return fig, ax
+
+    def line(self, ax, y, label, **kw):
+        kw.setdefault("marker", "o")
+        kw.setdefault("markersize", 3)
+        ax.plot(self.x, y, label=label, **kw)
+
+    @staticmethod
+    def legend(fig, ax, n):
+        if n > 5:
+            fig.legend(loc="outside right upper", fontsize="small")
+        elif n > 0:
+            ax.legend(fontsize="small")
+
+
+def angles(analysis, lang="en", design=None):
+    """Link angles φ [°] against the coordinate (seed 003 table 2.1)."""
+    p = _Plot(analysis, lang, design)
+    kin = p.v.kin
+    fig, ax = p.axes(t("f_angles", lang), t("y_angle", lang), "deg")
+    for link in kin.links:
+        p.line(ax, p.v.pick(kin.phi(link, degrees=True)), _math(_PHI, link))
+    p.legend(fig, ax, len(kin.links))
+    return fig
+
+
+def analogs(analysis, lang="en", design=None):
+    """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S))."""
+    p = _Plot(analysis, lang, design)
+    kin, v = p.v.kin, p.v
+    fig, ax = p.axes(t("f_analogs", lang), t("y_analog", lang, p.c), v.analog_unit(p.c))
+    n = 0
+    for sfx, w, c in v.wrts():
+        for link in kin.links:
+            lab = _math(_PHI, link, prime=True) + (f" ({c})" if sfx else "")
+            p.line(ax, v.pick(kin.dphi(link, w)), lab)
+            n += 1
+    p.legend(fig, ax, n)
+    return fig
+
+
+def transmission(analysis, lang="en", design=None):
+    """Transmission numbers I = dY/dq of the model's transmission points (seed 003
+    fig. 3.2 I56, IS6); None without transmission points."""
+    p = _Plot(analysis, lang, design)
+    kin, v = p.v.kin, p.v
+    pts = list(v.mech.tables.get("transmissions", ()))
+    if not pts:
+        return None
+    fig, ax = p.axes(t("f_transmission", lang), t("y_transmission", lang),
+                     v.transmission_unit(p.c))
+    n = 0
+    for sfx, w, c in v.wrts():
+        for pt in pts:
+            p.line(ax, v.pick(kin.transmission(pt, wrt=w)),
+                   _math("I", pt) + (f" ({c})" if sfx else ""))
+            n += 1
+    p.legend(fig, ax, n)
+    return fig
+
+
+def capacity(analysis, lang="en", design=None):
+    """Lift capacity G [kN] at the transmission points with the load acting there
+    (seed 003 fig. 4.1); None without cylinders."""
+    from .tables import _capacity
+
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.a.cylinders:
+        return None
+    fig, ax = p.axes(t("f_capacity", lang), t("y_capacity", lang), "kN")
+    n = 0
+    several = len(v.a.cylinders) > 1
+    for name, res in v.a.cylinders.items():
+        for pt in v.transmission_points():
+            g, _ = _capacity(v, res, pt)
+            p.line(ax, g / 1e3, _math("G", pt) + (f" ({name})" if several else ""))
+            n += 1
+            for wname, P in v.weights_at(pt)[:1]:
+                ax.axhline(P / 1e3, ls="--", lw=1, color="0.3",
+                           label=t("load", lang, wname, P / 1e3))
+                n += 1
+    p.legend(fig, ax, n)
+    return fig
+
+
+def force(analysis, lang="en", design=None):
+    """Cylinder force [kN] by virtual work with the available force F_max (seed 003
+    fig. 4.2); None without cylinders."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.a.cylinders:
+        return None
+    fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "kN")
+    n = 0
+    for name, res in v.a.cylinders.items():
+        p.line(ax, v.pick(res.force) / 1e3, f"$F_{{{res.cylinder.coordinate}}}$ ({name})")
+        fmax = v.scalar(res.force_max)
+        if fmax > 0:
+            ax.axhline(fmax / 1e3, ls="--", lw=1, color="C3", label=t("force_max", lang,
+                                                                       fmax / 1e3))
+        n += 2
+    p.legend(fig, ax, n)
+    return fig
+
+
+def pressure(analysis, lang="en", design=None):
+    """Cylinder pressure [MPa] with the largest working pressure p_max (seed 003
+    fig. 4.3); None without cylinders."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.a.cylinders:
+        return None
+    fig, ax = p.axes(t("f_pressure", lang), t("y_pressure", lang), "MPa")
+    n = 0
+    for name, res in v.a.cylinders.items():
+        p.line(ax, v.pick(res.pressure) / 1e6, f"$p_{{{res.cylinder.coordinate}}}$ ({name})")
+        pmax = v.scalar(res.p_max)
+        if pmax > 0:
+            ax.axhline(pmax / 1e6, ls="--", lw=1, color="C3", label=t("p_max", lang, pmax / 1e6))
+        n += 2
+    p.legend(fig, ax, n)
+    return fig
+
+
+def _reactions(v):
+    """[(name, i, j)] of every joint, seed names first (as table 5.1)."""
+    st = v.a.statics
+    named = {(str(i), str(j)): name for name, (i, j, _) in st.seed_reactions().items()}
+    out, done = [], set()
+    for (i, j), name in list(named.items()) + [((i, j), f"R{i}{j}") for _, i, j in st.joints]:
+        if frozenset((i, j)) not in done:
+            done.add(frozenset((i, j)))
+            out.append((name, i, j))
+    return out
+
+
+def reactions(analysis, lang="en", design=None):
+    """Magnitudes of the joint reactions [kN] (seed 003 fig. 5.4); None without loads."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.loads:
+        return None
+    fig, ax = p.axes(t("f_reactions", lang), t("y_reaction", lang), "kN", width=7.2)
+    rs = _reactions(v)
+    markers = "osv^Dx+<>pP*h"
+    for k, (name, i, j) in enumerate(rs):
+        # reactions equal in magnitude (a two-force link) overlap: distinct markers show it
+        p.line(ax, v.pick(v.a.statics.reaction_magnitude(i, j)) / 1e3,
+               _math("R", name[1:] if name.startswith("R") else name),
+               marker=markers[k % len(markers)], markersize=4, markerfacecolor="none")
+    p.legend(fig, ax, len(rs))
+    return fig
+
+
+def hodograph(analysis, lang="en", design=None):
+    """Hodograph of the largest frame reaction: its y against its x component [kN]
+    (the force of the frame on the link) over the positions, equal scales, with the
+    first and last positions marked and the direction of travel; None without
+    loads."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.loads:
+        return None
+    st = v.a.statics
+    best = None
+    for name, i, j in _reactions(v):
+        if "0" not in (i, j):
+            continue
+        link = j if i == "0" else i
+        r = st.reaction("0", link)
+        rx, ry = v.pick(r[..., 0]) / 1e3, v.pick(r[..., 1]) / 1e3
+        peak = float(np.max(np.hypot(rx, ry)))
+        if best is None or peak > best[0]:
+            best = (peak, name, link, rx, ry)
+    if best is None:
+        return None
+    _, name, link, rx, ry = best
+    title = t("f_hodograph", lang, f"{name} (0 → {link})")
+    fig = new_figure(6.0, 5.0)
+    ax = fig.add_subplot()
+    ax.set_title(title)
+    ax.set_xlabel(f"$R_x$ [{unit('kN', lang)}]")
+    ax.set_ylabel(f"$R_y$ [{unit('kN', lang)}]")
+    ax.grid(True, alpha=0.35)
+    ax.plot(rx, ry, "-o", ms=3, color="C0", zorder=2)
+    c = v.coords[0]
+    for k, key, style in ((0, "start", dict(marker="o", color="C2")),
+                          (-1, "end", dict(marker="s", color="C3"))):
+        if v.k == 1:
+            qtxt = f"{c} = {p.x[k]:.4g} {unit(v.coord_unit(c), lang)}"
+        else:
+            qtxt = f"{t('position', lang)} {range(len(rx))[k]}"
+        ax.plot(rx[k], ry[k], ls="none", ms=8, zorder=3, label=f"{t(key, lang)}: {qtxt}",
+                **style)
+    if len(rx) > 1:  # the direction of travel, at the middle of the curve
+        m = (len(rx) - 1) // 2
+        ax.annotate("", xy=(rx[m + 1], ry[m + 1]), xytext=(rx[m], ry[m]),
+                    arrowprops=dict(arrowstyle="-|>", color="C0", lw=1.5), zorder=3)
+    span = max(np.ptp(rx), np.ptp(ry), 1e-12)
+    if np.hypot(np.mean(rx), np.mean(ry)) < 3 * span:  # the origin is near: show it
+        ax.plot([0], [0], "k+", ms=10)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def stability(analysis, lang="en", design=None):
+    """Share of the total weight on the steered axle [%] with the rule's limit
+    (seed 003 fig. 6.2); None without machine data."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    st = v.a.stability
+    if st is None:
+        return None
+    fig, ax = p.axes(t("f_stability", lang), t("y_share", lang), "%")
+    p.line(ax, v.pick(st.steered_share), t("steered_axle", lang, st.steered), color="C0")
+    lim = 100.0 * st.min_share
+    ax.axhline(lim, ls="--", lw=1.2, color="C3", label=t("min_share", lang, lim))
+    ax.axhspan(min(0.0, ax.get_ylim()[0]), lim, color="C3", alpha=0.08)
+    top = max(float(np.nanmax(v.pick(st.steered_share))), lim)
+    ax.set_ylim(0, top * 1.25 + 1)
+    ax.legend(fontsize="small")
+    return fig
+
+
+#: name -> function, in the report's order
+FIGURES = {"angles": angles, "analogs": analogs, "transmission": transmission,
+           "capacity": capacity, "force": force, "pressure": pressure, "reactions": reactions,
+           "hodograph": hodograph, "stability": stability}
+
+
+def figures(analysis, lang="en", design=None, names=None) -> dict:
+    """Every diagram whose data exist, ``{name: Figure}`` in :data:`FIGURES` order.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    lang : {"en", "ru"}
+    design : int, optional
+        Design of a batch (required for a batch).
+    names : iterable of str, optional
+        A subset of :data:`FIGURES`.
+    """
+    check_lang(lang)
+    names = list(FIGURES) if names is None else list(names)
+    bad = [n for n in names if n not in FIGURES]
+    if bad:
+        raise ValueError(f"figure names must be among: {list(FIGURES)}; got {bad}")
+    out = {}
+    for n in names:
+        fig = FIGURES[n](analysis, lang, design)
+        if fig is not None:
+            out[n] = fig
+    return out
+
+
+_FORMATS = ("png", "svg")
+
+
+def save(fig, path, dpi=110) -> Path:
+    """Write a figure as PNG or SVG, chosen by the file suffix."""
+    path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in _FORMATS:
+        raise ValueError(f"the file suffix must be one of: {['.' + f for f in _FORMATS]}; "
+                         f"got {path.name!r}")
+    meta = {"Software": None} if fmt == "png" else {"Creator": None}
+    fig.savefig(path, format=fmt, dpi=dpi, metadata=meta)
+    return path
+
+
+def to_png_bytes(fig, dpi=110) -> bytes:
+    """The figure as PNG bytes (for embedding)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None})
+    return buf.getvalue()

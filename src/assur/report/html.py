@@ -1,0 +1,417 @@
+"""One self-contained HTML file: model, tables, diagrams, drawing, animation, notes.
+
+Everything is inside the file: styles and the small animation player are inline,
+images are ``data:`` URIs (base64 PNG). It links to nothing outside itself (no
+CSS, scripts, fonts or network addresses), so it can be mailed or archived as is.
+
+Numbers in the HTML tables are rounded as the seeds print them (m to 3 decimals,
+degrees and % to 1, N and Pa to whole units, dimensionless to 3); the CSV and
+XLSX files keep full precision.
+"""
+
+from __future__ import annotations
+
+import base64
+from pathlib import Path
+
+import numpy as np
+
+from ..groups import Crank, CylinderLever, Dyad, Frame, RigidPoint, SliderDyad, SliderInput
+from ..loads import Couple, Mass, PointForce, Spring, Weight
+from ..mechanism import PosePoint
+from .labels import TEXT, check_lang, t, unit
+
+__all__ = ["write_html", "render_html", "parameter_units"]
+
+#: decimals shown per unit (the seeds' printed precision)
+DECIMALS = {"m": 3, "deg": 1, "-": 3, "rad/m": 3, "N": 0, "Pa": 0, "%": 1, "N·m": 0,
+            "m/rad": 3}
+
+#: role of a reference in a group -> unit
+_ROLE_UNITS = {"x": "m", "y": "m", "ra": "m", "rb": "m", "lever": "m", "s": "m",
+               "radius": "m", "phase": "rad", "offset": "m", "direction": "rad",
+               "length": "m", "angle": "rad", "base": "m", "opposite": "m", "dx": "m",
+               "dy": "m"}
+
+
+def parameter_units(mech) -> dict:
+    """Unit of each parameter, inferred from where the model uses it.
+
+    A parameter used as a length of a group is in m, as an angle in rad, as a
+    weight or force in N, as a cylinder bore in m, a pressure in Pa, an efficiency
+    or a count in ``-``. Parameters used nowhere get ``""``.
+    """
+    units = {}
+
+    def put(ref, u):
+        if isinstance(ref, str) and ref in mech.params and ref not in units:
+            units[ref] = u
+
+    for g in mech.groups:
+        for role, ref in g.refs().items():
+            put(ref, _ROLE_UNITS.get(role, ""))
+        for ref in getattr(g, "at", ()) or ():
+            put(ref, "m")
+    for ld in mech.loads:
+        if isinstance(ld, Weight):
+            put(ld.P, "N")
+        elif isinstance(ld, PointForce):
+            put(ld.fx, "N")
+            put(ld.fy, "N")
+        elif isinstance(ld, Couple):
+            put(ld.M, "N·m")
+        elif isinstance(ld, Spring):
+            put(ld.rate, "N/m")
+            put(ld.free_length, "m")
+            put(ld.preload, "N")
+        elif isinstance(ld, Mass):
+            put(ld.m, "kg")
+            put(ld.J, "kg·m²")
+    for c in mech.cylinders:
+        put(c.bore, "m")
+        put(c.rod, "m")
+        put(c.count, "-")
+        put(c.eta_mech, "-")
+        put(c.eta_hyd, "-")
+        for f in (c.p_relief, c.dp_throttle, c.dp_line):
+            put(f, "Pa")
+    carry = mech.machine
+    if carry is not None:
+        put(getattr(carry, "weight", None), "N")
+        seed = getattr(carry, "seed_gs6max", None) or {}
+        for k, ref in seed.items():
+            put(ref, "N" if k in ("tractor_weight", "counterweight") else "m")
+    return {name: units.get(name, "") for name in mech.params}
+
+
+def _fmt(x, u, lang):
+    """A number as the seeds print it."""
+    if isinstance(x, (bool, np.bool_)):
+        return t("yes" if x else "no", lang)
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    x = float(x)
+    if np.isnan(x):
+        return "—"
+    if np.isinf(x):
+        return "∞" if x > 0 else "−∞"
+    d = DECIMALS.get(u, 4)
+    if x != 0 and (abs(x) < 0.5 * 10.0 ** (-d) or abs(x) >= 1e9):
+        return f"{x:.3g}"
+    s = f"{x:.{d}f}"
+    return s.lstrip("-") if float(s) == 0 else s
+
+
+def _fmt_param(v, u, lang):
+    a = np.asarray(v, dtype=float)
+    if a.ndim and a.size > 1:
+        return f"[{a.size}] {a.min():.6g} … {a.max():.6g}"
+    x = float(a.reshape(-1)[0]) if a.ndim else float(a)
+    s = f"{x:.9g}"
+    if u == "rad":
+        s += f" ({np.degrees(x):.6g}°)"
+    return s
+
+
+def _data_uri(png: bytes) -> str:
+    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+
+
+def _anchor(prefix, ident):
+    return prefix + "".join(ch if ch.isalnum() else "-" for ch in str(ident)).lower()
+
+
+_KINDS = {Frame: ("frame pivot", "шарнир стойки"),
+          CylinderLever: ("cylinder–lever group", "группа «гидроцилиндр – рычаг»"),
+          Dyad: ("RRR dyad", "диада ВВВ"), Crank: ("crank", "кривошип"),
+          SliderInput: ("slider input", "входной ползун"),
+          RigidPoint: ("rigid point", "точка жёсткого звена"),
+          SliderDyad: ("RRP dyad", "диада ВВП"),
+          PosePoint: ("rigid point fixed at a pose", "точка звена, заданная в положении")}
+
+
+def _kind(g, lang):
+    for cls, names in _KINDS.items():
+        if type(g) is cls:
+            return names[0 if lang == "en" else 1]
+    return getattr(g, "kind", type(g).__name__)
+
+
+def _summary(analysis, lang):
+    mech = analysis.mechanism
+    kin = analysis.kinematics
+    units = parameter_units(mech)
+    params = [(n, _fmt_param(v, units[n], lang), unit(units[n], lang) if units[n] else "—")
+              for n, v in mech.params.items()]
+    coords = []
+    for c in kin.coordinates:
+        q = np.asarray(kin.q(c), dtype=float)
+        is_angle = any(isinstance(g, Crank) and g.angle == c for g in mech.groups)
+        qq, u = (np.degrees(q), "deg") if is_angle else (q, "m")
+        coords.append(f"{c}: {qq.min():.6g} … {qq.max():.6g} {unit(u, lang)} "
+                      f"({q.shape[-1]} {t('positions', lang)})")
+    groups = [(g.name, _kind(g, lang), ", ".join(g.inputs()), ", ".join(g.outputs()),
+               ", ".join(g.group_links())) for g in mech.groups if not isinstance(g, Frame)]
+    links = []
+    for b, v in mech.bodies.items():
+        kind = t("frame", lang) if b == "0" else (t("variable", lang) if v["variable"]
+                                                  else t("rigid", lang))
+        links.append((b, kind, ", ".join(v["points"])))
+    machine = []
+    carry = mech.machine
+    if carry is not None and getattr(carry, "machine", None) is not None:
+        mc = carry.machine
+        for name, x in mc.axles.items():
+            tag = " (steered)" if name == mc.steered and lang == "en" else (
+                " (управляемая)" if name == mc.steered else "")
+            machine.append(f"{'axle' if lang == 'en' else 'ось'} {name}{tag}: "
+                           f"x = {x:.6g} {unit('m', lang)}")
+        for name, p, x in tuple(mc.weights) + tuple(mc.counterweights):
+            machine.append(f"{name}: {p:.6g} {unit('N', lang)}, x = {x:.6g} {unit('m', lang)}")
+        machine.append(f"min share: {100 * mc.min_share:g} %" if lang == "en"
+                       else f"минимальная доля: {100 * mc.min_share:g} %")
+    return dict(params=params, coords=coords, groups=groups, links=links, machine=machine)
+
+
+def _table_view(tab, lang):
+    cols = []
+    for c in tab.columns:
+        mark = "*" if c.seed_sign < 0 else ""
+        tip = c.label.get(lang, "") + (f" — {t('seed_sign', lang)}" if mark else "")
+        cols.append(dict(symbol=c.symbol + mark, unit=unit(c.unit, lang), tip=tip))
+    rows = []
+    for i in range(len(tab)):
+        rows.append([_fmt(c.values[i], c.unit, lang) for c in tab.columns])
+    return dict(id=tab.id, anchor=_anchor("table-", tab.id), title=tab.title(lang), cols=cols,
+                rows=rows, notes=[n.get(lang, n.get("en", "")) for n in tab.notes])
+
+
+def _figure_items(figures, lang):
+    from .figures import to_png_bytes
+
+    items = []
+    for k, (name, obj) in enumerate(figures.items(), start=1):
+        caption = None
+        if isinstance(obj, tuple):
+            obj, caption = obj
+        if not isinstance(obj, (bytes, bytearray)):
+            if caption is None and obj.axes:
+                caption = obj.axes[0].get_title()
+            obj = to_png_bytes(obj)
+        if caption is None:
+            key = f"f_{name}"
+            caption = TEXT[key][lang].replace("{0}", "").strip() if key in TEXT else name
+        items.append(dict(name=name, anchor=_anchor("fig-", name), src=_data_uri(bytes(obj)),
+                          caption=f"{t('figure', lang)} {k} — {caption}"))
+    return items
+
+
+def _warnings(analysis, tables, lang):
+    mech = analysis.mechanism
+    groups = []
+    model_notes = list(mech.notes) + list(getattr(analysis.kinematics, "failures", []))
+    groups.append((t("model_notes", lang), model_notes))
+    seed_flags = list(analysis.statics.seed_flags)
+    groups.append((t("statics_flags", lang), seed_flags))
+    st = analysis.stability
+    stab = list(getattr(st, "flags", ()) or ()) if st is not None else []
+    groups.append((t("stability_flags", lang), stab))
+    seen = set(model_notes) | set(seed_flags) | set(stab)
+    other = []
+    for tab in tables:
+        for n in tab.notes:
+            txt = n.get(lang, n.get("en", ""))
+            if txt not in seen and n.get("en") not in seen:
+                seen.add(txt)
+                other.append(f"{t('table', lang)} {tab.id}: {txt}")
+    groups.append((t("table_notes", lang), other))
+    return [dict(title=g, entries=items) for g, items in groups if items]
+
+
+_TEMPLATE = r"""<!DOCTYPE html>
+<html lang="{{ lang }}">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{{ title }} — {{ L.report }}</title>
+<style>
+body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif;
+       margin: 0 auto; max-width: 1180px; padding: 0 1.2em 3em; color: #1d2125;
+       line-height: 1.4; }
+h1 { margin: 0.8em 0 0.1em; font-size: 1.6em; }
+h2 { border-bottom: 2px solid #d0d7de; padding-bottom: 0.2em; margin-top: 1.8em; }
+h3 { margin: 1.4em 0 0.4em; font-size: 1.08em; }
+.sub { color: #57606a; margin: 0; }
+nav ul { columns: 2; padding-left: 1.2em; }
+nav a, a { color: #0b5cad; text-decoration: none; }
+.scroll { overflow-x: auto; border: 1px solid #d0d7de; border-radius: 4px; }
+table { border-collapse: collapse; font-size: 0.86em; font-variant-numeric: tabular-nums; }
+th, td { padding: 0.22em 0.6em; border-bottom: 1px solid #eaeef2; text-align: right;
+         white-space: nowrap; }
+th { background: #f6f8fa; position: sticky; top: 0; }
+th .u { display: block; font-weight: normal; color: #57606a; font-size: 0.9em; }
+td:first-child, th:first-child { position: sticky; left: 0; background: #f6f8fa; }
+table.kv td, table.kv th { text-align: left; }
+.notes { font-size: 0.86em; color: #57606a; margin: 0.3em 0 0 1.2em; }
+figure { display: inline-block; margin: 0.6em 0.6em 1em 0; vertical-align: top; }
+figure img { max-width: 100%; border: 1px solid #eaeef2; }
+figcaption { font-size: 0.9em; color: #3d444d; }
+.warn { background: #fff8e1; border-left: 4px solid #e0a800; padding: 0.5em 1em;
+        margin: 0.6em 0; }
+.warn li { margin: 0.3em 0; }
+.player button { font-size: 0.95em; margin-right: 0.6em; }
+.player input { width: 60%; vertical-align: middle; }
+footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
+</style>
+</head>
+<body>
+<h1>{{ title }}</h1>
+<p class="sub">{{ L.report }} · {{ name }}</p>
+
+<nav><h2>{{ L.contents }}</h2>
+<ul>
+<li><a href="#model">{{ L.summary }}</a></li>
+{% for tab in tables %}<li><a href="#{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</a></li>
+{% endfor %}{% if figures %}<li><a href="#figures">{{ L.figures }}</a></li>{% endif %}
+{% if drawing or frames %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
+<li><a href="#warnings">{{ L.warnings }}</a></li>
+</ul></nav>
+
+<section id="model"><h2>{{ L.summary }}</h2>
+<p><b>{{ L.coordinates }}:</b> {% for c in summary.coords %}{{ c }}{% if not loop.last %}; {% endif %}{% endfor %}</p>
+<h3>{{ L.parameters }}</h3>
+<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.value }}</th><th>{{ L.unit }}</th></tr>
+{% for n, v, u in summary.params %}<tr><td>{{ n }}</td><td>{{ v }}</td><td>{{ u }}</td></tr>
+{% endfor %}</table></div>
+<h3>{{ L.groups }}</h3>
+<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.kind }}</th><th>{{ L.inputs }}</th><th>{{ L.outputs }}</th><th>{{ L.links }}</th></tr>
+{% for g in summary.groups %}<tr>{% for c in g %}<td>{{ c }}</td>{% endfor %}</tr>
+{% endfor %}</table></div>
+<h3>{{ L.links }}</h3>
+<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.kind }}</th><th>{{ L.points }}</th></tr>
+{% for l in summary.links %}<tr>{% for c in l %}<td>{{ c }}</td>{% endfor %}</tr>
+{% endfor %}</table></div>
+{% if summary.machine %}<h3>{{ L.machine }}</h3><ul>{% for m in summary.machine %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
+</section>
+
+<section id="tables"><h2>{{ L.tables }}</h2>
+{% for tab in tables %}
+<h3 id="{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</h3>
+<div class="scroll"><table>
+<tr>{% for c in tab.cols %}<th title="{{ c.tip }}">{{ c.symbol }}<span class="u">[{{ c.unit }}]</span></th>{% endfor %}</tr>
+{% for row in tab.rows %}<tr>{% for v in row %}<td>{{ v }}</td>{% endfor %}</tr>
+{% endfor %}</table></div>
+{% if tab.notes %}<ul class="notes">{% for n in tab.notes %}<li>{{ n }}</li>{% endfor %}</ul>{% endif %}
+{% endfor %}
+</section>
+
+{% if figures %}<section id="figures"><h2>{{ L.figures }}</h2>
+{% for f in figures %}<figure id="{{ f.anchor }}"><img src="{{ f.src }}" alt="{{ f.caption }}"><figcaption>{{ f.caption }}</figcaption></figure>
+{% endfor %}</section>{% endif %}
+
+{% if drawing or frames %}<section id="drawing"><h2>{{ L.drawing }}</h2>
+{% if drawing %}<figure><img src="{{ drawing }}" alt="{{ L.drawing }}"><figcaption>{{ L.drawing }}</figcaption></figure>{% endif %}
+{% if frames %}<figure id="animation"><img id="anim-img" src="{{ frames[0] }}" alt="{{ L.animation }}">
+<figcaption>{{ L.animation }}</figcaption>
+<div class="player"><button type="button" id="anim-play">{{ L.play }}</button>
+<input type="range" id="anim-pos" min="0" max="{{ frames|length - 1 }}" value="0" aria-label="{{ L.position }}"></div>
+</figure>
+<script>
+(function () {
+  var frames = {{ frames|tojson }};
+  var img = document.getElementById("anim-img"), pos = document.getElementById("anim-pos");
+  var i = 0, dir = 1, timer = null;
+  function show(k) { i = k; img.src = frames[k]; pos.value = k; }
+  function step() { var n = i + dir; if (n < 0 || n >= frames.length) { dir = -dir; n = i + dir; } show(n); }
+  function toggle() { if (timer) { clearInterval(timer); timer = null; } else { timer = setInterval(step, {{ interval }}); } }
+  document.getElementById("anim-play").addEventListener("click", toggle);
+  pos.addEventListener("input", function () { if (timer) toggle(); show(+pos.value); });
+  toggle();
+})();
+</script>{% endif %}
+</section>{% endif %}
+
+<section id="warnings"><h2>{{ L.warnings }}</h2>
+{% for w in warnings %}<div class="warn"><b>{{ w.title }}</b><ul>{% for i in w.entries %}<li>{{ i }}</li>{% endfor %}</ul></div>
+{% else %}<p>{{ L.no_warnings }}</p>{% endfor %}
+</section>
+<footer>{{ L.generated }}</footer>
+</body>
+</html>
+"""
+
+
+def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, animation=None,
+                design=None, interval=120) -> str:
+    """The report as an HTML string (see :func:`write_html`)."""
+    import jinja2
+
+    from . import drawing as _drawing
+    from . import figures as _figures
+    from .tables import seed_tables
+
+    check_lang(lang)
+    if tables is None:
+        tables = seed_tables(analysis, lang, design=design)
+    if figures is None:
+        figures = _figures.figures(analysis, lang, design=design)
+    if drawing is None:
+        drawing = _drawing.draw(analysis, lang=lang, design=design)
+    if animation is None:
+        animation = _drawing.render_frames(analysis, lang=lang, design=design)
+    drawing_uri = None
+    if drawing is not False:
+        png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
+        drawing_uri = _data_uri(bytes(png))
+    frames = []
+    if animation is not False and animation:
+        if not isinstance(animation[0], (bytes, bytearray)):
+            animation = _drawing.frames_png_bytes(animation)
+        frames = [_data_uri(bytes(f)) for f in animation]
+    env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
+    tpl = env.from_string(_TEMPLATE)
+    L = {k: v[lang] for k, v in TEXT.items()}
+    mech = analysis.mechanism
+    return tpl.render(
+        lang=lang, L=L, title=mech.title, name=mech.name,
+        summary=_summary(analysis, lang),
+        tables=[_table_view(tab, lang) for tab in tables],
+        figures=_figure_items(dict(figures), lang),
+        drawing=drawing_uri, frames=frames, interval=int(interval),
+        warnings=_warnings(analysis, tables, lang))
+
+
+def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=None,
+               animation=None, design=None) -> Path:
+    """Write the whole report as one self-contained HTML file.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    path : str or Path
+        The ``.html`` file to write.
+    lang : {"en", "ru"}
+        Language of every label.
+    figures : mapping of str to Figure, bytes or (bytes, caption), optional
+        The diagrams (PNG bytes or matplotlib figures); default: all of
+        :func:`assur.report.figures.figures`.
+    tables : list of Table, optional
+        Default: :func:`assur.report.tables.seed_tables`.
+    drawing : Figure, bytes or False, optional
+        The drawing of the mechanism; default :func:`assur.report.drawing.draw`;
+        False leaves it out.
+    animation : list of PNG bytes or PIL images, or False, optional
+        Frames of the animation (played by an inline script); default
+        :func:`assur.report.drawing.render_frames`; False leaves it out.
+    design : int, optional
+        Design of a batch.
+
+    Returns
+    -------
+    Path
+    """
+    text = render_html(analysis, lang, figures, tables, drawing, animation, design)
+    path = Path(path)
+    path.write_text(text, encoding="utf-8")
+    return path
+

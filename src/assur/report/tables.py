@@ -1,0 +1,623 @@
+"""The seed worksheets' tables as data, and their CSV and XLSX files.
+
+:func:`seed_tables` turns an :class:`~assur.analysis.Analysis` into the tables a
+seed worksheet prints (seed 003: 2.1, 2.2, 3.1, 4.1, 5.1, 6.1 and the check
+through the instantaneous centre). Only tables whose data exist are made: a
+mechanism without cylinders has no 4.1, without loads no 5.1, without machine
+data no 6.1.
+
+Column symbols
+--------------
+One scheme for every mechanism; for seed 003 it gives the seed's own symbols
+except where noted. ``<c>`` is a generalized coordinate, ``<p>`` a point, ``<l>``
+a link, ``<i><j>`` a pair of links:
+
+==================  ========  ====================================================
+symbol              unit      meaning
+==================  ========  ====================================================
+``<c>``             m or deg  the generalized coordinate (seed ``S``); crank angles
+                              are printed in degrees
+``phi<l>``          deg       angle of link l from +x, CCW (seed ``φ3(S)/deg``)
+``X<p>``, ``Y<p>``  m         point coordinates (seed ``X23(S)``)
+``closure``         m         largest closure residual of all groups (assur's
+                              check; replaces the seed's ``X23s``… columns)
+``U<i><j>``         \\-        transfer ratio φ_i'/φ_j' (seed ``U43``)
+``I<p>``            \\-        transmission number dY/dq of point p (seed ``I56``)
+``dphi<l>``         rad/m     angular-velocity analog dφ_l/dq (seed ``dφ3``; its
+                              ``φ41…φ71`` are ``dphi4…dphi7``)
+``F_<c>``           N         cylinder force by virtual work (seed ``Fgc``); in
+                              table 5.1 the same force from the reactions
+``p_<c>``           Pa        cylinder pressure (seed ``Pgc``)
+``G<p>``            N         lift capacity at point p (seed ``G56``, ``GS6``)
+``dG<p>``           %         capacity reserve against the weight at p (seed
+                              ``ΔGS65``)
+``R<ij>x/y``, R…    N         reaction: force of link i on link j and its
+                              magnitude; the seed's name when the model gives
+                              one (``tables["reactions"]``)
+``M<ij>``            N·m       moment of i on j at a driven crank's pivot or a
+                              prismatic pair (only where not zero)
+``R<axle>``         N         axle reaction (seed ``Ra``, ``Rb``)
+``dR<axle>``        %         axle share of the total weight (seed ``ΔRa``)
+``G_max``           N         largest implement weight under the 20 % rule
+``GS6max`` …        N         a seed formula reproduced as printed (flagged)
+``Xp``, ``Yp``      m         instantaneous centre of the checked link
+``I<p>_ic``         \\-        φ'·(X<p> − Xp): I<p> through the instantaneous
+                              centre (seed ``Imp``, ``lsp``)
+==================  ========  ====================================================
+
+With k > 1 coordinates every analog symbol gets the suffix ``_<c>`` (``dphi3_S1``);
+with several cylinders ``G<p>`` and ``dG<p>`` get it too. Analogs with respect to
+a crank angle are in rad/rad (unit ``-``) and transmission numbers in m/rad.
+
+Sign convention of reactions: ``R<ij>`` is the force of link i on link j (the
+frame is link 0). Where a seed prints the opposite sign (seed 003 R05, R34, R45,
+see :data:`assur.statics.SEED_003_SIGN_NOTE`) the column carries
+``seed_sign = -1`` and the table a note; the numbers are assur's.
+
+Files: :func:`write_csv` writes a header ``symbol [unit]`` per column and every
+number with ``repr`` (a float read back is the same float); :func:`write_xlsx`
+one sheet per table with the same header and the same numbers as floats
+(an empty cell where a value is NaN or infinite, which Excel cannot hold).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import SingularPositionError
+from ..groups import Crank, SliderInput
+from ..loads import Weight
+from .labels import TEXT, check_lang
+
+__all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename"]
+
+
+def _both(key, *args):
+    """{lang: text} for a label key."""
+    return {lang: (txt.format(*args) if args else txt) for lang, txt in TEXT[key].items()}
+
+
+def _same(text):
+    return {"en": text, "ru": text}
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column of a table.
+
+    Attributes
+    ----------
+    symbol : str
+        Seed-like symbol (module notes), e.g. ``"phi3"``, ``"I56"``.
+    unit : str
+        SI unit symbol: ``m``, ``deg``, ``-``, ``N``, ``Pa``, ``%``, ``rad/m``…
+    values : ndarray, shape (n,)
+        One value per position (NaN where undefined).
+    label : dict of str to str
+        Description by language (``"en"``, ``"ru"``).
+    seed_sign : int
+        +1, or −1 where the seed prints these values with the opposite sign.
+    """
+
+    symbol: str
+    unit: str
+    values: np.ndarray
+    label: dict = field(default_factory=dict)
+    seed_sign: int = 1
+
+    @property
+    def header(self) -> str:
+        """``symbol [unit]``, the CSV and XLSX header."""
+        return f"{self.symbol} [{self.unit}]"
+
+
+@dataclass(frozen=True)
+class Table:
+    """A seed-like table: id, titles and columns over the positions.
+
+    Attributes
+    ----------
+    id : str
+        Seed numbering: ``"2.1"``, ``"2.2"``, ``"3.1"``, ``"4.1"``, ``"5.1"``,
+        ``"6.1"``, ``"IC"`` (instantaneous-centre check).
+    titles : dict of str to str
+        Title by language.
+    columns : tuple of Column
+        The first column(s) are the generalized coordinate(s).
+    notes : tuple of dict
+        Notes by language (singular positions, seed signs, flagged formulas).
+    """
+
+    id: str
+    titles: dict
+    columns: tuple
+    notes: tuple = ()
+
+    def title(self, lang="en") -> str:
+        return self.titles[check_lang(lang)]
+
+    @property
+    def title_en(self) -> str:
+        return self.titles["en"]
+
+    @property
+    def title_ru(self) -> str:
+        return self.titles["ru"]
+
+    @property
+    def symbols(self) -> list:
+        return [c.symbol for c in self.columns]
+
+    def column(self, symbol) -> Column:
+        for c in self.columns:
+            if c.symbol == symbol:
+                return c
+        raise KeyError(f"table {self.id} has no column {symbol!r}; columns: {self.symbols}")
+
+    def __getitem__(self, symbol) -> np.ndarray:
+        return self.column(symbol).values
+
+    def __len__(self):
+        return len(self.columns[0].values) if self.columns else 0
+
+    def to_frame(self):
+        """pandas DataFrame with the ``symbol [unit]`` headers."""
+        import pandas as pd
+        return pd.DataFrame({c.header: c.values for c in self.columns})
+
+
+# ---- reading the analysis ---------------------------------------------------------------
+class _View:
+    """One design of an Analysis as 1-D arrays over the positions."""
+
+    def __init__(self, analysis, design=None):
+        self.a = analysis
+        self.kin = analysis.kinematics
+        self.mech = analysis.mechanism
+        shape = self.kin.shape
+        if len(shape) == 2:
+            if design is None:
+                raise ValueError(f"this analysis holds a batch of {shape[0]} designs: choose one "
+                                 f"with design=<index>")
+            if not -shape[0] <= design < shape[0]:
+                raise ValueError(f"design must be in 0…{shape[0] - 1}, got {design}")
+        elif design not in (None, 0):
+            raise ValueError(f"this analysis holds one design; design must be None or 0, "
+                             f"got {design}")
+        self.design = design
+        self.n = shape[-1]
+        self.k = self.kin.k
+        self.coords = self.kin.coordinates
+
+    def pick(self, a):
+        """Array over positions, shape (n,), of this design (NaN where masked)."""
+        if np.ma.isMaskedArray(a):
+            a = np.ma.filled(a.astype(float), np.nan)
+        a = np.asarray(a)
+        if a.ndim >= 2:
+            a = a[self.design]
+        if a.ndim == 1 and a.shape[0] not in (1, self.n):
+            a = a[self.design]  # an array over designs, shape (m,)
+        return np.array(np.broadcast_to(a.reshape(-1) if a.ndim else a, (self.n,)))
+
+    def scalar(self, a):
+        """A parameter value (scalar or per design) of this design."""
+        a = np.asarray(a, dtype=float)
+        if a.ndim and a.size > 1:
+            return float(a.reshape(-1)[self.design])
+        return float(a.reshape(-1)[0]) if a.ndim else float(a)
+
+    # coordinates ---------------------------------------------------------------------
+    def coord_kind(self, c):
+        for g in self.mech.groups:
+            if isinstance(g, Crank) and g.angle == c:
+                return "angle"
+            if isinstance(g, SliderInput) and g.s == c:
+                return "slider"
+        for cyl in self.mech.cylinders:
+            if cyl.coordinate == c:
+                return "cylinder"
+        return "length"
+
+    def is_angle(self, c):
+        return self.coord_kind(c) == "angle"
+
+    def coord_unit(self, c):
+        return "deg" if self.is_angle(c) else "m"
+
+    def coord_values(self, c):
+        v = self.pick(self.kin.q(c))
+        return np.degrees(v) if self.is_angle(c) else v
+
+    def coord_label(self, c):
+        key = {"angle": "c_crank", "slider": "c_slider", "cylinder": "c_cyl_len"}.get(
+            self.coord_kind(c), "c_coord")
+        return {lang: f"{txt} {c}" for lang, txt in TEXT[key].items()}
+
+    def analog_unit(self, c):
+        return "-" if self.is_angle(c) else "rad/m"
+
+    def transmission_unit(self, c):
+        return "m/rad" if self.is_angle(c) else "-"
+
+    def wrts(self):
+        """[(symbol suffix, wrt argument, coordinate)]"""
+        if self.k == 1:
+            return [("", None, self.coords[0])]
+        return [(f"_{c}", c, c) for c in self.coords]
+
+    def coord_columns(self):
+        return [Column(c, self.coord_unit(c), self.coord_values(c), self.coord_label(c))
+                for c in self.coords]
+
+    def positions_text(self, bad):
+        """'S = 0.42, 0.45' for the positions where ``bad``."""
+        idx = np.flatnonzero(bad)
+        parts = []
+        for i in idx[:6]:
+            parts.append(", ".join(f"{c} = {self.coord_values(c)[i]:.6g}" for c in self.coords))
+        return "; ".join(parts) + ("; …" if len(idx) > 6 else "")
+
+    # loads ---------------------------------------------------------------------------
+    def weights_at(self, point):
+        """[(name, P [N])] of the weights acting at ``point``."""
+        out = []
+        for ld in self.mech.loads:
+            if isinstance(ld, Weight) and ld.point == point:
+                name = ld.name or (ld.P if isinstance(ld.P, str) else "P")
+                out.append((name, self.scalar(self.mech.value_of(ld.P))))
+        return out
+
+    def transmission_points(self):
+        pts = list(self.mech.tables.get("transmissions", ()))
+        if not pts:
+            pts = [ld.point for ld in self.mech.loads if isinstance(ld, Weight)]
+        return list(dict.fromkeys(pts))
+
+
+def _singular_note(view, what, values):
+    bad = ~np.isfinite(values)
+    if not bad.any():
+        return None
+    return {lang: TEXT["singular"][lang].format(what, int(bad.sum()), view.positions_text(bad))
+            for lang in TEXT["singular"]}
+
+
+# ---- the tables -----------------------------------------------------------------------
+def _table_2_1(v):
+    cols = v.coord_columns()
+    for link in v.kin.links:
+        cols.append(Column(f"phi{link}", "deg", v.pick(v.kin.phi(link, degrees=True)),
+                           _both("c_phi", link)))
+    return Table("2.1", _both("t2.1"), tuple(cols))
+
+
+def _table_2_2(v):
+    cols = v.coord_columns()
+    for p in v.kin.points:
+        cols.append(Column(f"X{p}", "m", v.pick(v.kin.x(p)), _both("c_x", p)))
+        cols.append(Column(f"Y{p}", "m", v.pick(v.kin.y(p)), _both("c_y", p)))
+    cols.append(Column("closure", "m", v.pick(v.kin.closure_residual()), _both("c_closure")))
+    return Table("2.2", _both("t2.2"), tuple(cols))
+
+
+def _table_3_1(v):
+    kin = v.kin
+    cols = v.coord_columns()
+    notes = []
+    tab = v.mech.tables
+    for sfx, w, c in v.wrts():
+        for i, j in tab.get("ratios", ()):
+            vals = v.pick(kin.ratio(i, j, w, singular="mask"))
+            cols.append(Column(f"U{i}{j}{sfx}", "-", vals, _both("c_U", i, j)))
+            note = _singular_note(v, f"U{i}{j}{sfx}", vals)
+            if note:
+                notes.append(note)
+    for sfx, w, c in v.wrts():
+        for p in tab.get("transmissions", ()):
+            cols.append(Column(f"I{p}{sfx}", v.transmission_unit(c),
+                               v.pick(kin.transmission(p, wrt=w)), _both("c_I", p, c)))
+    for sfx, w, c in v.wrts():
+        for link in kin.links:
+            cols.append(Column(f"dphi{link}{sfx}", v.analog_unit(c), v.pick(kin.dphi(link, w)),
+                               _both("c_dphi", link, c)))
+    return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
+
+
+def _capacity(v, res, point):
+    """Capacity at ``point`` [N], NaN where its transmission number is zero."""
+    try:
+        return v.pick(res.capacity(point)), None
+    except SingularPositionError as e:
+        # the same formula as CylinderResult.capacity, left empty where I = 0
+        kin = v.kin
+        I = v.pick(kin.transmission(point, wrt=res.cylinder.coordinate if kin.k > 1 else None))
+        num = v.pick(res.force_max * res.eta_mech)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            g = np.where(I == 0.0, np.nan, num / np.where(I == 0.0, 1.0, I))
+        return g, str(e)
+
+
+def _table_4_1(v):
+    a = v.a
+    if not a.cylinders:
+        return None
+    cols = v.coord_columns()
+    notes = []
+    several = len(a.cylinders) > 1
+    points = v.transmission_points()
+    for name, res in a.cylinders.items():
+        c = res.cylinder.coordinate
+        sfx = f"_{c}" if several else ""
+        cols.append(Column(f"F_{c}", "N", v.pick(res.force), _both("c_F", name)))
+        cols.append(Column(f"p_{c}", "Pa", v.pick(res.pressure), _both("c_p", name)))
+        for p in points:
+            g, err = _capacity(v, res, p)
+            cols.append(Column(f"G{p}{sfx}", "N", g, _both("c_G", p)))
+            if err:
+                notes.append(_same(err))
+            for wname, P in v.weights_at(p)[:1]:
+                if P > 0:
+                    cols.append(Column(f"dG{p}{sfx}", "%", (g - P) / P * 100.0,
+                                       _both("c_dG", p, wname, P)))
+    return Table("4.1", _both("t4.1"), tuple(cols), tuple(notes))
+
+
+def _table_5_1(v):
+    a = v.a
+    st = a.statics
+    if not v.mech.loads:
+        return None
+    cols = v.coord_columns()
+    named = {}
+    for name, (i, j, sign) in st.seed_reactions().items():
+        named[(str(i), str(j))] = (name, int(sign))
+    done = set()
+    order = list(named.items()) + [((i, j), (f"R{i}{j}", 1)) for _, i, j in st.joints]
+    for (i, j), (name, sign) in order:
+        if frozenset((i, j)) in done:
+            continue
+        done.add(frozenset((i, j)))
+        r = st.reaction(i, j)
+        rx, ry = v.pick(r[..., 0]), v.pick(r[..., 1])
+        cols.append(Column(f"{name}x", "N", rx, _both("c_Rx", name), seed_sign=sign))
+        cols.append(Column(f"{name}y", "N", ry, _both("c_Ry", name), seed_sign=sign))
+        cols.append(Column(name, "N", np.hypot(rx, ry), _both("c_R", name, i, j)))
+        mz = v.pick(st.reaction_moment(i, j))
+        if np.any(mz != 0.0):
+            cols.append(Column(f"M{name[1:] if name.startswith('R') else name}", "N·m", mz,
+                               _same(f"moment {name}")))
+    for c in v.coords:
+        try:
+            f = st.actuator_force_from_reactions(c)
+        except KeyError:
+            continue
+        unit = "N·m" if v.is_angle(c) else "N"
+        cols.append(Column(f"F_{c}", unit, v.pick(f), _both("c_Frx", c)))
+    notes = [{"en": "R_ij is the force of link i on link j at their joint; the frame is link 0.",
+              "ru": "R_ij — сила звена i на звено j в их шарнире; стойка — звено 0."}]
+    flipped = [col.symbol for col in cols if col.seed_sign < 0]
+    if flipped:
+        notes.append({lang: f"{', '.join(flipped)}: {TEXT['seed_sign'][lang]}."
+                      for lang in TEXT["seed_sign"]})
+    notes.extend(_same(f) for f in st.seed_flags)
+    return Table("5.1", _both("t5.1"), tuple(cols), tuple(notes))
+
+
+def _table_6_1(v):
+    st = v.a.stability
+    if st is None:
+        return None
+    cols = v.coord_columns()
+    names = list(st.reactions)
+    lower = [n.lower() for n in names]
+    labels = lower if len(set(lower)) == len(lower) else names  # as StabilityResult.to_frame
+    for n, lab in zip(names, labels):
+        cols.append(Column(f"R{lab}", "N", v.pick(st.reactions[n]), _both("c_Raxle", n)))
+    for n, lab in zip(names, labels):
+        cols.append(Column(f"dR{lab}", "%", v.pick(st.shares[n]), _both("c_dRaxle", n)))
+    cols.append(Column("G_max", "N", v.pick(st.max_implement_weight),
+                       _both("c_Gmax", 100.0 * st.min_share)))
+    cols.append(Column("G_max_no_cw", "N", v.pick(st.max_implement_weight_without_counterweights),
+                       _both("c_Gmax_no_cw")))
+    cols.append(Column("steerable", "-", v.pick(st.steerable).astype(int), _both("c_steerable")))
+    notes = []
+    for name, fv in getattr(st, "seed", {}).items():
+        cols.append(Column(name, "N", v.pick(fv.value), _both("c_seed_value", name)))
+        notes.extend(_same(f) for f in fv.flags)
+    return Table("6.1", _both("t6.1"), tuple(cols), tuple(notes))
+
+
+def _checked_body(v):
+    """The last rigid moving link carrying a transmission point, with its points."""
+    pts = set(v.mech.tables.get("transmissions", ()))
+    found = None
+    for name, body in v.mech.bodies.items():
+        if name == "0" or body["variable"] or len(body["points"]) < 2:
+            continue
+        if pts & set(body["points"]):
+            found = (name, body["points"])
+    return found
+
+
+def _table_ic(v):
+    """Instantaneous-centre check (seed 003, last table) for the last rigid link with a
+    transmission point: its centre P = A + (−A'_y, A'_x)/φ' from the velocity analog
+    of a point A of the link, then I<p> = φ'·(X<p> − Xp) for its transmission points
+    (a point turning about P rises at φ'·(X − Xp))."""
+    if v.k != 1:
+        return None
+    found = _checked_body(v)
+    if found is None:
+        return None
+    body, points = found
+    kin = v.kin
+    A, B = points[0], points[1]
+    link = next((l.name for l in v.mech.links
+                 if {l.tail, l.head} <= set(points) and l.name in kin.links), None)
+    if link is not None:
+        w = v.pick(kin.dphi(link))
+    else:  # φ' of the direction A → B
+        dx, dy = v.pick(kin.x(B) - kin.x(A)), v.pick(kin.y(B) - kin.y(A))
+        ddx, ddy = v.pick(kin.dx(B) - kin.dx(A)), v.pick(kin.dy(B) - kin.dy(A))
+        w = (dx * ddy - dy * ddx) / (dx * dx + dy * dy)
+    ax, ay = v.pick(kin.x(A)), v.pick(kin.y(A))
+    vx, vy = v.pick(kin.dx(A)), v.pick(kin.dy(A))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        still = np.abs(w) <= 1e-12 * max(np.max(np.abs(w)), 1e-300)
+        ws = np.where(still, np.nan, w)
+        xp, yp = ax - vy / ws, ay + vx / ws
+    c = v.coords[0]
+    cols = v.coord_columns()
+    cols.append(Column("Xp", "m", xp, _both("c_Xp", body)))
+    cols.append(Column("Yp", "m", yp, _both("c_Yp", body)))
+    cols.append(Column(f"dphi{body}", v.analog_unit(c), w, _both("c_dphi", body, c)))
+    tps = [p for p in v.mech.tables.get("transmissions", ()) if p in points]
+    for p in tps:
+        cols.append(Column(f"I{p}", v.transmission_unit(c), v.pick(kin.transmission(p)),
+                           _both("c_I", p, c)))
+    for p in tps:
+        cols.append(Column(f"I{p}_ic", v.transmission_unit(c), w * (v.pick(kin.x(p)) - xp),
+                           _both("c_Iic", p, body, c)))
+    notes = []
+    note = _singular_note(v, "Xp", xp)
+    if note:
+        notes.append(note)
+    return Table("IC", _both("tIC"), tuple(cols), tuple(notes))
+
+
+_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_6_1, _table_ic)
+
+
+def seed_tables(analysis, lang="en", design=None) -> list:
+    """The worksheet's tables of an analysis, as data.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        Result of :meth:`assur.Mechanism.analyze`.
+    lang : {"en", "ru"}
+        Checked only; every table carries both languages (``Table.title(lang)``).
+    design : int, optional
+        Which design of a batch to tabulate (required for a batch).
+
+    Returns
+    -------
+    list of Table
+        In the seed's order: 2.1, 2.2, 3.1, 4.1, 5.1, 6.1, IC — those whose data
+        exist.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> [t.id for t in seed_tables(a)]
+    ['2.1', '2.2', '3.1', '4.1', '5.1', '6.1', 'IC']
+    >>> round(float(seed_tables(a)[2]["IS6"][0]), 3)
+    4.713
+    """
+    check_lang(lang)
+    v = _View(analysis, design)
+    return [t for t in (b(v) for b in _BUILDERS) if t is not None]
+
+
+# ---- files -------------------------------------------------------------------------
+def table_filename(table, ext="csv") -> str:
+    """``table_2_1.csv``, ``table_ic.csv``."""
+    return f"table_{table.id.replace('.', '_').lower()}.{ext}"
+
+
+def _cell(v):
+    if isinstance(v, (bool, np.bool_)):
+        return str(int(v))
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    return repr(float(v))
+
+
+def write_csv(table, path) -> Path:
+    """Write one table as CSV: header ``symbol [unit]``, numbers with ``repr`` (exact).
+
+    NaN (undefined, e.g. a singular ratio) is written ``nan``, infinity ``inf``.
+    """
+    path = Path(path)
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerow([c.header for c in table.columns])
+        for row in zip(*(c.values for c in table.columns)):
+            w.writerow([_cell(x) for x in row])
+    return path
+
+
+def _sheet_name(table):
+    return table.id[:31]
+
+
+def write_xlsx(tables, path) -> Path:
+    """Write the tables into one workbook, one sheet per table (named by its id).
+
+    Row 1 holds the ``symbol [unit]`` headers, the rows below the numbers as floats
+    (integers for flags); NaN and infinite values, which Excel cannot store, are
+    left as empty cells.
+    """
+    from openpyxl import Workbook
+    from openpyxl.utils import get_column_letter
+
+    wb = Workbook()
+    wb.remove(wb.active)
+    for tab in tables:
+        ws = wb.create_sheet(_sheet_name(tab))
+        ws.append([c.header for c in tab.columns])
+        for row in zip(*(c.values for c in tab.columns)):
+            out = []
+            for x in row:
+                if isinstance(x, (bool, np.bool_, int, np.integer)):
+                    out.append(int(x))
+                else:
+                    x = float(x)
+                    out.append(x if math.isfinite(x) else None)
+            ws.append(out)
+        ws.freeze_panes = "B2"
+        for j, c in enumerate(tab.columns, start=1):
+            ws.column_dimensions[get_column_letter(j)].width = max(10, len(c.header) + 2)
+    path = Path(path)
+    with _exact_floats():
+        wb.save(path)
+    return path
+
+
+class _exact_floats:
+    """While saving, write floats with ``repr`` (the shortest text that reads back as
+    the same double) instead of openpyxl's ``"%.16g"``, which rounds some doubles
+    (e.g. 0.47555555555555556 becomes 0.4755555555555556, one ulp off). Patches
+    the cell writer's formatter for the duration of the ``with`` block only."""
+
+    def __enter__(self):
+        try:
+            from openpyxl.cell import _writer
+        except ImportError:  # pragma: no cover - a future openpyxl layout
+            self._mod = None
+            return self
+        self._mod, self._orig = _writer, getattr(_writer, "safe_string", None)
+        if self._orig is None:  # pragma: no cover
+            self._mod = None
+            return self
+        orig = self._orig
+
+        def safe_string(value):
+            if isinstance(value, float) and math.isfinite(value):
+                return repr(value)
+            return orig(value)
+
+        _writer.safe_string = safe_string
+        return self
+
+    def __exit__(self, *exc):
+        if self._mod is not None:
+            self._mod.safe_string = self._orig
+        return False
