@@ -17,7 +17,7 @@ $(STAMP): pyproject.toml | $(PY)
 	@touch $(STAMP)
 
 demo: $(STAMP)
-	$(PY) -m assur demo
+	$(VENV)/bin/assur demo
 
 test: $(STAMP)
 	$(PY) -m pytest -n 2 --durations=10

@@ -1,0 +1,674 @@
+"""From a validated model file to a :class:`~assur.Mechanism`.
+
+Four passes over the file's tables (:class:`Builder`):
+
+1. *Uses.* Every value is looked at where it is used, which fixes its kind (a
+   dyad's ``ra`` is a length, a rigid point's ``angle`` an angle, a weight's ``P``
+   a force …). A literal value converts to SI at once; a name must be a parameter
+   (or, where a length may be one, a generalized coordinate) and the parameter
+   takes the kind of its use. A parameter used as two kinds is an error.
+2. *Parameters.* Each converts to SI with the kind of its uses: the unit must
+   have that dimension; a plain number is SI, or degrees for an angle. A parameter
+   that is never used keeps the kind of its unit.
+3. *Mechanism.* Frame, groups in order, links, distances, loads, cylinders,
+   machine and tables are added one at a time to a :class:`~assur.Mechanism`, each
+   point and link name checked against those defined before it; anything the
+   mechanism itself refuses is reported at the entry being added.
+4. *Solve and range.* The ``[[solve]]`` conditions become
+   :class:`~assur.synthesis.Condition` objects solved by
+   :func:`~assur.synthesis.solve_conditions`; a failure is reported at its
+   ``[[solve]]`` entry. The range is evaluated with the solved parameters.
+"""
+
+from __future__ import annotations
+
+
+import numpy as np
+
+from ..errors import AssemblyError, ModelError
+from ..mechanism import Mechanism
+from ..stability import Machine
+from . import _schema as S
+from ._errors import ModelFileError, key_path
+from ._lines import line_of
+from ._units import ANGLE, FORCE, INERTIA, LENGTH, MASS, MOMENT, NUMBER, PRESSURE, \
+    STIFFNESS, UnitError, is_name, parse, to_si, unit_kind
+
+# constraints on values beyond their kind: (test, words)
+_FLAGS = {
+    "positive": (lambda v: v > 0, lambda k: f"a positive {k.name}"),
+    "nonneg": (lambda v: v >= 0, lambda k: f"a non-negative {k.name}"),
+    "fraction": (lambda v: 0 < v <= 1, lambda k: "a number in (0, 1]"),
+    "share": (lambda v: 0 <= v < 1, lambda k: "a number in [0, 1)"),
+}
+
+# per group type: value fields (kind, flag, may be a coordinate), point inputs, the
+# coordinate field, and the number of links the group adds (None: at most one)
+_GROUP_VALUES = {
+    "cylinder_lever": {"lever": (LENGTH, "positive", True)},
+    "dyad": {"ra": (LENGTH, "positive", True), "rb": (LENGTH, "positive", True)},
+    "crank": {"radius": (LENGTH, "positive", True), "phase": (ANGLE, None, False)},
+    "slider_input": {"offset": (LENGTH, None, False), "direction": (ANGLE, None, False)},
+    "slider_dyad": {"radius": (LENGTH, "positive", True), "direction": (ANGLE, None, False)},
+    "rigid_point": {"length": (LENGTH, "positive", True), "angle": (ANGLE, None, False),
+                    "base": (LENGTH, "positive", False),
+                    "opposite": (LENGTH, "positive", False)},
+    "pose_point": {"dx": (LENGTH, None, False), "dy": (LENGTH, None, False)},
+}
+_GROUP_POINTS = {
+    "cylinder_lever": ("base", "pivot"), "dyad": ("a", "b"), "crank": ("pivot",),
+    "slider_input": ("origin",), "slider_dyad": ("a", "line_point"),
+    "rigid_point": ("origin", "toward"), "pose_point": ("origin", "toward"),
+}
+_GROUP_COORD = {"cylinder_lever": ("s", LENGTH), "slider_input": ("s", LENGTH),
+                "crank": ("angle", ANGLE)}
+_GROUP_LINKS = {"cylinder_lever": ("cylinder", "lever"), "dyad": ("link at a", "link at b"),
+                "crank": ("crank",), "slider_input": ("slider",),
+                "slider_dyad": ("link at a", "slider"), "rigid_point": None,
+                "pose_point": None}
+_LOAD_VALUES = {
+    "weight": {"P": (FORCE, "nonneg")},
+    "force": {"fx": (FORCE, None), "fy": (FORCE, None)},
+    "moment": {"M": (MOMENT, None)},
+    "spring": {"rate": (STIFFNESS, "nonneg"), "free_length": (LENGTH, "nonneg"),
+               "preload": (FORCE, None)},
+    "mass": {"m": (MASS, "positive"), "J": (INERTIA, "nonneg")},
+}
+_LOAD_POINTS = {"weight": ("point",), "force": ("point",), "moment": (), "spring": ("a", "b"),
+                "mass": ("point",)}
+_CYLINDER_VALUES = {"bore": (LENGTH, "positive"), "rod": (LENGTH, "nonneg"),
+                    "count": (NUMBER, "positive"), "eta_mech": (NUMBER, "fraction"),
+                    "eta_hyd": (NUMBER, "fraction"), "p_relief": (PRESSURE, "nonneg"),
+                    "dp_throttle": (PRESSURE, "nonneg"), "dp_line": (PRESSURE, "nonneg")}
+_SEED_GS6MAX = {"tractor_weight": FORCE, "counterweight": FORCE, "a": LENGTH, "b": LENGTH,
+                "wheelbase": LENGTH}
+
+
+def _unreadable(err, expected, found):
+    """Message for a value that :func:`parse` cannot read: what was wrong with it (an
+    unknown unit), what was expected and what was found."""
+    reason = str(err)
+    if reason.startswith("expected"):
+        return f"{reason}, found {S.show(found)}"
+    return (f"{reason}: " if reason else "") + f"expected {expected}, found {S.show(found)}"
+
+
+class Builder:
+    """Builds one model file; every error is a :class:`ModelFileError` located by
+    its key path and the file's line index."""
+
+    def __init__(self, file: str, data: dict, index: dict):
+        self.file = file
+        self.data = data
+        self.index = index
+        self.resolved: dict = {}      # key path -> SI value or a name
+        self.param_use: dict = {}     # parameter -> (kind, path of the first use)
+        self.param_flag: dict = {}    # parameter -> [(flag, path)]
+        self.coord_kind: dict = {}    # coordinate -> (kind, path)
+
+    # ---- errors ----------------------------------------------------------------------
+    def line(self, path) -> int:
+        return line_of(self.index, path)
+
+    def error(self, path, problem) -> ModelFileError:
+        path = tuple(path)
+        return ModelFileError(self.file, self.line(path), key_path(path), problem)
+
+    # ---- pass 0: structure ------------------------------------------------------------
+    def validate(self):
+        spec, errors = S.validate(S.FileSpec, self.data)
+        self.groups, self.loads = [], []
+        for section, types, out in (("groups", S.GROUP_TYPES, self.groups),
+                                    ("loads", S.LOAD_TYPES, self.loads)):
+            raw = self.data.get(section, [])
+            if not isinstance(raw, list):
+                continue
+            for i, entry in enumerate(raw):
+                if not isinstance(entry, dict):
+                    continue
+                t = entry.get("type")
+                where = (section, i, "type")
+                options = ", ".join(types)
+                if "type" not in entry:
+                    errors.append(((section, i), f'missing required key "type" (one of: '
+                                                 f'{options})'))
+                elif not isinstance(t, str):
+                    errors.append((where, f"expected a string (one of: {options}), found "
+                                          f"{S.show(t)}"))
+                elif t not in types:
+                    what = "group" if section == "groups" else "load"
+                    errors.append((where, f'unknown {what} type "{t}"'
+                                          f'{S.did_you_mean(t, types)} (one of: {options})'))
+                else:
+                    obj, errs = S.validate(types[t], entry, (section, i))
+                    errors += errs
+                    out.append(obj)
+        if errors:
+            # a misspelt key is both unknown and missing: report what was written first
+            errors.sort(key=lambda e: (e[1].startswith("missing"), self.line(e[0])))
+            path, problem = errors[0]
+            raise self.error(path, problem)
+        self.spec = spec
+
+    # ---- pass 1: uses -----------------------------------------------------------------
+    def value(self, path, v, kind, flag=None, coordinate_ok=False):
+        """Resolve the value ``v`` at ``path`` used as ``kind``: an SI number or a
+        parameter/coordinate name (whose use is recorded)."""
+        path = tuple(path)
+        try:
+            p = parse(v)
+        except UnitError as e:
+            raise self.error(path, _unreadable(e, f"{kind.article} (e.g. {kind.example}) or "
+                                                  f"a parameter name", v)) from None
+        if isinstance(p, str):
+            if p in self.coords:
+                if not coordinate_ok:
+                    raise self.error(path, f"expected {kind.article} (e.g. {kind.example}) or a "
+                                           f'parameter, found "{p}", which is a generalized '
+                                           f"coordinate")
+                self.use_coordinate(path, p, kind)
+            elif p in self.params_raw:
+                prev = self.param_use.get(p)
+                if prev and prev[0] is not kind:
+                    raise self.error(path, f'expected {kind.article}, found "{p}", a parameter '
+                                           f"used as {prev[0].article} at "
+                                           f"{key_path(prev[1])}")
+                self.param_use.setdefault(p, (kind, path))
+                if flag:
+                    self.param_flag.setdefault(p, []).append((flag, path))
+            else:
+                names = list(self.params_raw) + (list(self.coords) if coordinate_ok else [])
+                raise self.error(path, f"expected {kind.article} (e.g. {kind.example}) or a "
+                                       f'parameter name, found "{p}", which is not a '
+                                       f"parameter{S.did_you_mean(p, names)}")
+            self.resolved[path] = p
+            return p
+        try:
+            si = to_si(p, kind)
+        except UnitError as e:
+            raise self.error(path, f"{e}, found {S.show(v)}") from None
+        if flag and not _FLAGS[flag][0](si):
+            raise self.error(path, f"expected {_FLAGS[flag][1](kind)}, found {S.show(v)}")
+        self.resolved[path] = si
+        return si
+
+    def use_coordinate(self, path, c, kind):
+        prev = self.coord_kind.get(c)
+        if prev and prev[0] is not kind:
+            raise self.error(path, f'the coordinate "{c}" is used as {kind.article} here but '
+                                   f"as {prev[0].article} at {key_path(prev[1])}")
+        self.coord_kind.setdefault(c, (kind, path))
+
+    def coordinate_field(self, path, c, kind):
+        if c not in self.coords:
+            raise self.error(path, f"expected a generalized coordinate (one of: "
+                                   f"{', '.join(self.coords)}), found {S.show(c)}"
+                                   f"{S.did_you_mean(c, self.coords)}")
+        self.use_coordinate(path, c, kind)
+
+    def kind_of_coordinate(self, c):
+        return self.coord_kind.get(c, (LENGTH,))[0]
+
+    def position(self, path, table):
+        """A position ``{coordinate = value, …}`` naming every coordinate."""
+        path = tuple(path)
+        for c in table:
+            if c not in self.coords:
+                raise self.error(path + (c,), f'unknown coordinate "{c}": expected one of the '
+                                               f'coordinates ({", ".join(self.coords)})'
+                                               f"{S.did_you_mean(c, self.coords)}")
+        missing = [c for c in self.coords if c not in table]
+        if missing:
+            raise self.error(path, f"expected the position of every coordinate "
+                                   f"({', '.join(self.coords)}), missing {', '.join(missing)}")
+        return {c: self.value(path + (c,), table[c], self.kind_of_coordinate(c))
+                for c in self.coords}
+
+    def uses(self):
+        sp = self.spec
+        self.coords = tuple(sp.model.coordinates)
+        seen = {}
+        for j, c in enumerate(self.coords):
+            if not is_name(c):
+                raise self.error(("model", "coordinates", j), f"expected a name (a letter or _ "
+                                 f"then letters, digits, _), found {S.show(c)}")
+            if c in seen:
+                raise self.error(("model", "coordinates", j), f'the coordinate "{c}" is listed '
+                                                              f"twice")
+            seen[c] = j
+        self.params_raw = {}
+        for name, v in sp.params.items():
+            path = ("params", name)
+            if not is_name(name):
+                raise self.error(path, f"expected a parameter name (a letter or _ then letters, "
+                                       f'digits, _), found "{name}"')
+            if name in self.coords:
+                raise self.error(path, f'"{name}" is a generalized coordinate and cannot also be '
+                                       f"a parameter")
+            try:
+                p = parse(v)
+            except UnitError as e:
+                raise self.error(path, _unreadable(e, 'a value (a number, or a number with its '
+                                                      'unit such as "0.48 m")', v)) from None
+            if isinstance(p, str):
+                raise self.error(path, f'expected a value (a number, or a number with its unit '
+                                       f'such as "0.48 m"), found {S.show(v)}: a parameter '
+                                       f"cannot refer to another")
+            self.params_raw[name] = p
+        # the kind of each coordinate, from the input groups that it drives
+        for i, g in enumerate(self.groups):
+            if g.type in _GROUP_COORD:
+                field, kind = _GROUP_COORD[g.type]
+                self.coordinate_field(("groups", i, field), getattr(g, field), kind)
+        for name, (x, y) in sp.frame.items():
+            self.value(("frame", name, 0), x, LENGTH)
+            self.value(("frame", name, 1), y, LENGTH)
+        for i, g in enumerate(self.groups):
+            for field, (kind, flag, coord_ok) in _GROUP_VALUES[g.type].items():
+                if field in g.model_fields_set:
+                    self.value(("groups", i, field), getattr(g, field), kind, flag, coord_ok)
+            if g.type == "pose_point":
+                self.position(("groups", i, "at"), g.at)
+        for i, ld in enumerate(self.loads):
+            for field, (kind, flag) in _LOAD_VALUES[ld.type].items():
+                if field in ld.model_fields_set:
+                    self.value(("loads", i, field), getattr(ld, field), kind, flag)
+        for i, c in enumerate(sp.cylinders):
+            self.coordinate_field(("cylinders", i, "coordinate"), c.coordinate,
+                                  self.kind_of_coordinate(c.coordinate))
+            for field, (kind, flag) in _CYLINDER_VALUES.items():
+                if field in c.model_fields_set:
+                    self.value(("cylinders", i, field), getattr(c, field), kind, flag)
+        if sp.machine is not None:
+            m = sp.machine
+            for a, x in m.axles.items():
+                self.value(("machine", "axles", a), x, LENGTH)
+            for part in ("weights", "counterweights"):
+                for k, w in enumerate(getattr(m, part)):
+                    self.value(("machine", part, k, "P"), w.P, FORCE, "nonneg")
+                    self.value(("machine", part, k, "x"), w.x, LENGTH)
+            self.value(("machine", "min_share"), m.min_share, NUMBER, "share")
+            self.value(("machine", "implement", "weight"), m.implement.weight, FORCE, "nonneg")
+            if m.seed_gs6max is not None:
+                for field, kind in _SEED_GS6MAX.items():
+                    self.value(("machine", "seed_gs6max", field),
+                               getattr(m.seed_gs6max, field), kind)
+        for c, r in sp.range.items():
+            if c not in self.coords:
+                raise self.error(("range", c), f'unknown coordinate "{c}": expected one of the '
+                                               f'coordinates ({", ".join(self.coords)})'
+                                               f"{S.did_you_mean(c, self.coords)}")
+            kind = self.kind_of_coordinate(c)
+            if "values" in r.model_fields_set:
+                for k, v in enumerate(r.values):
+                    self.value(("range", c, "values", k), v, kind)
+            else:
+                self.value(("range", c, "from"), r.from_, kind)
+                self.value(("range", c, "to"), r.to, kind)
+                if "step" in r.model_fields_set:
+                    self.value(("range", c, "step"), r.step, kind)
+        missing = [c for c in self.coords if c not in sp.range]
+        if missing:
+            raise self.error(("range",), f"expected a range for every coordinate "
+                                         f"({', '.join(self.coords)}), missing "
+                                         f"{', '.join(missing)}")
+        points = list(sp.frame) + [g.out for g in self.groups]
+        quantities = {f"{a}{p}": LENGTH for p in points for a in "XY"}
+        quantities.update({f"phi{l}": ANGLE for l in sp.links})
+        quantities.update({d: LENGTH for d in sp.distances})
+        for i, s in enumerate(sp.solve):
+            if s.quantity not in quantities:
+                raise self.error(("solve", i, "quantity"),
+                                 f"expected X<point>, Y<point>, phi<link> or a distance name, "
+                                 f"found {S.show(s.quantity)}"
+                                 f"{S.did_you_mean(s.quantity, quantities)}")
+            self.position(("solve", i, "at"), s.at)
+            self.value(("solve", i, "equals"), s.equals, quantities[s.quantity])
+
+    # ---- pass 2: parameters ---------------------------------------------------------------
+    def parameters(self):
+        out = {}
+        for name, raw in self.params_raw.items():
+            path = ("params", name)
+            use = self.param_use.get(name)
+            kind = use[0] if use else None
+            shown = S.show(self.spec.params[name])
+            try:
+                si = to_si(raw, kind)
+            except UnitError as e:
+                raise self.error(path, f"{e}, found {shown} ({name} is used as {kind.article} "
+                                       f"at {key_path(use[1])})") from None
+            for flag, where in self.param_flag.get(name, ()):
+                if not _FLAGS[flag][0](si):
+                    raise self.error(path, f"expected {_FLAGS[flag][1](kind)}, found "
+                                           f"{shown} ({name} is used at {key_path(where)})")
+            out[name] = si
+        self.params = out
+        self.param_kind = {n: (u[0] if u else (unit_kind(r) if r.unit else None))
+                           for n, r in self.params_raw.items() for u in [self.param_use.get(n)]}
+
+    # ---- pass 3: the mechanism --------------------------------------------------------------
+    def r(self, *path):
+        return self.resolved[tuple(path)]
+
+    def point(self, path, p, known, later=None):
+        """Check that ``p`` is a point of ``known``; ``later`` (while adding groups) maps
+        the points that later groups define to their group."""
+        if p in known:
+            return
+        if later and p in later:
+            raise self.error(path, f'point "{p}" is defined later, by {later[p]}: a group may '
+                                   f"only use points of the frame and of earlier groups")
+        what = ("a point of the frame or of an earlier group" if later is not None else
+                "a point of the mechanism")
+        raise self.error(path, f'unknown point "{p}": expected {what} ({", ".join(known)}), '
+                               f'found "{p}"{S.did_you_mean(p, known)}')
+
+    def guarded(self, path, make):
+        try:
+            return make()
+        except (ModelError, ValueError, TypeError) as e:
+            raise self.error(path, str(e)) from None
+
+    def mechanism(self) -> Mechanism:
+        sp = self.spec
+        mech = self.guarded(("model",), lambda: Mechanism(
+            sp.model.name, coordinates=self.coords, params=self.params,
+            title=sp.model.title, notes=tuple(sp.model.notes)))
+        known = {}  # point -> where defined
+        for name in sp.frame:
+            known[name] = "the frame"
+            mech = self.guarded(("frame", name), lambda: mech.frame(
+                name, self.r("frame", name, 0), self.r("frame", name, 1)))
+        # every point a group defines, to tell "defined later" from "unknown"
+        later = {}
+        for i, g in enumerate(self.groups):
+            later.setdefault(g.out, f"groups[{i}] ({g.name})")
+        names = {n: "the frame" for n in sp.frame}
+        for i, g in enumerate(self.groups):
+            gp = ("groups", i)
+            if g.name in names:
+                raise self.error(gp + ("name",), f'the name "{g.name}" is already used by '
+                                                 f"{names[g.name]}")
+            inputs = [(gp + (f,), getattr(g, f)) for f in _GROUP_POINTS[g.type]]
+            if g.type == "slider_dyad" and g.line_link is not None:
+                inputs += [(gp + ("line_link", k), p) for k, p in enumerate(g.line_link)]
+            for path, p in inputs:
+                self.point(path, p, known, {q: w for q, w in later.items() if q not in known})
+            if g.out in known:
+                raise self.error(gp + ("out",), f'point "{g.out}" is already defined by '
+                                                f"{known[g.out]}")
+            want = _GROUP_LINKS[g.type]
+            if g.links and ((want is None and len(g.links) > 1) or
+                            (want is not None and len(g.links) != len(want))):
+                expect = ("at most one link name (the link that carries the point)"
+                          if want is None else
+                          f"{len(want)} link name{'s' if len(want) > 1 else ''} "
+                          f"({', '.join(want)})")
+                raise self.error(gp + ("links",), f"expected {expect}, found {S.show(g.links)}")
+            kw = {f: getattr(g, f) for f in g.model_fields_set - {"type", "name"}}
+            for f in _GROUP_VALUES[g.type]:
+                if (gp + (f,)) in self.resolved:
+                    kw[f] = self.resolved[gp + (f,)]
+            if "links" in kw:
+                kw["links"] = tuple(kw["links"])
+            if g.type == "pose_point":
+                kw["at"] = tuple(self.resolved[gp + ("at", c)] for c in self.coords)
+            if g.type == "slider_dyad" and g.line_link is not None:
+                kw["line_link"] = tuple(g.line_link)
+            method = getattr(mech, g.type)
+            mech = self.guarded(gp, lambda: method(g.name, **kw))
+            names[g.name] = f"groups[{i}]"
+            known[g.out] = f"groups[{i}] ({g.name})"
+        points = list(known)
+        for section, add in (("links", "link"), ("distances", "distance")):
+            for name, ends in getattr(sp, section).items():
+                for k, p in enumerate(ends):
+                    self.point((section, name, k), p, points)
+                if section == "distances" and name in sp.links:
+                    raise self.error((section, name), f'the name "{name}" is already a link '
+                                                      f"in [links]")
+                mech = self.guarded((section, name), lambda: getattr(mech, add)(name, *ends))
+        bodies = list(mech.bodies)
+
+        def body(path, b):
+            if b not in bodies:
+                raise self.error(path, f'unknown link "{b}": expected a link of the mechanism '
+                                       f'({", ".join(bodies)}), found "{b}"'
+                                       f"{S.did_you_mean(b, bodies)}")
+
+        for i, ld in enumerate(self.loads):
+            lp = ("loads", i)
+            for f in _LOAD_POINTS[ld.type]:
+                self.point(lp + (f,), getattr(ld, f), points)
+            if getattr(ld, "link", None) is not None:
+                body(lp + ("link",), ld.link)
+            if ld.type == "spring" and ld.links is not None:
+                for k, b in enumerate(ld.links):
+                    body(lp + ("links", k), b)
+            kw = {f: getattr(ld, f) for f in ld.model_fields_set - {"type"}}
+            for f in _LOAD_VALUES[ld.type]:
+                if lp + (f,) in self.resolved:
+                    kw[f] = self.resolved[lp + (f,)]
+            if ld.type == "spring" and ld.links is not None:
+                kw["links"] = tuple(ld.links)
+            add = getattr(mech, ld.type)
+            mech = self.guarded(lp, lambda: add(**kw))
+        seen = {}
+        for i, c in enumerate(sp.cylinders):
+            cp = ("cylinders", i)
+            if c.name in seen:
+                raise self.error(cp + ("name",), f'the cylinder name "{c.name}" is already used '
+                                                 f"by cylinders[{seen[c.name]}]")
+            seen[c.name] = i
+            kw = {f: self.resolved[cp + (f,)] for f in _CYLINDER_VALUES if cp + (f,) in
+                  self.resolved}
+            if "side" in c.model_fields_set:
+                kw["side"] = c.side
+            mech = self.guarded(cp, lambda: mech.cylinder(c.name, c.coordinate, **kw))
+        if sp.machine is not None:
+            mech = self.machine(mech, points)
+        if sp.tables is not None:
+            mech = self.tables(mech, points, bodies)
+        return mech
+
+    def number(self, path):
+        """A resolved value as a number (a parameter name gives its value)."""
+        v = self.resolved[tuple(path)]
+        return float(self.params[v]) if isinstance(v, str) else float(v)
+
+    def machine(self, mech, points):
+        m = self.spec.machine
+        mp = ("machine",)
+        if len(m.axles) != 2:
+            raise self.error(mp + ("axles",), f"expected exactly two axles, found "
+                                              f"{len(m.axles)} ({', '.join(m.axles) or 'none'})")
+        if m.steered not in m.axles:
+            raise self.error(mp + ("steered",), f"expected one of the axles "
+                                                f"({', '.join(m.axles)}), found "
+                                                f"{S.show(m.steered)}"
+                                                f"{S.did_you_mean(m.steered, m.axles)}")
+        self.point(mp + ("implement", "point"), m.implement.point, points)
+        axles = {a: self.number(mp + ("axles", a)) for a in m.axles}
+
+        def items(part):
+            return [(w.name, self.number(mp + (part, k, "P")), self.number(mp + (part, k, "x")))
+                    for k, w in enumerate(getattr(m, part))]
+
+        kw = {}
+        if "min_share" in m.model_fields_set:
+            kw["min_share"] = self.number(mp + ("min_share",))
+        machine = self.guarded(mp, lambda: Machine(axles, steered=m.steered,
+                                                   weights=items("weights"),
+                                                   counterweights=items("counterweights"),
+                                                   **kw))
+        seed = None
+        if m.seed_gs6max is not None:
+            seed = {f: self.resolved[mp + ("seed_gs6max", f)] for f in _SEED_GS6MAX}
+        weight = self.resolved[mp + ("implement", "weight")]
+        return self.guarded(mp, lambda: mech.with_machine(machine, m.implement.point, weight,
+                                                          seed_gs6max=seed))
+
+    def tables(self, mech, points, bodies):
+        t = self.spec.tables
+        tp = ("tables",)
+        links = [l.name for l in mech.links]
+        out = {}
+        if t.ratios is not None:
+            for k, pair in enumerate(t.ratios):
+                for j, l in enumerate(pair):
+                    if l not in links:
+                        raise self.error(tp + ("ratios", k, j),
+                                         f'unknown link "{l}": expected a link of [links] '
+                                         f'({", ".join(links)}), found "{l}"'
+                                         f"{S.did_you_mean(l, links)}")
+            out["ratios"] = [tuple(p) for p in t.ratios]
+        if t.transmissions is not None:
+            for k, p in enumerate(t.transmissions):
+                self.point(tp + ("transmissions", k), p, points)
+            out["transmissions"] = list(t.transmissions)
+        if t.reactions is not None:
+            for name, (i, j, sign) in t.reactions.items():
+                for k, b in enumerate((i, j)):
+                    if b not in bodies:
+                        raise self.error(tp + ("reactions", name, k),
+                                         f'unknown link "{b}": expected a link of the '
+                                         f'mechanism ({", ".join(bodies)}), found "{b}"'
+                                         f"{S.did_you_mean(b, bodies)}")
+            out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
+        return mech.with_tables(**out)
+
+    # ---- pass 4: design conditions and the range ------------------------------------------
+    def quantities(self, mech):
+        q = {f"{a}{p}": LENGTH for p in mech.points for a in "XY"}
+        q.update({f"phi{l.name}": ANGLE for l in mech.links})
+        q.update({d.name: LENGTH for d in mech.distances})
+        return q
+
+    def conditions(self, mech):
+        from ..synthesis import Condition
+        conds = []
+        solved_by = {}
+        quantities = self.quantities(mech)
+        for i, s in enumerate(self.spec.solve):
+            sp = ("solve", i)
+            if s.unknown not in self.params:
+                raise self.error(sp + ("unknown",),
+                                 f"expected a parameter name, found {S.show(s.unknown)}"
+                                 f"{S.did_you_mean(s.unknown, self.params)}")
+            if s.unknown in solved_by:
+                raise self.error(sp + ("unknown",), f'"{s.unknown}" is already solved by '
+                                                    f"solve[{solved_by[s.unknown]}]")
+            solved_by[s.unknown] = i
+            if s.quantity not in quantities:
+                raise self.error(sp + ("quantity",),
+                                 f"expected X<point>, Y<point>, phi<link> or a distance name, "
+                                 f"found {S.show(s.quantity)}"
+                                 f"{S.did_you_mean(s.quantity, quantities)}")
+            bracket = [self.bracket_value(sp + ("bracket", k), v, s.unknown)
+                       for k, v in enumerate(s.bracket)]
+            if not bracket[0] < bracket[1]:
+                raise self.error(sp + ("bracket",), f"expected [low, high] with low < high, "
+                                                    f"found {S.show(list(s.bracket))}")
+            target = self.resolved[sp + ("equals",)]
+            if isinstance(target, str):
+                target = self.params[target]
+            at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
+            line = self.line(sp)
+            conds.append(Condition(s.unknown, tuple(bracket), at, s.quantity, float(target),
+                                   source=f"{self.file}:{line}"))
+        return conds
+
+    def bracket_value(self, path, v, unknown):
+        """One end of a ``[[solve]]`` bracket: a value of the unknown's kind, or another
+        parameter of that kind (its start value)."""
+        kind = self.param_kind.get(unknown)
+        what = kind.article if kind else "a value"
+        try:
+            p = parse(v)
+        except UnitError as e:
+            raise self.error(path, _unreadable(e, f"{what} for {unknown}", v)) from None
+        if isinstance(p, str):
+            if p not in self.params or p == unknown:
+                raise self.error(path, f"expected {what} for {unknown} (a number with its unit, "
+                                       f"or another parameter), found {S.show(v)}"
+                                       + ("" if p == unknown else
+                                          S.did_you_mean(p, self.params)))
+            pk = self.param_kind.get(p)
+            if pk is not kind:
+                raise self.error(path, f"expected a parameter of the kind of {unknown} "
+                                       f"({kind.name if kind else 'unknown'}), found "
+                                       f"{S.show(v)}, "
+                                       f"{pk.article if pk else 'a parameter of unknown kind'}")
+            return float(self.params[p])
+        if kind is None and p.unit is not None and self.params_raw[unknown].unit is not None \
+                and unit_kind(p) is not unit_kind(self.params_raw[unknown]):
+            raise self.error(path, f"expected a value of the kind of {unknown} "
+                                   f"({self.spec.params[unknown]}), found {S.show(v)}")
+        try:
+            return to_si(p, kind)
+        except UnitError as e:
+            raise self.error(path, _unreadable(e, f"{what} for {unknown}", v)) from None
+
+    def solve(self, mech):
+        from ..synthesis import DesignError, solve_conditions
+        conds = self.conditions(mech)
+        if not conds:
+            return mech, []
+        try:
+            return solve_conditions(mech, conds)
+        except (DesignError, AssemblyError, ModelError) as e:
+            msg = str(e)
+            i = next((k for k, c in enumerate(conds) if f"({c.source})" in msg), 0)
+            for c in conds:
+                msg = msg.replace(f" ({c.source})", "")
+            raise self.error(("solve", i), msg) from None
+
+    def positions(self, mech):
+        params = mech.params
+        axes = {}
+        for c in self.coords:
+            r = self.spec.range[c]
+            rp = ("range", c)
+
+            def val(path):
+                v = self.resolved[path]
+                return float(params[v]) if isinstance(v, str) else float(v)
+
+            if "values" in r.model_fields_set:
+                a = np.array([val(rp + ("values", k)) for k in range(len(r.values))])
+            else:
+                lo, hi = val(rp + ("from",)), val(rp + ("to",))
+                if lo == hi:
+                    raise self.error(rp + ("to",), f"expected a value different from "
+                                                   f"from = {S.show(r.from_)}, found "
+                                                   f"{S.show(r.to)}")
+                count = r.count
+                if count is None:  # from, to and step: the step must divide the span
+                    step = val(rp + ("step",))
+                    n = (hi - lo) / step if step else -1.0
+                    if not (n > 0 and abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))):
+                        raise self.error(rp + ("step",),
+                                         f"expected a step that divides to − from = "
+                                         f"{hi - lo:.6g} into whole intervals (with the sign "
+                                         f"of to − from), found {S.show(r.step)}")
+                    count = int(round(n)) + 1
+                a = np.linspace(lo, hi, count)
+            a.setflags(write=False)
+            axes[c] = a
+        if len(self.coords) == 1:
+            grid = axes[self.coords[0]]
+        else:
+            mesh = np.meshgrid(*(axes[c] for c in self.coords), indexing="ij")
+            grid = np.stack([g.ravel() for g in mesh], axis=-1)
+            grid.setflags(write=False)
+        return grid, axes
+
+    def build(self):
+        self.validate()
+        self.uses()
+        self.parameters()
+        mech = self.mechanism()
+        conds_mech, solved = self.solve(mech)
+        grid, axes = self.positions(conds_mech)
+        return conds_mech, grid, axes, solved

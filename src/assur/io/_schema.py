@@ -1,0 +1,439 @@
+"""The structure of a model file, as pydantic models.
+
+This layer checks the *shape* of the file: which tables and keys exist, which
+are required, the TOML type of every value (string, integer, array, table),
+and refuses unknown keys. What the values *mean* — units and their dimensions,
+references to parameters, points and links — is checked when the mechanism is
+built (:mod:`assur.io._build`), where the context is known.
+
+Groups and loads are tables with a ``type`` key; each type has its own model,
+picked from :data:`GROUP_TYPES` / :data:`LOAD_TYPES` (an unknown type is an error
+listing the valid ones).
+"""
+
+from __future__ import annotations
+
+import difflib
+import typing
+from typing import Annotated, Any, Optional
+
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StrictInt, StrictStr, \
+    ValidationError, model_validator
+from pydantic_core import PydanticCustomError
+
+
+def _value(v):
+    if isinstance(v, bool) or not isinstance(v, (int, float, str)):
+        raise PydanticCustomError(
+            "value", 'expected a number or a string (a value with its unit such as "0.48 m", '
+                     'or a parameter name)')
+    return v
+
+
+def _name(v):
+    if not v.strip():
+        raise PydanticCustomError("name", "expected a non-empty name")
+    return v
+
+
+def _branch(v):
+    if isinstance(v, bool) or not isinstance(v, int) or v not in (1, -1):
+        raise PydanticCustomError(
+            "branch", "expected 1 or -1 (the assembly mode: the side of the directed line "
+                      "between the outer joints, see docs/model-format.md)")
+    return v
+
+
+def _sign(v):
+    if isinstance(v, bool) or not isinstance(v, int) or v not in (1, -1):
+        raise PydanticCustomError("sign", "expected 1 or -1 (the sign of the printed "
+                                          "components relative to the force of i on j)")
+    return v
+
+
+#: a number, or a string: a value with its unit or a parameter name
+Value = Annotated[Any, AfterValidator(_value)]
+Name = Annotated[StrictStr, AfterValidator(_name)]
+Branch = Annotated[Any, AfterValidator(_branch)]
+Sign = Annotated[Any, AfterValidator(_sign)]
+
+
+class _Table(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=False)
+
+
+# ---- [model], [range] ---------------------------------------------------------------
+class ModelSection(_Table):
+    name: Name
+    title: Optional[StrictStr] = None
+    coordinates: Annotated[list[Name], Field(min_length=1)]
+    notes: list[StrictStr] = []
+
+
+class RangeSpec(_Table):
+    from_: Value = Field(None, alias="from")
+    to: Value = None
+    count: Annotated[StrictInt, Field(ge=2)] = None
+    step: Value = None
+    values: Annotated[list[Value], Field(min_length=1)] = None
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        given = self.model_fields_set
+        forms = "values = [...], or from, to and count, or from, to and step"
+        if "values" in given:
+            if given & {"from_", "to", "count", "step"}:
+                raise PydanticCustomError("range", f"expected one of: {forms}; not both "
+                                                   f"values and from/to")
+        elif {"count", "step"} <= given:
+            raise PydanticCustomError("range", f"expected one of: {forms}; not both count "
+                                               f"and step")
+        elif not ({"from_", "to"} <= given and given & {"count", "step"}):
+            missing = [k.rstrip("_") for k in ("from_", "to") if k not in given]
+            if not given & {"count", "step"}:
+                missing.append("count (or step)")
+            raise PydanticCustomError("range", f"expected one of: {forms}; missing "
+                                               + ", ".join(missing))
+        return self
+
+
+# ---- [[groups]] ---------------------------------------------------------------------
+class _Group(_Table):
+    type: StrictStr
+    name: Name
+    links: list[Name] = []
+
+
+class CylinderLeverSpec(_Group):
+    base: Name
+    pivot: Name
+    out: Name
+    lever: Value
+    s: Name
+    branch: Branch
+
+
+class DyadSpec(_Group):
+    a: Name
+    b: Name
+    out: Name
+    ra: Value
+    rb: Value
+    branch: Branch
+
+
+class CrankSpec(_Group):
+    pivot: Name
+    out: Name
+    radius: Value
+    angle: Name
+    phase: Value = 0.0
+
+
+class SliderInputSpec(_Group):
+    origin: Name
+    out: Name
+    s: Name
+    offset: Value = 0.0
+    direction: Value = 0.0
+
+
+class SliderDyadSpec(_Group):
+    a: Name
+    out: Name
+    radius: Value
+    line_point: Name
+    direction: Value = 0.0
+    line_link: Optional[tuple[Name, Name]] = None
+    branch: Branch
+
+
+class RigidPointSpec(_Group):
+    origin: Name
+    toward: Name
+    out: Name
+    length: Value
+    angle: Value = None
+    base: Value = None
+    opposite: Value = None
+    branch: Branch = None
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        given = self.model_fields_set
+        if "angle" in given:
+            extra = sorted(given & {"base", "opposite", "branch"})
+            if extra:
+                raise PydanticCustomError(
+                    "rigid", "expected either angle, or base, opposite and branch (the "
+                             "triangle), not both: remove " + ", ".join(extra))
+        elif not {"base", "opposite", "branch"} <= given:
+            missing = sorted({"base", "opposite", "branch"} - given)
+            raise PydanticCustomError(
+                "rigid", "expected angle, or base, opposite and branch (the triangle); "
+                         "missing " + ", ".join(missing))
+        return self
+
+
+class PosePointSpec(_Group):
+    origin: Name
+    toward: Name
+    out: Name
+    dx: Value
+    dy: Value
+    at: dict[str, Value]
+
+
+GROUP_TYPES = {"cylinder_lever": CylinderLeverSpec, "dyad": DyadSpec, "crank": CrankSpec,
+               "slider_input": SliderInputSpec, "slider_dyad": SliderDyadSpec,
+               "rigid_point": RigidPointSpec, "pose_point": PosePointSpec}
+
+
+# ---- [[loads]], [[cylinders]] ---------------------------------------------------------
+class _Load(_Table):
+    type: StrictStr
+
+
+class WeightSpec(_Load):
+    point: Name
+    P: Value
+    link: Optional[Name] = None
+    name: Optional[Name] = None
+
+
+class ForceSpec(_Load):
+    point: Name
+    fx: Value = 0.0
+    fy: Value = 0.0
+    link: Optional[Name] = None
+    name: Optional[Name] = None
+
+
+class MomentSpec(_Load):
+    link: Name
+    M: Value
+    name: Optional[Name] = None
+
+
+class SpringSpec(_Load):
+    name: Name
+    a: Name
+    b: Name
+    rate: Value
+    free_length: Value
+    preload: Value = 0.0
+    links: Optional[tuple[Name, Name]] = None
+
+
+class MassSpec(_Load):
+    link: Name
+    m: Value
+    point: Name
+    J: Value = 0.0
+
+
+LOAD_TYPES = {"weight": WeightSpec, "force": ForceSpec, "moment": MomentSpec,
+              "spring": SpringSpec, "mass": MassSpec}
+
+
+class CylinderSpec(_Table):
+    name: Name
+    coordinate: Name
+    bore: Value
+    rod: Value = 0.0
+    count: Value = 1
+    eta_mech: Value = 1.0
+    eta_hyd: Value = 1.0
+    p_relief: Value = 0.0
+    dp_throttle: Value = 0.0
+    dp_line: Value = 0.0
+    side: typing.Literal["piston", "rod"] = "piston"
+
+
+# ---- [machine] ----------------------------------------------------------------------
+class WeightItem(_Table):
+    name: Name
+    P: Value
+    x: Value
+
+
+class ImplementSpec(_Table):
+    point: Name
+    weight: Value
+
+
+class SeedGS6maxSpec(_Table):
+    tractor_weight: Value
+    counterweight: Value
+    a: Value
+    b: Value
+    wheelbase: Value
+
+
+class MachineSpec(_Table):
+    axles: dict[str, Value]
+    steered: Name
+    weights: Annotated[list[WeightItem], Field(min_length=1)]
+    counterweights: list[WeightItem] = []
+    min_share: Value = 0.2
+    implement: ImplementSpec
+    seed_gs6max: Optional[SeedGS6maxSpec] = None
+
+
+# ---- [tables], [[solve]], the file ---------------------------------------------------
+class TablesSpec(_Table):
+    ratios: list[tuple[Name, Name]] = None
+    transmissions: list[Name] = None
+    reactions: dict[str, tuple[Name, Name, Sign]] = None
+
+
+class SolveSpec(_Table):
+    unknown: Name
+    bracket: tuple[Value, Value]
+    at: dict[str, Value]
+    quantity: Name
+    equals: Value
+
+
+class FileSpec(_Table):
+    model: ModelSection
+    params: dict[str, Value] = {}
+    range: dict[str, RangeSpec]
+    frame: Annotated[dict[str, tuple[Value, Value]], Field(min_length=1)]
+    groups: list[dict[str, Any]] = []
+    links: dict[str, tuple[Name, Name]] = {}
+    distances: dict[str, tuple[Name, Name]] = {}
+    loads: list[dict[str, Any]] = []
+    cylinders: list[CylinderSpec] = []
+    machine: Optional[MachineSpec] = None
+    tables: Optional[TablesSpec] = None
+    solve: list[SolveSpec] = []
+
+
+# ---- errors ---------------------------------------------------------------------------
+def _unwrap(t):
+    while True:
+        origin = typing.get_origin(t)
+        if origin is Annotated:
+            t = typing.get_args(t)[0]
+        elif origin is typing.Union:
+            args = [a for a in typing.get_args(t) if a is not type(None)]
+            t = args[0] if len(args) == 1 else t
+            if len(args) != 1:
+                return t
+        else:
+            return t
+
+
+def _field(cls, key):
+    for name, f in cls.model_fields.items():
+        if (f.alias or name) == key:
+            return f
+    return None
+
+
+def allowed_keys(cls, loc) -> list[str]:
+    """The keys allowed in the table at ``loc`` (a path below ``cls``)."""
+    t = cls
+    for part in loc:
+        t = _unwrap(t)
+        if isinstance(t, type) and issubclass(t, BaseModel):
+            f = _field(t, part)
+            if f is None:
+                return []
+            t = f.annotation
+        elif typing.get_origin(t) in (list, tuple):
+            args = typing.get_args(t)
+            t = args[part] if typing.get_origin(t) is tuple and isinstance(part, int) and \
+                len(args) > part and args[-1] is not Ellipsis else args[0]
+        elif typing.get_origin(t) is dict:
+            t = typing.get_args(t)[1]
+        else:
+            return []
+    t = _unwrap(t)
+    if isinstance(t, type) and issubclass(t, BaseModel):
+        return [f.alias or n for n, f in t.model_fields.items()]
+    return []
+
+
+def show(v) -> str:
+    """A value as it would be written in TOML (for "found …" in messages)."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(v, (int, float)):
+        return repr(v)
+    if isinstance(v, (list, tuple)):
+        inner = ", ".join(show(x) for x in v[:4]) + (", …" if len(v) > 4 else "")
+        return f"[{inner}]"
+    if isinstance(v, dict):
+        inner = ", ".join(f"{k} = {show(x)}" for k, x in list(v.items())[:3])
+        return "{ " + inner + (", …" if len(v) > 3 else "") + " }"
+    return type(v).__name__
+
+
+def did_you_mean(word, choices) -> str:
+    """``'; did you mean "x"?'`` for the closest choices, or ``""``."""
+    close = difflib.get_close_matches(str(word), [str(c) for c in choices], n=2, cutoff=0.6)
+    if not close:
+        return ""
+    return "; did you mean " + " or ".join(f'"{c}"' for c in close) + "?"
+
+
+_EXPECT = {
+    "string_type": "expected a string",
+    "int_type": "expected an integer",
+    "float_type": "expected a number",
+    "list_type": "expected an array",
+    "tuple_type": "expected an array",
+    "dict_type": "expected a table",
+    "model_type": "expected a table",
+    "model_attributes_type": "expected a table",
+}
+
+
+def describe(err, cls) -> tuple[tuple, str]:
+    """(path, message) of one pydantic error, in the words of a model file."""
+    loc = tuple(err["loc"])
+    typ = err["type"]
+    inp = err.get("input")
+    ctx = err.get("ctx") or {}
+    if typ == "missing":
+        if isinstance(loc[-1], int):  # a fixed-length array that is too short
+            return loc[:-1], f"expected at least {loc[-1] + 1} items, found {show(inp)}"
+        return loc, f'missing required key "{loc[-1]}"'
+    if typ == "extra_forbidden":
+        allowed = allowed_keys(cls, loc[:-1])
+        hint = did_you_mean(loc[-1], allowed)
+        return loc, (f'unknown key "{loc[-1]}"{hint} (allowed: {", ".join(allowed)})'
+                     if allowed else f'unknown key "{loc[-1]}"{hint}')
+    if typ in _EXPECT:
+        text = _EXPECT[typ]
+    elif typ == "literal_error":
+        text = f"expected one of {ctx.get('expected')}"
+    elif typ == "greater_than_equal":
+        text = f"expected an integer ≥ {ctx.get('ge')}"
+    elif typ in ("too_short", "too_long"):
+        what = "item" if ctx.get("min_length", ctx.get("max_length")) == 1 else "items"
+        if typ == "too_short":
+            text = f"expected at least {ctx.get('min_length')} {what}"
+        else:
+            text = f"expected at most {ctx.get('max_length')} {what}"
+        if isinstance(inp, dict) and not inp:
+            return loc, text + ", found an empty table"
+    else:
+        text = err["msg"]
+        if text.startswith("Input should be "):
+            text = "expected " + text[len("Input should be "):]
+        elif text.startswith("Value error, "):
+            text = text[len("Value error, "):]
+    return loc, f"{text}, found {show(inp)}"
+
+
+def validate(cls, data, prefix=()):
+    """Validate ``data`` with ``cls``: ``(instance or None, [(path, message), …])``."""
+    try:
+        return cls.model_validate(data), []
+    except ValidationError as e:
+        return None, [(prefix + p, m) for p, m in (describe(x, cls) for x in e.errors())]

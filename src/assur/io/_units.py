@@ -1,0 +1,158 @@
+"""Values with units in model files: parsing, kinds, conversion to SI.
+
+A value in a model file is a plain number or a string ``"<number> <unit>"``
+(``"17.5 MPa"``, ``"22 deg"``, ``"80 mm"``, ``"80 l/min"``, ``"27.5 kN"``). The unit is
+read by pint — here, at the edge, and nowhere else (DESIGN.md §7). Every value
+has a *kind* (length, angle, force, …) that follows from the key it is used at;
+the unit must have the kind's dimension, and the value converts to the kind's SI
+unit. A plain number is taken as SI, except for angles, where it is degrees.
+
+No expression is ever evaluated: the number is matched by a regular expression,
+and the unit, restricted to letters, digits, ``* / ^ ( )``, spaces, ``%`` and
+``°·²³``, is handed to pint's unit parser.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+
+_NUMBER = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+_UNIT_CHARS = re.compile(r"^[A-Za-zµμΩ°%·²³0-9*/^(). _-]*$")
+_NAME = re.compile(r"^[^\W\d]\w*$")
+
+
+@dataclass(frozen=True)
+class Kind:
+    """What a key holds: its name, SI unit (pint syntax) and an example for messages."""
+
+    name: str
+    article: str
+    si: str
+    example: str
+
+    def __str__(self):
+        return self.name
+
+
+LENGTH = Kind("length", "a length", "m", '"0.48 m"')
+ANGLE = Kind("angle", "an angle", "rad", '"22 deg"')
+FORCE = Kind("force", "a force", "N", '"27.5 kN"')
+PRESSURE = Kind("pressure", "a pressure", "Pa", '"17.5 MPa"')
+MASS = Kind("mass", "a mass", "kg", '"1500 kg"')
+MOMENT = Kind("moment", "a moment", "N*m", '"2.9 kN*m"')
+STIFFNESS = Kind("stiffness", "a spring rate", "N/m", '"20 kN/m"')
+INERTIA = Kind("inertia", "a moment of inertia", "kg*m**2", '"12 kg*m^2"')
+NUMBER = Kind("number", "a plain number", "", "0.84")
+
+KINDS = {k.name: k for k in (LENGTH, ANGLE, FORCE, PRESSURE, MASS, MOMENT, STIFFNESS, INERTIA,
+                             NUMBER)}
+
+
+@lru_cache(maxsize=1)
+def registry():
+    """The pint unit registry (created once, on the first value with a unit)."""
+    import pint
+    return pint.UnitRegistry()
+
+
+def is_name(text: str) -> bool:
+    """A parameter or coordinate name: a letter or ``_`` then letters, digits, ``_``."""
+    return bool(_NAME.match(text))
+
+
+@dataclass(frozen=True)
+class Raw:
+    """A value as written: ``magnitude`` and ``unit`` (``None`` for a plain number)."""
+
+    magnitude: float
+    unit: str | None
+    text: str
+
+
+class UnitError(ValueError):
+    """A value string that is not ``<number> <unit>`` or whose unit pint does not know."""
+
+
+def parse(value) -> Raw | str:
+    """A file value → :class:`Raw` (number, maybe with a unit) or a name (``str``).
+
+    Raises
+    ------
+    UnitError
+        For a string that is neither a name nor ``<number> <unit>`` (empty message),
+        or an unknown unit (the message names it).
+    """
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if not math.isfinite(value):  # TOML has inf and nan
+            raise UnitError("expected a finite number")
+        return Raw(value, None, repr(value))
+    text = value.strip()
+    if is_name(text):
+        return text
+    m = _NUMBER.match(text)
+    if not m:
+        raise UnitError("")
+    mag = float(m.group(1))
+    unit = m.group(2)
+    if not unit:
+        return Raw(mag, None, value)
+    if not _UNIT_CHARS.match(unit) or unit[:1].isdigit():
+        raise UnitError(f'cannot read the unit "{unit}"')
+    try:
+        registry().parse_units(_normalise(unit))
+    except Exception:  # pint raises several types for unknown or malformed units
+        raise UnitError(f'unknown unit "{unit}"') from None
+    return Raw(mag, unit, value)
+
+
+def _normalise(unit: str) -> str:
+    return (unit.replace("·", "*").replace("²", "**2").replace("³", "**3")
+            .replace("°", "deg").replace("^", "**"))
+
+
+def unit_kind(raw: Raw) -> Kind | None:
+    """The kind a unit belongs to, or None when it is none of :data:`KINDS`."""
+    for k in KINDS.values():
+        if _compatible(raw, k):
+            return k
+    return None
+
+
+def _compatible(raw: Raw, kind: Kind) -> bool:
+    ureg = registry()
+    u = ureg.parse_units(_normalise(raw.unit))
+    root = ureg.get_root_units(u)[1]
+    if kind is ANGLE:
+        return root == ureg.radian
+    if kind is NUMBER:
+        return root == ureg.dimensionless
+    if root == ureg.radian:
+        return False
+    return ureg.Quantity(1.0, u).dimensionality == ureg.parse_units(kind.si).dimensionality
+
+
+def to_si(raw: Raw, kind: Kind | None):
+    """The SI value of ``raw`` used as ``kind`` (None: whatever its unit says).
+
+    A plain number is SI; for an angle it is degrees. Raises :class:`UnitError`
+    when the unit has another dimension than ``kind``.
+    """
+    if raw.unit is None:
+        if kind is ANGLE:
+            return math.radians(raw.magnitude)
+        if kind is None or kind is NUMBER:
+            return raw.magnitude  # an integer count stays an integer
+        return float(raw.magnitude)
+    ureg = registry()
+    unit = _normalise(raw.unit)
+    if kind is None:
+        q = ureg.Quantity(raw.magnitude, unit).to_base_units()
+        return float(q.magnitude)
+    if not _compatible(raw, kind):
+        raise UnitError(f"expected {kind.article} (e.g. {kind.example})")
+    if kind is ANGLE and ureg.parse_units(unit) == ureg.degree:
+        return math.radians(raw.magnitude)  # the same rounding as a plain number
+    return float(ureg.Quantity(raw.magnitude, unit).to(kind.si or "dimensionless").magnitude)
