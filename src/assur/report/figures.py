@@ -44,8 +44,10 @@ _SPECIAL = set("_^$\\{}%#&~")
 
 def _math(sym, idx, prime=False):
     """``φ_{34}`` in mathtext (plain text if the name has TeX specials)."""
-    if any(ch in _SPECIAL for ch in str(idx)):
-        return f"{sym}{idx}"
+    if any(ch in _SPECIAL for ch in str(idx)) or any(ch.isalpha() for ch in str(idx)):
+        # letters in small mathtext subscripts are hard to read ("S6" looks like "56")
+        return f"{sym}{chr(39) if prime else ''} {idx}" if sym.startswith("\\") is False \
+            else f"{sym}{idx}"
     return f"${sym}{chr(39) if prime else ''}_{{\\mathrm{{{idx}}}}}$"
 
 
