@@ -241,7 +241,9 @@ def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
         qd = np.broadcast_to(np.asarray(qdot, float).reshape(kin.shape + (-1,))
                              if kin.k > 1 else np.asarray(qdot, float)[..., None],
                              kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
-        qdd = np.broadcast_to(np.asarray(qddot if qddot is not None else 0.0, float)[..., None]
+        if qddot is None:  # steady motion: no coordinate accelerations
+            qddot = np.zeros(kin.shape + ((kin.k,) if kin.k > 1 else ()))
+        qdd = np.broadcast_to(np.asarray(qddot, float)[..., None]
                               if kin.k == 1 else np.asarray(qddot, float),
                               kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
     for ld in mech.loads:
@@ -255,6 +257,10 @@ def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
             ax, ay = kin._val(ld.a)
             bx, by = kin._val(ld.b)
             L = np.hypot(bx - ax, by - ay)
+            if np.any(L == 0):
+                raise ModelError(f"spring {ld.name!r}: its ends {ld.a!r} and {ld.b!r} coincide "
+                                 f"at {int((L == 0).sum())} position(s); its direction is "
+                                 f"undefined there")
             T = val(ld.preload) + val(ld.rate) * (L - val(ld.free_length))
             ux, uy = (bx - ax) / L, (by - ay) / L
             la, lb = ld.links or (mech.owner(ld.a), mech.owner(ld.b))
@@ -322,12 +328,23 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
     zero = np.zeros((m, n))
     W = {b: [zero.copy(), zero.copy(), zero.copy()] for b in mech._bodies}  # Fx, Fy, M(origin)
 
+    at = {}  # (link, point) -> forces applied there, for a cylinder's axial force
+
     def add_force(body, pt, fx, fy):
         px, py = kin._val(pt)
         w = W[body]
         w[0] = w[0] + fx
         w[1] = w[1] + fy
         w[2] = w[2] + px * fy - py * fx
+        f = at.setdefault((body, pt), [0.0, 0.0])
+        f[0] = f[0] + fx
+        f[1] = f[1] + fy
+
+    def axial(cyl, end, fx, fy, ux, uy):
+        """A cylinder's push from the force (fx, fy) its rod end ``end`` exerts on the
+        next link, less what the loads applied at that end to the cylinder take."""
+        lx, ly = at.get((cyl, end), (0.0, 0.0))
+        return (fx - lx) * ux + (fy - ly) * uy
 
     for link, pt, fx, fy in forces:
         add_force(link, pt, fx, fy)
@@ -374,10 +391,12 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
             record(bB, lb, B, rbx, rby)
             add_force(bA, A, -rax, -ray)
             add_force(bB, B, -rbx, -rby)
-            for ref, (px, py), sgn in ((g_.ra, (ax, ay), 1.0), (g_.rb, (bx, by), -1.0)):
+            for ref, (px, py), cyl, (fx_, fy_) in ((g_.ra, (ax, ay), la, (rcx, rcy)),
+                                                   (g_.rb, (bx, by), lb, (-rcx, -rcy))):
                 if isinstance(ref, str) and ref in coords:
+                    # the cylinder's rod end C pushes the other link with (fx_, fy_)
                     L = np.hypot(cx - px, cy - py)
-                    act[ref] = sgn * (rcx * (cx - px) + rcy * (cy - py)) / L
+                    act[ref] = axial(cyl, C, fx_, fy_, (cx - px) / L, (cy - py) / L)
         elif isinstance(g_, Crank):
             (l,) = links
             if isinstance(g_.radius, str) and g_.radius in coords:
@@ -396,7 +415,7 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
             C = g_.out
             bG = mech.owner(g_.origin)
             cx, cy = kin._val(C)
-            beta = mech.value_of(g_.direction)
+            beta = _values(kin)(g_.direction)  # per design: shape (m, 1) or scalar
             ux, uy = np.cos(beta), np.sin(beta)
             fx, fy, mc = about(l, cx, cy)
             # guide + drive on the slider: −(fx, fy) at C and −mc
@@ -438,7 +457,7 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
             W[guide][2] = W[guide][2] - mg
             if isinstance(g_.radius, str) and g_.radius in coords:
                 L = np.hypot(cx - ax, cy - ay)
-                act[g_.radius] = (rcx * (cx - ax) + rcy * (cy - ay)) / L
+                act[g_.radius] = axial(la, C, rcx, rcy, (cx - ax) / L, (cy - ay) / L)
         elif isinstance(g_, RigidPoint):
             if isinstance(g_.length, str) and g_.length in coords:
                 raise ModelError(f"reactions of the telescopic arm {g_.name!r} are not modelled "
