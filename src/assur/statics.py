@@ -129,6 +129,8 @@ class Statics:
     def equilibrium_residual(self):
         """Largest |ΣF| [N] and |ΣM| [N·m] over all moving links, recomputed from the
         loads and the reactions: ``(force, moment)`` arrays of the result shape."""
+        if callable(self._residual):
+            self._residual = self._residual()
         f, mo = self._residual
         return self._o(f), self._o(mo)
 
@@ -326,9 +328,20 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
         raise ValueError(f"the kinematics lack points {missing}: solve without `outputs=`")
     forces, couples, _ = applied_loads(kin, qdot, qddot, g)
     zero = np.zeros((m, n))
-    W = {b: [zero.copy(), zero.copy(), zero.copy()] for b in mech._bodies}  # Fx, Fy, M(origin)
+    W = {b: [0.0, 0.0, 0.0] for b in mech._bodies}  # Fx, Fy, M(origin); arrays once loaded
 
     at = {}  # (link, point) -> forces applied there, for a cylinder's axial force
+    coords_ = set(mech.coordinates)
+    rod_ends = set()
+    for g_ in mech.groups:
+        links_ = mech._group_links.get(g_.name, ())
+        if isinstance(g_, (Dyad, CylinderLever)):
+            for ref, l_ in ((g_.ra, links_[0]), (g_.rb, links_[1])):
+                if isinstance(ref, str) and ref in coords_:
+                    rod_ends.add((l_, g_.out))
+        elif isinstance(g_, SliderDyad) and isinstance(g_.radius, str) \
+                and g_.radius in coords_:
+            rod_ends.add((links_[0], g_.out))
 
     def add_force(body, pt, fx, fy):
         px, py = kin._val(pt)
@@ -336,9 +349,10 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
         w[0] = w[0] + fx
         w[1] = w[1] + fy
         w[2] = w[2] + px * fy - py * fx
-        f = at.setdefault((body, pt), [0.0, 0.0])
-        f[0] = f[0] + fx
-        f[1] = f[1] + fy
+        if (body, pt) in rod_ends:
+            f = at.setdefault((body, pt), [0.0, 0.0])
+            f[0] = f[0] + fx
+            f[1] = f[1] + fy
 
     def axial(cyl, end, fx, fy, ux, uy):
         """A cylinder's push from the force (fx, fy) its rod end ``end`` exerts on the
@@ -350,7 +364,8 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
         add_force(link, pt, fx, fy)
     for link, M in couples:
         W[link][2] = W[link][2] + M
-    applied = {b: [w[0].copy(), w[1].copy(), w[2].copy()] for b, w in W.items()}
+    # (add_force rebinds, never mutates, so this keeps the applied loads alone)
+    applied = {b: list(w) for b, w in W.items()}
 
     joints = {}
     act = {}
@@ -464,22 +479,27 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
                                  f"(use the virtual-work forces)")
         elif isinstance(g_, PosePoint):
             pass
-    # equilibrium of every moving link: applied loads + all joint forces on it
-    fres = np.zeros((m, n))
-    mres = np.zeros((m, n))
-    for b in mech._bodies:
-        if b == "0":
-            continue
-        fx, fy, mo = [a.copy() for a in applied[b]]
-        for (i, j), (pt, rx, ry, mz) in joints.items():
-            if b not in (i, j):
-                continue
-            s = 1.0 if j == b else -1.0
-            px, py = kin._val(pt)
-            fx = fx + s * rx
-            fy = fy + s * ry
-            mo = mo + s * (px * ry - py * rx + mz)
-        fres = np.maximum(fres, np.hypot(fx, fy))
-        mres = np.maximum(mres, np.abs(mo))
     vw = virtual_work_forces(kin, qdot, qddot, g)
-    return Statics(kin, vw, joints, act, (fres, mres), [])
+
+    def residual():
+        """Equilibrium of every moving link: applied loads + all joint forces on it
+        (computed when asked for: a check, not part of the result)."""
+        fres = np.zeros((m, n))
+        mres = np.zeros((m, n))
+        for b in mech._bodies:
+            if b == "0":
+                continue
+            fx, fy, mo = [np.broadcast_to(a, (m, n)) for a in applied[b]]
+            for (i, j), (pt, rx, ry, mz) in joints.items():
+                if b not in (i, j):
+                    continue
+                sg = 1.0 if j == b else -1.0
+                px, py = kin._val(pt)
+                fx = fx + sg * rx
+                fy = fy + sg * ry
+                mo = mo + sg * (px * ry - py * rx + mz)
+            fres = np.maximum(fres, np.hypot(fx, fy))
+            mres = np.maximum(mres, np.abs(mo))
+        return fres, mres
+
+    return Statics(kin, vw, joints, act, residual, [])
