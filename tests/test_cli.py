@@ -50,3 +50,46 @@ def test_bad_options_exit_1(tmp_path):
     assert r.exit_code == 1 and "--lang must be one of" in r.output
     r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "--format", "pdf"])
     assert r.exit_code == 1 and "--format must be" in r.output
+
+
+MALFORMED = sorted((Path(__file__).parent / "malformed").glob("*.toml"))
+
+
+def _expect(path):
+    first = path.read_text(encoding="utf-8", errors="replace").splitlines()[0]
+    key, line = first.split("expect:")[1].rsplit("@", 1)
+    return key.strip(), int(line)
+
+
+@pytest.mark.parametrize("path", MALFORMED, ids=lambda p: p.stem)
+def test_check_malformed_file_exits_1_with_key_path_and_line(path):
+    """Issue 4: each malformed file gives exit code 1 and one message naming the file,
+    the line and the key path — never a traceback."""
+    key, line = _expect(path)
+    r = runner.invoke(app, ["check", str(path)])
+    assert r.exit_code == 1, r.output
+    out = " ".join(r.output.split())
+    assert f"{path.name}:{line}" in out, out
+    if key != "-":
+        assert key in out, out
+    assert "Traceback" not in r.output
+    assert r.exception is None or isinstance(r.exception, SystemExit)
+
+
+def test_analyze_csv_values_are_the_seed_tables(tmp_path):
+    """File → solve (L4, Sp, L7 from the [[solve]] conditions) → engine → CSV, end to end
+    through the command line: the written tables carry seed 003's printed numbers."""
+    out = tmp_path / "rep"
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out),
+                            "--format", "csv"])
+    assert r.exit_code == 0, r.output
+    import pandas as pd
+    t21 = pd.read_csv(out / "table_2_1.csv")
+    t31 = pd.read_csv(out / "table_3_1.csv")
+    t41 = pd.read_csv(out / "table_4_1.csv")
+    assert_printed(t21["phi6 [deg]"].to_numpy(), T003_2_1, "phi6")
+    assert_printed(t21["phi34 [deg]"].to_numpy(), T003_2_1, "phi34")
+    assert_printed(t31["IS6 [-]"].to_numpy(), T003_3_1a, "IS6")
+    assert_printed(t31["U65 [-]"].to_numpy(), T003_3_1a, "U65")
+    assert_printed(t41["p_S [Pa]"].to_numpy(), T003_4_1, "Pgc")
+    assert_printed(t41["GS6 [N]"].to_numpy(), T003_4_1, "GS6")
