@@ -313,10 +313,10 @@ def _limit(r0: float, w0: float, c: np.ndarray, m: float) -> np.ndarray:
     """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty."""
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
     den = m - c                   # m − ∂R_s/∂P [-]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        finite = max(excess, 0.0) / den
+    pos = den > 0
+    finite = np.divide(max(excess, 0.0), den, out=np.zeros(np.shape(den)), where=pos)
     unbounded = (den < 0) | ((den == 0) & (excess >= 0))
-    return np.where(den > 0, finite, np.where(unbounded, np.inf, 0.0))
+    return np.where(pos, finite, np.where(unbounded, np.inf, 0.0))
 
 
 def axle_reactions(machine: Machine, implement_weight: ArrayLike,

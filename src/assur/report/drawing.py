@@ -247,10 +247,13 @@ def _animation_geometry(v, frames):
     analysis' own positions."""
     if frames and v.k == 1 and len(v.kin.shape) == 1:
         q = v.kin.q()
+        from ..errors import AssemblyError
         try:
             kin = v.mech.solve(np.linspace(q[0], q[-1], int(frames)))
             return _Geometry(v, kin)
-        except Exception:  # noqa: BLE001 - any failure: fall back to the solved positions
+        except AssemblyError:
+            # the finer grid crosses a position the user's own range does not: animate the
+            # analysed positions only (the report's warnings already name any failure)
             pass
     return _Geometry(v)
 

@@ -305,7 +305,7 @@ def stability(analysis, lang="en", design=None):
     lim = 100.0 * st.min_share
     ax.axhline(lim, ls="--", lw=1.2, color="C3", label=t("min_share", lang, lim))
     ax.axhspan(min(0.0, ax.get_ylim()[0]), lim, color="C3", alpha=0.08)
-    top = max(float(np.nanmax(v.pick(st.steered_share))), lim)
+    top = max(float(np.max(v.pick(st.steered_share))), lim)
     ax.set_ylim(0, top * 1.25 + 1)
     ax.legend(fontsize="small")
     return fig

@@ -338,8 +338,8 @@ def _capacity(v, res, point):
         kin = v.kin
         I = v.pick(kin.transmission(point, wrt=res.cylinder.coordinate if kin.k > 1 else None))
         num = v.pick(res.force_max * res.eta_mech)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            g = np.where(I == 0.0, np.nan, num / np.where(I == 0.0, 1.0, I))
+        zero = I == 0.0
+        g = np.where(zero, np.nan, num / np.where(zero, 1.0, I))  # NaN = empty cell
         return g, str(e)
 
 
@@ -468,10 +468,11 @@ def _table_ic(v):
         w = (dx * ddy - dy * ddx) / (dx * dx + dy * dy)
     ax, ay = v.pick(kin.x(A)), v.pick(kin.y(A))
     vx, vy = v.pick(kin.dx(A)), v.pick(kin.dy(A))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        still = np.abs(w) <= 1e-12 * max(np.max(np.abs(w)), 1e-300)
-        ws = np.where(still, np.nan, w)
-        xp, yp = ax - vy / ws, ay + vx / ws
+    still = np.abs(w) <= 1e-12 * max(np.max(np.abs(w)), 1e-300)
+    ws = np.where(still, 1.0, w)
+    # no instantaneous centre where the link is at rest: an empty cell (NaN), said so
+    xp = np.where(still, np.nan, ax - vy / ws)
+    yp = np.where(still, np.nan, ay + vx / ws)
     c = v.coords[0]
     cols = v.coord_columns()
     cols.append(Column("Xp", "m", xp, _both("c_Xp", body)))
