@@ -58,9 +58,8 @@ def hitch_003(**params) -> Mechanism:
     Parameters
     ----------
     **params
-        Overrides of any parameter, e.g. ``L4=0.6613`` or arrays for a batch. The
-        machine's axle and weight positions are numbers in the file: overriding
-        ``L``, ``a`` or ``b`` changes only the seed's GS6max formula, not them.
+        Overrides of any parameter, e.g. ``L4=0.6613`` or arrays for a batch (the
+        machine's axles and weights follow ``L``, ``a``, ``b``, ``P_mcxa``, ``P_gr``).
 
     Notes
     -----

@@ -220,11 +220,12 @@ class Mechanism:
         from .loads import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
-    def with_machine(self, machine, point, weight, seed_gs6max=None) -> "Mechanism":
+    def with_machine(self, machine, point, weight, seed_gs6max=None, refs=None) -> "Mechanism":
         """Carry the implement (weight [N] at ``point``) on a machine for the stability
-        analysis (:class:`assur.stability.Machine`, :class:`assur.stability.Carrying`)."""
+        analysis (:class:`assur.stability.Machine`, :class:`assur.stability.Carrying`);
+        ``refs`` ties the machine's positions and weights to parameters."""
         from .stability import Carrying
-        return self._with(machine=Carrying(machine, point, weight, seed_gs6max))
+        return self._with(machine=Carrying(machine, point, weight, seed_gs6max, refs))
 
     def with_params(self, **values) -> "Mechanism":
         """Return a copy with some parameters replaced (scalars or arrays over designs)."""
@@ -356,6 +357,8 @@ class Mechanism:
                 raise ModelError(f"{where}: unknown load {ld!r}")
         if self.machine is not None:
             point_ok("the machine's implement", self.machine.point)
+            for t in self.machine.ref_names():
+                ref_ok("the machine's data", t)
             ref_ok("the machine's implement weight", self.machine.weight)
             for k, v in (self.machine.seed_gs6max or {}).items():
                 ref_ok(f"seed GS6max {k}", v)

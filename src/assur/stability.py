@@ -504,10 +504,42 @@ class Carrying:
     point: str
     weight: object
     seed_gs6max: Mapping[str, object] | None = None
+    #: how the machine's numbers follow the model parameters: ``{"axles": {name: terms},
+    #: "weights": ((name, P terms, x terms), …), "counterweights": (…)}``, each value a
+    #: sum of ``(sign, number or parameter name)`` terms; None: the numbers as given
+    refs: Mapping[str, object] | None = None
+
+    def ref_names(self):
+        """Parameter names the machine's data refer to."""
+        if not self.refs:
+            return []
+        terms = [t for ts in self.refs["axles"].values() for t in ts]
+        for part in ("weights", "counterweights"):
+            for _, p, x in self.refs.get(part, ()):
+                terms += list(p) + list(x)
+        return sorted({r for _, r in terms if isinstance(r, str)})
+
+    def machine_for(self, params):
+        """The :class:`Machine` with its numbers from the parameter values ``params``
+        (one design: scalars)."""
+        if not self.refs:
+            return self.machine
+
+        def num(terms):
+            return float(sum(s * (float(params[r]) if isinstance(r, str) else float(r))
+                             for s, r in terms))
+
+        return Machine({a: num(t) for a, t in self.refs["axles"].items()},
+                       steered=self.machine.steered,
+                       weights=[(n, num(p), num(x)) for n, p, x in self.refs["weights"]],
+                       counterweights=[(n, num(p), num(x))
+                                       for n, p, x in self.refs.get("counterweights", ())],
+                       min_share=self.machine.min_share)
 
     def evaluate(self, kin):
         """Axle reactions and limits over the kinematics' positions; a
-        :class:`StabilityResult` with ``seed`` values attached when declared."""
+        :class:`StabilityResult` with ``seed`` values attached when declared. With
+        parameters that vary over a batch of designs, each design gets its machine."""
         mech = kin.mechanism
 
         def val(ref):
@@ -516,7 +548,19 @@ class Carrying:
                 return v.reshape((-1,) + (1,) * (len(kin.shape) - 1))
             return v.reshape(()) if v.ndim == 1 else v
 
-        res = axle_reactions(self.machine, val(self.weight), kin.x(self.point))
+        names = self.ref_names()
+        varying = [r for r in names if np.size(mech.params[r]) > 1]
+        if varying and len(kin.shape) == 2:
+            rows = []
+            for d in range(kin.shape[0]):
+                pd_ = {r: np.atleast_1d(np.asarray(mech.params[r], float))
+                       [d if np.size(mech.params[r]) > 1 else 0] for r in names}
+                w = np.broadcast_to(val(self.weight), kin.shape)[d]
+                rows.append(axle_reactions(self.machine_for(pd_), w, kin.x(self.point)[d]))
+            res = _stack_results(rows)
+        else:
+            pd_ = {r: float(np.atleast_1d(np.asarray(mech.params[r], float))[0]) for r in names}
+            res = axle_reactions(self.machine_for(pd_), val(self.weight), kin.x(self.point))
         seed = {}
         if self.seed_gs6max is not None:
             # per design (the seed formula takes scalars); designs are few here
@@ -529,6 +573,22 @@ class Carrying:
             seed["GS6max"] = FlaggedValue(np.stack([r.value for r in rows]).reshape(kin.shape),
                                           SEED003_GS6MAX_FLAGS)
         return _WithSeed(res, seed)
+
+
+def _stack_results(rows):
+    """One StabilityResult from per-design results (arrays stacked over designs)."""
+    import dataclasses
+    first = rows[0]
+    kw = {}
+    for f in dataclasses.fields(first):
+        vals = [getattr(r, f.name) for r in rows]
+        if isinstance(vals[0], dict):
+            kw[f.name] = {k: np.stack([np.asarray(v[k]) for v in vals]) for k in vals[0]}
+        elif isinstance(vals[0], np.ndarray):
+            kw[f.name] = np.stack(vals)
+        else:
+            kw[f.name] = vals[0]
+    return dataclasses.replace(first, **kw)
 
 
 class _WithSeed:

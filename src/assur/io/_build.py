@@ -282,11 +282,11 @@ class Builder:
         if sp.machine is not None:
             m = sp.machine
             for a, x in m.axles.items():
-                self.value(("machine", "axles", a), x, LENGTH)
+                self.terms(("machine", "axles", a), x, LENGTH)
             for part in ("weights", "counterweights"):
                 for k, w in enumerate(getattr(m, part)):
-                    self.value(("machine", part, k, "P"), w.P, FORCE, "nonneg")
-                    self.value(("machine", part, k, "x"), w.x, LENGTH)
+                    self.terms(("machine", part, k, "P"), w.P, FORCE)
+                    self.terms(("machine", part, k, "x"), w.x, LENGTH)
             self.value(("machine", "min_share"), m.min_share, NUMBER, "share")
             self.value(("machine", "implement", "weight"), m.implement.weight, FORCE, "nonneg")
             if m.seed_gs6max is not None:
@@ -472,10 +472,33 @@ class Builder:
             mech = self.tables(mech, points, bodies)
         return mech
 
+    def terms(self, path, v, kind):
+        """Resolve a machine value: a value, a parameter name with an optional leading
+        "-", or a list of such terms (added). Records ``[(sign, SI number or name)]``."""
+        path = tuple(path)
+        items = v if isinstance(v, list) else [v]
+        out = []
+        for i, t in enumerate(items):
+            sub = path + (i,) if isinstance(v, list) else path
+            sign = 1.0
+            if isinstance(t, str) and t.strip().startswith("-") and is_name(t.strip()[1:]):
+                sign, t = -1.0, t.strip()[1:]
+            out.append((sign, self.value(sub, t, kind)))
+        self.resolved[path] = ("terms", out)
+        return out
+
     def number(self, path):
-        """A resolved value as a number (a parameter name gives its value)."""
+        """A resolved value as a number (a parameter name gives its value; terms add)."""
         v = self.resolved[tuple(path)]
+        if isinstance(v, tuple) and v[:1] == ("terms",):
+            return sum(s * (float(self.params[r]) if isinstance(r, str) else float(r))
+                       for s, r in v[1])
         return float(self.params[v]) if isinstance(v, str) else float(v)
+
+    def refs(self, path):
+        """The terms of a machine value as ``((sign, number or parameter name), …)``."""
+        v = self.resolved[tuple(path)]
+        return tuple(v[1])
 
     def machine(self, mech, points):
         m = self.spec.machine
@@ -506,8 +529,13 @@ class Builder:
         if m.seed_gs6max is not None:
             seed = {f: self.resolved[mp + ("seed_gs6max", f)] for f in _SEED_GS6MAX}
         weight = self.resolved[mp + ("implement", "weight")]
+        refs = {"axles": {a: self.refs(mp + ("axles", a)) for a in m.axles}}
+        for part in ("weights", "counterweights"):
+            refs[part] = tuple((w.name, self.refs(mp + (part, k, "P")),
+                                self.refs(mp + (part, k, "x")))
+                               for k, w in enumerate(getattr(m, part)))
         return self.guarded(mp, lambda: mech.with_machine(machine, m.implement.point, weight,
-                                                          seed_gs6max=seed))
+                                                          seed_gs6max=seed, refs=refs))
 
     def tables(self, mech, points, bodies):
         t = self.spec.tables

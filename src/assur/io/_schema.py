@@ -53,6 +53,19 @@ def _sign(v):
 
 #: a number, or a string: a value with its unit or a parameter name
 Value = Annotated[Any, AfterValidator(_value)]
+
+
+def _terms(v):
+    if isinstance(v, list):
+        if not v:
+            raise PydanticCustomError("terms", "expected at least one term")
+        return [_value(x) for x in v]
+    return _value(v)
+
+
+#: a machine position or weight: a value, a parameter name with an optional leading
+#: "-", or a list of such terms that are added (e.g. ["-a", "-L"] for −(a + L))
+Terms = Annotated[Any, AfterValidator(_terms)]
 Name = Annotated[StrictStr, AfterValidator(_name)]
 Branch = Annotated[Any, AfterValidator(_branch)]
 Sign = Annotated[Any, AfterValidator(_sign)]
@@ -253,8 +266,8 @@ class CylinderSpec(_Table):
 # ---- [machine] ----------------------------------------------------------------------
 class WeightItem(_Table):
     name: Name
-    P: Value
-    x: Value
+    P: Terms
+    x: Terms
 
 
 class ImplementSpec(_Table):
@@ -271,7 +284,7 @@ class SeedGS6maxSpec(_Table):
 
 
 class MachineSpec(_Table):
-    axles: dict[str, Value]
+    axles: dict[str, Terms]
     steered: Name
     weights: Annotated[list[WeightItem], Field(min_length=1)]
     counterweights: list[WeightItem] = []
