@@ -70,7 +70,7 @@ DEAD_POINT_TOL = 1e-7
 #: elements per parallel work item
 CHUNK = 256
 
-_VERSION = "15"  # bump when the generator changes what it emits
+_VERSION = "16"  # bump when the generator changes what it emits
 
 
 class _Emitter:
@@ -107,10 +107,13 @@ def _lref(ref, K):
 
 
 def _fail(E, i, code, amount, cond):
-    """Record the first failure without branching (selects keep the loop vectorizable)."""
-    E(f"f_ = (st < 0) & ({cond})")
-    E(f"amt = ({amount}) if f_ else amt")
-    E(f"st = {i * 16 + code} if f_ else st")
+    """Record the first failure without branching (selects keep the loop vectorizable).
+
+    ``amount`` (by how much the inequality is violated) is not tracked here — that
+    select chain cost more than the geometry; :mod:`assur.mechanism` recomputes it for
+    the elements it reports, from the same formulas.
+    """
+    E(f"st = {i * 16 + code} if ((st < 0) & ({cond})) else st")
 
 
 def _emit_unit(E, i, p, q, cb, sb):
@@ -424,7 +427,6 @@ def generate(ops, K, out_pts, out_sca):
     w = out.append
     ind = "                "
     w(ind + "status[e] = st")
-    w(ind + "amount[e] = amt")
     # outputs go to a per-chunk buffer (one row per quantity, in L2) and are copied
     # row by row to OUT at the end of the chunk: a few long sequential streams instead
     # of one interleaved stream per quantity; failed elements get 0, never NaN
@@ -483,7 +485,6 @@ def kernel(params, trig, q, npd, check, out, gout, status, amount, c_start, c_en
         if True:
 {hoist}            for e in range(e0, e1):
                 st = -1
-                amt = 0.0
 ''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + '''        for r in range(NQ):
             for j in range(e1 - e0):
                 out[r, e0 + j] = buf[r, j]

@@ -847,8 +847,60 @@ class Mechanism:
             msg += f"; {nd} of {ptab.shape[1]} designs fail, first design {d}"
         return AssemblyError(msg, group=g.name, links=g.group_links(),
                              coordinate=dict(zip(self.coordinates, qarr[:, e])), design=d,
-                             position=pos, amount=float(amount[e]),
+                             position=pos,
+                             amount=(float(amount[e]) if int(status[e]) % 16 == K.FAIL_CONTINUITY
+                                     else self._failure_amount(prog, ptab, qarr, e, n,
+                                                               int(status[e]) // 16,
+                                                               int(status[e]) % 16)),
                              failures=kin.ok)
+
+    def _failure_amount(self, prog, ptab, qarr, e, n, opi, code):
+        """By how much group ``opi`` violates its inequality at element ``e`` [m] (or
+        sin μ at a dead point), from the plain-numpy reference positions of the groups
+        before it — the kernel reports only which group failed."""
+        if opi >= len(self.groups) or code == K.FAIL_COINCIDENT:
+            return 0.0
+        g = self.groups[opi]
+        d = e // n
+        params = {name: ptab[i, d] for i, name in enumerate(prog["pnames"])}
+        qd = {c: qarr[j, e] for j, c in enumerate(self.coordinates)}
+        prefix = self._with(groups=self.groups[:opi], links=(), distances=(), loads=(),
+                            cylinders=(), machine=None)
+        pts = prefix.evaluate_positions(qd, params) if opi else {}
+
+        def v(ref):
+            if isinstance(ref, str) and ref in qd:
+                return float(qd[ref])
+            return float(ptab[prog["pref"](ref), d])
+
+        if isinstance(g, RigidPoint) and code == K.FAIL_TRIANGLE:
+            b, ell, o = v(g.base), v(g.length), v(g.opposite)
+            return max(ell - (b + o), b - (ell + o), o - (ell + b))
+        if isinstance(g, (Dyad, CylinderLever)):
+            (ax, ay), (bx, by) = pts[g.a], pts[g.b]
+            L = math.hypot(bx - ax, by - ay)
+            ra, rb = v(g.ra), v(g.rb)
+            if code == K.FAIL_TOO_FAR:
+                return L - (ra + rb)
+            if code == K.FAIL_TOO_CLOSE:
+                return abs(ra - rb) - L
+            aa = (ra * ra - rb * rb + L * L) / (2 * L)
+            return math.sqrt(max(ra * ra - aa * aa, 0.0)) * L / (ra * rb)  # sin μ
+        if isinstance(g, SliderDyad):
+            ax, ay = pts[g.a]
+            lx, ly = pts[g.line_point]
+            beta = v(g.direction)
+            if g.line_link:
+                (px, py), (qx, qy) = pts[g.line_link[0]], pts[g.line_link[1]]
+                beta += math.atan2(qy - py, qx - px)
+            ux, uy = math.cos(beta), math.sin(beta)
+            wx, wy = lx - ax, ly - ay
+            r = v(g.radius)
+            if code == K.FAIL_LINE:
+                return abs(ux * wy - uy * wx) - r
+            bb = ux * wx + uy * wy
+            return 2.0 * math.sqrt(max(bb * bb - (wx * wx + wy * wy - r * r), 0.0))
+        return 0.0
 
     def _failure_message(self, prog, ptab, qarr, status, amount, n, e):
         opi, code = divmod(int(status[e]), 16)
@@ -862,7 +914,8 @@ class Mechanism:
         g = self.groups[opi]
         links = g.group_links()
         ltxt = f" (links {', '.join(links)})" if links else ""
-        amt = float(amount[e])
+        amt = (float(amount[e]) if code == K.FAIL_CONTINUITY
+               else self._failure_amount(prog, ptab, qarr, e, n, opi, code))
 
         def v(ref):
             if isinstance(ref, str) and ref in self.coordinates:
@@ -1004,7 +1057,7 @@ def _execute(prog, ptab, qarr, n, check=False):
     sd = parts[4].reshape(nso, k, E)
     sdd = parts[5].reshape(nso, k, k, E)
     status = np.empty(E, dtype=np.int64)
-    amount = np.empty(E)
+    amount = np.zeros(E)  # written by the continuity pass; other amounts on demand
     dyads = [i for i, r in enumerate(prog["ops"]) if r[0] == K.OP_RRR] if k == 1 else []
     gout = np.empty((2 * len(dyads), E if check else 1))
     K.run(kern, ptab, _trig_table(prog, ptab), qarr, n, check, out, gout, status, amount)
