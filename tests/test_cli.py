@@ -91,5 +91,6 @@ def test_analyze_csv_values_are_the_seed_tables(tmp_path):
     assert_printed(t21["phi34 [deg]"].to_numpy(), T003_2_1, "phi34")
     assert_printed(t31["IS6 [-]"].to_numpy(), T003_3_1a, "IS6")
     assert_printed(t31["U65 [-]"].to_numpy(), T003_3_1a, "U65")
-    assert_printed(t41["p_S [Pa]"].to_numpy(), T003_4_1, "Pgc")
+    assert_printed(t41["Pgc [Pa]"].to_numpy(), T003_4_1, "Pgc")
+    assert_printed(t41["Fgc [N]"].to_numpy(), T003_4_1, "Fgc")
     assert_printed(t41["GS6 [N]"].to_numpy(), T003_4_1, "GS6")

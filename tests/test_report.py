@@ -4,9 +4,9 @@ from the files), the HTML report is one self-contained file, the figures are val
 PNG and SVG files, Russian labels with ``lang="ru"``, and mechanisms without
 cylinders, loads or machine data get only the tables whose data exist.
 
-Symbols (``assur.report.tables``): the CSV columns carry the seed's symbols except
-``F_S`` (seed Fgc), ``p_S`` (Pgc), ``dGS6`` (ΔGS65), ``I56_ic``/``IS6_ic`` (Imp,
-lsp). Reactions are assur's force of link i on link j; seed 003 prints R05, R34,
+Symbols (``assur.report.tables``): the CSV columns carry the seed's symbols — the
+generic ``F_S``, ``p_S``, ``dGS6``, ``I56_ic``/``IS6_ic`` are renamed Fgc, Pgc, dGS65,
+Imp, lsp by the model file's ``[tables] symbols``. Reactions are assur's force of link i on link j; seed 003 prints R05, R34,
 R45 with the opposite sign (``mechanism.tables["reactions"]``, sign −1).
 """
 
@@ -111,7 +111,7 @@ def test_csv_table_3_1_kinematics(report):
 def test_csv_table_4_1_capacity(report):
     """Seed 003, Таблица 4.1: Fgc [N], Pgc [Pa], G56, GS6 [N], ΔGS65 [%]."""
     c, u = read_csv(report["out"] / "table_4_1.csv")
-    ours = {"Fgc": "F_S", "Pgc": "p_S", "G56": "G56", "GS6": "GS6", "dGS65": "dGS6"}
+    ours = {"Fgc": "Fgc", "Pgc": "Pgc", "G56": "G56", "GS6": "GS6", "dGS65": "dGS65"}
     units = {"Fgc": "N", "Pgc": "Pa", "G56": "N", "GS6": "N", "dGS65": "%"}
     for seed, sym in ours.items():
         assert u[sym] == units[seed]
@@ -130,7 +130,7 @@ def test_csv_table_5_1_reactions(report, analysis):
         if col == "S":
             continue
         if col == "Fgc":
-            assert_printed(c["F_S"], T003_5_1, col)
+            assert_printed(c["Fgc"], T003_5_1, col)
             continue
         sign = signs[col[:3]] if col[-1] in "xy" else 1
         assert u[col] == "N"
@@ -155,9 +155,9 @@ def test_csv_table_6_1_stability(report):
 def test_csv_instantaneous_centre_check(report):
     """Seed 003, last table: I56, IS6 and Imp = φ6'·(X56 − Xp), lsp = φ6'·(XS6 − Xp)."""
     c, _ = read_csv(report["out"] / "table_ic.csv")
-    for seed, sym in {"I56": "I56", "IS6": "IS6", "Imp": "I56_ic", "lsp": "IS6_ic"}.items():
-        assert_printed(c[sym], T003_IC, seed)
-    assert np.allclose(c["I56_ic"], c["I56"], atol=1e-9)
+    for seed in ("I56", "IS6", "Imp", "lsp"):
+        assert_printed(c[seed], T003_IC, seed)
+    assert np.allclose(c["Imp"], c["I56"], atol=1e-9)
 
 
 def test_csv_round_trips_exactly(report, analysis):

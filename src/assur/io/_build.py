@@ -564,6 +564,8 @@ class Builder:
                                          f'mechanism ({", ".join(bodies)}), found "{b}"'
                                          f"{S.did_you_mean(b, bodies)}")
             out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
+        if t.symbols is not None:
+            out["symbols"] = dict(t.symbols)
         return mech.with_tables(**out)
 
     # ---- pass 4: design conditions and the range ------------------------------------------

@@ -298,6 +298,8 @@ class TablesSpec(_Table):
     ratios: list[tuple[Name, Name]] = None
     transmissions: list[Name] = None
     reactions: dict[str, tuple[Name, Name, Sign]] = None
+    #: report column symbol → the seed's symbol (e.g. F_S = "Fgc")
+    symbols: dict[str, Name] = None
 
 
 class SolveSpec(_Table):

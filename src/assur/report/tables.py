@@ -524,7 +524,15 @@ def seed_tables(analysis, lang="en", design=None) -> list:
     """
     check_lang(lang)
     v = _View(analysis, design)
-    return [t for t in (b(v) for b in _BUILDERS) if t is not None]
+    tables = [t for t in (b(v) for b in _BUILDERS) if t is not None]
+    # the model may name columns as its seed does (``tables.symbols``: F_S → Fgc …)
+    rename = dict(analysis.mechanism.tables.get("symbols", {}))
+    if rename:
+        import dataclasses
+        tables = [dataclasses.replace(t, columns=tuple(
+            dataclasses.replace(c, symbol=rename.get(c.symbol, c.symbol)) for c in t.columns))
+            for t in tables]
+    return tables
 
 
 # ---- files -------------------------------------------------------------------------
