@@ -97,3 +97,25 @@ def test_batch_of_designs_forces():
     assert np.allclose(a.statics.actuator_force()[1], one.statics.actuator_force())
     assert np.allclose(a.statics.reaction("0", "5")[0], one.statics.reaction("0", "5") * 20000
                        / 27500)
+
+
+def test_blocked_reverse_pass_equals_the_whole(monkeypatch):
+    """Large ranges are solved in blocks of positions: the blocks give the same
+    reactions, forces and residuals as one pass (static and with inertia, batch too)."""
+    from assur import statics
+    s = np.linspace(0.42, 0.67, 11)
+    m = examples.hitch_003(P6=np.array([20000.0, 27500.0])).mass("6", 2800.0, "S6", J=900.0)
+    kin = m.solve(s)
+    qd, qdd = 0.05 * np.cos(s), -0.05 * np.sin(s)
+    whole = [statics.solve(kin), statics.solve(kin, qdot=qd, qddot=qdd)]
+    monkeypatch.setattr(statics, "BLOCK", 4)
+    blocked = [statics.solve(kin), statics.solve(kin, qdot=qd, qddot=qdd)]
+    for w, b in zip(whole, blocked):
+        assert {j[1:] for j in w.joints} == {j[1:] for j in b.joints}
+        for _, i, j in w.joints:
+            assert np.array_equal(w.reaction(i, j), b.reaction(i, j))
+        assert np.array_equal(w.actuator_force("S"), b.actuator_force("S"))
+        assert np.array_equal(w.actuator_force_from_reactions("S"),
+                              b.actuator_force_from_reactions("S"))
+        assert b.equilibrium_residual()[0].shape == (2, 11)
+        assert b.equilibrium_residual()[0].max() <= 1e-6

@@ -72,6 +72,20 @@ class Kinematics:
         self._sd = raw["sd"].reshape(-1, k, m, n)
         self._sdd = raw["sdd"].reshape(-1, k, k, m, n)
 
+    def _positions(self, i0, i1):
+        """The same result restricted to positions i0:i1 (views, no copies)."""
+        import copy
+        b = copy.copy(self)
+        sl = (Ellipsis, slice(i0, i1))
+        b._q = self._q[sl]
+        b.n = b._q.shape[-1]
+        b.shape = (self.m, b.n) if len(self.shape) == 2 else (b.n,)
+        b.ok = self.ok[sl]
+        b._pv, b._pd, b._pdd = self._pv[sl], self._pd[sl], self._pdd[sl]
+        b._sv, b._sd, b._sdd = self._sv[sl], self._sd[sl], self._sdd[sl]
+        b._frame = {k: v[sl] for k, v in self._frame.items()}
+        return b
+
     # ---- helpers -----------------------------------------------------------------
     @property
     def points(self):

@@ -303,8 +303,26 @@ def virtual_work_forces(kin, qdot=None, qddot=None, g=G_SEEDS):
     return {c: -Q[j] for j, c in enumerate(kin.coordinates)}
 
 
+#: positions per block of the reverse-order pass (numpy temporaries stay in cache)
+BLOCK = 32768
+
+
+def _rate_block(rate, kin, i0, i1):
+    """The positions i0:i1 of a coordinate rate (scalar, or an array over positions)."""
+    if rate is None:
+        return None
+    r = np.asarray(rate, float)
+    if kin.k == 1:
+        return r[..., i0:i1] if r.ndim and r.shape[-1] == kin.n else r
+    return r[..., i0:i1, :] if r.ndim >= 2 and r.shape[-2] == kin.n else r
+
+
 def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
     """Actuator forces (both routes), joint reactions and equilibrium residuals.
+
+    Large ranges are processed in blocks of :data:`BLOCK` positions (the same
+    formulas; the numpy temporaries then stay in the CPU caches).
+
 
     Parameters
     ----------
@@ -320,6 +338,34 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
     -------
     Statics
     """
+    if kin.n <= BLOCK:
+        return _solve(kin, qdot, qddot, g)
+    parts = [(_solve(kin._positions(i0, min(kin.n, i0 + BLOCK)),
+                     _rate_block(qdot, kin, i0, i0 + BLOCK),
+                     _rate_block(qddot, kin, i0, i0 + BLOCK), g))
+             for i0 in range(0, kin.n, BLOCK)]
+
+    first = parts[0]
+    joints = {}
+    for key, (pt, *_rest) in first._joints.items():
+        cols = [np.concatenate([np.broadcast_to(p._joints[key][c], (kin.m, p.kinematics.n))
+                                for p in parts], axis=-1) for c in (1, 2, 3)]
+        joints[key] = (pt, *cols)
+    vw = {c: np.concatenate([np.broadcast_to(p._vw[c], (kin.m, p.kinematics.n))
+                             for p in parts], axis=-1) for c in first._vw}
+    act = {c: np.concatenate([np.broadcast_to(p._act_rx[c], (kin.m, p.kinematics.n))
+                              for p in parts], axis=-1) for c in first._act_rx}
+
+    def residual():
+        res = [p.equilibrium_residual() for p in parts]
+        return tuple(np.concatenate([np.asarray(r[i]).reshape(kin.m, -1) for r in res],
+                                    axis=-1) for i in (0, 1))
+
+    return Statics(kin, vw, joints, act, residual, [])
+
+
+def _solve(kin, qdot, qddot, g):
+    """The reverse-order pass over one block of positions."""
     mech = kin.mechanism
     m, n = kin.m, kin.n
     missing = [p for b in mech._bodies.values() for p in b["points"]
