@@ -205,3 +205,13 @@ def test_transmission_angle_of_a_dyad():
     # angle between links 4 and 5 at joint 45: |φ4 − φ5| folded into [0, 180]
     d = np.abs(r.phi("4", True) - r.phi("5", True)) % 360
     assert np.allclose(mu, np.minimum(d, 360 - d))
+
+
+def test_coordinates_must_be_real_finite_numbers():
+    m = examples.hitch_003()
+    with pytest.raises(ModelError, match="must be real"):
+        m.solve(np.array([0.5 + 1e-3j]))
+    with pytest.raises(ModelError, match="not finite"):
+        m.solve([0.5, np.nan])
+    with pytest.raises(ModelError, match="must be numbers"):
+        m.solve(["half a metre"])

@@ -322,10 +322,10 @@ class Kinematics:
         """
         lk = next(l for l in self.mechanism.links if l.name == link)
         w = self.dphi(link, wrt)
-        bad = self._singular_mask(w, f"instantaneous centre of link {link}", "raise")
+        # raises SingularPositionError where the link is at rest (no centre)
+        self._singular_mask(w, f"instantaneous centre of link {link}", "raise")
         ax, ay = self.x(lk.tail), self.y(lk.tail)
         vx, vy = self.dx(lk.tail, wrt), self.dy(lk.tail, wrt)
-        del bad
         return ax - vy / w, ay + vx / w
 
     def closure_residual(self):

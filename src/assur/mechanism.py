@@ -639,9 +639,12 @@ class Mechanism:
     # ---- compilation ---------------------------------------------------------------
     def _coordinates_array(self, q, m_params):
         k = len(self.coordinates)
-        a = np.asarray(q, dtype=float)
         if np.iscomplexobj(q):
-            raise ModelError("generalized coordinates must be real")
+            raise ModelError("generalized coordinates must be real numbers [m or rad]")
+        try:
+            a = np.asarray(q, dtype=float)
+        except (TypeError, ValueError):
+            raise ModelError(f"generalized coordinates must be numbers, got {q!r}") from None
         if not np.all(np.isfinite(a)):
             bad = np.argwhere(~np.isfinite(a))[0]
             raise ModelError(f"generalized coordinate value at index {tuple(bad)} is not finite")
