@@ -513,21 +513,38 @@ _by_structure: dict = {}
 _pool = None
 
 
+def check_continuity(gout, q, npd, status, amount, codes):
+    """Run :func:`continuity` over all elements, split over the CPUs in threads."""
+    E = q.shape[1]
+    nthreads = min(os.cpu_count() or 1, max(1, E // 65536))
+    if nthreads <= 1:
+        return continuity(gout, q, npd, status, amount, codes, 0, E)
+    per = (E + nthreads - 1) // nthreads
+    pool = _get_pool()
+    futs = [pool.submit(continuity, gout, q, npd, status, amount, codes, i * per,
+                        min(E, (i + 1) * per)) for i in range(nthreads)]
+    return sum(f.result() for f in futs)
+
+
+def _get_pool():
+    global _pool
+    if _pool is None:
+        from concurrent.futures import ThreadPoolExecutor
+        _pool = ThreadPoolExecutor(max_workers=os.cpu_count(), thread_name_prefix="assur")
+    return _pool
+
+
 def run(kernel, params, trig, q, npd, check, out, gout, status, amount):
     """Run a generated kernel over all elements, split over the CPUs in threads (the
     kernel releases the GIL); small problems run in the calling thread."""
-    global _pool
     E = q.shape[1]
     nchunks = (E // npd) * ((npd + CHUNK - 1) // CHUNK)  # designs × runs per design
     nthreads = min(os.cpu_count() or 1, max(1, nchunks // 8))
     if nthreads <= 1:
         kernel(params, trig, q, npd, check, out, gout, status, amount, 0, nchunks)
         return
-    if _pool is None:
-        from concurrent.futures import ThreadPoolExecutor
-        _pool = ThreadPoolExecutor(max_workers=os.cpu_count(), thread_name_prefix="assur")
     per = (nchunks + nthreads - 1) // nthreads
-    futs = [_pool.submit(kernel, params, trig, q, npd, check, out, gout, status, amount,
+    futs = [_get_pool().submit(kernel, params, trig, q, npd, check, out, gout, status, amount,
                          i * per, min(nchunks, (i + 1) * per)) for i in range(nthreads)]
     for f in futs:
         f.result()
@@ -568,13 +585,13 @@ def _continuity_impl():
     from numba import njit
 
     @njit(cache=True, nogil=True, error_model="numpy")
-    def continuity(gout, q, npd, status, amount, codes):
+    def continuity(gout, q, npd, status, amount, codes, e_start, e_end):
         """Cubic-Hermite check of every dyad's squared height between consecutive
-        positions of each design (see :func:`generate`); marks the right-hand element
-        of a failing interval with the dyad's code. Returns the number of failures."""
-        E = q.shape[1]
+        positions of each design (see :func:`generate`), for the right-hand elements
+        e_start…e_end−1; marks the right-hand element of a failing interval with the
+        dyad's code. Returns the number of failures."""
         nfail = 0
-        for e in range(1, E):
+        for e in range(max(e_start, 1), e_end):
             if e % npd == 0 or status[e] >= 0 or status[e - 1] >= 0:
                 continue
             h = q[0, e] - q[0, e - 1]

@@ -1060,13 +1060,15 @@ def _execute(prog, ptab, qarr, n, check=False):
     sd = parts[4].reshape(nso, k, E)
     sdd = parts[5].reshape(nso, k, k, E)
     status = np.empty(E, dtype=np.int64)
-    amount = np.zeros(E)  # written by the continuity pass; other amounts on demand
+    # written by the continuity pass at its failures only (read only there); the
+    # other amounts are recomputed on demand
+    amount = np.empty(E)
     dyads = [i for i, r in enumerate(prog["ops"]) if r[0] == K.OP_RRR] if k == 1 else []
     gout = np.empty((2 * len(dyads), E if check else 1))
     K.run(kern, ptab, _trig_table(prog, ptab), qarr, n, check, out, gout, status, amount)
     if check and dyads:
         codes = np.array([i * 16 + K.FAIL_CONTINUITY for i in dyads], dtype=np.int64)
-        if K.continuity(gout, qarr, n, status, amount, codes):
+        if K.check_continuity(gout, qarr, n, status, amount, codes):
             out[:, (status % 16 == K.FAIL_CONTINUITY) & (status >= 0)] = 0.0
     for row, i in enumerate(ang):  # angle = atan2(dy, dx); the kernel left dy in sv[i]
         np.arctan2(sv[i], parts[6][row], out=sv[i])
