@@ -94,3 +94,14 @@ def test_analyze_csv_values_are_the_seed_tables(tmp_path):
     assert_printed(t41["Pgc [Pa]"].to_numpy(), T003_4_1, "Pgc")
     assert_printed(t41["Fgc [N]"].to_numpy(), T003_4_1, "Fgc")
     assert_printed(t41["GS6 [N]"].to_numpy(), T003_4_1, "GS6")
+
+
+def test_draw_at_chosen_positions(tmp_path):
+    out = tmp_path / "d"
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
+                            "png", "--draw-at", "0.476,0.614"])
+    assert r.exit_code == 0, r.output
+    assert (out / "mechanism.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
+                            "png", "--draw-at", "0.9"])
+    assert r.exit_code == 1 and "outside the range" in r.output

@@ -83,10 +83,31 @@ def _formats(value: str):
     return fmts
 
 
-def _run_report(model, out: Path, lang: str, fmts):
+def _positions(analysis, draw_at):
+    """Indices of the positions nearest to the coordinate values ``draw_at`` (one
+    coordinate; e.g. "0.42,0.67" [m or rad])."""
+    if not draw_at:
+        return None
+    kin = analysis.kinematics
+    if kin.k != 1 or len(kin.shape) != 1:
+        _fail("--draw-at needs a model with one coordinate and one design")
+    try:
+        values = [float(v) for v in draw_at.split(",") if v.strip()]
+    except ValueError:
+        _fail(f"--draw-at must be comma-separated numbers (SI), got {draw_at!r}")
+    q = kin.q()
+    lo, hi = float(q.min()), float(q.max())
+    bad = [v for v in values if not lo <= v <= hi]
+    if bad:
+        _fail(f"--draw-at {bad} is outside the range {lo:.6g} … {hi:.6g}")
+    return [int(abs(q - v).argmin()) for v in values]
+
+
+def _run_report(model, out: Path, lang: str, fmts, draw_at=None):
     from .report import report_steps, write_report
 
     analysis = _assemble(model)
+    positions = _positions(analysis, draw_at)
     with Progress(SpinnerColumn(), TextColumn("[progress.description]{task.description}"),
                   BarColumn(), TimeElapsedColumn(), console=console, transient=True) as prog:
         task = prog.add_task("writing the report", total=len(report_steps(fmts)))
@@ -94,7 +115,8 @@ def _run_report(model, out: Path, lang: str, fmts):
         def step(name):
             prog.update(task, description=f"writing: {name}", advance=1)
 
-        files = write_report(analysis, out, formats=fmts, lang=lang, progress=step)
+        files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
+                             positions=positions)
     return analysis, files
 
 
@@ -104,13 +126,16 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                         help="Output directory."),
             lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
             format: str = typer.Option(",".join(FORMATS), "--format",
-                                       help="Comma-separated: csv,xlsx,html,png,svg,gif.")):
+                                       help="Comma-separated: csv,xlsx,html,png,svg,gif."),
+            draw_at: str = typer.Option("", "--draw-at",
+                                        help="Coordinate values to draw the mechanism at, "
+                                             "e.g. 0.42,0.55 (SI; default: first and last).")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
     if lang not in ("ru", "en"):
         _fail(f"--lang must be one of: ['ru', 'en']; got {lang!r}")
     fmts = _formats(format)
     model = _load(file)
-    _, files = _run_report(model, output, lang, fmts)
+    _, files = _run_report(model, output, lang, fmts, draw_at)
     _summary(files, output)
 
 

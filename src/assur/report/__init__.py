@@ -49,7 +49,7 @@ def report_steps(formats=FORMATS) -> list:
 
 
 def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, design=None,
-                 frames=30) -> dict:
+                 frames=30, positions=None) -> dict:
     """Write tables, diagrams, the drawing, the animation and the HTML report.
 
     Parameters
@@ -73,6 +73,8 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
         Design of a batch to report.
     frames : int
         Frames of the animation over the range.
+    positions : sequence of int, optional
+        Indices of the positions drawn (default: the first and the last).
 
     Returns
     -------
@@ -118,7 +120,7 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             if "svg" in formats:
                 written["svg"].append(_figures.save(fig, out / f"fig_{name}.svg"))
         step("drawing")
-        fig = _drawing.draw(analysis, lang=lang, design=design)
+        fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design)
         drawing_png = _figures.to_png_bytes(fig)
         if "png" in formats:
             p = out / "mechanism.png"
