@@ -105,3 +105,13 @@ def test_draw_at_chosen_positions(tmp_path):
     r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
                             "png", "--draw-at", "0.9"])
     assert r.exit_code == 1 and "outside the range" in r.output
+
+
+def test_report_lists_the_solved_conditions(tmp_path):
+    out = tmp_path / "h"
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
+                            "html"])
+    assert r.exit_code == 0, r.output
+    text = (out / "report.html").read_text(encoding="utf-8")
+    assert "Design conditions solved" in text
+    assert "L4 = 0.661283167" in text and "L7 = 0.752169525" in text

@@ -21,13 +21,17 @@ class Analysis:
         By cylinder name.
     stability : StabilityResult or None
         When the mechanism has machine data (:meth:`Mechanism.with_machine`).
+    solved : tuple of SolvedCondition
+        The design conditions a model file fixed (shown in reports).
     """
 
-    def __init__(self, kinematics, statics, cylinders, stability):
+    def __init__(self, kinematics, statics, cylinders, stability, solved=()):
         self.kinematics = kinematics
         self.statics = statics
         self.cylinders = cylinders
         self.stability = stability
+        #: design conditions solved for the model (:class:`assur.synthesis.SolvedCondition`)
+        self.solved = tuple(solved)
 
     @property
     def mechanism(self):

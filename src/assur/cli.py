@@ -47,9 +47,11 @@ def _assemble(model):
     from .errors import AssemblyError, ModelError, SingularPositionError
 
     try:
-        return model.mechanism.analyze(model.range)
+        analysis = model.mechanism.analyze(model.range)
     except (AssemblyError, ModelError, SingularPositionError) as e:
         _fail(f"{model.source}: {e}")
+    analysis.solved = tuple(model.solved)
+    return analysis
 
 
 @app.command()

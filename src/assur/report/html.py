@@ -170,7 +170,10 @@ def _summary(analysis, lang):
             machine.append(f"{name}: {p:.6g} {unit('N', lang)}, x = {x:.6g} {unit('m', lang)}")
         machine.append(f"min share: {100 * mc.min_share:g} %" if lang == "en"
                        else f"минимальная доля: {100 * mc.min_share:g} %")
-    return dict(params=params, coords=coords, groups=groups, links=links, machine=machine)
+    solved = [f"{sc.condition.unknown} = {sc.value:.9g} ({sc.condition.describe()}; "
+              f"residual {sc.residual:.2g})" for sc in getattr(analysis, "solved", ())]
+    return dict(params=params, coords=coords, groups=groups, links=links, machine=machine,
+                solved=solved)
 
 
 def _table_view(tab, lang):
@@ -292,6 +295,7 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 {% for l in summary.links %}<tr>{% for c in l %}<td>{{ c }}</td>{% endfor %}</tr>
 {% endfor %}</table></div>
 {% if summary.machine %}<h3>{{ L.machine }}</h3><ul>{% for m in summary.machine %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
+{% if summary.solved %}<h3>{{ L.solved }}</h3><ul>{% for m in summary.solved %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
 </section>
 
 <section id="tables"><h2>{{ L.tables }}</h2>

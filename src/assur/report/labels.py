@@ -21,6 +21,8 @@ TEXT = {
                "ru": "Структурные группы (в порядке решения)"},
     "links": {"en": "Links", "ru": "Звенья"},
     "machine": {"en": "Machine (stability)", "ru": "Машина (устойчивость)"},
+    "solved": {"en": "Design conditions solved (Given/Find)",
+               "ru": "Решённые условия синтеза (Given/Find)"},
     "tables": {"en": "Tables", "ru": "Таблицы"},
     "figures": {"en": "Diagrams", "ru": "Графики"},
     "drawing": {"en": "Drawing of the mechanism", "ru": "Схема механизма"},
