@@ -1070,9 +1070,17 @@ def _execute(prog, ptab, qarr, n, check=False):
         codes = np.array([i * 16 + K.FAIL_CONTINUITY for i in dyads], dtype=np.int64)
         if K.check_continuity(gout, qarr, n, status, amount, codes):
             out[:, (status % 16 == K.FAIL_CONTINUITY) & (status >= 0)] = 0.0
-    for row, i in enumerate(ang):  # angle = atan2(dy, dx); the kernel left dy in sv[i]
+    def angle(row, i):
+        """angle = atan2(dy, dx) (the kernel left dy in sv[i]), then continuous along
+        the positions of each design when they are a range (both release the GIL)."""
         np.arctan2(sv[i], parts[6][row], out=sv[i])
-    angles = np.array(ang, dtype=np.int64)
-    if check and len(angles) and n > 1:
-        K.unwrap_rows(sv, angles, n)
+        if check and n > 1:
+            K.unwrap_rows(sv, np.array([i], dtype=np.int64), n)
+
+    if E >= 65536 and len(ang) > 1:
+        for f in [K._get_pool().submit(angle, row, i) for row, i in enumerate(ang)]:
+            f.result()
+    else:
+        for row, i in enumerate(ang):
+            angle(row, i)
     return dict(pv=pv, pd=pd, pdd=pdd, sv=sv, sd=sd, sdd=sdd, status=status, amount=amount)
