@@ -70,7 +70,7 @@ DEAD_POINT_TOL = 1e-7
 #: elements per parallel work item
 CHUNK = 256
 
-_VERSION = "16"  # bump when the generator changes what it emits
+_VERSION = "17"  # bump when the generator changes what it emits
 
 
 class _Emitter:
@@ -482,7 +482,7 @@ def kernel(params, trig, q, npd, check, out, gout, status, amount, c_start, c_en
         d = c // cpd
         e0 = d * npd + (c % cpd) * {CHUNK}
         e1 = min(d * npd + npd, e0 + {CHUNK})
-        if True:
+        if e1 > e0:
 {hoist}            for e in range(e0, e1):
                 st = -1
 ''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + '''        for r in range(NQ):
