@@ -46,6 +46,55 @@ def _cross(ax, ay, bx, by):
     return ax * by - ay * bx
 
 
+def _dyad_impl():
+    from numba import njit
+
+    @njit(cache=True, nogil=True, error_model="numpy")
+    def dyad_reactions(ax, ay, bx, by, cx, cy, fax, fay, ma, fbx, fby, mb, out):
+        """Reactions of an RRR dyad (links a: A–C, b: B–C) under the wrenches (F, M about
+        the origin) of its two links, in one fused pass over the positions.
+
+        Link a: R_A − R_C + F_a = 0 and (A−C)×R_A + M_a,C = 0; link b: R_B + R_C + F_b = 0
+        and (B−C)×R_B + M_b,C = 0, so ``[[-u_y, u_x], [-w_y, w_x]]·R_A = [r1, r2]`` with
+        u = A−C, w = B−C (seed 003 §5.1–5.3, group by group). Writes out[0:6] = R_A,
+        R_C (force of a on b), R_B; zero where the dyad is degenerate (a failed
+        position: det = 0)."""
+        m, n = ax.shape
+        for i in range(m):
+            for j in range(n):
+                c_x = cx[i, j]
+                c_y = cy[i, j]
+                f_ax = fax[i, j]
+                f_ay = fay[i, j]
+                f_bx = fbx[i, j]
+                f_by = fby[i, j]
+                mac = ma[i, j] - (c_x * f_ay - c_y * f_ax)
+                mbc = mb[i, j] - (c_x * f_by - c_y * f_bx)
+                ux = ax[i, j] - c_x
+                uy = ay[i, j] - c_y
+                wx = bx[i, j] - c_x
+                wy = by[i, j] - c_y
+                det = ux * wy - uy * wx
+                idet = 1.0 / det if det != 0.0 else 0.0
+                r1 = -mac
+                r2 = mbc - (wx * (f_ay + f_by) - wy * (f_ax + f_bx))
+                rax = (r1 * wx - ux * r2) * idet
+                ray = (-uy * r2 + wy * r1) * idet
+                rcx = rax + f_ax
+                rcy = ray + f_ay
+                out[0, i, j] = rax
+                out[1, i, j] = ray
+                out[2, i, j] = rcx
+                out[3, i, j] = rcy
+                out[4, i, j] = -rcx - f_bx
+                out[5, i, j] = -rcy - f_by
+
+    return dyad_reactions
+
+
+_dyad_reactions = _dyad_impl()
+
+
 class Statics:
     """Actuator forces, joint reactions and checks over the positions.
 
@@ -303,8 +352,10 @@ def virtual_work_forces(kin, qdot=None, qddot=None, g=G_SEEDS):
     return {c: -Q[j] for j, c in enumerate(kin.coordinates)}
 
 
-#: positions per block of the reverse-order pass (numpy temporaries stay in cache)
-BLOCK = 32768
+#: positions per block of the reverse-order pass: bounds the memory of its temporaries
+#: on very large ranges (the dyads are solved by a compiled loop, so smaller blocks do
+#: not pay: the concatenation costs more than cache-sized temporaries save)
+BLOCK = 1 << 22
 
 
 def _rate_block(rate, kin, i0, i1):
@@ -320,8 +371,8 @@ def _rate_block(rate, kin, i0, i1):
 def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
     """Actuator forces (both routes), joint reactions and equilibrium residuals.
 
-    Large ranges are processed in blocks of :data:`BLOCK` positions (the same
-    formulas; the numpy temporaries then stay in the CPU caches).
+    Very large ranges are processed in blocks of :data:`BLOCK` positions (the same
+    formulas).
 
 
     Parameters
@@ -435,18 +486,12 @@ def _solve(kin, qdot, qddot, g):
             ax, ay = kin._val(A)
             bx, by = kin._val(B)
             cx, cy = kin._val(C)
-            fax, fay, mac = about(la, cx, cy)
-            fbx, fby, mbc = about(lb, cx, cy)
-            ux, uy = ax - cx, ay - cy
-            wx, wy = bx - cx, by - cy
-            det = _cross(ux, uy, wx, wy)
-            r1 = -mac
-            r2 = mbc - _cross(wx, wy, fax + fbx, fay + fby)
-            # [[-uy, ux], [-wy, wx]] R = [r1, r2]
-            rax = (r1 * wx - ux * r2) / det
-            ray = (-uy * r2 + wy * r1) / det
-            rcx, rcy = rax + fax, ray + fay  # force of la on lb at C
-            rbx, rby = -rcx - fbx, -rcy - fby
+            full = (m, n)
+            args = [np.broadcast_to(np.asarray(v, float), full)
+                     for v in (ax, ay, bx, by, cx, cy, *W[la], *W[lb])]
+            res = np.empty((6, m, n))
+            _dyad_reactions(*args, res)
+            rax, ray, rcx, rcy, rbx, rby = res
             record(bA, la, A, rax, ray)
             record(la, lb, C, rcx, rcy)
             record(bB, lb, B, rbx, rby)
