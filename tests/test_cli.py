@@ -115,3 +115,11 @@ def test_report_lists_the_solved_conditions(tmp_path):
     text = (out / "report.html").read_text(encoding="utf-8")
     assert "Design conditions solved" in text
     assert "L4 = 0.661283167" in text and "L7 = 0.752169525" in text
+
+
+def test_tables_prints_the_seed_tables():
+    r = runner.invoke(app, ["tables", str(bundled("hitch_003")), "--table", "4.1"])
+    assert r.exit_code == 0, r.output
+    assert "4.1" in r.output and "Fgc [N]" in r.output and "129614" in r.output
+    r = runner.invoke(app, ["tables", str(bundled("hitch_003")), "--table", "9.9"])
+    assert r.exit_code == 1 and "this model has tables" in r.output

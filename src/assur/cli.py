@@ -150,6 +150,55 @@ def _summary(files, output: Path):
 
 
 @app.command()
+def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
+           table: str = typer.Option("", "--table", help="Only these tables, e.g. 2.1,4.1."),
+           lang: str = typer.Option("en", "--lang", help="Titles: ru or en."),
+           columns: int = typer.Option(6, "--columns", help="Columns per printed block.")):
+    """Print the seed-like tables of a model in the terminal."""
+    import numpy as np
+
+    from .report.tables import seed_tables
+
+    if lang not in ("ru", "en"):
+        _fail(f"--lang must be one of: ['ru', 'en']; got {lang!r}")
+    model = _load(file)
+    analysis = _assemble(model)
+    tabs = seed_tables(analysis, lang=lang)
+    wanted = [t.strip() for t in table.split(",") if t.strip()]
+    known = [t.id for t in tabs]
+    bad = [w for w in wanted if w not in known]
+    if bad:
+        _fail(f"--table {bad}: this model has tables {known}")
+    for t in tabs:
+        if wanted and t.id not in wanted:
+            continue
+        first, rest = t.columns[0], t.columns[1:]
+        for k in range(0, max(len(rest), 1), max(columns, 1)):
+            part = [first] + list(rest[k:k + columns])
+            rt = Table(title=f"{t.id} — {t.title(lang)}" if k == 0 else None,
+                       header_style="bold", title_justify="left")
+            for c in part:
+                rt.add_column(f"{c.symbol} [{c.unit}]", justify="right", no_wrap=True,
+                              overflow="fold")
+            n = len(np.atleast_1d(first.values))
+            for i in range(n):
+                rt.add_row(*[_fmt_cell(np.atleast_1d(c.values)[i]) for c in part])
+            console.print(rt)
+
+
+def _fmt_cell(v):
+    import math
+    if isinstance(v, (bool,)) or (hasattr(v, "dtype") and v.dtype == bool):
+        return "yes" if v else "no"
+    v = float(v)
+    if math.isnan(v):
+        return ""
+    if math.isinf(v):
+        return "∞" if v > 0 else "−∞"
+    return f"{v:.5g}"
+
+
+@app.command()
 def demo(output: Path = typer.Option(Path("assur-demo"), "-o", "--output"),
          lang: str = typer.Option("en", "--lang")):
     """Analyze the bundled seed-003 hitch into ./assur-demo/."""
