@@ -195,6 +195,8 @@ def _fmt_cell(v):
         return ""
     if math.isinf(v):
         return "∞" if v > 0 else "−∞"
+    if 1e3 <= abs(v) < 1e10:
+        return f"{v:.0f}"  # forces, pressures: whole N, Pa as the seeds print them
     return f"{v:.5g}"
 
 
