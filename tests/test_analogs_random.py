@@ -759,15 +759,10 @@ def test_slider_input_and_rrr_dyad(data):
     check(b.build())
 
 
-@SETTINGS
-@given(st.data())
-def test_rrp_slider_dyad(data):
-    """(f) RRP slider dyads on a four-bar. ``fixed``: the crank end A on a circle
-    meets a fixed line through a frame point L0 (fixed ``direction``), joint X.
-    ``link``: the line is carried by the moving rocker B0–C (``line_link``, turned
-    ``direction``), the circle is about the moving crank end A, joint Y. The two
-    take opposite branches, σ and −σ; the moving line passes through C (its branch
-    +1) or B0 (−1)."""
+def rrp_family(data):
+    """Four-bar with RRP dyads: III on a fixed line through L0 (joint X), IV on a line
+    carried by the rocker B0–C (joint Y); branches σ and −σ (shared with the
+    kinetostatics tests, which then reuse the compiled kernel)."""
     sigma = data.draw(st.sampled_from((1, -1)), label="branch of the fixed-line dyad")
     b = Builder(data, "four-bar + RRP dyads", ("th",))
     b.fourbar("th")
@@ -785,7 +780,19 @@ def test_rrp_slider_dyad(data):
     b.link("rodX", "A", "X")
     b.link("rodY", "A", "Y")
     b.distance("CY", "C", "Y")
-    check(b.build())
+    return b
+
+
+@SETTINGS
+@given(st.data())
+def test_rrp_slider_dyad(data):
+    """(f) RRP slider dyads on a four-bar. ``fixed``: the crank end A on a circle
+    meets a fixed line through a frame point L0 (fixed ``direction``), joint X.
+    ``link``: the line is carried by the moving rocker B0–C (``line_link``, turned
+    ``direction``), the circle is about the moving crank end A, joint Y. The two
+    take opposite branches, σ and −σ; the moving line passes through C (its branch
+    +1) or B0 (−1)."""
+    check(rrp_family(data).build())
 
 
 @SETTINGS

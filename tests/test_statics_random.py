@@ -95,6 +95,7 @@ from assur import statics
 from assur.groups import Crank, CylinderLever, Dyad, SliderDyad, SliderInput
 
 from test_analogs_random import MARGIN, SETTINGS, Builder, _dir, _floats, _line_dir, _point, \
+    rrp_family, \
     analogs, fd_steps, margins
 
 #: gravity for the masses [m/s²] (assur's default, the seeds' value)
@@ -275,26 +276,6 @@ def cylinder_radius_family(data, kind=None):
     return b
 
 
-def rrp_family(data):
-    """Four-bar with RRP dyads: III on a fixed line through L0 (joint X), IV on a
-    line carried by the rocker IIb (joint Y); branches σ and −σ."""
-    sigma = data.draw(st.sampled_from((1, -1)), label="branch of the fixed-line dyad")
-    b = Builder(data, "four-bar + RRP dyads", ("th",))
-    b.fourbar("th")
-    beta = b.draw(-math.pi, math.pi, "fixed line direction")
-    e, tau = b.draw(-0.6, 0.6, "line offset"), b.draw(-0.8, 0.8, "line point along")
-    u = _dir(beta)
-    b.frame("L0", b.pos["A"] + e[:, None] * np.stack([-u[:, 1], u[:, 0]], -1) + tau[:, None] * u)
-    b.slider_dyad("III", "A", "X", "L0", sigma, beta)
-    gamma = b.draw(-math.pi, math.pi, "moving line direction from B0→C")
-    b.slider_dyad("IV", "A", "Y", "C" if sigma == -1 else "B0", -sigma, gamma,
-                  line_link=("B0", "C"))
-    b.link("1", "A0", "A")
-    b.link("3", "B0", "C")
-    b.link("rodX", "A", "X")
-    b.link("rodY", "A", "Y")
-    b.distance("CY", "C", "Y")
-    return b
 
 
 def prepare(b):
