@@ -690,14 +690,10 @@ def test_crank_and_rrr_dyad(data):
     check(b.build())
 
 
-@SETTINGS
-@given(st.data())
-def test_dyad_with_cylinder_radius_two_coordinates(data):
-    """(c) RRR dyad whose radius is the second generalized coordinate S2 (a cylinder
-    inside the chain), k = 2: full Jacobian and 2x2 Hessian, mixed terms included.
-    Crank input → S2 is the dyad's first radius, branch +1; cylinder–lever input →
-    S2 is its second radius, branch −1."""
-    kind = data.draw(st.sampled_from(["crank", "cylinder-lever"]), label="input")
+def cylinder_dyad_family(data, kind):
+    """k = 2: a crank (th) or cylinder–lever (S) input and an RRR dyad II whose radius
+    is the second coordinate S2 (crank: its first radius, branch +1; cylinder–lever:
+    its second, branch −1). Shared with the kinetostatics tests (same kernels)."""
     first = "th" if kind == "crank" else "S"
     b = Builder(data, f"{kind} + cylinder dyad", (first, "S2"))
     _, p = b.input(kind, first)
@@ -710,7 +706,18 @@ def test_dyad_with_cylinder_radius_two_coordinates(data):
         b.distance("S2=", "05", "45")
     b.link("4", p, "45")
     b.link("5", "05", "45")
-    check(b.build())
+    return b
+
+
+@SETTINGS
+@given(st.data())
+def test_dyad_with_cylinder_radius_two_coordinates(data):
+    """(c) RRR dyad whose radius is the second generalized coordinate S2 (a cylinder
+    inside the chain), k = 2: full Jacobian and 2x2 Hessian, mixed terms included.
+    Crank input → S2 is the dyad's first radius, branch +1; cylinder–lever input →
+    S2 is its second radius, branch −1."""
+    kind = data.draw(st.sampled_from(["crank", "cylinder-lever"]), label="input")
+    check(cylinder_dyad_family(data, kind).build())
 
 
 @SETTINGS

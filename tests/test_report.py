@@ -26,9 +26,8 @@ from assur.report import FORMATS, report_steps, seed_tables, write_report
 from assur.report import figures as report_figures
 from assur.report.html import write_html
 
-from seed_tables import (T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
+from seed_tables import (T003_6_1, T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
                          T003_3_1b, T003_4_1, T003_5_1, T003_IC, assert_printed, table)
-from test_stability import T003_6_1
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 

@@ -18,23 +18,8 @@ from hypothesis import strategies as st
 from assur import examples
 from assur.stability import Machine, axle_reactions, seed003_gs6max
 
-from seed_tables import assert_printed, table
+from seed_tables import T003_6_1, assert_printed, table
 
-# seed 003, Таблица 6.1 — Результаты анализа МН на устойчивость
-# [м] [Н] [Н] [%] [%] [Н]; the seed's ΔRa, ΔRb are dRa, dRb here
-T003_6_1 = """
-S Ra Rb dRa dRb GS6max
-0.420	21761	69739	23.8	76.2	50645
-0.448	21539	69961	23.5	76.5	50045
-0.476	21460	70040	23.5	76.5	49835
-0.503	21495	70005	23.5	76.5	49929
-0.531	21634	69866	23.6	76.4	50301
-0.559	21875	69625	23.9	76.1	50960
-0.587	22222	69278	24.3	75.7	51939
-0.614	22682	68818	24.8	75.2	53298
-0.642	23266	68234	25.4	74.6	55129
-0.670	23987	67513	26.2	73.8	57569
-"""
 
 A, B, L = 0.6, 1.62, 2.960            # seed 003 §1.6 [m]
 P_GR, P_MSHA, P6 = 8000.0, 56000.0, 27500.0   # [N]

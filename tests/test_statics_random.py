@@ -95,7 +95,7 @@ from assur import statics
 from assur.groups import Crank, CylinderLever, Dyad, SliderDyad, SliderInput
 
 from test_analogs_random import MARGIN, SETTINGS, Builder, _dir, _floats, _line_dir, _point, \
-    rrp_family, \
+    cylinder_dyad_family, rrp_family, \
     analogs, fd_steps, margins
 
 #: gravity for the masses [m/s²] (assur's default, the seeds' value)
@@ -261,19 +261,7 @@ def cylinder_radius_family(data, kind=None):
         b.link("rod", "A", "X")
         b.link("1", "A0", "A")
         return b
-    first = "th" if kind == "crank" else "S"
-    b = Builder(data, f"{kind} + cylinder dyad", (first, "S2"))
-    _, p = b.input(kind, first)
-    b.frame_near("05", p, 0.4, 1.2)
-    if kind == "crank":
-        b.dyad("II", p, "05", "45", 1, ra="S2")
-        b.distance("S2=", p, "45")
-    else:
-        b.dyad("II", p, "05", "45", -1, rb="S2")
-        b.distance("S2=", "05", "45")
-    b.link("4", p, "45")
-    b.link("5", "05", "45")
-    return b
+    return cylinder_dyad_family(data, kind)
 
 
 
