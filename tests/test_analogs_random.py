@@ -51,8 +51,7 @@ from hypothesis import HealthCheck, Phase, assume, given, settings, target
 from hypothesis import strategies as st
 
 from assur import Mechanism
-from assur.groups import Crank, CylinderLever, Dyad, Frame, RigidPoint, SliderDyad, SliderInput
-from assur.mechanism import PosePoint
+from assur.groups import Crank, CylinderLever, Dyad, Frame, PosePoint, RigidPoint, SliderDyad, SliderInput
 
 #: complex step [m or rad]
 H_CS = 1e-30

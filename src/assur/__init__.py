@@ -9,9 +9,16 @@
 
 from . import groups, kinematics
 from .errors import AssemblyError, ModelError, SingularPositionError
-from .groups import Crank, CylinderLever, Dyad, Frame, RigidPoint, SliderDyad, SliderInput
+from .groups import (Crank, CylinderLever, DoubleSliderDyad, Dyad, Frame, PosePoint, RigidPoint,
+                     SleeveDyad, SliderDyad, SliderInput)
 from .kinematics import Kinematics
 from .mechanism import Mechanism
+from .topology import Topology
 from . import examples
+
+__all__ = ["Mechanism", "Kinematics", "Topology", "AssemblyError", "ModelError",
+           "SingularPositionError", "Frame", "CylinderLever", "Dyad", "Crank", "SliderInput",
+           "SliderDyad", "RigidPoint", "PosePoint", "SleeveDyad", "DoubleSliderDyad", "groups",
+           "kinematics", "examples"]
 
 __version__ = "0.1.0"

@@ -116,9 +116,8 @@ class CylinderResult:
         fdead = 0.0
         if dead_loads is not None:
             from .statics import virtual_work_forces
-            from .kinematics import Kinematics  # noqa: F401  (type only)
             kd = _with_loads(kin, dead_loads)
-            fdead = kin._out(np.broadcast_to(virtual_work_forces(kd)[self.cylinder.coordinate],
+            fdead = kin.reshape(np.broadcast_to(virtual_work_forces(kd)[self.cylinder.coordinate],
                                              (kin.m, kin.n)))
         return (self.force_max * self.eta_mech - fdead) / I
 

@@ -56,9 +56,9 @@ class Kinematics:
         self.shape = tuple(shape)
         self.ok = ok
         self.failures = []
-        self._pidx = {p: i for i, p in enumerate(prog["out_pts"])}
-        self._sidx = {s: i for i, s in enumerate(prog["out_sca"])}
-        self._kinds = prog["kinds"]
+        self._pidx = {p: i for i, p in enumerate(raw["out_pts"])}
+        self._sidx = {s: i for i, s in enumerate(raw["out_sca"])}
+        self._kinds = prog.kinds
         k, m, n = self.k, self.m, self.n
         self._pv = raw["pv"].reshape(-1, 2, m, n)
         self._pd = raw["pd"].reshape(-1, 2, k, m, n)
@@ -66,7 +66,7 @@ class Kinematics:
         self._sv = raw["sv"].reshape(-1, m, n)
         # frame points are design constants: served from the parameters, not the kernel
         self._frame = {}
-        for name, (rx, ry) in prog["frame_rows"].items():
+        for name, (rx, ry) in prog.frame_rows.items():
             xy = np.stack([params[rx], params[ry]])[:, :, None]  # (2, m, 1)
             self._frame[name] = np.broadcast_to(xy, (2, m, n))
         self._sd = raw["sd"].reshape(-1, k, m, n)
@@ -91,6 +91,54 @@ class Kinematics:
     def points(self):
         """Names of the moving points in this result (frame points are available too)."""
         return tuple(self._pidx)
+
+    def value(self, point):
+        """Position of any point (frame points included), shape (2, m, n) [m]."""
+        return self._val(point)
+
+    def jacobian(self, point):
+        """First analogs ∂(x, y)/∂q of a point, shape (2, k, m, n) [m/m or m/rad]."""
+        return self._jet1(point)
+
+    def hessian(self, point):
+        """Second analogs ∂²(x, y)/∂q∂q of a point, shape (2, k, k, m, n)."""
+        return self._jet2(point)
+
+    def has_point(self, point) -> bool:
+        """True if the result holds the point (all points unless solved with ``outputs``)."""
+        return point in self._pidx or point in self._frame
+
+    def positions(self, i0, i1):
+        """The same result restricted to positions i0:i1 (views, no copies)."""
+        return self._positions(i0, i1)
+
+    def body_rates(self, body):
+        """Angular analogs of a body: (φ', φ''), shapes (k, m, n) and (k, k, m, n)
+        [rad/m or rad/rad]; zero for the frame. A single-point body (a slider block, a
+        sleeve) turns with its guide (:meth:`assur.topology.Topology.angle_points`)."""
+        k, m, n = self.k, self.m, self.n
+        pq = self.mechanism.topology.angle_points(body)
+        if pq is None:
+            return np.zeros((k, m, n)), np.zeros((k, k, m, n))
+        P, Q = pq
+        d = self._val(Q) - self._val(P)  # (2, m, n)
+        d1 = self._jet1(Q) - self._jet1(P)  # (2, k, m, n)
+        d2 = self._jet2(Q) - self._jet2(P)  # (2, k, k, m, n)
+        r2 = d[0] ** 2 + d[1] ** 2
+        c1 = d[0] * d1[1] - d[1] * d1[0]  # (k, m, n)
+        w1 = c1 / r2
+        dot1 = d[0] * d1[0] + d[1] * d1[1]
+        w2 = np.empty((k, k, m, n))
+        for a in range(k):
+            for b in range(k):
+                num = (d1[0, b] * d1[1, a] - d1[1, b] * d1[0, a]) + (d[0] * d2[1, a, b]
+                                                                   - d[1] * d2[0, a, b])
+                w2[a, b] = num / r2 - 2 * c1[a] * dot1[b] / r2**2
+        return w1, w2
+
+    def reshape(self, a):
+        """An array of shape (m, n, *tail) in the result's shape (``shape + tail``)."""
+        return self._out(a)
 
     def _val(self, point):
         """(2, m, n) position of any point, frame points included."""
@@ -199,17 +247,43 @@ class Kinematics:
         return self.dy(point, wrt) if axis == "y" else self.dx(point, wrt)
 
     # ---- links -------------------------------------------------------------------------
+    def _body_link(self, link):
+        """Angle points of a body named in a group (not declared with ``.link``), or
+        None."""
+        if link in self._sidx and self._kinds[link] == "angle":
+            return None
+        topo = self.mechanism.topology
+        if link in topo.bodies and link != "0":
+            pq = topo.angle_points(link)
+            if pq is not None and all(self.has_point(p) for p in pq):
+                return pq
+        return None
+
     def phi(self, link, degrees=False):
-        """Angle φ of a link from +x, counter-clockwise [rad] (or [°])."""
-        v = self._out(self._sv[self._s(link, "angle")])
+        """Angle φ of a link from +x, counter-clockwise [rad] (or [°]).
+
+        ``link`` is a link declared with :meth:`~assur.Mechanism.link`, or any link a
+        group names (its angle is the direction from its first point to its second,
+        e.g. pivot → joint; a slider block or a sleeve turns with its guide or rod),
+        continuous along the positions."""
+        pq = self._body_link(link)
+        if pq is not None:
+            d = self._val(pq[1]) - self._val(pq[0])
+            v = self._out(np.unwrap(np.arctan2(d[1], d[0]), axis=-1))
+        else:
+            v = self._out(self._sv[self._s(link, "angle")])
         return np.degrees(v) if degrees else v
 
     def dphi(self, link, wrt=None):
         """Angular-velocity analog φ' = dφ/dq [rad/m or rad/rad]."""
+        if self._body_link(link) is not None:
+            return self._d1(self.body_rates(link)[0], wrt)
         return self._d1(self._sd[self._s(link, "angle")], wrt)
 
     def ddphi(self, link, wrt=None):
         """Angular-acceleration analog φ'' = d²φ/dq² [rad/m² or rad/rad²]."""
+        if self._body_link(link) is not None:
+            return self._d2(self.body_rates(link)[1], wrt)
         return self._d2(self._sdd[self._s(link, "angle")], wrt)
 
     def length(self, name):
@@ -331,36 +405,26 @@ class Kinematics:
     def closure_residual(self):
         """Largest violation of any group's closure equations [m], shape ``shape``.
 
-        Recomputes every constraint of every group from the returned points:
-        lengths of RRR links, rigid offsets, slider lines.
+        Recomputes every constraint of every group from the returned points
+        (:meth:`assur.groups.base.Group.closure`): lengths of links, rigid offsets,
+        slider lines.
         """
-        from .groups import CylinderLever, Dyad, RigidPoint, SliderDyad
         mech = self.mechanism
         res = np.zeros(self.shape)
 
         def P(p):
             return self.x(p), self.y(p)
 
-        def val(ref, p=None):
+        def val(ref):
             if isinstance(ref, str) and ref in self.coordinates:
                 return self.q(ref)
-            return np.asarray(mech.value_of(ref))[..., None] if np.ndim(mech.value_of(ref)) \
-                else mech.value_of(ref)
+            v = mech.value_of(ref)
+            return np.asarray(v)[..., None] if np.ndim(v) else v
 
         for g in mech.groups:
-            if isinstance(g, (Dyad, CylinderLever)):
-                cx, cy = P(g.out)
-                for pt, r in ((g.a, g.ra), (g.b, g.rb)):
-                    px, py = P(pt)
-                    res = np.maximum(res, np.abs(np.hypot(cx - px, cy - py) - val(r)))
-            elif isinstance(g, RigidPoint) and g.angle is not None:
-                cx, cy = P(g.out)
-                px, py = P(g.origin)
-                res = np.maximum(res, np.abs(np.hypot(cx - px, cy - py) - val(g.length)))
-            elif isinstance(g, SliderDyad):
-                cx, cy = P(g.out)
-                px, py = P(g.a)
-                res = np.maximum(res, np.abs(np.hypot(cx - px, cy - py) - val(g.radius)))
+            r = g.closure(P, val)
+            if r is not None:
+                res = np.maximum(res, r)
         return res
 
     def transmission_angle(self, group, degrees=False):

@@ -1,9 +1,11 @@
 """The :class:`Mechanism`: frame points, an ordered list of structural groups,
-named links, and the parameters they refer to.
+named links, and the parameters they refer to — an immutable description.
 
-A mechanism is a plain description; :meth:`Mechanism.solve` compiles it into the
-program run by :mod:`assur._kernel` and returns a :class:`assur.kinematics.Kinematics`
-result. Every parameter may be a scalar or an array over designs, shape ``(m,)``;
+Building returns new mechanisms (one builder method per registered group type,
+named after its model-file ``type``: :func:`assur.groups.registry`). Solving
+compiles the description into a :class:`~assur.program.Program` (cached per
+structure), runs it and returns a :class:`~assur.kinematics.Kinematics` result.
+Every parameter may be a scalar or an array over designs, shape ``(m,)``;
 generalized coordinates are arrays of shape ``(n,)`` (one design) or ``(m, n)``
 (a batch of designs), see DESIGN.md §1–2.
 """
@@ -11,58 +13,42 @@ generalized coordinates are arrays of shape ``(n,)`` (one design) or ``(m, n)``
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from functools import cached_property
 from types import MappingProxyType
 from typing import Iterable, Mapping
 
 import numpy as np
 
-from . import _kernel as K
+from . import diagnostics
 from .errors import AssemblyError, ModelError
-from .groups import Crank, CylinderLever, Distance, Dyad, Frame, Group, Link, RigidPoint, \
-    SliderDyad, SliderInput
+from .groups import Distance, Frame, Group, Link, registry
+from .groups.base import is_number
+from .program import compile_program, execute
+from .topology import Topology, build_topology
+
+__all__ = ["Mechanism"]
 
 
+class _Values:
+    """Reference values for the plain-numpy evaluation: ``val(ref)``, and the
+    positions of the groups before one at other coordinates (``positions_at``)."""
 
-def _fmt(v):
-    return f"{float(v):.6g}"
+    def __init__(self, mech, q, params):
+        self.mech, self.q, self.params = mech, q, params
 
+    def __call__(self, ref):
+        if ref is None:
+            return None
+        if is_number(ref):
+            return float(ref)
+        if ref in self.q:
+            return self.q[ref]
+        return self.params[ref]
 
-def _is_number(x):
-    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
-
-
-@dataclass(frozen=True)
-class PosePoint:
-    """Rigid point whose offset ``(dx, dy)`` from ``origin`` is known at one pose.
-
-    Seed 003 fixes the implement's centre of mass S6 by its offset (X6, Y6) from the
-    suspension axis 56 at the working stroke S = Sp:
-    ``φS6 = 2π + atan(Y6/X6) − φ6(Sp)``, ``LS6 = √(X6² + Y6²)``. The angle and
-    length are derived per design by a pre-pass at the pose.
-    """
-
-    name: str
-    origin: str
-    toward: str
-    out: str
-    dx: object
-    dy: object
-    at: tuple
-    links: tuple[str, ...] = ()
-    kind = "rigid point fixed at a pose"
-
-    def inputs(self):
-        return (self.origin, self.toward)
-
-    def outputs(self):
-        return (self.out,)
-
-    def refs(self):
-        return {"dx": self.dx, "dy": self.dy}
-
-    def group_links(self):
-        return tuple(self.links)
+    def positions_at(self, group, qvals):
+        i = self.mech.groups.index(group)
+        q = dict(zip(self.mech.coordinates, qvals))
+        return self.mech.evaluate_positions(q, self.params, upto=i)
 
 
 class Mechanism:
@@ -87,7 +73,6 @@ class Mechanism:
     >>> m = m.frame("01", 0.415, 0.563).frame("03", 0.25, 1.112)
     >>> m = m.cylinder_lever("lever", base="01", pivot="03", out="23", lever="L3",
     ...                      s="S", branch=-1, links=("2", "3"))
-    >>> m = m.link("3", "03", "23")
     >>> r = m.solve([0.42, 0.67])
     >>> [round(float(v), 1) for v in r.phi("3", degrees=True)]
     [-40.2, 37.2]
@@ -135,48 +120,28 @@ class Mechanism:
         """Return a mechanism with ``groups`` appended (solved after the existing ones)."""
         return self._with(groups=self.groups + tuple(groups))
 
+    def add_group(self, type_name: str, name: str, **kw) -> "Mechanism":
+        """Add a group of the registered type ``type_name`` (the model file's ``type``)."""
+        types = registry()
+        if type_name not in types:
+            raise ModelError(f"unknown group type {type_name!r}; known: {sorted(types)}")
+        cls = types[type_name]
+        roles = {f.name: f.role for f in cls.fields}
+        for k, v in list(kw.items()):
+            if k == "links" or roles.get(k) == "line":
+                kw[k] = tuple(v) if v is not None else (() if k == "links" else None)
+            elif roles.get(k) == "position":
+                kw[k] = tuple(v) if isinstance(v, (tuple, list)) else (v,)
+        try:
+            g = cls(name=name, **kw)
+        except TypeError as e:
+            allowed = ["links"] + [f.name for f in cls.fields]
+            raise ModelError(f"{cls.kind} {name!r}: {e}; its parameters: {allowed}") from None
+        return self.add(g)
+
     def frame(self, name, x, y) -> "Mechanism":
         """Add a frame pivot at ``(x, y)`` [m] (numbers or parameter names)."""
         return self.add(Frame(name=name, x=x, y=y))
-
-    def cylinder_lever(self, name, **kw) -> "Mechanism":
-        """Add a :class:`~assur.groups.CylinderLever` input group."""
-        kw["links"] = tuple(kw.get("links", ()))
-        return self.add(CylinderLever(name=name, **kw))
-
-    def dyad(self, name, **kw) -> "Mechanism":
-        """Add an RRR :class:`~assur.groups.Dyad`."""
-        kw["links"] = tuple(kw.get("links", ()))
-        return self.add(Dyad(name=name, **kw))
-
-    def crank(self, name, **kw) -> "Mechanism":
-        """Add a :class:`~assur.groups.Crank` input."""
-        kw["links"] = tuple(kw.get("links", ()))
-        return self.add(Crank(name=name, **kw))
-
-    def slider_input(self, name, **kw) -> "Mechanism":
-        """Add a :class:`~assur.groups.SliderInput` (prismatic input)."""
-        kw["links"] = tuple(kw.get("links", ()))
-        return self.add(SliderInput(name=name, **kw))
-
-    def slider_dyad(self, name, **kw) -> "Mechanism":
-        """Add an RRP :class:`~assur.groups.SliderDyad`."""
-        kw["links"] = tuple(kw.get("links", ()))
-        if kw.get("line_link") is not None:
-            kw["line_link"] = tuple(kw["line_link"])
-        return self.add(SliderDyad(name=name, **kw))
-
-    def rigid_point(self, name, **kw) -> "Mechanism":
-        """Add a :class:`~assur.groups.RigidPoint` on a link."""
-        kw["links"] = tuple(kw.get("links", ()))
-        return self.add(RigidPoint(name=name, **kw))
-
-    def pose_point(self, name, *, origin, toward, out, dx, dy, at, links=()) -> "Mechanism":
-        """Add a rigid point known by its offset ``(dx, dy)`` [m] from ``origin`` at the
-        pose where the generalized coordinates equal ``at`` (see :class:`PosePoint`)."""
-        at = tuple(at) if isinstance(at, (tuple, list)) else (at,)
-        return self.add(PosePoint(name=name, origin=origin, toward=toward, out=out, dx=dx,
-                                  dy=dy, at=at, links=tuple(links)))
 
     def link(self, name, tail, head) -> "Mechanism":
         """Name the link whose angle φ_name is the direction ``tail → head``."""
@@ -250,60 +215,93 @@ class Mechanism:
 
     @property
     def frame_points(self) -> tuple[str, ...]:
-        return tuple(g.name for g in self.groups if isinstance(g, Frame))
+        """Names of the frame pivots."""
+        return tuple(self.topology.bodies["0"])
 
     def group(self, name) -> Group:
+        """The group named ``name``."""
         for g in self.groups:
             if g.name == name:
                 return g
         raise KeyError(f"no group {name!r} in mechanism {self.name!r}")
 
+    def defining_index(self, point) -> int:
+        """Index of the group that adds ``point``."""
+        for i, g in enumerate(self.groups):
+            if point in g.outputs():
+                return i
+        raise KeyError(point)
+
+    def coordinate_kind(self, c) -> str:
+        """How a generalized coordinate reads: ``"angle"`` (a crank angle [rad]),
+        ``"slider"`` (a prismatic input's travel [m]) or ``"length"`` (a cylinder
+        length [m], also for coordinates no input group declares)."""
+        for g in self.groups:
+            if c in g.coordinates_driven() and g.driver_kind:
+                return g.driver_kind
+        return "length"
+
+    @property
+    def topology(self) -> Topology:
+        """The mechanism's bodies, owners and group links (:class:`assur.topology.Topology`)."""
+        return self._topology
+
+    def owner(self, point):
+        """The link that owns ``point``: loads at the point and later groups attached
+        there act on it. Frame points belong to "0"; a dyad's middle joint to its
+        second link; a rigid point to its link; a crank or slider end to the crank
+        or slider."""
+        return self._topology.owner[point]
+
+    @property
+    def bodies(self):
+        """Rigid bodies: ``{name: {"points": [...], "variable": bool}}``; the frame is "0".
+
+        Derived from the groups (:attr:`topology`); links not named in a group get the
+        name ``"<group>:a"``/``":b"``.
+        """
+        t = self._topology
+        return {k: {"points": list(v), "variable": k in t.variable} for k, v in t.bodies.items()}
+
     def _validate(self):
         known: set[str] = set()
         names: set[str] = set()
+        where = f"mechanism {self.name!r}"
         for g in self.groups:
-            if g.name in names and not isinstance(g, Frame):
-                raise ModelError(f"mechanism {self.name!r}: duplicate group name {g.name!r}")
+            if g.type_name != "frame" and g.name in names:
+                raise ModelError(f"{where}: duplicate group name {g.name!r}")
             names.add(g.name)
             for p in g.inputs():
                 if p not in known:
                     raise ModelError(
-                        f"mechanism {self.name!r}: {g.kind} {g.name!r} needs point {p!r}, which "
+                        f"{where}: {g.kind} {g.name!r} needs point {p!r}, which "
                         f"no earlier group defines (known: {sorted(known)})")
             for p in g.outputs():
                 if p in known:
-                    raise ModelError(f"mechanism {self.name!r}: point {p!r} is defined twice "
+                    raise ModelError(f"{where}: point {p!r} is defined twice "
                                      f"(again by {g.kind} {g.name!r})")
                 known.add(p)
             for role, ref in g.refs().items():
                 self._check_ref(g, role, ref)
-            br = getattr(g, "branch", 1)
-            if br not in (1, -1):
-                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: branch must be "
-                                 f"+1 or -1, got {br!r}")
-            for attr in ("angle", "s"):
-                if isinstance(g, (Crank, SliderInput)) and hasattr(g, attr):
-                    v = getattr(g, attr)
-                    if v not in self.coordinates:
-                        raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: {attr}="
-                                         f"{v!r} is not a generalized coordinate "
-                                         f"{self.coordinates}")
+            problem = g.validate(self.coordinates)
+            if problem:
+                raise ModelError(f"{where}: {g.kind} {g.name!r}: {problem}")
         for obj in self.links + self.distances:
             ends = (obj.tail, obj.head) if isinstance(obj, Link) else (obj.a, obj.b)
             for p in ends:
                 if p not in known:
-                    raise ModelError(f"mechanism {self.name!r}: link/distance {obj.name!r} refers "
+                    raise ModelError(f"{where}: link/distance {obj.name!r} refers "
                                      f"to unknown point {p!r} (known: {sorted(known)})")
-        self._bodies = self._topology()
+        self._topology = build_topology(self.name, self.coordinates, self.groups)
         self._validate_loads(known)
         lnames = [l.name for l in self.links] + [d.name for d in self.distances]
         dup = {n for n in lnames if lnames.count(n) > 1}
         if dup:
-            raise ModelError(f"mechanism {self.name!r}: duplicate link/distance names {sorted(dup)}")
+            raise ModelError(f"{where}: duplicate link/distance names {sorted(dup)}")
         for n, v in self.params.items():
             a = np.asarray(v, dtype=float)
             if a.ndim > 1 or not np.all(np.isfinite(a)):
-                raise ModelError(f"mechanism {self.name!r}: parameter {n!r} must be a finite "
+                raise ModelError(f"{where}: parameter {n!r} must be a finite "
                                  f"number or a 1-D array over designs, got {v!r}")
 
     def _validate_loads(self, known):
@@ -311,7 +309,7 @@ class Mechanism:
         where = f"mechanism {self.name!r}"
 
         def ref_ok(what, ref):
-            if _is_number(ref):
+            if is_number(ref):
                 if not math.isfinite(float(ref)):
                     raise ModelError(f"{where}: {what} = {ref!r} is not finite")
             elif not (isinstance(ref, str) and ref in self.params):
@@ -324,9 +322,9 @@ class Mechanism:
                                  f"{sorted(known)})")
 
         def link_ok(what, l):
-            if l is not None and l not in self._bodies:
+            if l is not None and l not in self.topology.bodies:
                 raise ModelError(f"{where}: {what} acts on unknown link {l!r} (links: "
-                                 f"{sorted(self._bodies)})")
+                                 f"{sorted(self.topology.bodies)})")
 
         for ld in self.loads:
             if isinstance(ld, Weight):
@@ -379,122 +377,10 @@ class Mechanism:
                       "dp_line"):
                 ref_ok(f"cylinder {c.name!r}: {f}", getattr(c, f))
 
-    def owner(self, point):
-        """The link that owns ``point``: loads at the point and later groups attached
-        there act on it. Frame points belong to "0"; a dyad's middle joint to its
-        second link; a rigid point to its link; a crank or slider end to the crank
-        or slider."""
-        return self._owner[point]
-
-    @property
-    def bodies(self):
-        """Rigid bodies: ``{name: {"points": [...], "variable": bool}}``; the frame is "0".
-
-        Derived from the groups: a dyad's two links (a link whose length is a
-        generalized coordinate — a cylinder — is ``variable``), the lever and the
-        cylinder of the cylinder–lever group, a crank, a slider, and the points
-        that rigid points add to existing links. Links not named in a group get
-        the name ``"<group>:a"``/``":b"``.
-        """
-        return {k: {"points": list(v["points"]), "variable": v["variable"]}
-                for k, v in self._bodies.items()}
-
-    def _topology(self):
-        bodies: dict = {"0": {"points": [], "variable": False}}
-        owner: dict = {}
-        self._owner = owner
-        self._group_links = {}
-
-        def new(name, g, points, variable=False):
-            if name in bodies:
-                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r} names its link "
-                                 f"{name!r}, but an earlier group already has a link of that "
-                                 f"name (a group adds new links; name them uniquely)")
-            bodies[name] = {"points": list(points), "variable": variable}
-
-        def names(g, n):
-            given = tuple(getattr(g, "links", ()) or ())
-            if given and len(given) != n:
-                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r} has {n} link(s), "
-                                 f"got links={given!r}")
-            return given or tuple(f"{g.name}:{c}" for c in "ab"[:n])
-
-        def is_coord(ref):
-            return isinstance(ref, str) and ref in self.coordinates
-
-        def carrier(g, p, q, given):
-            """The one rigid body that holds both p and q."""
-            cands = [b for b, v in bodies.items() if p in v["points"] and q in v["points"]]
-            if given:
-                if given[0] not in bodies:
-                    raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: link "
-                                     f"{given[0]!r} is not defined by an earlier group")
-                if given[0] not in cands:
-                    raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: points {p!r} "
-                                     f"and {q!r} are not both on link {given[0]!r}")
-                cands = [given[0]]
-            if len(cands) != 1:
-                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: points {p!r} "
-                                 f"and {q!r} must lie on one rigid link, found "
-                                 f"{cands or 'none'}")
-            if bodies[cands[0]]["variable"]:
-                raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: link "
-                                 f"{cands[0]!r} has a variable length (a cylinder) and cannot "
-                                 f"carry a rigid point or a slider line")
-            return cands[0]
-
-        for g in self.groups:
-            if isinstance(g, Frame):
-                bodies["0"]["points"].append(g.name)
-                owner[g.name] = "0"
-            elif isinstance(g, CylinderLever):
-                cyl, lev = names(g, 2)
-                new(cyl, g, (g.base, g.out), variable=True)
-                new(lev, g, (g.pivot, g.out), variable=is_coord(g.lever))
-                owner[g.out] = lev
-                self._group_links[g.name] = (cyl, lev)
-            elif isinstance(g, Dyad):
-                la, lb = names(g, 2)
-                new(la, g, (g.a, g.out), variable=is_coord(g.ra))
-                new(lb, g, (g.b, g.out), variable=is_coord(g.rb))
-                owner[g.out] = lb
-                self._group_links[g.name] = (la, lb)
-            elif isinstance(g, Crank):
-                (l,) = names(g, 1)
-                new(l, g, (g.pivot, g.out), variable=is_coord(g.radius))
-                owner[g.out] = l
-                self._group_links[g.name] = (l,)
-            elif isinstance(g, SliderInput):
-                (l,) = names(g, 1)
-                new(l, g, (g.out,))
-                owner[g.out] = l
-                self._group_links[g.name] = (l,)
-            elif isinstance(g, (RigidPoint, PosePoint)):
-                given = tuple(getattr(g, "links", ()) or ())
-                b = carrier(g, g.origin, g.toward, given)
-                if isinstance(g, RigidPoint) and is_coord(g.length):
-                    # a telescopic arm: the new point is on a link of its own
-                    new(f"{g.name}:arm", g, (g.origin, g.out), variable=True)
-                    owner[g.out] = f"{g.name}:arm"
-                    self._group_links[g.name] = (f"{g.name}:arm",)
-                else:
-                    bodies[b]["points"].append(g.out)
-                    owner[g.out] = b
-                    self._group_links[g.name] = (b,)
-            elif isinstance(g, SliderDyad):
-                la, lb = names(g, 2)
-                guide = (carrier(g, g.line_link[0], g.line_link[1], ()) if g.line_link
-                         else owner[g.line_point])
-                new(la, g, (g.a, g.out), variable=is_coord(g.radius))
-                new(lb, g, (g.out,))
-                owner[g.out] = la
-                self._group_links[g.name] = (la, lb, guide)
-        return bodies
-
     def _check_ref(self, g, role, ref):
         if ref is None:
             return
-        if _is_number(ref):
+        if is_number(ref):
             if not math.isfinite(float(ref)):
                 raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: {role} = {ref!r} "
                                  f"is not finite")
@@ -512,22 +398,25 @@ class Mechanism:
     def value_of(self, ref, params=None):
         """Value of a reference (number or parameter name) as a float array over designs."""
         p = self.params if params is None else params
-        if _is_number(ref):
+        if is_number(ref):
             return np.asarray(float(ref))
         return np.asarray(p[ref], dtype=float)
 
-    def evaluate_positions(self, q, params=None):
+    def evaluate_positions(self, q, params=None, upto=None):
         """Point positions by the plain-numpy formulas of the groups (any dtype).
 
         This is the reference implementation used to check the compiled kernel
-        (complex-step differentiation in the tests). It does not check assembly.
+        (complex-step differentiation in the tests) and to explain failures. It does
+        not check assembly.
 
         Parameters
         ----------
         q : mapping of coordinate name to array_like
-            Generalized coordinate values (may be complex).
+            Generalized coordinate values [m or rad] (may be complex).
         params : mapping, optional
             Parameter values overriding the mechanism's (may be complex).
+        upto : int, optional
+            Evaluate only the groups before this index.
 
         Returns
         -------
@@ -535,44 +424,11 @@ class Mechanism:
         """
         p = dict(self.params)
         p.update(params or {})
-        pose = self._pose_values(p)
-
-        def val(ref):
-            if ref is None:
-                return None
-            if _is_number(ref):
-                return float(ref)
-            if ref in q:
-                return q[ref]
-            return p[ref]
-
+        val = _Values(self, q, p)
         pts: dict = {}
-        for g in self.groups:
-            if isinstance(g, PosePoint):
-                _NumericRigid(g, *pose[g.name]).evaluate(pts, val)
-            else:
-                g.evaluate(pts, val)
+        for g in self.groups[:upto]:
+            g.evaluate(pts, val)
         return pts
-
-    def _pose_values(self, p):
-        """Derived (angle [rad], length [m]) of every PosePoint, by reference evaluation."""
-        out = {}
-        prefix = []
-        for g in self.groups:
-            if isinstance(g, PosePoint):
-                sub = self._with(groups=tuple(prefix), links=(), distances=())
-                qd = {c: np.asarray(sub.value_of(a, p)) for c, a in zip(self.coordinates, g.at)}
-                pts = sub.evaluate_positions(qd, {k: v for k, v in p.items()})
-                ox, oy = pts[g.origin]
-                tx, ty = pts[g.toward]
-                dx = np.asarray(sub.value_of(g.dx, p))
-                dy = np.asarray(sub.value_of(g.dy, p))
-                beta = np.arctan2(dy, dx) - np.arctan2(ty - oy, tx - ox)
-                out[g.name] = (beta, np.hypot(dx, dy))
-                prefix.append(_NumericRigid(g, beta, np.hypot(dx, dy)))
-            else:
-                prefix.append(g)
-        return out
 
     def solve(self, q, params: Mapping | None = None, *, outputs=None, on_failure="raise",
               check_continuity=True):
@@ -601,33 +457,36 @@ class Mechanism:
         -------
         Kinematics
         """
-        from .kinematics import Kinematics  # local: kinematics imports nothing back
+        from .kinematics import Kinematics
 
         if on_failure not in ("raise", "report"):
             raise ValueError("on_failure must be one of: ['raise', 'report']")
         mech = self.with_params(**params) if params else self
-        prog = mech._compile(outputs)
-        qarr, shape, m, n = mech._coordinates_array(q, prog["m"])
-        ptab = prog["params"]
+        prog = compile_program(mech, outputs)
+        ptab = prog.param_table(mech.params)
+        qarr, shape, m, n = mech._coordinates_array(q, ptab.shape[1])
         if ptab.shape[1] == 1 and m > 1:
             ptab = np.repeat(ptab, m, axis=1)
         elif ptab.shape[1] != m:
             raise ModelError(f"mechanism {self.name!r}: parameters describe {ptab.shape[1]} "
                              f"designs but the coordinates {m}")
         ptab = np.ascontiguousarray(ptab)
-        pose_failures = mech._fill_pose_rows(prog, ptab)
+        pose_failures = mech._prepare(prog, ptab)
         check = bool(check_continuity and len(self.coordinates) == 1 and n > 1)
-        res = _execute(prog, ptab, qarr, n, check)
+        res = execute(prog, ptab, qarr, n, check)
         status = res["status"]
         failed = status >= 0
         if pose_failures and not failed.any():
             raise pose_failures[0]
+        ok = ~failed.reshape(m, n)
         kin = Kinematics(mech, prog, qarr.reshape((len(self.coordinates), m, n)), res, shape,
-                         ok=~failed.reshape(m, n), params=ptab)
+                         ok=ok, params=ptab)
         if failed.any():
             if on_failure == "raise":
-                raise mech._assembly_error(prog, ptab, qarr, status, res["amount"], n, kin)
-            kin.failures = mech._describe_failures(prog, ptab, qarr, status, res["amount"], n)
+                raise diagnostics.assembly_error(mech, prog, ptab, qarr, status, res["amount"],
+                                                 n, ok)
+            kin.failures = diagnostics.describe_failures(mech, prog, ptab, qarr, status,
+                                                         res["amount"], n)
         return kin
 
     def analyze(self, q, params=None, *, qdot=None, qddot=None, **kw):
@@ -636,7 +495,36 @@ class Mechanism:
         from .analysis import analyze
         return analyze(self, q, params=params, qdot=qdot, qddot=qddot, **kw)
 
-    # ---- compilation ---------------------------------------------------------------
+    def _prepare(self, prog, ptab):
+        """Run the groups' pre-passes (derived per-design rows, e.g. a point fixed at
+        a pose). Returns the :class:`AssemblyError` of poses that cannot assemble
+        (their rows stay 0); the caller raises them unless the main range fails
+        earlier, which gives the more useful message."""
+        failures = []
+        for gi, data in prog.prepares:
+            g = self.groups[gi]
+
+            def positions_at(qpose, points, gi=gi, g=g):
+                res = execute(prog, ptab, np.ascontiguousarray(qpose), 1, False,
+                              rows=prog.rows[:gi], out_pts=points)
+                st = res["status"]
+                if (st >= 0).any():
+                    e = int(np.flatnonzero(st >= 0)[0])
+                    msg, _, _ = diagnostics.failure_message(self, prog, ptab, qpose, st,
+                                                            res["amount"], 1, e)
+                    at = dict(zip(self.coordinates, qpose[:, e]))
+                    failures.append(AssemblyError(
+                        f"{g.kind} {g.name!r} is defined at the pose "
+                        f"{', '.join(f'{c} = {v:.6g}' for c, v in at.items())}, where the "
+                        f"mechanism cannot assemble: {msg}", group=g.name,
+                        links=g.group_links(), coordinate=at, design=e))
+                return {p: (res["pv"][j, 0], res["pv"][j, 1])
+                        for j, p in enumerate(res["out_pts"])}
+
+            g.prepare(data, ptab, positions_at)
+        return failures
+
+    # ---- coordinates ---------------------------------------------------------------
     def _coordinates_array(self, q, m_params):
         k = len(self.coordinates)
         if np.iscomplexobj(q):
@@ -676,411 +564,22 @@ class Mechanism:
         qa = np.moveaxis(a, -1, 0).reshape(k, m * n)
         return np.ascontiguousarray(qa), shape, m, n
 
-    def _compile(self, outputs=None):
-        pnames = list(self.params)
-        rows = [np.atleast_1d(np.asarray(self.params[n], dtype=float)) for n in pnames]
-        index = {n: i for i, n in enumerate(pnames)}
-        literal_rows = {}
-
-        def pref(ref):
-            """Parameter row of a number or parameter name."""
-            if _is_number(ref):
-                key = float(ref)
-                if key not in literal_rows:
-                    literal_rows[key] = len(rows)
-                    rows.append(np.array([key]))
-                return literal_rows[key]
-            if ref in index:
-                return index[ref]
-            raise ModelError(f"{ref!r} is not a parameter of {self.name!r}")
-
-        def lref(ref):
-            """Length reference: parameter row >= 0 or coordinate -(j+1)."""
-            if isinstance(ref, str) and ref in self.coordinates:
-                return -(self.coordinates.index(ref) + 1)
-            return pref(ref)
-
-        slot = {}
-        ops = []
-        pose_rows = []
-        frame_rows = {}
-        trig = []  # (kind, data): each takes two rows (cos, sin) of the trig table
-
-        def trow(kind, *data):
-            trig.append((kind,) + data)
-            return 2 * (len(trig) - 1)
-
-        for g in self.groups:
-            row = [0] * K.NCOL
-            for o in g.outputs():
-                slot[o] = len(slot)
-            if isinstance(g, Frame):
-                row[:4] = [K.OP_FRAME, slot[g.name], pref(g.x), pref(g.y)]
-                frame_rows[g.name] = (row[2], row[3])
-            elif isinstance(g, (Dyad, CylinderLever)):
-                row[:7] = [K.OP_RRR, slot[g.out], slot[g.a], slot[g.b], lref(g.ra), lref(g.rb),
-                           g.branch]
-            elif isinstance(g, Crank):
-                row[:6] = [K.OP_CRANK, slot[g.out], slot[g.pivot], lref(g.radius),
-                           self.coordinates.index(g.angle), pref(g.phase)]
-            elif isinstance(g, SliderInput):
-                row[:6] = [K.OP_SLIDE, slot[g.out], slot[g.origin],
-                           self.coordinates.index(g.s), pref(g.offset),
-                           trow("angle", pref(g.direction))]
-            elif isinstance(g, RigidPoint):
-                if g.angle is not None:
-                    row[:7] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward],
-                               lref(g.length), trow("angle", pref(g.angle)), 0]
-                else:
-                    pl, pb, po = pref(g.length), pref(g.base), pref(g.opposite)
-                    row[:10] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward],
-                                pl, trow("triangle", pb, pl, po, g.branch), 1, pb, po,
-                                g.branch]
-            elif isinstance(g, PosePoint):
-                rb = len(rows)
-                rows.append(np.array([0.0]))
-                rl = len(rows)
-                rows.append(np.array([0.0]))
-                row[:7] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward], rl,
-                           trow("angle", rb), 0]
-                pose_rows.append((len(ops), g, rb, rl))
-            elif isinstance(g, SliderDyad):
-                dp, dq = (slot[g.line_link[0]], slot[g.line_link[1]]) if g.line_link else (-1, -1)
-                row[:9] = [K.OP_RRP, slot[g.out], slot[g.a], lref(g.radius), slot[g.line_point],
-                           dp, dq, trow("angle", pref(g.direction)), g.branch]
-            else:  # pragma: no cover - guarded by the type checks above
-                raise ModelError(f"unknown group type {type(g).__name__}")
-            ops.append(row)
-        n_points = len(slot)
-        scal = {}
-        kinds = {}
-        for l in self.links:
-            scal[l.name] = len(scal)
-            kinds[l.name] = "angle"
-            ops.append([K.OP_ANGLE, scal[l.name], slot[l.tail], slot[l.head]] + [0] * (K.NCOL - 4))
-        for dd in self.distances:
-            scal[dd.name] = len(scal)
-            kinds[dd.name] = "distance"
-            ops.append([K.OP_DIST, scal[dd.name], slot[dd.a], slot[dd.b]] + [0] * (K.NCOL - 4))
-        m = max([r.shape[0] for r in rows] + [1])
-        for i, r in enumerate(rows):
-            if r.shape[0] not in (1, m):
-                name = pnames[i] if i < len(pnames) else "?"
-                raise ModelError(f"mechanism {self.name!r}: parameter {name!r} has {r.shape[0]} "
-                                 f"designs, others {m}")
-        ptab = np.empty((len(rows), m))
-        for i, r in enumerate(rows):
-            ptab[i] = r
-        frame = {g.name for g in self.groups if isinstance(g, Frame)}
-        if outputs is None:
-            out_pts = [p for p in slot if p not in frame]
-            out_sca = list(scal)
-        else:
-            outputs = list(outputs)
-            bad = [o for o in outputs if o not in slot and o not in scal]
-            if bad:
-                raise ModelError(f"unknown outputs {bad}; points: {list(slot)}, links and "
-                                 f"distances: {list(scal)}")
-            out_pts = [o for o in outputs if o in slot and o not in frame]
-            out_sca = [o for o in outputs if o in scal]
-        return dict(ops=np.array(ops, dtype=np.int64).reshape(-1, K.NCOL), params=ptab, m=m,
-                    slot=slot, scal=scal, kinds=kinds, out_pts=out_pts, out_sca=out_sca,
-                    n_points=n_points, pose_rows=pose_rows, pnames=pnames, trig=trig,
-                    frame_rows=frame_rows,
-                    literal_rows=literal_rows, lref=lref, pref=pref)
-
-    def _fill_pose_rows(self, prog, ptab):
-        """Pre-pass: derive angle and length of PosePoints at their pose, per design.
-
-        Returns the list of :class:`AssemblyError` for poses that cannot assemble
-        (their rows stay 0); the caller raises them unless the main range fails
-        earlier, which gives the more useful message.
-        """
-        pose_failures = []
-        for opi, g, rb, rl in prog["pose_rows"]:
-            m = ptab.shape[1]
-            qpose = np.empty((len(self.coordinates), m))
-            for j, a in enumerate(g.at):
-                r = prog["lref"](a)
-                if r < 0:
-                    raise ModelError(f"pose of {g.name!r} must be given by numbers or parameters")
-                qpose[j] = ptab[r]
-            sub = dict(prog, ops=prog["ops"][:opi], out_pts=[g.origin, g.toward], out_sca=[])
-            res = _execute(sub, ptab, qpose, 1, False)
-            if (res["status"] >= 0).any():
-                e = int(np.flatnonzero(res["status"] >= 0)[0])
-                msg, _ = self._failure_message(prog, ptab, qpose, res["status"], res["amount"],
-                                               1, e)
-                pose_failures.append(AssemblyError(
-                    f"{g.kind} {g.name!r} is defined at the pose "
-                    f"{', '.join(f'{c} = {v:.6g}' for c, v in zip(self.coordinates, qpose[:, e]))}"
-                    f", where the mechanism cannot assemble: {msg}", group=g.name,
-                    links=g.group_links(), coordinate=dict(zip(self.coordinates, qpose[:, e])),
-                    design=e))
-                continue
-            (ox, oy), (tx, ty) = res["pv"][0], res["pv"][1]
-            dx = ptab[prog["pref"](g.dx)]
-            dy = ptab[prog["pref"](g.dy)]
-            ptab[rb] = np.arctan2(dy, dx) - np.arctan2(ty - oy, tx - ox)
-            ptab[rl] = np.hypot(dx, dy)
-        return pose_failures
-
-    # ---- failures --------------------------------------------------------------------
-    def _describe_failures(self, prog, ptab, qarr, status, amount, n):
-        idx = np.flatnonzero(status >= 0)
-        return [self._failure_message(prog, ptab, qarr, status, amount, n, e)[0]
-                for e in idx[:20]]
-
-    def _assembly_error(self, prog, ptab, qarr, status, amount, n, kin):
-        idx = np.flatnonzero(status >= 0)
-        e = int(idx[0])
-        msg, g = self._failure_message(prog, ptab, qarr, status, amount, n, e)
-        d, pos = divmod(e, n)
-        fails_here = idx[(idx >= d * n) & (idx < (d + 1) * n)]
-        if len(self.coordinates) == 1 and n > 1:
-            pos_idx = fails_here - d * n
-            runs = np.split(pos_idx, np.flatnonzero(np.diff(pos_idx) != 1) + 1)
-            qd = qarr[0, d * n:(d + 1) * n]
-            spans = ", ".join(f"{qd[r[0]]:.6g}…{qd[r[-1]]:.6g}" if len(r) > 1 else
-                              f"{qd[r[0]]:.6g}" for r in runs[:5])
-            msg += (f"; {len(fails_here)} of {n} positions fail"
-                    f" ({self.coordinates[0]} = {spans}{', …' if len(runs) > 5 else ''})")
-        if ptab.shape[1] > 1:
-            nd = len(np.unique(idx // n))
-            msg += f"; {nd} of {ptab.shape[1]} designs fail, first design {d}"
-        return AssemblyError(msg, group=g.name, links=g.group_links(),
-                             coordinate=dict(zip(self.coordinates, qarr[:, e])), design=d,
-                             position=pos,
-                             amount=(float(amount[e]) if int(status[e]) % 16 == K.FAIL_CONTINUITY
-                                     else self._failure_amount(prog, ptab, qarr, e, n,
-                                                               int(status[e]) // 16,
-                                                               int(status[e]) % 16)),
-                             failures=kin.ok)
-
-    def _failure_amount(self, prog, ptab, qarr, e, n, opi, code):
-        """By how much group ``opi`` violates its inequality at element ``e`` [m] (or
-        sin μ at a dead point), from the plain-numpy reference positions of the groups
-        before it — the kernel reports only which group failed."""
-        if opi >= len(self.groups) or code == K.FAIL_COINCIDENT:
-            return 0.0
-        g = self.groups[opi]
-        d = e // n
-        params = {name: ptab[i, d] for i, name in enumerate(prog["pnames"])}
-        qd = {c: qarr[j, e] for j, c in enumerate(self.coordinates)}
-        prefix = self._with(groups=self.groups[:opi], links=(), distances=(), loads=(),
-                            cylinders=(), machine=None)
-        pts = prefix.evaluate_positions(qd, params) if opi else {}
-
-        def v(ref):
-            if isinstance(ref, str) and ref in qd:
-                return float(qd[ref])
-            return float(ptab[prog["pref"](ref), d])
-
-        if isinstance(g, RigidPoint) and code == K.FAIL_TRIANGLE:
-            b, ell, o = v(g.base), v(g.length), v(g.opposite)
-            return max(ell - (b + o), b - (ell + o), o - (ell + b))
-        if isinstance(g, (Dyad, CylinderLever)):
-            (ax, ay), (bx, by) = pts[g.a], pts[g.b]
-            L = math.hypot(bx - ax, by - ay)
-            ra, rb = v(g.ra), v(g.rb)
-            if code == K.FAIL_TOO_FAR:
-                return L - (ra + rb)
-            if code == K.FAIL_TOO_CLOSE:
-                return abs(ra - rb) - L
-            aa = (ra * ra - rb * rb + L * L) / (2 * L)
-            return math.sqrt(max(ra * ra - aa * aa, 0.0)) * L / (ra * rb)  # sin μ
-        if isinstance(g, SliderDyad):
-            ax, ay = pts[g.a]
-            lx, ly = pts[g.line_point]
-            beta = v(g.direction)
-            if g.line_link:
-                (px, py), (qx, qy) = pts[g.line_link[0]], pts[g.line_link[1]]
-                beta += math.atan2(qy - py, qx - px)
-            ux, uy = math.cos(beta), math.sin(beta)
-            wx, wy = lx - ax, ly - ay
-            r = v(g.radius)
-            if code == K.FAIL_LINE:
-                return abs(ux * wy - uy * wx) - r
-            bb = ux * wx + uy * wy
-            return 2.0 * math.sqrt(max(bb * bb - (wx * wx + wy * wy - r * r), 0.0))
-        return 0.0
-
-    def _failure_message(self, prog, ptab, qarr, status, amount, n, e):
-        opi, code = divmod(int(status[e]), 16)
-        d, pos = divmod(e, n)
-        ngroups = len(self.groups)
-        at = ", ".join(f"{c} = {qarr[j, e]:.6g}" for j, c in enumerate(self.coordinates))
-        where = f"at position {pos} ({at})" + (f" of design {d}" if ptab.shape[1] > 1 else "")
-        if opi >= ngroups:
-            obj = (self.links + self.distances)[opi - ngroups]
-            return (f"link {obj.name!r}: its two points coincide {where}", obj)
-        g = self.groups[opi]
-        links = g.group_links()
-        ltxt = f" (links {', '.join(links)})" if links else ""
-        amt = (float(amount[e]) if code == K.FAIL_CONTINUITY
-               else self._failure_amount(prog, ptab, qarr, e, n, opi, code))
-
-        def v(ref):
-            if isinstance(ref, str) and ref in self.coordinates:
-                return qarr[self.coordinates.index(ref), e]
-            return ptab[prog["pref"](ref), d]
-
-        def nm(ref):
-            return ref if isinstance(ref, str) else _fmt(ref)
-
-        head = f"{g.kind} {g.name!r}{ltxt} cannot assemble {where}: "
-        if code in (K.FAIL_TOO_FAR, K.FAIL_TOO_CLOSE):
-            ra, rb = v(g.ra), v(g.rb)
-            a, b = g.inputs()[:2]
-            dist = ra + rb + amt if code == K.FAIL_TOO_FAR else abs(ra - rb) - amt
-            if code == K.FAIL_TOO_FAR:
-                msg = (f"the distance |{a}–{b}| = {dist:.6g} m exceeds {nm(g.ra)} + {nm(g.rb)} = "
-                       f"{_fmt(ra)} + {_fmt(rb)} = {_fmt(ra + rb)} m by {amt * 1e3:.3g} mm")
-            else:
-                msg = (f"the distance |{a}–{b}| = {dist:.6g} m is less than |{nm(g.ra)} − "
-                       f"{nm(g.rb)}| = |{_fmt(ra)} − {_fmt(rb)}| = {_fmt(abs(ra - rb))} m by "
-                       f"{amt * 1e3:.3g} mm")
-        elif code == K.FAIL_TRIANGLE:
-            names = {"base": g.base, "length": g.length, "opposite": g.opposite}
-            vals = {k: v(r) for k, r in names.items()}
-            sides = ", ".join(f"{nm(names[k])} = {_fmt(vals[k])}" for k in
-                              ("base", "opposite", "length"))
-            for k in ("length", "base", "opposite"):
-                o1, o2 = [x for x in ("base", "length", "opposite") if x != k]
-                if vals[k] > vals[o1] + vals[o2]:
-                    msg = (f"the triangle {sides} m cannot close: {nm(names[k])} exceeds "
-                           f"{nm(names[o1])} + {nm(names[o2])} = {_fmt(vals[o1] + vals[o2])} m by "
-                           f"{(vals[k] - vals[o1] - vals[o2]) * 1e3:.3g} mm")
-                    break
-            else:  # pragma: no cover - the kernel only reports violated triangles
-                msg = f"the triangle {sides} m cannot close"
-            head = f"{g.kind} {g.name!r}{ltxt} fails {where}: "
-        elif code == K.FAIL_LINE:
-            msg = (f"the circle of radius {nm(g.radius)} = {_fmt(v(g.radius))} m about {g.a!r} "
-                   f"does not reach the slider line through {g.line_point!r}: it falls short by "
-                   f"{amt * 1e3:.3g} mm")
-        elif code == K.FAIL_COINCIDENT:
-            msg = f"two points that must define a direction coincide ({', '.join(g.inputs())})"
-        elif code == K.FAIL_CONTINUITY:
-            c = self.coordinates[0]
-            head = (f"{g.kind} {g.name!r}{ltxt} cannot move continuously from {c} = "
-                    f"{qarr[0, e - 1]:.6g} to {c} = {qarr[0, e]:.6g}"
-                    f"{f' (design {d})' if ptab.shape[1] > 1 else ''}: ")
-            msg = ("its triangle flattens or opens between these positions (the squared "
-                   f"height, interpolated with its exact slope, dips to {amt:.3g} m²): a dead "
-                   "point or a loss of assembly between samples; refine the positions, or "
-                   "check the range and the branch")
-        elif code == K.FAIL_DEAD_POINT:
-            msg = (f"dead point: the links are collinear (sine of the transmission angle "
-                   f"{amt:.3g}), the analogs are singular")
-        else:  # pragma: no cover
-            msg = f"failure code {code}"
-        return head + msg, g
-
-    def _defining_index(self, point):
-        for i, g in enumerate(self.groups):
-            if point in g.outputs():
-                return i
-        raise KeyError(point)
-
     def __repr__(self):
         return (f"Mechanism({self.name!r}, coordinates={self.coordinates}, "
                 f"{len(self.groups)} groups, {len(self.links)} links)")
 
 
-class _NumericRigid(RigidPoint):
-    """A PosePoint resolved to numbers for the reference evaluation."""
-
-    def __init__(self, g, beta, ell):
-        object.__setattr__(self, "name", g.name)
-        object.__setattr__(self, "origin", g.origin)
-        object.__setattr__(self, "toward", g.toward)
-        object.__setattr__(self, "out", g.out)
-        object.__setattr__(self, "links", tuple(g.links))
-        object.__setattr__(self, "branch", 1)
-        object.__setattr__(self, "base", None)
-        object.__setattr__(self, "opposite", None)
-        object.__setattr__(self, "_beta", beta)
-        object.__setattr__(self, "_ell", ell)
-        object.__setattr__(self, "length", "__ell")
-        object.__setattr__(self, "angle", "__beta")
-
-    def refs(self):
-        return {}
-
-    def evaluate(self, pts, val):
-        from .groups import _unit_eval
-        ux, uy = _unit_eval(pts, self.origin, self.toward, self._beta)
-        px, py = pts[self.origin]
-        pts[self.out] = (px + self._ell * ux, py + self._ell * uy)
+def _builder(cls):
+    def method(self, name, **kw):
+        return self.add_group(cls.type_name, name, **kw)
+    params = ", ".join(f.name for f in cls.fields)
+    method.__name__ = cls.type_name
+    method.__qualname__ = f"Mechanism.{cls.type_name}"
+    method.__doc__ = (f"Add a {cls.kind} (:class:`{cls.__module__}.{cls.__name__}`); "
+                      f"keywords: {params}, links.\n\n" + (cls.__doc__ or ""))
+    return method
 
 
-def _trig_table(prog, ptab):
-    """cos and sin of every fixed angle of the program, per design, shape (2·n, m).
-
-    A triangle-defined angle is ``branch·acos((b² + l² − o²)/(2·b·l))`` (seed 000
-    DELFI); its argument is clipped here only so that the table is finite — a
-    triangle that cannot close is detected and reported by the kernel.
-    """
-    m = ptab.shape[1]
-    out = np.empty((max(2 * len(prog["trig"]), 1), m))
-    for i, item in enumerate(prog["trig"]):
-        if item[0] == "angle":
-            beta = ptab[item[1]]
-        else:
-            _, pb, pl, po, br = item
-            b, ell, o = ptab[pb], ptab[pl], ptab[po]
-            den = 2.0 * b * ell
-            ok = den > 0
-            c = np.divide(b * b + ell * ell - o * o, den, out=np.ones(m), where=ok)
-            beta = br * np.arccos(np.clip(c, -1.0, 1.0))
-        out[2 * i] = np.cos(beta)
-        out[2 * i + 1] = np.sin(beta)
-    return out
-
-
-def _execute(prog, ptab, qarr, n, check=False):
-    """Run the compiled kernel; returns the raw output arrays."""
-    k = qarr.shape[0]
-    E = qarr.shape[1]
-    slot, scal = prog["slot"], prog["scal"]
-    out_pts = [slot[p] for p in prog["out_pts"]]
-    out_sca = [scal[s] for s in prog["out_sca"]]
-    kern = K.get_kernel(prog["ops"], k, out_pts, out_sca)
-    npo, nso = len(out_pts), len(out_sca)
-    # one block, rows: point values, first, second analogs, then scalars likewise
-    ang = [i for i, s in enumerate(prog["out_sca"]) if prog["kinds"][s] == "angle"]
-    sizes = [npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang)]
-    out = np.empty((sum(sizes), E))
-    parts = np.split(out, np.cumsum(sizes)[:-1])
-    pv = parts[0].reshape(npo, 2, E)
-    pd = parts[1].reshape(npo, 2, k, E)
-    pdd = parts[2].reshape(npo, 2, k, k, E)
-    sv = parts[3].reshape(nso, E)
-    sd = parts[4].reshape(nso, k, E)
-    sdd = parts[5].reshape(nso, k, k, E)
-    status = np.empty(E, dtype=np.int64)
-    # written by the continuity pass at its failures only (read only there); the
-    # other amounts are recomputed on demand
-    amount = np.empty(E)
-    dyads = [i for i, r in enumerate(prog["ops"]) if r[0] == K.OP_RRR] if k == 1 else []
-    gout = np.empty((2 * len(dyads), E if check else 1))
-    K.run(kern, ptab, _trig_table(prog, ptab), qarr, n, check, out, gout, status, amount)
-    if check and dyads:
-        codes = np.array([i * 16 + K.FAIL_CONTINUITY for i in dyads], dtype=np.int64)
-        if K.check_continuity(gout, qarr, n, status, amount, codes):
-            out[:, (status % 16 == K.FAIL_CONTINUITY) & (status >= 0)] = 0.0
-    def angle(row, i):
-        """angle = atan2(dy, dx) (the kernel left dy in sv[i]), then continuous along
-        the positions of each design when they are a range (both release the GIL)."""
-        np.arctan2(sv[i], parts[6][row], out=sv[i])
-        if check and n > 1:
-            K.unwrap_rows(sv, np.array([i], dtype=np.int64), n)
-
-    if E >= 65536 and len(ang) > 1:
-        for f in [K._get_pool().submit(angle, row, i) for row, i in enumerate(ang)]:
-            f.result()
-    else:
-        for row, i in enumerate(ang):
-            angle(row, i)
-    return dict(pv=pv, pd=pd, pdd=pdd, sv=sv, sd=sd, sdd=sdd, status=status, amount=amount)
+for _cls in registry().values():
+    if _cls.type_name != "frame" and not hasattr(Mechanism, _cls.type_name):
+        setattr(Mechanism, _cls.type_name, _builder(_cls))

@@ -28,9 +28,7 @@ from __future__ import annotations
 import numpy as np
 
 from .errors import AssemblyError, ModelError
-from .groups import Crank, CylinderLever, Dyad, RigidPoint, SliderDyad, SliderInput
 from .loads import Couple, Mass, PointForce, Spring, Weight
-from .mechanism import PosePoint
 
 #: standard gravity used by the seeds [m/s²]
 G_SEEDS = 9.81
@@ -40,59 +38,6 @@ SEED_003_SIGN_NOTE = (
     "is already the force of 6 on 5, and repeats the slip with R43 := −R34: its printed x, y "
     "components of R05, R34 and R45 have the opposite sign to its own naming (force of i on "
     "j); their magnitudes are right. assur reports force of i on j throughout.")
-
-
-def _cross(ax, ay, bx, by):
-    return ax * by - ay * bx
-
-
-def _dyad_impl():
-    from numba import njit
-
-    @njit(cache=True, nogil=True, error_model="numpy")
-    def dyad_reactions(ax, ay, bx, by, cx, cy, fax, fay, ma, fbx, fby, mb, out):
-        """Reactions of an RRR dyad (links a: A–C, b: B–C) under the wrenches (F, M about
-        the origin) of its two links, in one fused pass over the positions.
-
-        Link a: R_A − R_C + F_a = 0 and (A−C)×R_A + M_a,C = 0; link b: R_B + R_C + F_b = 0
-        and (B−C)×R_B + M_b,C = 0, so ``[[-u_y, u_x], [-w_y, w_x]]·R_A = [r1, r2]`` with
-        u = A−C, w = B−C (seed 003 §5.1–5.3, group by group). Writes out[0:6] = R_A,
-        R_C (force of a on b), R_B; zero where the dyad is degenerate (a failed
-        position: det = 0)."""
-        m, n = ax.shape
-        for i in range(m):
-            for j in range(n):
-                c_x = cx[i, j]
-                c_y = cy[i, j]
-                f_ax = fax[i, j]
-                f_ay = fay[i, j]
-                f_bx = fbx[i, j]
-                f_by = fby[i, j]
-                mac = ma[i, j] - (c_x * f_ay - c_y * f_ax)
-                mbc = mb[i, j] - (c_x * f_by - c_y * f_bx)
-                ux = ax[i, j] - c_x
-                uy = ay[i, j] - c_y
-                wx = bx[i, j] - c_x
-                wy = by[i, j] - c_y
-                det = ux * wy - uy * wx
-                idet = 1.0 / det if det != 0.0 else 0.0
-                r1 = -mac
-                r2 = mbc - (wx * (f_ay + f_by) - wy * (f_ax + f_bx))
-                rax = (r1 * wx - ux * r2) * idet
-                ray = (-uy * r2 + wy * r1) * idet
-                rcx = rax + f_ax
-                rcy = ray + f_ay
-                out[0, i, j] = rax
-                out[1, i, j] = ray
-                out[2, i, j] = rcx
-                out[3, i, j] = rcy
-                out[4, i, j] = -rcx - f_bx
-                out[5, i, j] = -rcy - f_by
-
-    return dyad_reactions
-
-
-_dyad_reactions = _dyad_impl()
 
 
 class Statics:
@@ -122,7 +67,7 @@ class Statics:
         return [(v[0], i, j) for (i, j), v in self._joints.items()]
 
     def _o(self, a):
-        return self.kinematics._out(np.broadcast_to(a, (self.kinematics.m, self.kinematics.n)))
+        return self.kinematics.reshape(np.broadcast_to(a, (self.kinematics.m, self.kinematics.n)))
 
     def actuator_force(self, coordinate=None):
         """Force the actuator of a coordinate must supply, by virtual work [N]
@@ -242,38 +187,6 @@ def _values(kin):
     return val
 
 
-def _body_angle_jets(kin, body, mech):
-    """(φ', φ'') of a link, shapes (k, m, n), (k, k, m, n), from two of its points."""
-    pts = mech._bodies[body]["points"]
-    k, m, n = kin.k, kin.m, kin.n
-    if body == "0":
-        return np.zeros((k, m, n)), np.zeros((k, k, m, n))
-    if len(pts) < 2:
-        # a slider block turns with its guide
-        for g in mech.groups:
-            links = mech._group_links.get(g.name, ())
-            if isinstance(g, SliderDyad) and len(links) == 3 and links[1] == body:
-                return _body_angle_jets(kin, links[2], mech)
-            if isinstance(g, SliderInput) and links and links[0] == body:
-                return _body_angle_jets(kin, mech.owner(g.origin), mech)
-        return np.zeros((k, m, n)), np.zeros((k, k, m, n))
-    P, Q = pts[0], pts[1]
-    d = kin._val(Q) - kin._val(P)  # (2, m, n)
-    d1 = kin._jet1(Q) - kin._jet1(P)  # (2, k, m, n)
-    d2 = kin._jet2(Q) - kin._jet2(P)  # (2, k, k, m, n)
-    r2 = d[0] ** 2 + d[1] ** 2
-    c1 = d[0] * d1[1] - d[1] * d1[0]  # (k, m, n)
-    w1 = c1 / r2
-    dot1 = d[0] * d1[0] + d[1] * d1[1]
-    w2 = np.empty((k, k, m, n))
-    for a in range(k):
-        for b in range(k):
-            num = (d1[0, b] * d1[1, a] - d1[1, b] * d1[0, a]) + (d[0] * d2[1, a, b]
-                                                               - d[1] * d2[0, a, b])
-            w2[a, b] = num / r2 - 2 * c1[a] * dot1[b] / r2**2
-    return w1, w2
-
-
 def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
     """The applied loads as point forces and link moments, each with its link.
 
@@ -305,8 +218,8 @@ def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
         elif isinstance(ld, Couple):
             couples.append((ld.link, val(ld.M)))
         elif isinstance(ld, Spring):
-            ax, ay = kin._val(ld.a)
-            bx, by = kin._val(ld.b)
+            ax, ay = kin.value(ld.a)
+            bx, by = kin.value(ld.b)
             L = np.hypot(bx - ax, by - ay)
             if np.any(L == 0):
                 raise ModelError(f"spring {ld.name!r}: its ends {ld.a!r} and {ld.b!r} coincide "
@@ -322,12 +235,12 @@ def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
             mval = val(ld.m)
             forces.append((ld.link, ld.point, 0.0, -mval * g))
             if moving:
-                J1 = kin._jet1(ld.point)  # (2, k, m, n)
-                J2 = kin._jet2(ld.point)
+                J1 = kin.jacobian(ld.point)  # (2, k, m, n)
+                J2 = kin.hessian(ld.point)
                 acc = (np.einsum("ckmn,mnk->cmn", J1, qdd)
                        + np.einsum("mnk,cklmn,mnl->cmn", qd, J2, qd))
                 forces.append((ld.link, ld.point, -mval * acc[0], -mval * acc[1]))
-                w1, w2 = _body_angle_jets(kin, ld.link, mech)
+                w1, w2 = kin.body_rates(ld.link)
                 eps = np.einsum("kmn,mnk->mn", w1, qdd) + np.einsum("mnk,klmn,mnl->mn", qd, w2,
                                                                     qd)
                 couples.append((ld.link, -val(ld.J) * eps))
@@ -344,10 +257,10 @@ def virtual_work_forces(kin, qdot=None, qddot=None, g=G_SEEDS):
     forces, couples, _ = applied_loads(kin, qdot, qddot, g)
     Q = np.zeros((kin.k, kin.m, kin.n))
     for link, pt, fx, fy in forces:
-        J = kin._jet1(pt)  # (2, k, m, n)
+        J = kin.jacobian(pt)  # (2, k, m, n)
         Q += fx * J[0] + fy * J[1]
     for link, M in couples:
-        w1, _ = _body_angle_jets(kin, link, mech)
+        w1, _ = kin.body_rates(link)
         Q += M * w1
     return {c: -Q[j] for j, c in enumerate(kin.coordinates)}
 
@@ -391,7 +304,7 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
     """
     if kin.n <= BLOCK:
         return _solve(kin, qdot, qddot, g)
-    parts = [(_solve(kin._positions(i0, min(kin.n, i0 + BLOCK)),
+    parts = [(_solve(kin.positions(i0, min(kin.n, i0 + BLOCK)),
                      _rate_block(qdot, kin, i0, i0 + BLOCK),
                      _rate_block(qddot, kin, i0, i0 + BLOCK), g))
              for i0 in range(0, kin.n, BLOCK)]
@@ -415,161 +328,121 @@ def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
     return Statics(kin, vw, joints, act, residual, [])
 
 
-def _solve(kin, qdot, qddot, g):
-    """The reverse-order pass over one block of positions."""
-    mech = kin.mechanism
-    m, n = kin.m, kin.n
-    missing = [p for b in mech._bodies.values() for p in b["points"]
-               if p not in kin._pidx and p not in kin._frame]
-    if missing:
-        raise ValueError(f"the kinematics lack points {missing}: solve without `outputs=`")
-    forces, couples, _ = applied_loads(kin, qdot, qddot, g)
-    zero = np.zeros((m, n))
-    W = {b: [0.0, 0.0, 0.0] for b in mech._bodies}  # Fx, Fy, M(origin); arrays once loaded
+class ReactionContext:
+    """What a group's :meth:`~assur.groups.base.Group.reactions` works with, in the
+    reverse-order pass: the loads accumulated on every body (as wrenches about the
+    origin), the joint reactions recorded so far and the actuator forces.
 
-    at = {}  # (link, point) -> forces applied there, for a cylinder's axial force
-    coords_ = set(mech.coordinates)
-    rod_ends = set()
-    for g_ in mech.groups:
-        links_ = mech._group_links.get(g_.name, ())
-        if isinstance(g_, (Dyad, CylinderLever)):
-            for ref, l_ in ((g_.ra, links_[0]), (g_.rb, links_[1])):
-                if isinstance(ref, str) and ref in coords_:
-                    rod_ends.add((l_, g_.out))
-        elif isinstance(g_, SliderDyad) and isinstance(g_.radius, str) \
-                and g_.radius in coords_:
-            rod_ends.add((links_[0], g_.out))
+    Attributes
+    ----------
+    links : tuple of str
+        The links of the group being solved (:attr:`assur.topology.Topology.group_links`).
+    shape : tuple of int
+        ``(m, n)``: designs and positions.
+    """
 
-    def add_force(body, pt, fx, fy):
-        px, py = kin._val(pt)
-        w = W[body]
+    def __init__(self, kin, rod_ends):
+        self.kin = kin
+        self.mech = kin.mechanism
+        self.shape = (kin.m, kin.n)
+        self.links = ()
+        self.W = {b: [0.0, 0.0, 0.0] for b in self.mech.topology.bodies}
+        self.joints = {}
+        self.act = {}
+        self._rod_ends = rod_ends
+        self._at = {}  # (link, point) -> loads applied there, for a cylinder's axial force
+        self._val = _values(kin)
+
+    def point(self, p):
+        """(x, y) of a point, arrays (m, n) [m]."""
+        return self.kin.value(p)
+
+    def value(self, ref):
+        """Value of a number or parameter, broadcastable to (m, n)."""
+        return self._val(ref)
+
+    def full(self, v):
+        """``v`` broadcast to (m, n) as float."""
+        return np.broadcast_to(np.asarray(v, float), self.shape)
+
+    def owner(self, p):
+        """The body that owns a point."""
+        return self.mech.owner(p)
+
+    def is_coord(self, ref):
+        """True if ``ref`` names a generalized coordinate."""
+        return isinstance(ref, str) and ref in self.mech.coordinates
+
+    def wrench(self, body):
+        """Loads on a body: (Fx, Fy, moment about the origin) [N, N·m]."""
+        return tuple(self.W[body])
+
+    def about(self, body, cx, cy):
+        """Loads on a body: (Fx, Fy, moment about the point c)."""
+        fx, fy, mo = self.W[body]
+        return fx, fy, mo - (cx * fy - cy * fx)
+
+    def apply(self, body, pt, fx, fy):
+        """Add the force (fx, fy) at point ``pt`` to ``body``'s loads."""
+        px, py = self.kin.value(pt)
+        w = self.W[body]
         w[0] = w[0] + fx
         w[1] = w[1] + fy
         w[2] = w[2] + px * fy - py * fx
-        if (body, pt) in rod_ends:
-            f = at.setdefault((body, pt), [0.0, 0.0])
+        if (body, pt) in self._rod_ends:
+            f = self._at.setdefault((body, pt), [0.0, 0.0])
             f[0] = f[0] + fx
             f[1] = f[1] + fy
 
-    def axial(cyl, end, fx, fy, ux, uy):
+    def apply_moment(self, body, M):
+        """Add a moment M [N·m] to ``body``'s loads."""
+        self.W[body][2] = self.W[body][2] + M
+
+    def record(self, i, j, pt, fx, fy, mz=0.0):
+        """Record the force (and moment) of body i on body j at point ``pt``."""
+        self.joints[(i, j)] = (pt, np.broadcast_to(fx, self.shape),
+                               np.broadcast_to(fy, self.shape), np.broadcast_to(mz, self.shape))
+
+    def axial(self, cyl, end, fx, fy, ux, uy):
         """A cylinder's push from the force (fx, fy) its rod end ``end`` exerts on the
         next link, less what the loads applied at that end to the cylinder take."""
-        lx, ly = at.get((cyl, end), (0.0, 0.0))
+        lx, ly = self._at.get((cyl, end), (0.0, 0.0))
         return (fx - lx) * ux + (fy - ly) * uy
 
+    def actuator(self, coordinate, F):
+        """Add the generalized force F of an actuator of ``coordinate`` [N or N·m]
+        (several actuators of one coordinate — a double-rod cylinder — add up)."""
+        prev = self.act.get(coordinate)
+        self.act[coordinate] = F if prev is None else prev + F
+
+
+def _solve(kin, qdot, qddot, g):
+    """The reverse-order pass over one block of positions: each group solves its own
+    reactions (:meth:`assur.groups.base.Group.reactions`)."""
+    mech = kin.mechanism
+    topo = mech.topology
+    m, n = kin.m, kin.n
+    missing = [p for pts in topo.bodies.values() for p in pts if not kin.has_point(p)]
+    if missing:
+        raise ValueError(f"the kinematics lack points {missing}: solve without `outputs=`")
+    forces, couples, _ = applied_loads(kin, qdot, qddot, g)
+
+    def is_coord(ref):
+        return isinstance(ref, str) and ref in mech.coordinates
+
+    rod_ends = {e for g_ in mech.groups
+                for e in g_.rod_ends(topo.group_links[g_.name], is_coord)}
+    r = ReactionContext(kin, rod_ends)
     for link, pt, fx, fy in forces:
-        add_force(link, pt, fx, fy)
+        r.apply(link, pt, fx, fy)
     for link, M in couples:
-        W[link][2] = W[link][2] + M
-    # (add_force rebinds, never mutates, so this keeps the applied loads alone)
-    applied = {b: list(w) for b, w in W.items()}
-
-    joints = {}
-    act = {}
-
-    def record(i, j, pt, fx, fy, mz=0.0):
-        joints[(i, j)] = (pt, np.broadcast_to(fx, (m, n)), np.broadcast_to(fy, (m, n)),
-                          np.broadcast_to(mz, (m, n)))
-
-    def about(body, cx, cy):
-        """Wrench of a body's loads: (Fx, Fy, moment about point c)."""
-        fx, fy, mo = W[body]
-        return fx, fy, mo - (cx * fy - cy * fx)
-
-    coords = mech.coordinates
+        r.apply_moment(link, M)
+    # (apply rebinds, never mutates, so this keeps the applied loads alone)
+    applied = {b: list(w) for b, w in r.W.items()}
     for g_ in reversed(mech.groups):
-        links = mech._group_links.get(g_.name, ())
-        if isinstance(g_, (Dyad, CylinderLever)):
-            la, lb = links
-            A, B, C = g_.a, g_.b, g_.out
-            bA, bB = mech.owner(A), mech.owner(B)
-            ax, ay = kin._val(A)
-            bx, by = kin._val(B)
-            cx, cy = kin._val(C)
-            full = (m, n)
-            args = [np.broadcast_to(np.asarray(v, float), full)
-                     for v in (ax, ay, bx, by, cx, cy, *W[la], *W[lb])]
-            res = np.empty((6, m, n))
-            _dyad_reactions(*args, res)
-            rax, ray, rcx, rcy, rbx, rby = res
-            record(bA, la, A, rax, ray)
-            record(la, lb, C, rcx, rcy)
-            record(bB, lb, B, rbx, rby)
-            add_force(bA, A, -rax, -ray)
-            add_force(bB, B, -rbx, -rby)
-            for ref, (px, py), cyl, (fx_, fy_) in ((g_.ra, (ax, ay), la, (rcx, rcy)),
-                                                   (g_.rb, (bx, by), lb, (-rcx, -rcy))):
-                if isinstance(ref, str) and ref in coords:
-                    # the cylinder's rod end C pushes the other link with (fx_, fy_)
-                    L = np.hypot(cx - px, cy - py)
-                    act[ref] = axial(cyl, C, fx_, fy_, (cx - px) / L, (cy - py) / L)
-        elif isinstance(g_, Crank):
-            (l,) = links
-            if isinstance(g_.radius, str) and g_.radius in coords:
-                raise ModelError(f"reactions of crank {g_.name!r} with a variable radius are not "
-                                 f"modelled (use the virtual-work forces)")
-            P = g_.pivot
-            bP = mech.owner(P)
-            px, py = kin._val(P)
-            fx, fy, mp = about(l, px, py)
-            record(bP, l, P, -fx, -fy, -mp)
-            add_force(bP, P, fx, fy)
-            W[bP][2] = W[bP][2] + mp
-            act[g_.angle] = -mp
-        elif isinstance(g_, SliderInput):
-            (l,) = links
-            C = g_.out
-            bG = mech.owner(g_.origin)
-            cx, cy = kin._val(C)
-            beta = _values(kin)(g_.direction)  # per design: shape (m, 1) or scalar
-            ux, uy = np.cos(beta), np.sin(beta)
-            fx, fy, mc = about(l, cx, cy)
-            # guide + drive on the slider: −(fx, fy) at C and −mc
-            record(bG, l, C, -fx, -fy, -mc)
-            add_force(bG, C, fx, fy)
-            W[bG][2] = W[bG][2] + mc
-            act[g_.s] = -(fx * ux + fy * uy)
-        elif isinstance(g_, SliderDyad):
-            la, lb, guide = links
-            A, C = g_.a, g_.out
-            bA = mech.owner(A)
-            ax, ay = kin._val(A)
-            cx, cy = kin._val(C)
-            # line direction u and normal n
-            beta = np.asarray(mech.value_of(g_.direction), float)
-            beta = beta[:, None] if beta.ndim == 1 and m > 1 else beta
-            if g_.line_link:
-                p0, p1 = g_.line_link
-                vx = kin._val(p1)[0] - kin._val(p0)[0]
-                vy = kin._val(p1)[1] - kin._val(p0)[1]
-                th = np.arctan2(vy, vx) + beta
-            else:
-                th = beta + np.zeros((m, n))
-            nx, ny = -np.sin(th), np.cos(th)
-            fax, fay, mac = about(la, cx, cy)
-            fbx, fby, mbc = about(lb, cx, cy)
-            ux, uy = ax - cx, ay - cy
-            den = _cross(ux, uy, nx, ny)
-            N = (mac - _cross(ux, uy, fax + fbx, fay + fby)) / den
-            rax = -fax - fbx - N * nx
-            ray = -fay - fby - N * ny
-            rcx, rcy = rax + fax, ray + fay
-            mg = -mbc
-            record(bA, la, A, rax, ray)
-            record(la, lb, C, rcx, rcy)
-            record(guide, lb, C, N * nx, N * ny, mg)
-            add_force(bA, A, -rax, -ray)
-            add_force(guide, C, -N * nx, -N * ny)
-            W[guide][2] = W[guide][2] - mg
-            if isinstance(g_.radius, str) and g_.radius in coords:
-                L = np.hypot(cx - ax, cy - ay)
-                act[g_.radius] = axial(la, C, rcx, rcy, (cx - ax) / L, (cy - ay) / L)
-        elif isinstance(g_, RigidPoint):
-            if isinstance(g_.length, str) and g_.length in coords:
-                raise ModelError(f"reactions of the telescopic arm {g_.name!r} are not modelled "
-                                 f"(use the virtual-work forces)")
-        elif isinstance(g_, PosePoint):
-            pass
+        r.links = topo.group_links[g_.name]
+        g_.reactions(r)
+    joints, act = r.joints, r.act
     vw = virtual_work_forces(kin, qdot, qddot, g)
 
     def residual():
@@ -577,7 +450,7 @@ def _solve(kin, qdot, qddot, g):
         (computed when asked for: a check, not part of the result)."""
         fres = np.zeros((m, n))
         mres = np.zeros((m, n))
-        for b in mech._bodies:
+        for b in topo.bodies:
             if b == "0":
                 continue
             fx, fy, mo = [np.broadcast_to(a, (m, n)) for a in applied[b]]
@@ -585,7 +458,7 @@ def _solve(kin, qdot, qddot, g):
                 if b not in (i, j):
                     continue
                 sg = 1.0 if j == b else -1.0
-                px, py = kin._val(pt)
+                px, py = kin.value(pt)
                 fx = fx + sg * rx
                 fy = fy + sg * ry
                 mo = mo + sg * (px * ry - py * rx + mz)

@@ -105,16 +105,12 @@ def _depends(mech, cond, unknowns):
         pts = (dd.a, dd.b)
     else:
         pts = (obj,)
-    last = max(mech._defining_index(p) for p in pts)
+    last = max(mech.defining_index(p) for p in pts)
     used = set()
     for g in mech.groups[:last + 1]:
         for ref in g.refs().values():
             if isinstance(ref, str):
                 used.add(ref)
-        for attr in ("at",):
-            for ref in getattr(g, attr, ()) or ():
-                if isinstance(ref, str):
-                    used.add(ref)
     for v in cond.at.values():
         if isinstance(v, str):
             used.add(v)

@@ -16,9 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..groups import Crank, CylinderLever, Dyad, Frame, RigidPoint, SliderDyad, SliderInput
 from ..loads import Couple, Mass, PointForce, Spring, Weight
-from ..mechanism import PosePoint
 from .labels import TEXT, check_lang, t, unit
 
 __all__ = ["write_html", "render_html", "parameter_units"]
@@ -121,20 +119,9 @@ def _anchor(prefix, ident):
     return prefix + "".join(ch if ch.isalnum() else "-" for ch in str(ident)).lower()
 
 
-_KINDS = {Frame: ("frame pivot", "шарнир стойки"),
-          CylinderLever: ("cylinder–lever group", "группа «гидроцилиндр – рычаг»"),
-          Dyad: ("RRR dyad", "диада ВВВ"), Crank: ("crank", "кривошип"),
-          SliderInput: ("slider input", "входной ползун"),
-          RigidPoint: ("rigid point", "точка жёсткого звена"),
-          SliderDyad: ("RRP dyad", "диада ВВП"),
-          PosePoint: ("rigid point fixed at a pose", "точка звена, заданная в положении")}
-
-
 def _kind(g, lang):
-    for cls, names in _KINDS.items():
-        if type(g) is cls:
-            return names[0 if lang == "en" else 1]
-    return getattr(g, "kind", type(g).__name__)
+    """A group's kind in the report's language (the group type's own words)."""
+    return g.kind if lang == "en" else g.kind_ru
 
 
 def _summary(analysis, lang):
@@ -146,12 +133,12 @@ def _summary(analysis, lang):
     coords = []
     for c in kin.coordinates:
         q = np.asarray(kin.q(c), dtype=float)
-        is_angle = any(isinstance(g, Crank) and g.angle == c for g in mech.groups)
+        is_angle = mech.coordinate_kind(c) == "angle"
         qq, u = (np.degrees(q), "deg") if is_angle else (q, "m")
         coords.append(f"{c}: {qq.min():.6g} … {qq.max():.6g} {unit(u, lang)} "
                       f"({q.shape[-1]} {t('positions', lang)})")
     groups = [(g.name, _kind(g, lang), ", ".join(g.inputs()), ", ".join(g.outputs()),
-               ", ".join(g.group_links())) for g in mech.groups if not isinstance(g, Frame)]
+               ", ".join(g.group_links())) for g in mech.groups if g.type_name != "frame"]
     links = []
     for b, v in mech.bodies.items():
         kind = t("frame", lang) if b == "0" else (t("variable", lang) if v["variable"]

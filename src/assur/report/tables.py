@@ -70,7 +70,6 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import SingularPositionError
-from ..groups import Crank, SliderInput
 from ..loads import Weight
 from .labels import TEXT, check_lang
 
@@ -214,11 +213,9 @@ class _View:
 
     # coordinates ---------------------------------------------------------------------
     def coord_kind(self, c):
-        for g in self.mech.groups:
-            if isinstance(g, Crank) and g.angle == c:
-                return "angle"
-            if isinstance(g, SliderInput) and g.s == c:
-                return "slider"
+        kind = self.mech.coordinate_kind(c)
+        if kind != "length":
+            return kind
         for cyl in self.mech.cylinders:
             if cyl.coordinate == c:
                 return "cylinder"

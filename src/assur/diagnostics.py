@@ -1,0 +1,94 @@
+"""Messages of assembly failures: which group, its links, the values, the position.
+
+The kernel reports only *which* group failed at an element and the failure code;
+the amount and the words come from the group itself
+(:meth:`assur.groups.base.Group.failure`), evaluated on the plain-numpy reference
+positions of the groups before it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import AssemblyError
+from .groups.base import fmt
+from .kernel.emit import CODES_PER_OP, FAIL_CONTINUITY
+
+__all__ = ["failure_message", "assembly_error", "describe_failures"]
+
+
+def _where(mech, ptab, qarr, n, e):
+    d, pos = divmod(e, n)
+    at = ", ".join(f"{c} = {qarr[j, e]:.6g}" for j, c in enumerate(mech.coordinates))
+    return f"at position {pos} ({at})" + (f" of design {d}" if ptab.shape[1] > 1 else "")
+
+
+def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
+    """``(message, amount, group or measure)`` of the failure at element ``e``."""
+    opi, code = divmod(int(status[e]), CODES_PER_OP)
+    d = e // n
+    where = _where(mech, ptab, qarr, n, e)
+    ngroups = len(mech.groups)
+    if opi >= ngroups:
+        obj = (mech.links + mech.distances)[opi - ngroups]
+        return f"link {obj.name!r}: its two points coincide {where}", 0.0, obj
+    g = mech.groups[opi]
+    links = g.group_links()
+    ltxt = f" (links {', '.join(links)})" if links else ""
+    if code == FAIL_CONTINUITY:
+        c = mech.coordinates[0]
+        amt = float(amount[e])
+        head = (f"{g.kind} {g.name!r}{ltxt} cannot move continuously from {c} = "
+                f"{qarr[0, e - 1]:.6g} to {c} = {qarr[0, e]:.6g}"
+                f"{f' (design {d})' if ptab.shape[1] > 1 else ''}: ")
+        return (head + "its triangle flattens or opens between these positions (the squared "
+                f"height, interpolated with its exact slope, dips to {amt:.3g} m²): a dead "
+                "point or a loss of assembly between samples; refine the positions, or "
+                "check the range and the branch"), amt, g
+    params = {name: ptab[i, d] for i, name in enumerate(prog.param_names)}
+    qd = {c: qarr[j, e] for j, c in enumerate(mech.coordinates)}
+    pts = mech.evaluate_positions(qd, params, upto=opi) if opi else {}
+    pts = {k: (float(np.real(x)), float(np.real(y))) for k, (x, y) in pts.items()}
+
+    def v(ref):
+        if isinstance(ref, str) and ref in qd:
+            return float(qd[ref])
+        return float(ptab[prog.param_row(ref), d])
+
+    def nm(ref):
+        return ref if isinstance(ref, str) else fmt(ref)
+
+    f = g.failure(code, pts, v, nm)
+    return f"{g.kind} {g.name!r}{ltxt} {f.verb} {where}: {f.text}", f.amount, g
+
+
+def describe_failures(mech, prog, ptab, qarr, status, amount, n, limit=20):
+    """Messages of the first ``limit`` failed elements."""
+    idx = np.flatnonzero(status >= 0)
+    return [failure_message(mech, prog, ptab, qarr, status, amount, n, e)[0]
+            for e in idx[:limit]]
+
+
+def assembly_error(mech, prog, ptab, qarr, status, amount, n, ok):
+    """The :class:`AssemblyError` of the first failed element, with the failing
+    spans of its design and the number of failing designs."""
+    idx = np.flatnonzero(status >= 0)
+    e = int(idx[0])
+    msg, amt, g = failure_message(mech, prog, ptab, qarr, status, amount, n, e)
+    d, pos = divmod(e, n)
+    fails_here = idx[(idx >= d * n) & (idx < (d + 1) * n)]
+    if len(mech.coordinates) == 1 and n > 1:
+        pos_idx = fails_here - d * n
+        runs = np.split(pos_idx, np.flatnonzero(np.diff(pos_idx) != 1) + 1)
+        qd = qarr[0, d * n:(d + 1) * n]
+        spans = ", ".join(f"{qd[r[0]]:.6g}…{qd[r[-1]]:.6g}" if len(r) > 1 else
+                          f"{qd[r[0]]:.6g}" for r in runs[:5])
+        msg += (f"; {len(fails_here)} of {n} positions fail"
+                f" ({mech.coordinates[0]} = {spans}{', …' if len(runs) > 5 else ''})")
+    if ptab.shape[1] > 1:
+        nd = len(np.unique(idx // n))
+        msg += f"; {nd} of {ptab.shape[1]} designs fail, first design {d}"
+    links = g.group_links() if hasattr(g, "group_links") else ()
+    return AssemblyError(msg, group=g.name, links=links,
+                         coordinate=dict(zip(mech.coordinates, qarr[:, e])), design=d,
+                         position=pos, amount=amt, failures=ok)

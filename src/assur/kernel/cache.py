@@ -1,0 +1,60 @@
+"""Disk cache of generated kernels: one module per structure, compiled once per
+machine by numba's own on-disk cache.
+
+The directory is ``$ASSUR_CACHE_DIR`` when set, else ``$XDG_CACHE_HOME/assur`` or
+``~/.cache/assur``; :func:`set_cache_dir` changes it for the process (the tests use
+a temporary one).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import os
+import sys
+import threading
+from pathlib import Path
+
+__all__ = ["cache_dir", "set_cache_dir", "load_source"]
+
+_lock = threading.Lock()
+_loaded: dict[str, object] = {}
+_override: list = []
+
+
+def set_cache_dir(path) -> None:
+    """Use ``path`` for generated kernels in this process (None: back to the default)."""
+    _override[:] = [] if path is None else [str(path)]
+
+
+def cache_dir() -> Path:
+    """Directory of generated kernels (created when missing)."""
+    base = (_override[0] if _override else None) or os.environ.get("ASSUR_CACHE_DIR") or \
+        os.path.join(os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "assur")
+    p = Path(base) / "kernels"
+    p.mkdir(parents=True, exist_ok=True)
+    return p
+
+
+def load_source(src: str, name: str = "kernel"):
+    """Write ``src`` to the cache (by its hash) and import it; returns ``module.<name>``.
+
+    A module is loaded once per process; writes are atomic (a temporary file
+    replaced), so processes sharing the cache never read half a file.
+    """
+    key = hashlib.sha1(src.encode()).hexdigest()[:20]
+    with _lock:
+        mod = _loaded.get(key)
+        if mod is None:
+            path = cache_dir() / f"k_{key}.py"
+            if not path.exists() or path.read_text() != src:
+                tmp = path.with_suffix(f".{os.getpid()}.tmp")
+                tmp.write_text(src)
+                os.replace(tmp, path)
+            modname = f"assur_kernel_{key}"
+            spec = importlib.util.spec_from_file_location(modname, path)
+            mod = importlib.util.module_from_spec(spec)
+            sys.modules[modname] = mod
+            spec.loader.exec_module(mod)
+            _loaded[key] = mod
+        return getattr(mod, name)

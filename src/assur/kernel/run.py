@@ -1,0 +1,158 @@
+"""Running generated kernels: threads, the continuity pass, angle unwrapping.
+
+Kernels release the GIL, so large problems are split over threads. The number of
+threads follows the CPUs this process may use (``os.sched_getaffinity``: ``taskset``
+and container limits are honoured), or ``$ASSUR_THREADS``, or :func:`set_threads`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from concurrent.futures import ThreadPoolExecutor
+
+from .emit import CONTINUITY_TOL
+from .source import CHUNK
+
+__all__ = ["threads", "set_threads", "run", "check_continuity", "unwrap_rows", "pool"]
+
+_threads: list = []
+_pool: list = []
+
+
+def threads() -> int:
+    """Threads used for large problems (≥ 1)."""
+    if _threads:
+        return _threads[0]
+    env = os.environ.get("ASSUR_THREADS")
+    if env:
+        try:
+            return max(1, int(env))
+        except ValueError:
+            pass
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def set_threads(n: int | None) -> None:
+    """Use ``n`` threads for large problems (None: back to the CPUs available)."""
+    if n is not None and int(n) < 1:
+        raise ValueError(f"threads must be ≥ 1, got {n!r}")
+    _threads[:] = [] if n is None else [int(n)]
+
+
+def pool() -> ThreadPoolExecutor:
+    """The process's worker threads (grown when more are asked for)."""
+    n = threads()
+    if not _pool or _pool[0]._max_workers < n:
+        _pool[:] = [ThreadPoolExecutor(max_workers=n, thread_name_prefix="assur")]
+    return _pool[0]
+
+
+def run(kernel, params, trig, q, npd, check, out, gout, status):
+    """Run a generated kernel over all elements, split over threads (small problems
+    run in the calling thread)."""
+    E = q.shape[1]
+    nchunks = (E // npd) * ((npd + CHUNK - 1) // CHUNK)  # designs × runs per design
+    nthreads = min(threads(), max(1, nchunks // 8))
+    if nthreads <= 1:
+        kernel(params, trig, q, npd, check, out, gout, status, 0, nchunks)
+        return
+    per = (nchunks + nthreads - 1) // nthreads
+    futs = [pool().submit(kernel, params, trig, q, npd, check, out, gout, status, i * per,
+                          min(nchunks, (i + 1) * per)) for i in range(nthreads)]
+    for f in futs:
+        f.result()
+
+
+def check_continuity(gout, q, npd, status, amount, codes):
+    """Run :func:`continuity` over all elements, split over threads; returns the
+    number of failures."""
+    E = q.shape[1]
+    fn = _continuity()
+    nthreads = min(threads(), max(1, E // 65536))
+    if nthreads <= 1:
+        return fn(gout, q, npd, status, amount, codes, 0, E)
+    per = (E + nthreads - 1) // nthreads
+    futs = [pool().submit(fn, gout, q, npd, status, amount, codes, i * per,
+                          min(E, (i + 1) * per)) for i in range(nthreads)]
+    return sum(f.result() for f in futs)
+
+
+_compiled: dict = {}
+_CONT_TOL = CONTINUITY_TOL
+
+
+def _continuity():
+    fn = _compiled.get("continuity")
+    if fn is None:
+        from numba import njit
+
+        @njit(cache=True, nogil=True, error_model="numpy")
+        def continuity(gout, q, npd, status, amount, codes, e_start, e_end):
+            """Cubic-Hermite check of every dyad's squared height between consecutive
+            positions of each design, for the right-hand elements e_start…e_end−1;
+            marks the right-hand element of a failing interval with the dyad's code
+            and the depth [m²] in ``amount``. Returns the number of failures."""
+            nfail = 0
+            for e in range(max(e_start, 1), e_end):
+                if e % npd == 0 or status[e] >= 0 or status[e - 1] >= 0:
+                    continue
+                h = q[0, e] - q[0, e - 1]
+                for k in range(codes.shape[0]):
+                    g0 = gout[2 * k, e - 1]
+                    d0 = gout[2 * k + 1, e - 1]
+                    g1 = gout[2 * k, e]
+                    d1 = gout[2 * k + 1, e]
+                    mn = min(g0, g1)
+                    if mn - (4.0 / 27.0) * abs(h) * (abs(d0) + abs(d1)) > 0.0:
+                        continue
+                    for i in range(1, 16):
+                        t = i / 16.0
+                        t2 = t * t
+                        t3 = t2 * t
+                        v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0 + (t3 - 2.0 * t2 + t) * h * d0
+                             + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * h * d1)
+                        if v < mn:
+                            mn = v
+                    if mn < -_CONT_TOL * max(g0, g1):
+                        status[e] = codes[k]
+                        amount[e] = mn
+                        nfail += 1
+                        break
+            return nfail
+
+        fn = _compiled["continuity"] = continuity
+    return fn
+
+
+def unwrap_rows(sv, rows, n):
+    """Make angles continuous along positions, in place: ``sv`` shape (ns, E), E = m·n;
+    each run of n positions (one design) starts at its principal value [rad]."""
+    fn = _compiled.get("unwrap")
+    if fn is None:
+        from numba import njit
+
+        @njit(cache=True, nogil=True)
+        def unwrap(sv, rows, n):
+            m = sv.shape[1] // n
+            two_pi = 2.0 * math.pi
+            for job in range(rows.shape[0] * m):
+                r = rows[job // m]
+                d = job % m
+                off = 0.0
+                prev = sv[r, d * n]
+                for i in range(d * n + 1, (d + 1) * n):
+                    cur = sv[r, i]
+                    step = cur - prev
+                    if step > math.pi:
+                        off -= two_pi
+                    elif step < -math.pi:
+                        off += two_pi
+                    prev = cur
+                    sv[r, i] = cur + off
+
+        fn = _compiled["unwrap"] = unwrap
+    fn(sv, rows, n)

@@ -1,0 +1,181 @@
+"""Source of the compiled position/analog kernel of a program structure.
+
+A compiled mechanism (:class:`assur.program.Program`) is a table of integer rows,
+one per structural group in solving order (the op code of its type first), plus the
+measures (link angles, distances) to output. This module asks each group type to
+emit its straight-line code (:meth:`assur.groups.base.Group.emit`, through the
+toolkit of :mod:`assur.kernel.emit`) and wraps it in one fused loop over all
+elements (design, position): every point's value, first and second derivatives
+with respect to the ``k`` generalized coordinates are held in local variables (a
+second-order forward jet), so the analogs are exact to rounding. Only the
+requested outputs are written to memory.
+
+The source depends only on the structure (group types, connections, k and the
+requested outputs), never on parameter values: it is cached on disk and compiled
+once per machine (:mod:`assur.kernel.cache`).
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..groups import group_type
+from .emit import FAIL_COINCIDENT, Emitter, d, dd, fail, pt
+
+__all__ = ["generate", "CHUNK", "FORMAT"]
+
+#: elements per work item of the element loop
+CHUNK = 256
+
+#: bump when the generator changes what it emits
+FORMAT = "18"
+
+
+def _emit_measure(E, i, kind, s_, P, Q):
+    """Link angle (kind 'angle') or distance (kind 'distance') between two points."""
+    K = E.K
+    px, py = pt(P)
+    qx, qy = pt(Q)
+    s = f"s{s_}"
+    t = f"t{i}"
+    E(f"{t}dx = {qx} - {px}")
+    E(f"{t}dy = {qy} - {py}")
+    E(f"{t}r2 = {t}dx * {t}dx + {t}dy * {t}dy")
+    fail(E, i, FAIL_COINCIDENT, f"{t}r2 == 0.0")
+    E(f"{t}ir2 = 1.0 / {t}r2 if {t}r2 > 0.0 else 0.0")
+    for a in range(K):
+        E(f"{t}dx_{a} = {d(qx, a)} - {d(px, a)}")
+        E(f"{t}dy_{a} = {d(qy, a)} - {d(py, a)}")
+    if kind == "angle":
+        # the angle itself is atan2(dy, dx), taken after the kernel by numpy's
+        # vectorized arctan2 (an order of magnitude faster than a scalar libm call):
+        # the kernel outputs dy as the value and dx in an extra row
+        E(f"{s} = {t}dy")
+        E(f"{s}_dx = {t}dx")
+        for a in range(K):
+            E(f"{t}c_{a} = {t}dx * {t}dy_{a} - {t}dy * {t}dx_{a}")
+            E(f"{d(s, a)} = {t}c_{a} * {t}ir2")
+        for a, b in E.pairs:
+            # phi''_ab = [d'_b x d'_a + d x d''_ab]/r2 - 2 (d x d'_a)(d . d'_b)/r2^2
+            E(f"{dd(s, a, b)} = (({t}dx_{b} * {t}dy_{a} - {t}dy_{b} * {t}dx_{a})"
+              f" + ({t}dx * ({dd(qy, a, b)} - {dd(py, a, b)}) - {t}dy * "
+              f"({dd(qx, a, b)} - {dd(px, a, b)}))) * {t}ir2"
+              f" - 2.0 * {t}c_{a} * ({t}dx * {t}dx_{b} + {t}dy * {t}dy_{b}) * {t}ir2 * {t}ir2")
+    else:
+        E(f"{s} = math.sqrt({t}r2)")
+        E(f"{t}il = 1.0 / {s} if {s} > 0.0 else 0.0")
+        for a in range(K):
+            E(f"{d(s, a)} = ({t}dx * {t}dx_{a} + {t}dy * {t}dy_{a}) * {t}il")
+        for a, b in E.pairs:
+            E(f"{dd(s, a, b)} = ({t}dx_{a} * {t}dx_{b} + {t}dy_{a} * {t}dy_{b}"
+              f" + {t}dx * ({dd(qx, a, b)} - {dd(px, a, b)}) + {t}dy * "
+              f"({dd(qy, a, b)} - {dd(py, a, b)}) - {d(s, a)} * {d(s, b)}) * {t}il")
+
+
+def quantities(K, out_pts, out_sca, angle_slots):
+    """Names of the output rows, in order: point values, first, second analogs, then
+    the measures likewise, then the dx of every output angle."""
+    qs = [v for s_ in out_pts for v in (f"x{s_}", f"y{s_}")]
+    qs += [d(v, a) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)]
+    qs += [dd(v, a, b) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)
+           for b in range(K)]
+    qs += [f"s{s_}" for s_ in out_sca]
+    qs += [d(f"s{s_}", a) for s_ in out_sca for a in range(K)]
+    qs += [dd(f"s{s_}", a, b) for s_ in out_sca for a in range(K) for b in range(K)]
+    qs += [f"s{s_}_dx" for s_ in out_sca if s_ in angle_slots]
+    return qs
+
+
+def generate(rows, measures, K, out_pts, out_sca):
+    """Python source of the kernel of a program structure.
+
+    Parameters
+    ----------
+    rows : sequence of tuple of int
+        One row per group in solving order: ``(op, *group_row)``.
+    measures : sequence of (kind, scalar_slot, P, Q)
+        Link angles (``"angle"``) and distances (``"distance"``) between points.
+    K : int
+        Number of generalized coordinates.
+    out_pts, out_sca : sequence of int
+        Slots of the points and measures to write.
+
+    Continuity (k = 1): every group type with ``continuity`` emits the squared height
+    ``g{i}`` of its triangle and its slope ``gd{i}``; the kernel stages them so that
+    :func:`assur.kernel.run.continuity` can check, between consecutive positions,
+    that the cubic Hermite interpolant stays positive (the group neither flattens
+    nor opens between samples).
+    """
+    E = Emitter(K)
+    cont = []
+    for i, row in enumerate(rows):
+        gt = group_type(row[0])
+        E(f"# group {i}: {gt.type_name}")
+        gt.emit(E, i, tuple(int(v) for v in row[1:]))
+        if gt.continuity and K == 1:
+            cont.append(i)
+    n = len(rows)
+    for j, (kind, s_, P, Q) in enumerate(measures):
+        E(f"# measure {j}: {kind}")
+        _emit_measure(E, n + j, kind, s_, P, Q)
+    # per-design values are loaded once per run of positions of a design, before the
+    # element loop (so the loop reads only q and can be vectorized)
+    prows = sorted({int(m) for line in E.lines for m in re.findall(r"params\[(\d+), d\]", line)})
+    trows = sorted({int(m) for line in E.lines for m in re.findall(r"trig\[(\d+), d\]", line)})
+    body = [re.sub(r"trig\[(\d+), d\]", r"T\1",
+                   re.sub(r"params\[(\d+), d\]", r"P\1", "    " + line)) for line in E.lines]
+    hoist = "".join(f"            P{r} = params[{r}, d]\n" for r in prows)
+    hoist += "".join(f"            T{r} = trig[{r}, d]\n" for r in trows)
+    angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
+    qs = quantities(K, out_pts, out_sca, angle_slots)
+    nq = len(qs)
+    # the squared triangle heights and slopes for the continuity check (a separate
+    # pass): staged unconditionally (a conditional store would stop vectorization),
+    # copied to gout only when checking
+    for i in cont:
+        qs += [f"g{i}", f"gd{i}"]
+    ind = "                "
+    out = [ind + "status[e] = st"]
+    # outputs go to a per-chunk buffer (one row per quantity, in L2) and are copied
+    # row by row at the end of the chunk: a few long sequential streams instead of
+    # one interleaved stream per quantity; failed elements get 0, never NaN
+    if qs:
+        out.append(ind + "ok_ = st < 0")
+        out.append(ind + "j = e - e0")
+        out += [ind + f"buf[{qi}, j] = {v} if ok_ else 0.0" for qi, v in enumerate(qs)]
+    return f'''"""Generated by assur.kernel.source (format {FORMAT}); do not edit."""
+import math
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, error_model="numpy", nogil=True)
+def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
+    """Chunks c_start…c_end−1 of the elements. out: (NQ, E) outputs, rows in the order
+    of assur.kernel.source.quantities; gout: (2·dyads, E) squared heights and slopes
+    when ``check``. Branch-free element loop (vectorizable); releases the GIL:
+    callers run ranges in threads."""
+    E = q.shape[1]
+    NQ = {nq}
+    NG = {len(qs) - nq}
+    if out.shape[0] != NQ or gout.shape[0] != NG or out.shape[1] != E:
+        raise ValueError("assur kernel: output arrays do not match the program")
+    buf = np.empty(({max(len(qs), 1)}, {CHUNK}))
+    # work items are runs of ≤ {CHUNK} positions of one design: the per-design values
+    # are loop-invariant and the element loop is a plain counted loop (vectorizable)
+    cpd = (npd + {CHUNK} - 1) // {CHUNK}
+    for c in range(c_start, c_end):
+        d = c // cpd
+        e0 = d * npd + (c % cpd) * {CHUNK}
+        e1 = min(d * npd + npd, e0 + {CHUNK})
+        if e1 > e0:
+{hoist}            for e in range(e0, e1):
+                st = -1
+''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + '''        for r in range(NQ):
+            for j in range(e1 - e0):
+                out[r, e0 + j] = buf[r, j]
+        if check:
+            for r in range(NG):
+                for j in range(e1 - e0):
+                    gout[r, e0 + j] = buf[NQ + r, j]
+'''

@@ -1,0 +1,339 @@
+"""The compiled form of a mechanism: a typed, immutable :class:`Program`.
+
+:func:`compile_program` asks every group for its program row
+(:meth:`assur.groups.base.Group.compile`) through a :class:`CompileContext`; the
+rows, the measures and the requested outputs are the *structure* from which the
+kernel is generated (:mod:`assur.kernel.source`) — parameter values never enter it.
+Programs are cached per structure, so solving the same mechanism with other
+parameters or coordinates does not rebuild them.
+
+A program evaluates in three steps: :meth:`Program.param_table` (one column per
+design), the groups' pre-passes (``prepare``, e.g. a point fixed at a pose), and
+:func:`execute` (the kernel, the continuity pass, the angles).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Mapping
+
+import numpy as np
+
+from .errors import ModelError
+from .groups import group_type
+from .groups.base import is_number
+from .kernel import emit as KE
+from .kernel import run as KR
+from .kernel.cache import load_source
+from .kernel.source import generate
+
+__all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_table"]
+
+
+class CompileContext:
+    """What a group's :meth:`~assur.groups.base.Group.compile` works with: slots of
+    points, rows of parameters and literals, coordinate indices, rows of fixed
+    angles, derived rows and pre-passes."""
+
+    def __init__(self, coordinates, param_names):
+        self.coordinates = tuple(coordinates)
+        self.param_names = tuple(param_names)
+        self._pindex = {n: i for i, n in enumerate(self.param_names)}
+        self.literals: dict[float, int] = {}
+        self.derived = 0
+        self.slots: dict[str, int] = {}
+        self.trig: list = []
+        self.frame_rows: dict = {}
+        self.prepares: list = []
+        self.current = -1
+
+    # rows: parameters first, then literal numbers, then derived rows (fixed up later)
+    def pref(self, ref):
+        """Parameter-table row of a number or parameter name (a placeholder for
+        literals and derived rows until :meth:`resolve`)."""
+        if is_number(ref):
+            key = float(ref)
+            if key not in self.literals:
+                self.literals[key] = len(self.literals)
+            return ("lit", key)
+        if ref in self._pindex:
+            return self._pindex[ref]
+        raise ModelError(f"{ref!r} is not a parameter")
+
+    def lref(self, ref):
+        """Length reference: a parameter row ≥ 0, or ``−(j + 1)`` for coordinate j."""
+        if isinstance(ref, str) and ref in self.coordinates:
+            return -(self.coordinates.index(ref) + 1)
+        return self.pref(ref)
+
+    def coord(self, name) -> int:
+        """Index of a generalized coordinate."""
+        return self.coordinates.index(name)
+
+    def slot(self, point) -> int:
+        """Slot of a point (new points get the next slot)."""
+        if point not in self.slots:
+            self.slots[point] = len(self.slots)
+        return self.slots[point]
+
+    def derived_row(self):
+        """A new per-design row filled by a pre-pass (see :meth:`prepare`)."""
+        self.derived += 1
+        return ("der", self.derived - 1)
+
+    def trig_angle(self, row) -> int:
+        """Trig-table row of cos and sin of the angle in parameter row ``row``."""
+        self.trig.append(("angle", row))
+        return 2 * (len(self.trig) - 1)
+
+    def trig_triangle(self, pb, pl, po, branch) -> int:
+        """Trig-table row of the angle ``branch·acos((b² + l² − o²)/(2bl))``."""
+        self.trig.append(("triangle", pb, pl, po, branch))
+        return 2 * (len(self.trig) - 1)
+
+    def frame_point(self, name, rx, ry) -> None:
+        """Record a frame point's rows (frame points are served from the table)."""
+        self.frame_rows[name] = (rx, ry)
+
+    def prepare(self, group, data) -> None:
+        """Register the group's pre-pass ``group.prepare(data, ptab, positions_at)``."""
+        self.prepares.append((self.current, data))
+
+    def resolve(self, v):
+        """Final row number of a placeholder (after all literals are known)."""
+        if isinstance(v, tuple) and v and v[0] == "lit":
+            return len(self.param_names) + self.literals[v[1]]
+        if isinstance(v, tuple) and v and v[0] == "der":
+            return len(self.param_names) + len(self.literals) + v[1]
+        if isinstance(v, tuple):
+            return tuple(self.resolve(x) for x in v)
+        return v
+
+
+@dataclass(frozen=True)
+class Program:
+    """A compiled mechanism (structure only; see the module docstring).
+
+    Attributes
+    ----------
+    rows : tuple of tuple of int
+        ``(op, *row)`` per group in solving order.
+    measures : tuple of (str, int, int, int)
+        ``(kind, scalar slot, P slot, Q slot)`` of link angles and distances.
+    k : int
+        Number of generalized coordinates.
+    slot, scal : mapping of str to int
+        Slots of the points and of the measures.
+    kinds : mapping of str to str
+        ``"angle"`` or ``"distance"`` for each measure.
+    out_pts, out_sca : tuple of str
+        Points and measures written by the kernel.
+    frame_rows : mapping of str to (int, int)
+        Parameter rows of the frame points' x and y.
+    param_names : tuple of str
+        Names of the first rows of the parameter table.
+    literals : tuple of float
+        Values of the next rows (numbers written in the groups).
+    n_derived : int
+        Rows after the literals, filled by pre-passes.
+    trig : tuple
+        Fixed angles: ``("angle", row)`` or ``("triangle", pb, pl, po, branch)``.
+    prepares : tuple of (int, object)
+        Group index and data of each pre-pass.
+    """
+
+    rows: tuple
+    measures: tuple
+    k: int
+    slot: Mapping[str, int]
+    scal: Mapping[str, int]
+    kinds: Mapping[str, str]
+    out_pts: tuple
+    out_sca: tuple
+    frame_rows: Mapping[str, tuple]
+    param_names: tuple
+    literals: tuple
+    n_derived: int
+    trig: tuple
+    prepares: tuple
+    _kernels: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def param_row(self, ref) -> int:
+        """Row of a number (literal) or a parameter name."""
+        if is_number(ref):
+            return len(self.param_names) + self.literals.index(float(ref))
+        return self.param_names.index(ref)
+
+    def param_table(self, params: Mapping) -> np.ndarray:
+        """Parameter table, shape (rows, m): parameters, literals, derived rows (0)."""
+        rows = [np.atleast_1d(np.asarray(params[n], dtype=float)) for n in self.param_names]
+        m = max([r.shape[0] for r in rows] + [1])
+        for name, r in zip(self.param_names, rows):
+            if r.shape[0] not in (1, m):
+                raise ModelError(f"parameter {name!r} has {r.shape[0]} designs, others {m}")
+        ptab = np.zeros((len(rows) + len(self.literals) + self.n_derived, m))
+        for i, r in enumerate(rows):
+            ptab[i] = r
+        for j, v in enumerate(self.literals):
+            ptab[len(rows) + j] = v
+        return ptab
+
+    def kernel(self, out_pts=None, out_sca=None):
+        """The compiled kernel writing ``out_pts``/``out_sca`` (default: the program's)."""
+        op = tuple(self.out_pts if out_pts is None else out_pts)
+        os_ = tuple(self.out_sca if out_sca is None else out_sca)
+        key = (op, os_)
+        fn = self._kernels.get(key)
+        if fn is None:
+            fn = _kernel_for(self.rows, self.measures, self.k,
+                             tuple(self.slot[p] for p in op), tuple(self.scal[s] for s in os_))
+            self._kernels[key] = fn
+        return fn
+
+
+_KERNELS: dict = {}
+
+
+def _kernel_for(rows, measures, k, out_pts, out_sca):
+    key = (rows, measures, k, out_pts, out_sca)
+    fn = _KERNELS.get(key)
+    if fn is None:
+        fn = _KERNELS[key] = load_source(generate(rows, measures, k, out_pts, out_sca))
+    return fn
+
+
+_PROGRAMS: dict = {}
+
+
+def compile_program(mech, outputs=None) -> Program:
+    """The :class:`Program` of a mechanism and the outputs it asks for (cached per
+    structure: the groups, links, distances, coordinates and parameter names)."""
+    outputs = None if outputs is None else tuple(outputs)
+    key = (mech.groups, mech.links, mech.distances, mech.coordinates, tuple(mech.params),
+           outputs)
+    try:
+        prog = _PROGRAMS.get(key)
+    except TypeError:  # an unhashable literal somewhere: compile without caching
+        key, prog = None, None
+    if prog is not None:
+        return prog
+    c = CompileContext(mech.coordinates, tuple(mech.params))
+    rows = []
+    for i, g in enumerate(mech.groups):
+        c.current = i
+        for o in g.outputs():
+            c.slot(o)
+        rows.append((g.op,) + tuple(g.compile(c)))
+    rows = tuple(tuple(int(v) for v in c.resolve(r)) for r in rows)
+    trig = tuple((t[0],) + tuple(c.resolve(x) for x in t[1:]) for t in c.trig)
+    frame_rows = {n: c.resolve(v) for n, v in c.frame_rows.items()}
+    prepares = tuple((i, c.resolve(data)) for i, data in c.prepares)
+    slot = dict(c.slots)
+    scal, kinds, measures = {}, {}, []
+    for l in mech.links:
+        scal[l.name] = len(scal)
+        kinds[l.name] = "angle"
+        measures.append(("angle", scal[l.name], slot[l.tail], slot[l.head]))
+    for dd_ in mech.distances:
+        scal[dd_.name] = len(scal)
+        kinds[dd_.name] = "distance"
+        measures.append(("distance", scal[dd_.name], slot[dd_.a], slot[dd_.b]))
+    if outputs is None:
+        out_pts = tuple(p for p in slot if p not in frame_rows)
+        out_sca = tuple(scal)
+    else:
+        bad = [o for o in outputs if o not in slot and o not in scal]
+        if bad:
+            raise ModelError(f"unknown outputs {bad}; points: {list(slot)}, links and "
+                             f"distances: {list(scal)}")
+        out_pts = tuple(o for o in outputs if o in slot and o not in frame_rows)
+        out_sca = tuple(o for o in outputs if o in scal)
+    prog = Program(rows=rows, measures=tuple(measures), k=len(mech.coordinates),
+                   slot=MappingProxyType(slot), scal=MappingProxyType(scal),
+                   kinds=MappingProxyType(kinds), out_pts=out_pts, out_sca=out_sca,
+                   frame_rows=MappingProxyType(frame_rows), param_names=c.param_names,
+                   literals=tuple(c.literals), n_derived=c.derived, trig=trig,
+                   prepares=prepares)
+    if key is not None:
+        if len(_PROGRAMS) > 256:
+            _PROGRAMS.clear()
+        _PROGRAMS[key] = prog
+    return prog
+
+
+def trig_table(prog: Program, ptab: np.ndarray) -> np.ndarray:
+    """cos and sin of every fixed angle of the program, per design, shape (2·n, m).
+
+    A triangle-defined angle is ``branch·acos((b² + l² − o²)/(2·b·l))`` (seed 000
+    DELFI); its argument is clipped here only so that the table is finite — a
+    triangle that cannot close is detected and reported by the kernel.
+    """
+    m = ptab.shape[1]
+    out = np.empty((max(2 * len(prog.trig), 1), m))
+    for i, item in enumerate(prog.trig):
+        if item[0] == "angle":
+            beta = ptab[item[1]]
+        else:
+            _, pb, pl, po, br = item
+            b, ell, o = ptab[pb], ptab[pl], ptab[po]
+            den = 2.0 * b * ell
+            c = np.divide(b * b + ell * ell - o * o, den, out=np.ones(m), where=den > 0)
+            beta = br * np.arccos(np.clip(c, -1.0, 1.0))
+        out[2 * i] = np.cos(beta)
+        out[2 * i + 1] = np.sin(beta)
+    return out
+
+
+def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=()):
+    """Run the kernel; returns the raw output arrays and the status per element.
+
+    ``rows`` (a prefix of the program's groups) and ``out_pts``/``out_sca`` run a
+    part of the program (pre-passes at a pose).
+    """
+    k, E = qarr.shape
+    if rows is None:
+        names_p = prog.out_pts if out_pts is None else tuple(out_pts)
+        names_s = prog.out_sca if out_pts is None else tuple(out_sca)
+        kern = prog.kernel(names_p, names_s)
+        measures = prog.measures
+    else:
+        names_p, names_s = tuple(out_pts), tuple(out_sca)
+        kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), ())
+        measures = ()
+    npo, nso = len(names_p), len(names_s)
+    ang = [i for i, s in enumerate(names_s) if prog.kinds[s] == "angle"]
+    sizes = [npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang)]
+    out = np.empty((sum(sizes), E))
+    parts = np.split(out, np.cumsum(sizes)[:-1])
+    sv = parts[3].reshape(nso, E)
+    status = np.empty(E, dtype=np.int64)
+    # the depth of a continuity failure, written by that pass at its failures only
+    amount = np.empty(E)
+    rows_ = prog.rows if rows is None else rows
+    cont = [i for i, r in enumerate(rows_) if group_type(r[0]).continuity] if k == 1 else []
+    gout = np.empty((2 * len(cont), E if check else 1))
+    KR.run(kern, ptab, trig_table(prog, ptab), qarr, n, check, out, gout, status)
+    if check and cont:
+        codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
+                         dtype=np.int64)
+        if KR.check_continuity(gout, qarr, n, status, amount, codes):
+            out[:, (status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY) & (status >= 0)] = 0.0
+
+    def angle(row, i):
+        """angle = atan2(dy, dx) (the kernel left dy in sv[i]), then continuous along
+        the positions of each design when they are a range (both release the GIL)."""
+        np.arctan2(sv[i], parts[6][row], out=sv[i])
+        if check and n > 1:
+            KR.unwrap_rows(sv, np.array([i], dtype=np.int64), n)
+
+    if E >= 65536 and len(ang) > 1:
+        for f in [KR.pool().submit(angle, row, i) for row, i in enumerate(ang)]:
+            f.result()
+    else:
+        for row, i in enumerate(ang):
+            angle(row, i)
+    return dict(pv=parts[0].reshape(npo, 2, E), pd=parts[1].reshape(npo, 2, k, E),
+                pdd=parts[2].reshape(npo, 2, k, k, E), sv=sv, sd=parts[4].reshape(nso, k, E),
+                sdd=parts[5].reshape(nso, k, k, E), status=status, amount=amount,
+                out_pts=names_p, out_sca=names_s)
