@@ -28,8 +28,8 @@ the formula is made), so nothing in a file is ever executed:
   ``pi``;
 * ``X(p)``, ``Y(p)`` — coordinates of point ``p`` [m]; ``I(p)`` — its transmission
   number dY/dq [-] (one coordinate); ``phi(l)`` — angle of link ``l`` [rad];
-  ``dphi(l)`` — its analog dφ/dq. The point or link is written as a name
-  (``X(S6)``), a whole number (``X(56)``) or a string (``X("56")``);
+  ``dphi(l)`` — its analog dφ/dq. The point or link is written bare
+  (``X(S6)``, ``X(05)``, ``phi(5)``) or as a string (``X("05")``);
 * ``sqrt``, ``sin``, ``cos``, ``tan``, ``asin``, ``acos``, ``atan``, ``atan2``,
   ``hypot``, ``abs``, ``exp``, ``log`` of expressions.
 
@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import ast
 import math
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -64,6 +65,7 @@ CONSTANTS = {"pi": math.pi}
 #: longest expression accepted [characters]
 MAX_LENGTH = 1000
 
+_BARE_REF = re.compile(r"\b(X|Y|I|phi|dphi)\(\s*([0-9A-Za-z_]+)\s*\)")
 _BINOPS = {ast.Add: np.add, ast.Sub: np.subtract, ast.Mult: np.multiply,
            ast.Div: np.divide, ast.Pow: np.power}
 _UNARY = {ast.USub: np.negative, ast.UAdd: np.positive}
@@ -143,10 +145,13 @@ def parse(expr: str):
     if len(expr) > MAX_LENGTH:
         raise FormulaError(f"expected an expression of at most {MAX_LENGTH} characters, found "
                            f"{len(expr)}")
+    # a point or link written bare (X(05), phi(5), X(S6)) is its name: quote it, so that
+    # names with leading zeros read as names
+    text = _BARE_REF.sub(lambda m: f'{m.group(1)}("{m.group(2)}")', expr.strip())
     try:
-        tree = ast.parse(expr.strip(), mode="eval")
+        tree = ast.parse(text, mode="eval")
     except SyntaxError as e:
-        raise FormulaError(f"cannot read the expression: {e.msg} (column {e.offset})") from None
+        raise FormulaError(f"cannot read the expression {expr.strip()!r}: {e.msg}") from None
     except (RecursionError, MemoryError, ValueError):
         raise FormulaError("cannot read the expression: it is nested too deeply") from None
     names, points, links = set(), set(), set()

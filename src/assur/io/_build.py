@@ -653,8 +653,9 @@ class Builder:
                 target = self.params[target]
             at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
             line = self.line(sp)
+            file = getattr(line, "file", None) or self.file
             conds.append(Condition(s.unknown, tuple(bracket), at, s.quantity, float(target),
-                                   source=f"{self.file}:{line}"))
+                                   source=f"{file}:{int(line)}"))
         return conds
 
     def bracket_value(self, path, v, unknown):
