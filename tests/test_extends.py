@@ -219,3 +219,20 @@ def test_loads_resolves_relative_to_source_or_cwd(files, monkeypatch):
     monkeypatch.chdir(child.parent)
     assert io.loads(text, name="c.toml").mechanism.params["L5"] == 0.5
     np.testing.assert_array_equal(io.loads(text).range, io.load(child).range)
+
+
+def test_the_documented_override_example_loads(tmp_path):
+    """The `extends` example of docs/model-format.md over the bundled hitch: only rb of
+    group II (4,5) changes, and L4 is solved for the new target."""
+    blocks = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "model-format.md").read_text(),
+                        re.S)
+    text = next(b for b in blocks if b.startswith('extends = "hitch_003.toml"'))
+    (tmp_path / "hitch_003.toml").write_text(io.bundled("hitch_003").read_text())
+    (tmp_path / "mine.toml").write_text(text)
+    model = io.load(tmp_path / "mine.toml")
+    base = io.load(io.bundled("hitch_003")).mechanism
+    g = model.mechanism.group("II (4,5)")
+    assert g.rb == 0.5 and (g.a, g.b, g.ra, g.branch) == ("34", "05", "L4", 1)
+    assert base.group("II (4,5)").rb == "L5"
+    assert model.mechanism.solve([0.42]).y("56")[0] == pytest.approx(0.25, abs=1e-12)
+    assert [s.condition.unknown for s in model.solved] == ["L4", "Sp", "L7"]

@@ -222,11 +222,11 @@ def _warnings(analysis, tables, lang):
     model_notes = list(mech.notes) + list(getattr(analysis.kinematics, "failures", []))
     groups.append((t("model_notes", lang), model_notes))
     from ..columns import formulas_of, signs_of
-    seed_flags = [m.note for m in signs_of(mech) if m.note]
-    groups.append((t("statics_flags", lang), seed_flags))
+    sign_notes = [m.note for m in signs_of(mech) if m.note]
+    groups.append((t("statics_flags", lang), sign_notes))
     stab = [x for f in formulas_of(mech) for x in f.flags]
     groups.append((t("stability_flags", lang), stab))
-    seen = set(model_notes) | set(seed_flags) | set(stab)
+    seen = set(model_notes) | set(sign_notes) | set(stab)
     other = []
     for tab in tables:
         for n in tab.notes:
