@@ -103,7 +103,8 @@ class Statics:
     joints : list of (point, i, j)
         Every joint with a reaction: the force of link i on link j at ``point``.
     flags : list of str
-        Notes for reports (e.g. the seed's sign slip).
+        Notes for reports (a source's printed signs are the model's sign maps,
+        ``tables["signs"]``).
     """
 
     def __init__(self, kin, forces_vw, joints, actuator_rx, residual, flags):
