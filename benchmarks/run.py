@@ -35,7 +35,7 @@ Before any figure is trusted, the benchmark checks that ``assur`` and the numpy
 peer agree on every compared quantity (e.g. max |Δφ3| < 1e-9 rad, max |ΔIS6| <
 1e-9), and that the φ3'' formula matches a finite difference of φ3'. For (c) the
 forces are compared relative to the largest |value| of each quantity (< 1e-9), the
-seed's sign of R05, R34, R45 applied (``assur.statics.SEED_003_SIGN_NOTE``); where
+seed's sign of R05, R34, R45 applied (the sign map of ``hitch_003.toml``); where
 the printed formulas lose digits by cancellation (R56y at X67 = X56, i.e. at S = Sp)
 the same formulas are re-evaluated in long double at those positions and assur is
 judged against that, both figures printed. The peer is also checked against the
@@ -75,7 +75,8 @@ TOL_REL = 1e-9  # (c) agreement: max |Δ| / max |peer| < TOL_REL for every quant
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 #: (c) the reactions seed 003 tabulates: seed name, assur pair (force of i on j) and
-#: the sign of the seed's printed components relative to it (SEED_003_SIGN_NOTE);
+#: the sign of the seed's printed components relative to it ([[tables.signs]] of
+#: hitch_003.toml);
 #: R67 is computed by the seed (§5.1) but not tabulated
 SEED_REACTIONS = (("R56", "5", "6", 1), ("R07", "0", "7", 1), ("R23", "2", "3", 1),
                   ("R05", "0", "5", -1), ("R34", "3", "4", -1), ("R45", "4", "5", -1),
@@ -248,7 +249,7 @@ def assur_pipeline(mech, S, P6):
     v["dRa"] = stab.share("A")
     v["dRb"] = stab.share("B")
     v["Gmax"] = stab.max_implement_weight
-    v["GS6max"] = stab.seed["GS6max"].value
+    v["GS6max"] = a.formula("GS6max")
     return v
 
 
@@ -462,7 +463,11 @@ def main(argv=None):
     peer.hitch(S0)
     t_cold_np = time.perf_counter() - t0
     t_cold_c, how_c = cold(lambda: assur_pipeline(hitch, S0, peer.LOAD["P6"]), dirs)
-    same_signs = hitch.analyze(S0[:2]).statics.seed_reactions() == signs
+    from assur.columns import column_signs
+    printed = column_signs(hitch)
+    same_signs = hitch.analyze(S0[:2]).statics.named_reactions() == \
+        {n: (i, j) for n, (i, j, _) in signs.items()} and \
+        all(printed.get(f"{n}{c}", 1) == sg for n, (_, _, sg) in signs.items() for c in "xy")
 
     print("assur benchmark — positions per second, assur vs a plain-numpy port of seed 003")
     print(f"  python {platform.python_version()}, numpy {np.__version__}, numba "
@@ -483,7 +488,7 @@ def main(argv=None):
     print(f"  seed003_numpy.PARAMS + LOAD == the parameters of examples.hitch_003(): "
           f"{'yes' if same else 'NO'}")
     print(f"  hitch_003 seed reaction names and printed signs == this benchmark's "
-          f"(R05, R34, R45 printed with sign −1, SEED_003_SIGN_NOTE): "
+          f"(R05, R34, R45 printed with sign −1, [[tables.signs]]): "
           f"{'yes' if same_signs else 'NO'}")
     print()
     print("start-up (cold first calls in this process, not part of the figures below)")
@@ -559,7 +564,7 @@ def main(argv=None):
     print("           a.statics.reaction(i, j) and |R| for R56 R07 R67 R23 R05 R34 R45 R03 R01, "
           ".actuator_force_from_reactions('S');")
     print("           a.stability.reaction('A'/'B'), .share('A'/'B'), .max_implement_weight, "
-          ".seed['GS6max'].value")
+          "a.formula('GS6max')")
     print("    numpy: seed003_numpy.pipeline — the seed's §2–§6 formulas as printed (§5.1–5.3 "
           "closed forms), + the 20 % limit")
     print("    for reference (not measured here): an independent plain-numpy implementation "

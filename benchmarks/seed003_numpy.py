@@ -25,7 +25,7 @@ both about the print, not departures from it:
 * §4 prints ``G56(S) := k·P·η·S_gc/IS6(S)``, the same formula as GS6; its table 4.1
   column G56 is k·P·η·S_gc/I56 (the capacity at the suspension axis), used here;
 * §5.2–5.3 give R05, R34, R45 (and so R43) with the opposite sign to their names
-  (``assur.statics.SEED_003_SIGN_NOTE``); they are kept as printed here, the
+  (the ``[[tables.signs]]`` note of ``hitch_003.toml``); they are kept as printed here, the
   comparison in ``run.py`` applies the documented sign.
 
 The printed §5 closed forms have removable singularities inside the stroke:

@@ -207,7 +207,7 @@ S Fgc Pgc G56 GS6 dGS65
 """
 
 # seed 003, Таблица 5.1 — joint reactions [N], as printed (R05, R34, R45 components with
-# the opposite sign to the seed's naming; see assur.statics.SEED_003_SIGN_NOTE)
+# the opposite sign to the seed's naming; see [[tables.signs]] in hitch_003.toml)
 T003_5_1 = """
 S R56x R56y R07x R07y R23x R23y R05x R05y R34x R34y R45x R45y R03x R03y R01x R01y R56 R07 R03 R05 R34 R23 R45 R01 Fgc
 0.420 45683 16228 -45683 11272 -3801 129558 -49391 47486 3708 -63715 3708 -63715 93 -65844 -3801 129558 48480 47053 65844 68516 63822 129614 63822 129614 129614

@@ -7,7 +7,7 @@ cylinders, loads or machine data get only the tables whose data exist.
 Symbols (``assur.report.tables``): the CSV columns carry the seed's symbols — the
 generic ``F_S``, ``p_S``, ``dGS6``, ``I56_ic``/``IS6_ic`` are renamed Fgc, Pgc, dGS65,
 Imp, lsp by the model file's ``[tables] symbols``. Reactions are assur's force of link i on link j; seed 003 prints R05, R34,
-R45 with the opposite sign (``mechanism.tables["reactions"]``, sign −1).
+R45 with the opposite sign (the model file's sign map, ``mechanism.tables["signs"]``).
 """
 
 import csv
@@ -22,6 +22,7 @@ import pandas as pd
 import pytest
 
 from assur import Mechanism, examples
+from assur.columns import column_signs, formulas_of, signs_of
 from assur.report import FORMATS, report_steps, seed_tables, write_report
 from assur.report import figures as report_figures
 from assur.report.html import write_html
@@ -121,9 +122,9 @@ def test_csv_table_5_1_reactions(report, analysis):
     """Seed 003, Таблица 5.1 [N]: every printed column; components of R05, R34, R45
     compared with the documented opposite sign, magnitudes and Fgc as printed."""
     c, u = read_csv(report["out"] / "table_5_1.csv")
-    signs = {name: sign for name, (i, j, sign) in
-             analysis.mechanism.tables["reactions"].items()}
-    assert {n for n, s in signs.items() if s < 0} == {"R05", "R34", "R45"}
+    signs = column_signs(analysis.mechanism)
+    assert {n for n, s in signs.items() if s < 0} == {"R05x", "R05y", "R34x", "R34y", "R45x",
+                                                      "R45y"}
     printed = table(T003_5_1)
     for col in printed:
         if col == "S":
@@ -131,12 +132,12 @@ def test_csv_table_5_1_reactions(report, analysis):
         if col == "Fgc":
             assert_printed(c["Fgc"], T003_5_1, col)
             continue
-        sign = signs[col[:3]] if col[-1] in "xy" else 1
+        sign = signs.get(col, 1)
         assert u[col] == "N"
         assert_printed(sign * c[col], T003_5_1, col)
     # the table itself marks the flipped columns and says why
     t51 = next(t for t in seed_tables(analysis) if t.id == "5.1")
-    assert {col.symbol for col in t51.columns if col.seed_sign < 0} == {
+    assert {col.symbol for col in t51.columns if col.printed_sign < 0} == {
         "R05x", "R05y", "R34x", "R34y", "R45x", "R45y"}
     assert any("opposite sign" in n["en"] for n in t51.notes)
 
@@ -229,7 +230,10 @@ def test_html_is_one_self_contained_file(report, analysis):
         assert f"Table {tab.id} — {tab.title_en}" in plain
     for note in analysis.mechanism.notes:
         assert note in plain
-    for flag in list(analysis.statics.seed_flags) + list(analysis.stability.flags):
+    notes = [m.note for m in signs_of(analysis.mechanism)]
+    flags = [x for f in formulas_of(analysis.mechanism) for x in f.flags]
+    assert len(notes) == 1 and len(flags) == 3
+    for flag in notes + flags:
         assert flag in plain
     assert "Warnings and notes" in plain
     assert len(p.imgs) >= 9 + 2  # the diagrams, the drawing, the animation player

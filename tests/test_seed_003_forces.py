@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from assur import examples
-from assur.statics import SEED_003_SIGN_NOTE
+from assur.columns import column_signs, signs_of
 
 from seed_tables import T003_4_1, T003_5_1, assert_printed, table
 
@@ -65,11 +65,15 @@ def test_every_link_is_in_equilibrium(analysis):
 
 
 def test_seed_sign_slip_is_flagged_and_seed_frame_matches_print(analysis):
+    """The model file's sign map names the six printed components and explains the
+    slip; ``to_frame(printed_signs=True)`` then matches the print."""
     st = analysis.statics
-    flags = st.seed_flags
-    assert len(flags) == 3 and all(SEED_003_SIGN_NOTE in f for f in flags)
-    assert {f.split(":")[0] for f in flags} == {"R05", "R34", "R45"}
-    printed = st.to_frame(seed_signs=True)
+    (m,) = signs_of(analysis.mechanism)
+    assert m.sign == -1 and "R05 + R34 − R65 = 0" in m.note
+    assert set(column_signs(analysis.mechanism)) == {"R05x", "R05y", "R34x", "R34y", "R45x",
+                                                     "R45y"}
+    assert st.named_reactions()["R05"] == ("0", "5")
+    printed = st.to_frame(printed_signs=True)
     ours = st.to_frame()
     for col in ["R05x", "R34y", "R45x", "R56x", "R01y"]:
         assert_printed(printed[col].to_numpy(), T003_5_1, col)

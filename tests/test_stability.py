@@ -16,7 +16,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import examples
-from assur.stability import Machine, axle_reactions, seed003_gs6max
+from assur.columns import formulas_of
+from assur.stability import Machine, axle_reactions
 
 from seed_tables import T003_6_1, assert_printed, table
 
@@ -63,14 +64,24 @@ def test_table_6_1_to_frame(seed003, xs6):
         assert_printed(f[c].to_numpy(), T003_6_1, c)
 
 
+def seed003_gs6max(xs6):
+    """Seed 003 §6 as printed: R_amin := 0.2·(P6 + P_мсха + P_гр),
+    GS6max(S) := (P_мсха·b + P_гр·(a + L) − R_amin)/XS6(S) [its label: N]."""
+    r_amin = 0.2 * (P6 + P_MSHA + P_GR)
+    return (P_MSHA * B + P_GR * (A + L) - r_amin) / xs6
+
+
 def test_table_6_1_gs6max_is_the_seeds_flagged_formula(xs6):
-    """Seed 003, table 6.1, GS6max [N] (printed to 1 N) from the seed's own formula
-    GS6max(S) = (P_мсха·b + P_гр·(a + L) − R_amin)/XS6(S), R_amin = 0.2·(P6 + P_мсха +
-    P_гр), returned with flags saying it subtracts a force from a moment."""
-    g = seed003_gs6max(P_MSHA, P_GR, P6, A, B, L, xs6)
-    assert_printed(g.value, T003_6_1, "GS6max")
-    assert any("force" in f and "moment" in f for f in g.flags)
-    assert any("max_implement_weight" in f for f in g.flags)
+    """Seed 003, table 6.1, GS6max [N] (printed to 1 N): the seed's own formula,
+    transcribed above, reproduces the print; the model file declares the same formula
+    as an extra column of table 6.1 (``[[tables.formulas]]``) with flags saying it
+    subtracts a force from a moment."""
+    assert_printed(seed003_gs6max(xs6), T003_6_1, "GS6max")
+    (f,) = formulas_of(examples.hitch_003())
+    assert (f.name, f.table, f.unit, f.scale) == ("GS6max", "6.1", "N", 1.0)
+    assert f.names == {"P_mcxa", "P_gr", "P6", "a", "b", "L"} and f.points == {"S6"}
+    assert any("force" in x and "moment" in x for x in f.flags)
+    assert any("max_implement_weight" in x for x in f.flags)
 
 
 def test_table_6_1_correct_limit_beside_the_seeds(seed003, xs6):
@@ -80,7 +91,7 @@ def test_table_6_1_correct_limit_beside_the_seeds(seed003, xs6):
     g_ok = seed003.max_implement_weight
     m0, w0 = P_MSHA * B + P_GR * (A + L), P_MSHA + P_GR
     np.testing.assert_allclose(g_ok, (m0 - 0.2 * L * w0) / (xs6 + 0.2 * L), rtol=1e-12)
-    g_seed = seed003_gs6max(P_MSHA, P_GR, P6, A, B, L, xs6).value
+    g_seed = seed003_gs6max(xs6)
     assert np.all(np.abs(g_ok - g_seed) > 10_000.0)            # 31075…34679 vs 49835…57569 N
 
     at_ok = axle_reactions(seed003_machine(), g_ok, xs6)
@@ -260,16 +271,19 @@ def test_inputs_and_picks_validated(seed003):
 def test_table_6_1_from_the_model_analysis():
     """Seed 003 table 6.1 through ``examples.hitch_003().analyze(...)``: the model
     carries its machine (axles, tractor, ballast) and the implement P6 at S6; the
-    analysis gives the correct limit and, beside it, the seed's GS6max flagged."""
+    analysis gives the correct limit and, beside it, the seed's GS6max (the model's
+    extra formula), flagged."""
     a = examples.hitch_003().analyze(examples.hitch_003_range())
     st = a.stability
     assert_printed(st.reaction("A"), T003_6_1, "Ra")
     assert_printed(st.reaction("B"), T003_6_1, "Rb")
     assert_printed(st.share("A"), T003_6_1, "dRa")
     assert_printed(st.share("B"), T003_6_1, "dRb")
-    assert_printed(st.seed["GS6max"].value, T003_6_1, "GS6max")
-    assert st.flags and "subtracts a force" in st.flags[0]
-    assert np.all(st.max_implement_weight < st.seed["GS6max"].value - 1e4)
+    gs6max = a.formula("GS6max")
+    assert_printed(gs6max, T003_6_1, "GS6max")
+    (f,) = formulas_of(a.mechanism)
+    assert "subtracts a force" in f.flags[0]
+    assert np.all(st.max_implement_weight < gs6max - 1e4)
 
 
 def test_machine_follows_the_parameters():

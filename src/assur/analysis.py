@@ -37,6 +37,21 @@ class Analysis:
     def mechanism(self):
         return self.kinematics.mechanism
 
+    def formula(self, name):
+        """Values of the model's extra formula ``name`` over the positions [SI]
+        (:class:`assur.columns.Formula`, ``[[tables.formulas]]``).
+
+        Raises
+        ------
+        KeyError
+            If the model declares no formula of that name (the message lists them).
+        """
+        from .columns import formulas_of
+        found = {f.name: f for f in formulas_of(self.mechanism)}
+        if name not in found:
+            raise KeyError(f"no formula {name!r}; the model declares: {sorted(found)}")
+        return found[name].evaluate(self.kinematics)
+
     def cylinder(self, name=None):
         """The result of one cylinder group (the only one when ``name`` is None)."""
         if name is None:
@@ -46,11 +61,21 @@ class Analysis:
         return self.cylinders[name]
 
 
-def analyze(mech, q, params=None, qdot=None, qddot=None, g=_statics.G_SEEDS, **solve_kw):
+def gravity_of(mech) -> float:
+    """The acceleration of gravity of a mechanism [m/s²]: the model's own
+    (:attr:`Mechanism.gravity`, ``[model] gravity`` of a model file), else
+    :data:`assur.statics.GRAVITY` (9.81)."""
+    return float(_statics.GRAVITY if mech.gravity is None else mech.gravity)
+
+
+def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     """Solve positions and analogs, forces, reactions, cylinders and stability.
 
-    Parameters are those of :meth:`Mechanism.solve` and :func:`assur.statics.solve`.
+    Parameters are those of :meth:`Mechanism.solve` and :func:`assur.statics.solve`;
+    ``g`` [m/s²] defaults to the model's gravity (:func:`gravity_of`).
     """
+    if g is None:
+        g = gravity_of(mech)
     kin = mech.solve(q, params=params, **solve_kw)
     st = _statics.solve(kin, qdot=qdot, qddot=qddot, g=g)
     cyl = {c.name: CylinderResult(kin, st, c) for c in kin.mechanism.cylinders}

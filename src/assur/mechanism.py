@@ -83,7 +83,7 @@ class Mechanism:
                  groups: Iterable = (), links: Iterable[Link] = (),
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
-                 machine=None):
+                 machine=None, gravity: float | None = None):
         self.name = name
         self.title = title or name
         self.coordinates = tuple(coordinates)
@@ -105,6 +105,12 @@ class Mechanism:
         self.cylinders = tuple(cylinders)
         #: machine data for stability (:class:`assur.stability.Machine`) or None
         self.machine = machine
+        #: acceleration of gravity for the masses' weights [m/s²] (None: the default
+        #: :data:`assur.statics.GRAVITY`)
+        self.gravity = gravity
+        if gravity is not None and not (math.isfinite(float(gravity)) and float(gravity) > 0):
+            raise ModelError(f"mechanism {name!r}: gravity must be a positive number [m/s²], "
+                             f"got {gravity!r}")
         self._validate()
 
     # ---- building (each returns a new mechanism) -------------------------------
@@ -112,7 +118,8 @@ class Mechanism:
         d = dict(name=self.name, coordinates=self.coordinates, params=self.params,
                  title=self.title, groups=self.groups, links=self.links,
                  distances=self.distances, tables=self.tables, notes=self.notes,
-                 loads=self.loads, cylinders=self.cylinders, machine=self.machine)
+                 loads=self.loads, cylinders=self.cylinders, machine=self.machine,
+                 gravity=self.gravity)
         d.update(kw)
         return Mechanism(**d)
 
@@ -185,12 +192,12 @@ class Mechanism:
         from .loads import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
-    def with_machine(self, machine, point, weight, seed_gs6max=None, refs=None) -> "Mechanism":
+    def with_machine(self, machine, point, weight, refs=None) -> "Mechanism":
         """Carry the implement (weight [N] at ``point``) on a machine for the stability
         analysis (:class:`assur.stability.Machine`, :class:`assur.stability.Carrying`);
         ``refs`` ties the machine's positions and weights to parameters."""
         from .stability import Carrying
-        return self._with(machine=Carrying(machine, point, weight, seed_gs6max, refs))
+        return self._with(machine=Carrying(machine, point, weight, refs))
 
     def with_params(self, **values) -> "Mechanism":
         """Return a copy with some parameters replaced (scalars or arrays over designs)."""
@@ -201,6 +208,10 @@ class Mechanism:
         p = dict(self.params)
         p.update(values)
         return self._with(params=p)
+
+    def with_gravity(self, g) -> "Mechanism":
+        """Return a copy whose masses weigh m·g, g [m/s²]."""
+        return self._with(gravity=float(g))
 
     def with_tables(self, **tables) -> "Mechanism":
         t = dict(self.tables)
@@ -358,8 +369,6 @@ class Mechanism:
             for t in self.machine.ref_names():
                 ref_ok("the machine's data", t)
             ref_ok("the machine's implement weight", self.machine.weight)
-            for k, v in (self.machine.seed_gs6max or {}).items():
-                ref_ok(f"seed GS6max {k}", v)
         seen = set()
         for c in self.cylinders:
             if not isinstance(c, Cylinder):

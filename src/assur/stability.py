@@ -63,19 +63,20 @@ the steered axle) is returned as computed.
 
 Seed 001, lab 1, eqs. (16) and (18) are this limit for one geometry (see
 ``tests/test_stability.py``). Seed 003 §6 prints a dimensionally inconsistent
-limit; :func:`seed003_gs6max` reproduces it with flags, never the main result.
+limit (GS6max); its model file reproduces it as a flagged extra column of table
+6.1 (``[[tables.formulas]]``, :mod:`assur.columns`), never the main result.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping, NamedTuple, Sequence
+from typing import Mapping, Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["Machine", "StabilityResult", "axle_reactions", "FlaggedValue", "seed003_gs6max"]
+__all__ = ["Machine", "StabilityResult", "axle_reactions", "Carrying"]
 
 
 def _finite(value, what: str) -> float:
@@ -400,88 +401,6 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
         max_implement_weight_without_counterweights=g_bare)
 
 
-class FlaggedValue(NamedTuple):
-    """A value reproduced from a seed together with the seed's slips.
-
-    Attributes
-    ----------
-    value : ndarray
-        The value as the seed computes it (units of the formula).
-    flags : tuple of str
-        Explanations of what is wrong with the formula, for reports.
-    """
-
-    value: np.ndarray
-    flags: tuple[str, ...]
-
-
-SEED003_GS6MAX_FLAGS = (
-    "seed 003 §6: GS6max = (P_мсха·b + P_гр·(a + L) − R_amin)/XS6 subtracts a force R_amin "
-    "[N] from a moment P_мсха·b + P_гр·(a + L) [N·m]; the result is not a weight.",
-    "seed 003 §6: R_amin = 0.2·(P6 + P_мсха + P_гр) uses the current implement weight P6 "
-    "instead of the unknown limit weight, so even (… − R_amin·L)/XS6 would not keep the "
-    "20 % rule at the limit.",
-    "the dimensionally correct limit is (P_мсха·b + P_гр·(a + L) − 0.2·L·(P_мсха + P_гр))"
-    "/(XS6 + 0.2·L): StabilityResult.max_implement_weight.",
-)
-
-
-def seed003_gs6max(tractor_weight: float, counterweight: float, implement_weight: float,
-                   a: float, b: float, wheelbase: float,
-                   implement_x: ArrayLike) -> FlaggedValue:
-    """Seed 003's printed "maximum lift capacity" GS6max(S), reproduced as printed.
-
-    **Dimensionally inconsistent** (see ``flags``): kept only to reproduce the
-    seed's table 6.1 and to show it beside the correct limit
-    (:func:`axle_reactions`, ``max_implement_weight``).
-
-    Parameters
-    ----------
-    tractor_weight : float
-        P_мсха, weight of the mini-tractor at ``x = −b`` [N].
-    counterweight : float
-        P_гр, front ballast at ``x = −(a + L)`` [N].
-    implement_weight : float
-        P6, the current implement weight, used by the seed only in R_amin [N].
-    a : float
-        Overhang of the ballast ahead of the front axle [m].
-    b : float
-        Distance of the tractor's centre of mass ahead of the rear axle [m].
-    wheelbase : float
-        L, distance between the axles [m].
-    implement_x : array_like
-        XS6(S), x of the implement's centre of mass behind the rear axle [m].
-
-    Returns
-    -------
-    FlaggedValue
-        ``value``: GS6max as printed [the seed labels it N]; ``flags``: the slips.
-
-    Notes
-    -----
-    Seed 003 §6 (003_b1551261b108abd1.txt, before table 6.1)::
-
-        R_amin := 0.2·(P6 + P_мсха + P_гр)
-        GS6max(S) := (P_мсха·b + P_гр·(a + L) − R_amin)/XS6(S)
-
-    Examples
-    --------
-    >>> r = seed003_gs6max(56000.0, 8000.0, 27500.0, 0.6, 1.62, 2.96, 1.992)
-    >>> float(r.value.round(0)), len(r.flags)
-    (50653.0, 3)
-    """
-    p_m = _finite(tractor_weight, "tractor_weight [N]")
-    p_g = _finite(counterweight, "counterweight [N]")
-    p_6 = _finite(implement_weight, "implement_weight [N]")
-    a = _finite(a, "a [m]")
-    b = _finite(b, "b [m]")
-    L = _finite(wheelbase, "wheelbase [m]")
-    x = np.asarray(implement_x, dtype=float)
-    r_amin = 0.2 * (p_6 + p_m + p_g)                      # seed 003 §6, R_amin
-    value = (p_m * b + p_g * (a + L) - r_amin) / x        # seed 003 §6, GS6max (as printed)
-    return FlaggedValue(value, SEED003_GS6MAX_FLAGS)
-
-
 @dataclass(frozen=True)
 class Carrying:
     """A :class:`Machine` carrying the mechanism's implement.
@@ -494,16 +413,19 @@ class Carrying:
         seed 003 S6) — its x over the positions comes from the kinematics.
     weight : float or str
         The implement's weight [N], a number or a model parameter (seed 003 P6).
-    seed_gs6max : mapping, optional
-        Keyword references for :func:`seed003_gs6max` (``tractor_weight``,
-        ``counterweight``, ``a``, ``b``, ``wheelbase``) when a model reproduces seed
-        003's printed (flagged) formula beside the correct limit.
+    refs : mapping, optional
+        How the machine's numbers follow the model parameters (below).
+
+    Notes
+    -----
+    A value a seed computes beside the limit (seed 003's printed GS6max) is not
+    the machine's business: the model declares it as an extra formula column
+    (:class:`assur.columns.Formula`).
     """
 
     machine: Machine
     point: str
     weight: object
-    seed_gs6max: Mapping[str, object] | None = None
     #: how the machine's numbers follow the model parameters: ``{"axles": {name: terms},
     #: "weights": ((name, P terms, x terms), …), "counterweights": (…)}``, each value a
     #: sum of ``(sign, number or parameter name)`` terms; None: the numbers as given
@@ -537,9 +459,9 @@ class Carrying:
                        min_share=self.machine.min_share)
 
     def evaluate(self, kin):
-        """Axle reactions and limits over the kinematics' positions; a
-        :class:`StabilityResult` with ``seed`` values attached when declared. With
-        parameters that vary over a batch of designs, each design gets its machine."""
+        """Axle reactions and limits over the kinematics' positions, a
+        :class:`StabilityResult`. With parameters that vary over a batch of designs,
+        each design gets its machine."""
         mech = kin.mechanism
 
         def val(ref):
@@ -557,22 +479,9 @@ class Carrying:
                        [d if np.size(mech.params[r]) > 1 else 0] for r in names}
                 w = np.broadcast_to(val(self.weight), kin.shape)[d]
                 rows.append(axle_reactions(self.machine_for(pd_), w, kin.x(self.point)[d]))
-            res = _stack_results(rows)
-        else:
-            pd_ = {r: float(np.atleast_1d(np.asarray(mech.params[r], float))[0]) for r in names}
-            res = axle_reactions(self.machine_for(pd_), val(self.weight), kin.x(self.point))
-        seed = {}
-        if self.seed_gs6max is not None:
-            # per design (the seed formula takes scalars); designs are few here
-            args = {k: np.broadcast_to(val(v), kin.shape) for k, v in self.seed_gs6max.items()}
-            w = np.broadcast_to(val(self.weight), kin.shape)
-            x = kin.x(self.point)
-            rows = [seed003_gs6max(implement_weight=float(w[i].flat[0]), implement_x=x[i],
-                                   **{k: float(v[i].flat[0]) for k, v in args.items()})
-                    for i in np.ndindex(kin.shape[:-1])]
-            seed["GS6max"] = FlaggedValue(np.stack([r.value for r in rows]).reshape(kin.shape),
-                                          SEED003_GS6MAX_FLAGS)
-        return _WithSeed(res, seed)
+            return _stack_results(rows)
+        pd_ = {r: float(np.atleast_1d(np.asarray(mech.params[r], float))[0]) for r in names}
+        return axle_reactions(self.machine_for(pd_), val(self.weight), kin.x(self.point))
 
 
 def _stack_results(rows):
@@ -589,19 +498,3 @@ def _stack_results(rows):
         else:
             kw[f.name] = vals[0]
     return dataclasses.replace(first, **kw)
-
-
-class _WithSeed:
-    """A StabilityResult with the seed's own (flagged) values beside it."""
-
-    def __init__(self, result, seed):
-        self._r = result
-        #: {name: FlaggedValue} of seed formulas reproduced as printed
-        self.seed = seed
-
-    def __getattr__(self, name):
-        return getattr(self._r, name)
-
-    @property
-    def flags(self):
-        return tuple(f for v in self.seed.values() for f in v.flags)

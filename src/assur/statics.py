@@ -15,9 +15,10 @@ Two routes to the same forces (DESIGN.md §4):
 
 Convention: ``reaction(i, j)`` is the force of link ``i`` on link ``j`` at their
 joint [N] (so ``reaction(j, i) = −reaction(i, j)``); the frame is link ``"0"``.
-Seed 003 prints the components of R05, R34 and R45 with the opposite sign to that
-naming (two slips in its §5.2–5.3 that cancel in the magnitudes; BRIEF.md) — see
-:data:`SEED_003_SIGN_NOTE`.
+A model may name reactions as its source does and declare columns that source
+prints with the opposite sign (seed 003 R05, R34, R45; BRIEF.md): that is data of
+the model (``tables["reactions"]``, ``tables["signs"]``, :mod:`assur.columns`),
+explained in its own file.
 
 Inertia (d'Alembert) is included when coordinate rates q̇, q̈ are given: the
 acceleration of a centre of mass is ``a = J·q̈ + q̇ᵀ·H·q̇`` from the analogs.
@@ -30,14 +31,10 @@ import numpy as np
 from .errors import AssemblyError, ModelError
 from .loads import Couple, Mass, PointForce, Spring, Weight
 
-#: standard gravity used by the seeds [m/s²]
-G_SEEDS = 9.81
-
-SEED_003_SIGN_NOTE = (
-    "seed 003 §5.2–5.3 writes the balance of rocker 5 as R05 + R34 − R65 = 0 although R65 "
-    "is already the force of 6 on 5, and repeats the slip with R43 := −R34: its printed x, y "
-    "components of R05, R34 and R45 have the opposite sign to its own naming (force of i on "
-    "j); their magnitudes are right. assur reports force of i on j throughout.")
+#: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
+#: value engineering worksheets use (all the seeds do). A model may set its own
+#: (``[model] gravity = "9.80665 m/s^2"``), a call its own (``analyze(..., g=…)``).
+GRAVITY = 9.81
 
 
 class Statics:
@@ -51,7 +48,8 @@ class Statics:
     joints : list of (point, i, j)
         Every joint with a reaction: the force of link i on link j at ``point``.
     flags : list of str
-        Notes for reports (e.g. the seed's sign slip).
+        Notes for reports (a source's printed signs are the model's sign maps,
+        ``tables["signs"]``).
     """
 
     def __init__(self, kin, forces_vw, joints, actuator_rx, residual, flags):
@@ -128,46 +126,38 @@ class Statics:
         f, mo = self._residual
         return self._o(f), self._o(mo)
 
-    def seed_reactions(self):
-        """The mechanism's seed names of reactions: ``{name: (i, j, printed_sign)}``
-        (``tables["reactions"]``), e.g. seed 003 R05 = force of 0 on 5 printed with
-        sign −1."""
-        return dict(self.kinematics.mechanism.tables.get("reactions", {}))
+    def named_reactions(self):
+        """The reactions the mechanism names (``tables["reactions"]``):
+        ``{name: (i, j)}``, the force of link i on link j, e.g. seed 003
+        ``R05 = ("0", "5")``."""
+        return {name: (str(v[0]), str(v[1]))
+                for name, v in self.kinematics.mechanism.tables.get("reactions", {}).items()}
 
-    @property
-    def seed_flags(self):
-        """Notes on reactions the seed prints with the opposite sign to its naming."""
-        out = []
-        for name, (i, j, sign) in self.seed_reactions().items():
-            if sign < 0:
-                out.append(f"{name}: the seed prints the components of the force of {j} on "
-                           f"{i} (opposite sign to its name); assur gives the force of {i} on "
-                           f"{j}. {SEED_003_SIGN_NOTE if name in ('R05', 'R34', 'R45') else ''}"
-                           .strip())
-        return out
-
-    def to_frame(self, seed_signs=False):
+    def to_frame(self, printed_signs=False):
         """pandas DataFrame of the reactions and actuator forces.
 
         Columns ``R{i}{j}x``, ``R{i}{j}y``, ``R{i}{j}`` [N] for every joint (force of i on
-        j); where the mechanism names a reaction as its seed does (``tables["reactions"]``)
-        that name is used. With ``seed_signs=True`` the components are given with the
-        sign the seed prints (see :attr:`seed_flags`). ``F_{coordinate}`` is the actuator
-        force [N] by virtual work.
+        j); where the mechanism names a reaction (``tables["reactions"]``) that name is
+        used. With ``printed_signs=True`` every column a sign map of the mechanism names
+        (``tables["signs"]``, :func:`assur.columns.column_signs`) is multiplied by its
+        sign, as its source prints it. ``F_{coordinate}`` is the actuator force [N] by
+        virtual work.
         """
         import pandas as pd
 
+        from .columns import column_signs
+
         kin = self.kinematics
+        signs = column_signs(kin.mechanism) if printed_signs else {}
         cols = {c: kin.q(c).ravel() for c in kin.coordinates}
-        named = {(i, j): (name, sign) for name, (i, j, sign) in self.seed_reactions().items()}
+        named = {ij: name for name, ij in self.named_reactions().items()}
         for (i, j), (pt, fx, fy, mz) in self._joints.items():
-            name, sign = named.get((i, j), (f"R{i}{j}", 1))
-            sign = sign if seed_signs else 1
-            cols[f"{name}x"] = sign * self._o(fx).ravel()
-            cols[f"{name}y"] = sign * self._o(fy).ravel()
-            cols[name] = np.hypot(self._o(fx), self._o(fy)).ravel()
+            name = named.get((str(i), str(j)), f"R{i}{j}")
+            cols[f"{name}x"] = signs.get(f"{name}x", 1) * self._o(fx).ravel()
+            cols[f"{name}y"] = signs.get(f"{name}y", 1) * self._o(fy).ravel()
+            cols[name] = signs.get(name, 1) * np.hypot(self._o(fx), self._o(fy)).ravel()
         for c in kin.coordinates:
-            cols[f"F_{c}"] = self.actuator_force(c).ravel()
+            cols[f"F_{c}"] = signs.get(f"F_{c}", 1) * self.actuator_force(c).ravel()
         return pd.DataFrame(cols)
 
 
@@ -187,7 +177,7 @@ def _values(kin):
     return val
 
 
-def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
+def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
     """The applied loads as point forces and link moments, each with its link.
 
     Returns
@@ -247,7 +237,7 @@ def applied_loads(kin, qdot=None, qddot=None, g=G_SEEDS):
     return forces, couples, springs
 
 
-def virtual_work_forces(kin, qdot=None, qddot=None, g=G_SEEDS):
+def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):
     """Actuator forces by virtual work, ``{coordinate: F}`` with F of shape (m, n).
 
     ``F_j = −Q_j``, ``Q_j = Σ F·∂r/∂q_j + Σ M·∂φ/∂q_j`` (spring forces enter as the
@@ -281,7 +271,7 @@ def _rate_block(rate, kin, i0, i1):
     return r[..., i0:i1, :] if r.ndim >= 2 and r.shape[-2] == kin.n else r
 
 
-def solve(kin, qdot=None, qddot=None, g=G_SEEDS):
+def solve(kin, qdot=None, qddot=None, g=GRAVITY):
     """Actuator forces (both routes), joint reactions and equilibrium residuals.
 
     Very large ranges are processed in blocks of :data:`BLOCK` positions (the same

@@ -43,6 +43,7 @@ import numpy as np
 from ..mechanism import Mechanism
 from ._build import Builder
 from ._errors import ModelFileError, key_path
+from ._extends import resolve as resolve_extends
 from ._lines import line_index
 
 ModelFileError.__module__ = __name__  # shown as assur.io.ModelFileError
@@ -117,6 +118,9 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
         The model file's content.
     name : str
         How errors name the file (default ``"<string>"``).
+    source : Path, optional
+        The file the text was read from: an ``extends`` path is relative to its
+        directory (without it, to the current directory).
 
     Returns
     -------
@@ -127,13 +131,18 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     ModelFileError
         For any problem in the text: TOML syntax, structure, units, references,
         a mechanism that its groups cannot define, a ``[[solve]]`` condition
-        without a root (or with several) in its bracket.
+        without a root (or with several) in its bracket; with ``extends``, a
+        missing base file or a cycle, and any problem of a key a base file gives
+        (located in that file).
     """
     if not isinstance(text, str):
         raise TypeError(f"loads() takes the file's text as str, got {type(text).__name__}")
     text = text.removeprefix("\ufeff")
     data = _parse_toml(text, name)
-    builder = Builder(name, data, line_index(text))
+    index = line_index(text)
+    if "extends" in data:
+        data, index = resolve_extends(data, index, name, source, _parse_toml)
+    builder = Builder(name, data, index)
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source)
 

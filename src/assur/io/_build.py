@@ -31,7 +31,7 @@ from ..stability import Machine
 from . import _schema as S
 from ._errors import ModelFileError, key_path
 from ._lines import line_of
-from ._units import ANGLE, FORCE, INERTIA, LENGTH, MASS, MOMENT, NUMBER, PRESSURE, \
+from ._units import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, MOMENT, NUMBER, PRESSURE, \
     STIFFNESS, UnitError, is_name, parse, to_si, unit_kind
 
 # constraints on values beyond their kind: (test, words)
@@ -80,8 +80,6 @@ _CYLINDER_VALUES = {"bore": (LENGTH, "positive"), "rod": (LENGTH, "nonneg"),
                     "count": (NUMBER, "positive"), "eta_mech": (NUMBER, "fraction"),
                     "eta_hyd": (NUMBER, "fraction"), "p_relief": (PRESSURE, "nonneg"),
                     "dp_throttle": (PRESSURE, "nonneg"), "dp_line": (PRESSURE, "nonneg")}
-_SEED_GS6MAX = {"tractor_weight": FORCE, "counterweight": FORCE, "a": LENGTH, "b": LENGTH,
-                "wheelbase": LENGTH}
 
 
 def _unreadable(err, expected, found):
@@ -112,7 +110,10 @@ class Builder:
 
     def error(self, path, problem) -> ModelFileError:
         path = tuple(path)
-        return ModelFileError(self.file, self.line(path), key_path(path), problem)
+        line = self.line(path)
+        # a key that a base file gave (``extends``) is located in that file
+        file = getattr(line, "file", None) or self.file
+        return ModelFileError(file, int(line), key_path(path), problem)
 
     # ---- pass 0: structure ------------------------------------------------------------
     def validate(self):
@@ -237,6 +238,7 @@ class Builder:
                                                               f"twice")
             seen[c] = j
         self.params_raw = {}
+        self._uses_gravity = "gravity" in sp.model.model_fields_set
         for name, v in sp.params.items():
             path = ("params", name)
             if not is_name(name):
@@ -255,6 +257,8 @@ class Builder:
                                        f'such as "0.48 m"), found {S.show(v)}: a parameter '
                                        f"cannot refer to another")
             self.params_raw[name] = p
+        if self._uses_gravity:
+            self.value(("model", "gravity"), sp.model.gravity, ACCELERATION, "positive")
         # the kind of each coordinate, from the input groups that it drives
         for i, g in enumerate(self.groups):
             if g.type in _GROUP_COORD:
@@ -289,10 +293,6 @@ class Builder:
                     self.terms(("machine", part, k, "x"), w.x, LENGTH)
             self.value(("machine", "min_share"), m.min_share, NUMBER, "share")
             self.value(("machine", "implement", "weight"), m.implement.weight, FORCE, "nonneg")
-            if m.seed_gs6max is not None:
-                for field, kind in _SEED_GS6MAX.items():
-                    self.value(("machine", "seed_gs6max", field),
-                               getattr(m.seed_gs6max, field), kind)
         for c, r in sp.range.items():
             if c not in self.coords:
                 raise self.error(("range", c), f'unknown coordinate "{c}": expected one of the '
@@ -470,6 +470,10 @@ class Builder:
             mech = self.machine(mech, points)
         if sp.tables is not None:
             mech = self.tables(mech, points, bodies)
+            mech = self.extra_columns(mech)
+        if self._uses_gravity:
+            g = self.number(("model", "gravity"))
+            mech = self.guarded(("model", "gravity"), lambda: mech.with_gravity(g))
         return mech
 
     def terms(self, path, v, kind):
@@ -525,9 +529,6 @@ class Builder:
                                                    weights=items("weights"),
                                                    counterweights=items("counterweights"),
                                                    **kw))
-        seed = None
-        if m.seed_gs6max is not None:
-            seed = {f: self.resolved[mp + ("seed_gs6max", f)] for f in _SEED_GS6MAX}
         weight = self.resolved[mp + ("implement", "weight")]
         refs = {"axles": {a: self.refs(mp + ("axles", a)) for a in m.axles}}
         for part in ("weights", "counterweights"):
@@ -535,7 +536,7 @@ class Builder:
                                 self.refs(mp + (part, k, "x")))
                                for k, w in enumerate(getattr(m, part)))
         return self.guarded(mp, lambda: mech.with_machine(machine, m.implement.point, weight,
-                                                          seed_gs6max=seed, refs=refs))
+                                                          refs=refs))
 
     def tables(self, mech, points, bodies):
         t = self.spec.tables
@@ -556,7 +557,7 @@ class Builder:
                 self.point(tp + ("transmissions", k), p, points)
             out["transmissions"] = list(t.transmissions)
         if t.reactions is not None:
-            for name, (i, j, sign) in t.reactions.items():
+            for name, (i, j) in t.reactions.items():
                 for k, b in enumerate((i, j)):
                     if b not in bodies:
                         raise self.error(tp + ("reactions", name, k),
@@ -567,6 +568,53 @@ class Builder:
         if t.symbols is not None:
             out["symbols"] = dict(t.symbols)
         return mech.with_tables(**out)
+
+    def extra_columns(self, mech):
+        """``[[tables.formulas]]`` and ``[[tables.signs]]``: :mod:`assur.columns`."""
+        from ..columns import Formula, FormulaError, SignMap
+        from ..report.tables import TABLE_IDS
+        t = self.spec.tables
+        tp = ("tables",)
+        out = {}
+        if t.formulas is not None:
+            formulas, seen = [], {}
+            for k, f in enumerate(t.formulas):
+                fp = tp + ("formulas", k)
+                if f.name in seen:
+                    raise self.error(fp + ("name",), f'the formula name "{f.name}" is already '
+                                                     f"used by tables.formulas[{seen[f.name]}]")
+                seen[f.name] = k
+                if f.table is not None and f.table not in TABLE_IDS:
+                    raise self.error(fp + ("table",), f"expected the id of a table "
+                                                      f"({', '.join(TABLE_IDS)}), found "
+                                                      f"{S.show(f.table)}"
+                                                      f"{S.did_you_mean(f.table, TABLE_IDS)}")
+                scale = self.display_scale(fp + ("unit",), f.unit)
+                try:
+                    formula = Formula(f.name, f.expr, unit=f.unit, scale=scale, table=f.table,
+                                      label=f.label, flags=tuple(f.flags))
+                    formula.check(mech)
+                except FormulaError as e:
+                    raise self.error(fp + ("expr",), str(e)) from None
+                formulas.append(formula)
+            out["formulas"] = tuple(formulas)
+        if t.signs is not None:
+            out["signs"] = tuple(SignMap(tuple(m.columns), m.sign, m.note) for m in t.signs)
+        return mech.with_tables(**out) if out else mech
+
+    def display_scale(self, path, unit):
+        """SI value of one ``unit`` (``"N"``, ``"kN"``, ``"deg"``, ``"-"``) a column is
+        shown in."""
+        if unit.strip() in ("-", ""):
+            return 1.0
+        try:
+            raw = parse(f"1 {unit}")
+            if isinstance(raw, str):
+                raise UnitError("")
+            return float(to_si(raw, None))
+        except UnitError as e:
+            raise self.error(path, _unreadable(e, 'a unit (e.g. "N", "kN", "deg", "-")',
+                                               unit)) from None
 
     # ---- pass 4: design conditions and the range ------------------------------------------
     def quantities(self, mech):
@@ -605,8 +653,9 @@ class Builder:
                 target = self.params[target]
             at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
             line = self.line(sp)
+            file = getattr(line, "file", None) or self.file
             conds.append(Condition(s.unknown, tuple(bracket), at, s.quantity, float(target),
-                                   source=f"{self.file}:{line}"))
+                                   source=f"{file}:{int(line)}"))
         return conds
 
     def bracket_value(self, path, v, unknown):

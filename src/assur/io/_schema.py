@@ -46,8 +46,8 @@ def _branch(v):
 
 def _sign(v):
     if isinstance(v, bool) or not isinstance(v, int) or v not in (1, -1):
-        raise PydanticCustomError("sign", "expected 1 or -1 (the sign of the printed "
-                                          "components relative to the force of i on j)")
+        raise PydanticCustomError("sign", "expected 1 or -1 (the printed columns are sign × "
+                                          "assur's values)")
     return v
 
 
@@ -81,6 +81,7 @@ class ModelSection(_Table):
     title: Optional[StrictStr] = None
     coordinates: Annotated[list[Name], Field(min_length=1)]
     notes: list[StrictStr] = []
+    gravity: Value = None
 
 
 class RangeSpec(_Table):
@@ -275,14 +276,6 @@ class ImplementSpec(_Table):
     weight: Value
 
 
-class SeedGS6maxSpec(_Table):
-    tractor_weight: Value
-    counterweight: Value
-    a: Value
-    b: Value
-    wheelbase: Value
-
-
 class MachineSpec(_Table):
     axles: dict[str, Terms]
     steered: Name
@@ -290,16 +283,35 @@ class MachineSpec(_Table):
     counterweights: list[WeightItem] = []
     min_share: Value = 0.2
     implement: ImplementSpec
-    seed_gs6max: Optional[SeedGS6maxSpec] = None
 
 
 # ---- [tables], [[solve]], the file ---------------------------------------------------
+class FormulaSpec(_Table):
+    """An extra column computed by an expression (:class:`assur.columns.Formula`)."""
+    name: Name
+    expr: StrictStr
+    unit: StrictStr = "-"
+    table: Optional[StrictStr] = None
+    label: Optional[StrictStr] = None
+    flags: list[StrictStr] = []
+
+
+class SignSpec(_Table):
+    """Columns printed with a sign, and why (:class:`assur.columns.SignMap`)."""
+    columns: Annotated[list[Name], Field(min_length=1)]
+    sign: Sign
+    note: StrictStr = ""
+
+
 class TablesSpec(_Table):
     ratios: list[tuple[Name, Name]] = None
     transmissions: list[Name] = None
-    reactions: dict[str, tuple[Name, Name, Sign]] = None
-    #: report column symbol → the seed's symbol (e.g. F_S = "Fgc")
+    #: a name of the reaction = [i, j]: the force of link i on link j
+    reactions: dict[str, tuple[Name, Name]] = None
+    #: report column symbol → the model's symbol (e.g. F_S = "Fgc")
     symbols: dict[str, Name] = None
+    formulas: list[FormulaSpec] = None
+    signs: list[SignSpec] = None
 
 
 class SolveSpec(_Table):

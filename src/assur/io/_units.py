@@ -49,6 +49,9 @@ NUMBER = Kind("number", "a plain number", "", "0.84")
 
 KINDS = {k.name: k for k in (LENGTH, ANGLE, FORCE, PRESSURE, MASS, MOMENT, STIFFNESS, INERTIA,
                              NUMBER)}
+#: the acceleration of gravity ([model] gravity)
+ACCELERATION = Kind("acceleration", "an acceleration", "m/s**2", '"9.81 m/s^2"')
+KINDS[ACCELERATION.name] = ACCELERATION
 
 
 @lru_cache(maxsize=1)

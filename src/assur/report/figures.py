@@ -213,7 +213,7 @@ def pressure(analysis, lang="en", design=None):
 def _reactions(v):
     """[(name, i, j)] of every joint, seed names first (as table 5.1)."""
     st = v.a.statics
-    named = {(str(i), str(j)): name for name, (i, j, _) in st.seed_reactions().items()}
+    named = {(i, j): name for name, (i, j) in st.named_reactions().items()}
     out, done = [], set()
     for (i, j), name in list(named.items()) + [((i, j), f"R{i}{j}") for _, i, j in st.joints]:
         if frozenset((i, j)) not in done:

@@ -76,9 +76,16 @@ def parameter_units(mech) -> dict:
     carry = mech.machine
     if carry is not None:
         put(getattr(carry, "weight", None), "N")
-        seed = getattr(carry, "seed_gs6max", None) or {}
-        for k, ref in seed.items():
-            put(ref, "N" if k in ("tractor_weight", "counterweight") else "m")
+        refs = getattr(carry, "refs", None) or {}
+        for terms in refs.get("axles", {}).values():
+            for _, r in terms:
+                put(r, "m")
+        for part in ("weights", "counterweights"):
+            for _, p_terms, x_terms in refs.get(part, ()):
+                for _, r in p_terms:
+                    put(r, "N")
+                for _, r in x_terms:
+                    put(r, "m")
     return {name: units.get(name, "") for name in mech.params}
 
 
@@ -166,8 +173,8 @@ def _summary(analysis, lang):
 def _table_view(tab, lang):
     cols = []
     for c in tab.columns:
-        mark = "*" if c.seed_sign < 0 else ""
-        tip = c.label.get(lang, "") + (f" — {t('seed_sign', lang)}" if mark else "")
+        mark = "*" if c.printed_sign < 0 else ""
+        tip = c.label.get(lang, "") + (f" — {t('printed_sign', lang)}" if mark else "")
         cols.append(dict(symbol=c.symbol + mark, unit=unit(c.unit, lang), tip=tip))
     rows = []
     for i in range(len(tab)):
@@ -201,12 +208,12 @@ def _warnings(analysis, tables, lang):
     groups = []
     model_notes = list(mech.notes) + list(getattr(analysis.kinematics, "failures", []))
     groups.append((t("model_notes", lang), model_notes))
-    seed_flags = list(analysis.statics.seed_flags)
-    groups.append((t("statics_flags", lang), seed_flags))
-    st = analysis.stability
-    stab = list(getattr(st, "flags", ()) or ()) if st is not None else []
+    from ..columns import formulas_of, signs_of
+    sign_notes = [m.note for m in signs_of(mech) if m.note]
+    groups.append((t("statics_flags", lang), sign_notes))
+    stab = [x for f in formulas_of(mech) for x in f.flags]
     groups.append((t("stability_flags", lang), stab))
-    seen = set(model_notes) | set(seed_flags) | set(stab)
+    seen = set(model_notes) | set(sign_notes) | set(stab)
     other = []
     for tab in tables:
         for n in tab.notes:

@@ -39,7 +39,9 @@ symbol              unit      meaning
 ``R<axle>``         N         axle reaction (seed ``Ra``, ``Rb``)
 ``dR<axle>``        %         axle share of the total weight (seed ``ΔRa``)
 ``G_max``           N         largest implement weight under the 20 % rule
-``GS6max`` …        N         a seed formula reproduced as printed (flagged)
+``<name>``          its unit  an extra formula of the model (``tables["formulas"]``,
+                              e.g. seed 003's printed ``GS6max``, flagged), in the
+                              table it names
 ``Xp``, ``Yp``      m         instantaneous centre of the checked link
 ``I<p>_ic``         \\-        φ'·(X<p> − Xp): I<p> through the instantaneous
                               centre (seed ``Imp``, ``lsp``)
@@ -50,9 +52,10 @@ with several cylinders ``G<p>`` and ``dG<p>`` get it too. Analogs with respect t
 a crank angle are in rad/rad (unit ``-``) and transmission numbers in m/rad.
 
 Sign convention of reactions: ``R<ij>`` is the force of link i on link j (the
-frame is link 0). Where a seed prints the opposite sign (seed 003 R05, R34, R45,
-see :data:`assur.statics.SEED_003_SIGN_NOTE`) the column carries
-``seed_sign = -1`` and the table a note; the numbers are assur's.
+frame is link 0). Where the model's sign map says its source prints a column with
+the opposite sign (``tables["signs"]``, :class:`assur.columns.SignMap`; seed 003
+R05, R34, R45) the column carries ``printed_sign = -1`` and the table the model's
+note; the numbers are assur's.
 
 Files: :func:`write_csv` writes a header ``symbol [unit]`` per column and every
 number with ``repr`` (a float read back is the same float); :func:`write_xlsx`
@@ -63,6 +66,7 @@ one sheet per table with the same header and the same numbers as floats
 from __future__ import annotations
 
 import csv
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -73,7 +77,13 @@ from ..errors import SingularPositionError
 from ..loads import Weight
 from .labels import TEXT, check_lang
 
-__all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename"]
+__all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
+           "TABLE_IDS"]
+
+#: the ids of the tables, in order (an extra formula joins one of them)
+TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "5.1", "6.1", "IC")
+#: id of the table of extra formulas that name no table
+FORMULAS_ID = "F"
 
 
 def _both(key, *args):
@@ -99,15 +109,16 @@ class Column:
         One value per position (NaN where undefined).
     label : dict of str to str
         Description by language (``"en"``, ``"ru"``).
-    seed_sign : int
-        +1, or −1 where the seed prints these values with the opposite sign.
+    printed_sign : int
+        +1, or −1 where the model's source prints these values with the opposite
+        sign (its sign map, ``tables["signs"]``).
     """
 
     symbol: str
     unit: str
     values: np.ndarray
     label: dict = field(default_factory=dict)
-    seed_sign: int = 1
+    printed_sign: int = 1
 
     @property
     def header(self) -> str:
@@ -123,7 +134,8 @@ class Table:
     ----------
     id : str
         Seed numbering: ``"2.1"``, ``"2.2"``, ``"3.1"``, ``"4.1"``, ``"5.1"``,
-        ``"6.1"``, ``"IC"`` (instantaneous-centre check).
+        ``"6.1"``, ``"IC"`` (instantaneous-centre check), ``"F"`` (the model's
+        extra formulas that name no table).
     titles : dict of str to str
         Title by language.
     columns : tuple of Column
@@ -371,19 +383,17 @@ def _table_5_1(v):
     if not v.mech.loads:
         return None
     cols = v.coord_columns()
-    named = {}
-    for name, (i, j, sign) in st.seed_reactions().items():
-        named[(str(i), str(j))] = (name, int(sign))
+    named = {(i, j): name for name, (i, j) in st.named_reactions().items()}
     done = set()
-    order = list(named.items()) + [((i, j), (f"R{i}{j}", 1)) for _, i, j in st.joints]
-    for (i, j), (name, sign) in order:
+    order = list(named.items()) + [((i, j), f"R{i}{j}") for _, i, j in st.joints]
+    for (i, j), name in order:
         if frozenset((i, j)) in done:
             continue
         done.add(frozenset((i, j)))
         r = st.reaction(i, j)
         rx, ry = v.pick(r[..., 0]), v.pick(r[..., 1])
-        cols.append(Column(f"{name}x", "N", rx, _both("c_Rx", name), seed_sign=sign))
-        cols.append(Column(f"{name}y", "N", ry, _both("c_Ry", name), seed_sign=sign))
+        cols.append(Column(f"{name}x", "N", rx, _both("c_Rx", name)))
+        cols.append(Column(f"{name}y", "N", ry, _both("c_Ry", name)))
         cols.append(Column(name, "N", np.hypot(rx, ry), _both("c_R", name, i, j)))
         mz = v.pick(st.reaction_moment(i, j))
         if np.any(mz != 0.0):
@@ -398,11 +408,6 @@ def _table_5_1(v):
         cols.append(Column(f"F_{c}", unit, v.pick(f), _both("c_Frx", c)))
     notes = [{"en": "R_ij is the force of link i on link j at their joint; the frame is link 0.",
               "ru": "R_ij — сила звена i на звено j в их шарнире; стойка — звено 0."}]
-    flipped = [col.symbol for col in cols if col.seed_sign < 0]
-    if flipped:
-        notes.append({lang: f"{', '.join(flipped)}: {TEXT['seed_sign'][lang]}."
-                      for lang in TEXT["seed_sign"]})
-    notes.extend(_same(f) for f in st.seed_flags)
     return Table("5.1", _both("t5.1"), tuple(cols), tuple(notes))
 
 
@@ -423,11 +428,7 @@ def _table_6_1(v):
     cols.append(Column("G_max_no_cw", "N", v.pick(st.max_implement_weight_without_counterweights),
                        _both("c_Gmax_no_cw")))
     cols.append(Column("steerable", "-", v.pick(st.steerable).astype(int), _both("c_steerable")))
-    notes = []
-    for name, fv in getattr(st, "seed", {}).items():
-        cols.append(Column(name, "N", v.pick(fv.value), _both("c_seed_value", name)))
-        notes.extend(_same(f) for f in fv.flags)
-    return Table("6.1", _both("t6.1"), tuple(cols), tuple(notes))
+    return Table("6.1", _both("t6.1"), tuple(cols))
 
 
 def _checked_body(v):
@@ -522,14 +523,70 @@ def seed_tables(analysis, lang="en", design=None) -> list:
     check_lang(lang)
     v = _View(analysis, design)
     tables = [t for t in (b(v) for b in _BUILDERS) if t is not None]
+    tables = _with_formulas(v, tables)
     # the model may name columns as its seed does (``tables.symbols``: F_S → Fgc …)
     rename = dict(analysis.mechanism.tables.get("symbols", {}))
     if rename:
-        import dataclasses
         tables = [dataclasses.replace(t, columns=tuple(
             dataclasses.replace(c, symbol=rename.get(c.symbol, c.symbol)) for c in t.columns))
             for t in tables]
-    return tables
+    return _with_signs(v, tables)
+
+
+def _with_formulas(v, tables):
+    """Append the model's extra formulas (:class:`assur.columns.Formula`) to the tables
+    they name — or to a table "F" of their own when they name none or that table is
+    not made (e.g. 6.1 without machine data) — with their flags as notes."""
+    from ..columns import formulas_of
+    formulas = formulas_of(v.mech)
+    if not formulas:
+        return tables
+    by_id = {t.id: t for t in tables}
+    extra = {}
+    for f in formulas:
+        col = Column(f.name, f.unit, v.pick(f.evaluate(v.kin)) / f.scale,
+                     _same(f.label) if f.label else _both("c_formula", f.name, f.expr))
+        tid = f.table if f.table in by_id else FORMULAS_ID
+        extra.setdefault(tid, ([], []))
+        extra[tid][0].append(col)
+        extra[tid][1].extend(_same(x) for x in f.flags)
+    out = []
+    for t in tables:
+        if t.id in extra:
+            cols, notes = extra.pop(t.id)
+            t = dataclasses.replace(t, columns=t.columns + tuple(cols),
+                                    notes=t.notes + tuple(notes))
+        out.append(t)
+    if FORMULAS_ID in extra:
+        cols, notes = extra.pop(FORMULAS_ID)
+        out.append(Table(FORMULAS_ID, _both("tF"), tuple(v.coord_columns()) + tuple(cols),
+                         tuple(notes)))
+    return out
+
+
+def _with_signs(v, tables):
+    """Mark the columns of the model's sign maps (:class:`assur.columns.SignMap`) with
+    their printed sign and add each map's note to the tables that have its columns."""
+    from ..columns import signs_of
+    maps = signs_of(v.mech)
+    if not maps:
+        return tables
+    out = []
+    for t in tables:
+        cols, notes = list(t.columns), list(t.notes)
+        for m in maps:
+            hit = [c.symbol for c in cols if c.symbol in m.columns]
+            if not hit:
+                continue
+            cols = [dataclasses.replace(c, printed_sign=m.sign) if c.symbol in m.columns else c
+                    for c in cols]
+            if m.sign < 0:
+                notes.append({lang: f"{', '.join(hit)}: {TEXT['printed_sign'][lang]}."
+                              for lang in TEXT["printed_sign"]})
+            if m.note:
+                notes.append(_same(m.note))
+        out.append(dataclasses.replace(t, columns=tuple(cols), notes=tuple(notes)))
+    return out
 
 
 # ---- files -------------------------------------------------------------------------
