@@ -58,4 +58,7 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=_statics.G_SEEDS, **s
     machine = kin.mechanism.machine
     if machine is not None:
         stab = machine.evaluate(kin)
-    return Analysis(kin, st, cyl, stab)
+    result = Analysis(kin, st, cyl, stab)
+    from .inputs import check_finite  # hardening hook: never return NaN or inf
+    check_finite(result)
+    return result

@@ -605,6 +605,8 @@ class Mechanism:
 
         if on_failure not in ("raise", "report"):
             raise ValueError("on_failure must be one of: ['raise', 'report']")
+        from . import inputs  # hardening hook: params= validated like a model file
+        inputs.check_params(self, params)
         mech = self.with_params(**params) if params else self
         prog = mech._compile(outputs)
         qarr, shape, m, n = mech._coordinates_array(q, prog["m"])
@@ -638,6 +640,8 @@ class Mechanism:
 
     # ---- compilation ---------------------------------------------------------------
     def _coordinates_array(self, q, m_params):
+        from . import inputs  # hardening hook: None, empty, ragged, text, memory estimate
+        q = inputs.coordinates_array(q, self, m_params)
         k = len(self.coordinates)
         if np.iscomplexobj(q):
             raise ModelError("generalized coordinates must be real numbers [m or rad]")
@@ -744,6 +748,7 @@ class Mechanism:
                 row[:7] = [K.OP_RIGID, slot[g.out], slot[g.origin], slot[g.toward], rl,
                            trow("angle", rb), 0]
                 pose_rows.append((len(ops), g, rb, rl))
+                pref(g.dx), pref(g.dy)  # literal offsets get their rows before ptab is sized
             elif isinstance(g, SliderDyad):
                 dp, dq = (slot[g.line_link[0]], slot[g.line_link[1]]) if g.line_link else (-1, -1)
                 row[:9] = [K.OP_RRP, slot[g.out], slot[g.a], lref(g.radius), slot[g.line_point],

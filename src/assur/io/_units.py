@@ -22,6 +22,8 @@ from functools import lru_cache
 _NUMBER = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 _UNIT_CHARS = re.compile(r"^[A-Za-zµμΩ°%·²³0-9*/^(). _-]*$")
 _NAME = re.compile(r"^[^\W\d]\w*$")
+#: largest integer a file may hold (a float above it loses more than rounding)
+_MAX_INT = 10**300
 
 
 @dataclass(frozen=True)
@@ -86,6 +88,8 @@ def parse(value) -> Raw | str:
         or an unknown unit (the message names it).
     """
     if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if isinstance(value, int) and abs(value) > _MAX_INT:  # float() would overflow
+            raise UnitError("expected a number of at most 1e300 in magnitude")
         if not math.isfinite(value):  # TOML has inf and nan
             raise UnitError("expected a finite number")
         return Raw(value, None, repr(value))
@@ -96,15 +100,25 @@ def parse(value) -> Raw | str:
     if not m:
         raise UnitError("")
     mag = float(m.group(1))
+    if not math.isfinite(mag):  # "1e999" reads as inf
+        raise UnitError("expected a finite number (at most about 1.8e308 in magnitude)")
     unit = m.group(2)
     if not unit:
         return Raw(mag, None, value)
     if not _UNIT_CHARS.match(unit) or unit[:1].isdigit():
         raise UnitError(f'cannot read the unit "{unit}"')
     try:
-        registry().parse_units(_normalise(unit))
+        u = registry().parse_units(_normalise(unit))
     except Exception:  # pint raises several types for unknown or malformed units
         raise UnitError(f'unknown unit "{unit}"') from None
+    try:  # the unit's scale to SI must be a finite, non-zero float ("km^1000" is not)
+        scale = registry().Quantity(1.0, u).to_base_units().magnitude
+        registry().get_root_units(u)
+    except (OverflowError, ZeroDivisionError, ArithmeticError):
+        scale = math.inf
+    if not (math.isfinite(scale) and scale != 0.0):
+        raise UnitError(f'cannot use the unit "{unit}": its scale to SI units is beyond '
+                        f"the range of a float; expected a unit such as m, mm, kN, MPa, deg")
     return Raw(mag, unit, value)
 
 
@@ -150,9 +164,17 @@ def to_si(raw: Raw, kind: Kind | None):
     unit = _normalise(raw.unit)
     if kind is None:
         q = ureg.Quantity(raw.magnitude, unit).to_base_units()
-        return float(q.magnitude)
+        return _finite(float(q.magnitude), raw)
     if not _compatible(raw, kind):
         raise UnitError(f"expected {kind.article} (e.g. {kind.example})")
     if kind is ANGLE and ureg.parse_units(unit) == ureg.degree:
         return math.radians(raw.magnitude)  # the same rounding as a plain number
-    return float(ureg.Quantity(raw.magnitude, unit).to(kind.si or "dimensionless").magnitude)
+    return _finite(float(ureg.Quantity(raw.magnitude, unit).to(kind.si or "dimensionless")
+                         .magnitude), raw)
+
+
+def _finite(si: float, raw: Raw) -> float:
+    if not math.isfinite(si):
+        raise UnitError("expected a value whose size in SI units is a finite number (at "
+                        "most about 1.8e308)")
+    return si
