@@ -96,15 +96,15 @@ def bytes_per_position(mech) -> int:
 
     The kernel writes every point's position, first and second analogs (2·(1 + k +
     k²) numbers) and every link's angle or distance with its analogs (1 + k + k²);
-    statics, cylinders, stability and the report's tables hold about three times as
-    much again, plus the coordinates and per-position flags. Measured peaks (seed
+    statics, cylinders, stability and the report's tables hold about as much again,
+    plus the coordinates and per-position flags. Measured peaks (seed
     003 at 10⁵ positions) stay below this estimate.
     """
     k = len(mech.coordinates)
     jet = 1 + k + k * k
     points = sum(len(g.outputs()) for g in mech.groups)
     scalars = len(mech.links) + len(mech.distances)
-    return int(8 * ((2 * points + scalars) * jet * 4 + 8 * k + 64))
+    return int(8 * ((2 * points + scalars) * jet * 2 + 8 * k + 128))
 
 
 def check_memory(positions: float, per_position: float, what: str) -> None:
@@ -163,18 +163,22 @@ def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
                          f"[m or rad], e.g. numpy.linspace(0.42, 0.67, 10)")
     if isinstance(q, (str, bytes)):
         raise ModelError(f"{name}: the generalized coordinates must be numbers [m or rad], "
-                         f"got the text {q!r}")
+                         f"got the text {_short(q)}")
     try:
-        if np.iscomplexobj(q):
-            raise ModelError(f"{name}: the generalized coordinates must be real numbers "
-                             f"[m or rad], got complex ones")
+        complex_ = np.iscomplexobj(q)
+    except (TypeError, ValueError):  # ragged: asarray below says so
+        complex_ = False
+    if complex_:
+        raise ModelError(f"{name}: the generalized coordinates must be real numbers "
+                         f"[m or rad], got complex ones")
+    try:
         a = np.asarray(q, dtype=float)
     except (TypeError, ValueError, OverflowError) as e:
         # numpy's words for ragged lists and text; re-raised as one user error
         what = ("a ragged list (rows of different lengths)" if "inhomogeneous" in str(e)
                 else "not numbers")
-        raise ModelError(f"{name}: the generalized coordinates must be a regular array of "
-                         f"numbers [m or rad]; got {what}: {_short(q)}") from None
+        raise ModelError(f"{name}: the generalized coordinates must be numbers [m or rad] in "
+                         f"a regular array; got {what}: {_short(q)}") from None
     if a.size == 0:
         raise ModelError(f"{name}: no positions: the generalized coordinates are empty "
                          f"(shape {a.shape})")
@@ -185,8 +189,8 @@ def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
     check_memory(n, bytes_per_position(mech), f"{name}: solving")
     if not np.isfinite(a).all():
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(a))[0])
-        raise ModelError(f"{name}: the generalized coordinate value at index {bad} is "
-                         f"{a[bad]!r}, not a finite number")
+        raise ModelError(f"{name}: the generalized coordinate value at index {bad} is not "
+                         f"finite ({a[bad]!r})")
     return a
 
 
@@ -289,8 +293,11 @@ def check_params(mech, params: Mapping | None = None) -> None:
             raise ModelError(f"{name}: unknown parameter(s) {unknown}; known: "
                              f"{sorted(mech.params)}")
         merged.update(params)
+    roles = _roles(mech)
     arrays = {}
     for p, v in merged.items():
+        if p not in roles and not (params and p in params):
+            continue  # checked finite by Mechanism itself; no role to check it against
         if isinstance(v, (str, bytes, bool)) or v is None:
             raise ModelError(f"{name}: parameter {p!r} must be a number [SI] or a 1-D array "
                              f"of numbers over designs, got {v!r}")
@@ -306,7 +313,7 @@ def check_params(mech, params: Mapping | None = None) -> None:
         if not np.isfinite(a).all():
             raise ModelError(f"{name}: parameter {p!r} must be finite, got {_short(v)}")
         arrays[p] = np.atleast_1d(a)
-    for ref, uses in _roles(mech).items():
+    for ref, uses in roles.items():
         for kind, pos, where, raw in uses:
             if isinstance(ref, str):
                 if ref not in arrays:

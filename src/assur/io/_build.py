@@ -288,6 +288,11 @@ class Builder:
                     self.value(("groups", i, field), getattr(g, field), kind, flag, coord_ok)
             if g.type == "pose_point":
                 self.position(("groups", i, "at"), g.at)
+        for j, c in enumerate(self.coords):  # only groups have used coordinates so far
+            if c not in self.coord_kind:
+                raise self.error(("model", "coordinates", j),
+                                 f'the coordinate "{c}" is not used by any group: nothing moves '
+                                 f"with it (drive an input group with it, or remove it)")
         for i, ld in enumerate(self.loads):
             for field, (kind, flag) in _LOAD_VALUES[ld.type].items():
                 if field in ld.model_fields_set:
@@ -491,6 +496,14 @@ class Builder:
                   self.resolved}
             if "side" in c.model_fields_set:
                 kw["side"] = c.side
+            if c.side == "rod":  # the annulus π(D² − d²)/4 needs 0 < d < D
+                bore = self.number(cp + ("bore",))
+                rod = self.number(cp + ("rod",)) if cp + ("rod",) in self.resolved else 0.0
+                if not 0 < rod < bore:
+                    raise self.error(cp + ("rod",) if cp + ("rod",) in self.resolved else cp,
+                                     f"a rod-side cylinder needs 0 < rod < bore, found rod "
+                                     f"{S.show(c.rod)} = {rod:.6g} m and bore {S.show(c.bore)} = "
+                                     f"{bore:.6g} m")
             mech = self.guarded(cp, lambda: mech.cylinder(c.name, c.coordinate, **kw))
         if sp.machine is not None:
             mech = self.machine(mech, points)

@@ -107,19 +107,44 @@ def parse(value) -> Raw | str:
         return Raw(mag, None, value)
     if not _UNIT_CHARS.match(unit) or unit[:1].isdigit():
         raise UnitError(f'cannot read the unit "{unit}"')
+    problem = _unit_problem(unit)
+    if problem:
+        raise UnitError(problem)
+    return Raw(mag, unit, value)
+
+
+@lru_cache(maxsize=4096)
+def _unit_problem(unit: str) -> str | None:
+    """Why pint cannot use ``unit`` (unknown, or a scale to SI beyond a float), or None;
+    cached: a file repeats the same few units (loading stays linear in its size)."""
     try:
-        u = registry().parse_units(_normalise(unit))
+        u = _parse_units(unit)
     except Exception:  # pint raises several types for unknown or malformed units
-        raise UnitError(f'unknown unit "{unit}"') from None
+        return f'unknown unit "{unit}"'
     try:  # the unit's scale to SI must be a finite, non-zero float ("km^1000" is not)
         scale = registry().Quantity(1.0, u).to_base_units().magnitude
-        registry().get_root_units(u)
+        _root(unit)
     except (OverflowError, ZeroDivisionError, ArithmeticError):
         scale = math.inf
     if not (math.isfinite(scale) and scale != 0.0):
-        raise UnitError(f'cannot use the unit "{unit}": its scale to SI units is beyond '
-                        f"the range of a float; expected a unit such as m, mm, kN, MPa, deg")
-    return Raw(mag, unit, value)
+        return (f'cannot use the unit "{unit}": its scale to SI units is beyond the range of '
+                f"a float; expected a unit such as m, mm, kN, MPa, deg")
+    return None
+
+
+@lru_cache(maxsize=4096)
+def _parse_units(unit: str):
+    return registry().parse_units(_normalise(unit))
+
+
+@lru_cache(maxsize=4096)
+def _root(unit: str):
+    return registry().get_root_units(_parse_units(unit))[1]
+
+
+@lru_cache(maxsize=4096)
+def _dimensionality(unit: str):
+    return registry().Quantity(1.0, _parse_units(unit)).dimensionality
 
 
 def _normalise(unit: str) -> str:
@@ -135,17 +160,21 @@ def unit_kind(raw: Raw) -> Kind | None:
     return None
 
 
-def _compatible(raw: Raw, kind: Kind) -> bool:
+@lru_cache(maxsize=4096)
+def _compatible_unit(unit: str, kind: Kind) -> bool:
     ureg = registry()
-    u = ureg.parse_units(_normalise(raw.unit))
-    root = ureg.get_root_units(u)[1]
+    root = _root(unit)
     if kind is ANGLE:
         return root == ureg.radian
     if kind is NUMBER:
         return root == ureg.dimensionless
     if root == ureg.radian:
         return False
-    return ureg.Quantity(1.0, u).dimensionality == ureg.parse_units(kind.si).dimensionality
+    return _dimensionality(unit) == ureg.parse_units(kind.si).dimensionality
+
+
+def _compatible(raw: Raw, kind: Kind) -> bool:
+    return _compatible_unit(raw.unit, kind)
 
 
 def to_si(raw: Raw, kind: Kind | None):
@@ -167,10 +196,15 @@ def to_si(raw: Raw, kind: Kind | None):
         return _finite(float(q.magnitude), raw)
     if not _compatible(raw, kind):
         raise UnitError(f"expected {kind.article} (e.g. {kind.example})")
-    if kind is ANGLE and ureg.parse_units(unit) == ureg.degree:
+    if kind is ANGLE and _parse_units(raw.unit) == ureg.degree:
         return math.radians(raw.magnitude)  # the same rounding as a plain number
-    return _finite(float(ureg.Quantity(raw.magnitude, unit).to(kind.si or "dimensionless")
-                         .magnitude), raw)
+    return _finite(raw.magnitude * _factor(raw.unit, kind.si or "dimensionless"), raw)
+
+
+@lru_cache(maxsize=4096)
+def _factor(unit: str, si: str) -> float:
+    """The SI value of 1 ``unit`` (the kinds have no offset units), cached."""
+    return float(registry().Quantity(1.0, _parse_units(unit)).to(si).magnitude)
 
 
 def _finite(si: float, raw: Raw) -> float:
