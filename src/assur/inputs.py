@@ -210,7 +210,7 @@ _GROUP_ROLES = {  # role -> (kind, must be positive)
 _LOAD_ROLES = {  # load attribute -> (kind, must be positive)
     "P": ("force", False), "fx": ("force", False), "fy": ("force", False),
     "M": ("moment", False), "rate": ("stiffness", False), "free_length": ("length", False),
-    "preload": ("force", False), "m": ("mass", True), "J": ("inertia", False),
+    "preload": ("force", False), "m": ("mass", False), "J": ("inertia", False),
     "bore": ("length", True), "rod": ("length", False), "p_relief": ("pressure", False),
     "dp_throttle": ("pressure", False), "dp_line": ("pressure", False),
     "count": ("count", True), "eta_mech": ("efficiency", True),
