@@ -384,6 +384,6 @@ def check_finite(analysis) -> None:
             if not np.isfinite(a).all():
                 i = int(np.flatnonzero(~np.isfinite(a.ravel()))[0])
                 raise ModelError(f"mechanism {kin.mechanism.name!r}: the {what} is "
-                                 f"{a.ravel()[i]!r} (element {i}): the inputs are outside "
+                                 f"{float(a.ravel()[i])!r} (element {i}): the inputs are outside "
                                  f"the range where it can be computed; check the sizes of "
                                  f"lengths, loads, bores and efficiencies")
