@@ -128,7 +128,6 @@ def _run_check(tmp_path, name, text):
                 assert np.isfinite(v).all() or t.id == "IC", (t.id, c.symbol, text)
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("part", range(4))
 def test_fuzz_mutated_model_files(tmp_path_factory, part):
     """4 × 80 mutated bundled files through ``assur check`` (and analysis when clean)."""
