@@ -7,6 +7,7 @@ as result objects (tables, reports and the page are views of it).
 from __future__ import annotations
 
 from . import statics as _statics
+from .inputs import check_finite
 from .hydraulics import CylinderResult
 
 
@@ -83,4 +84,6 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     machine = kin.mechanism.machine
     if machine is not None:
         stab = machine.evaluate(kin)
-    return Analysis(kin, st, cyl, stab)
+    result = Analysis(kin, st, cyl, stab)
+    check_finite(result)  # never return NaN or inf
+    return result

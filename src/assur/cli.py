@@ -1,8 +1,13 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
-a condition without a root) prints one clear message and exits with status 1 —
-never a traceback.
+a condition without a root, an input that is not a regular file, an output
+directory that cannot be written) prints one clear message and exits with status
+1 (2 for usage errors, as typer does) — never a traceback.
+
+User text (names, titles, paths, option values, messages quoting them) is printed
+literally: the consoles interpret no markup and no emoji codes, and styles are
+applied with :class:`rich.text.Text` spans only.
 """
 
 from __future__ import annotations
@@ -16,18 +21,30 @@ import typer
 from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
+from rich.text import Text
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Hydraulic-cylinder driven planar linkages solved by Assur groups.")
-console = Console(stderr=False)
-err = Console(stderr=True)
+# markup=False, emoji=False: "[/x]" in a title or ":100:" in a message stay as written
+console = Console(stderr=False, markup=False, emoji=False, highlight=False)
+err = Console(stderr=True, markup=False, emoji=False, highlight=False)
+LANGS = ("ru", "en")
 
 FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")  # = assur.report.FORMATS
 
 
 def _fail(message: str, code: int = 1):
-    err.print(f"[bold red]error:[/] {message}", highlight=False, soft_wrap=True)
+    err.print(Text.assemble(("error:", "bold red"), " ", str(message)), soft_wrap=True)
     raise typer.Exit(code)
+
+
+def _ok(message: str):
+    console.print(Text.assemble(("ok", "green"), ": ", message))
+
+
+def _check_lang(lang: str):
+    if lang not in LANGS:
+        _fail(f"--lang must be one of: {list(LANGS)}; got {lang!r}")
 
 
 def _load(path: Path):
@@ -35,12 +52,32 @@ def _load(path: Path):
     from .errors import AssemblyError, ModelError
     from .io import load
 
-    if not path.exists():
-        _fail(f"{path}: no such file")
     try:
         return load(path)
+    except FileNotFoundError:
+        _fail(f"{path}: no such file")
     except (ModelError, AssemblyError) as e:
         _fail(str(e))
+
+
+def _output_dir(output: str) -> Path:
+    """The output directory ``output``, created; refused with one message when it is
+    empty, a file, under a file, or cannot be created or written."""
+    import os
+
+    if not output.strip():
+        _fail("-o/--output must name a directory; got an empty string", 2)
+    out = Path(output)
+    if out.exists() and not out.is_dir():
+        _fail(f"{output}: exists and is not a directory; expected an output directory")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except (OSError, ValueError) as e:  # under a file, permissions, name too long
+        why = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
+        _fail(f"{output}: cannot create the output directory: {why}")
+    if not os.access(out, os.W_OK | os.X_OK):
+        _fail(f"{output}: the output directory is not writable")
+    return out
 
 
 def _assemble(model):
@@ -73,8 +110,7 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     for s in model.solved:
         tab.add_row(f"solved {s.condition.unknown}", f"{s.value:.9g}  ({s.condition.describe()})")
     console.print(tab)
-    console.print(f"[green]ok[/]: {file} assembles at every position "
-                  f"({time.perf_counter() - t0:.2f} s)")
+    _ok(f"{file} assembles at every position ({time.perf_counter() - t0:.2f} s)")
 
 
 def _formats(value: str):
@@ -105,27 +141,35 @@ def _positions(analysis, draw_at):
     return [int(abs(q - v).argmin()) for v in values]
 
 
-def _run_report(model, out: Path, lang: str, fmts, draw_at=None):
+def _run_report(model, output: str, lang: str, fmts, draw_at=None):
+    from .errors import AssemblyError, ModelError, SingularPositionError
     from .report import report_steps, write_report
 
     analysis = _assemble(model)
     positions = _positions(analysis, draw_at)
-    with Progress(SpinnerColumn(), TextColumn("[progress.description]{task.description}"),
+    out = _output_dir(output)
+    with Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False,
+                                              style="progress.description"),
                   BarColumn(), TimeElapsedColumn(), console=console, transient=True) as prog:
         task = prog.add_task("writing the report", total=len(report_steps(fmts)))
 
         def step(name):
             prog.update(task, description=f"writing: {name}", advance=1)
 
-        files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
-                             positions=positions)
+        try:
+            files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
+                                 positions=positions)
+        except OSError as e:  # disk full, permissions changed: one message, no traceback
+            _fail(f"{output}: cannot write the report: {e.strerror or e}")
+        except (AssemblyError, ModelError, SingularPositionError) as e:
+            _fail(f"{model.source}: {e}")
     return analysis, files
 
 
 @app.command()
 def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
-            output: Path = typer.Option(Path("assur-report"), "-o", "--output",
-                                        help="Output directory."),
+            output: str = typer.Option("assur-report", "-o", "--output",
+                                       help="Output directory."),
             lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
             format: str = typer.Option(",".join(FORMATS), "--format",
                                        help="Comma-separated: csv,xlsx,html,png,svg,gif."),
@@ -133,17 +177,16 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                         help="Coordinate values to draw the mechanism at, "
                                              "e.g. 0.42,0.55 (SI; default: first and last).")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
-    if lang not in ("ru", "en"):
-        _fail(f"--lang must be one of: ['ru', 'en']; got {lang!r}")
+    _check_lang(lang)
     fmts = _formats(format)
     model = _load(file)
     _, files = _run_report(model, output, lang, fmts, draw_at)
     _summary(files, output)
 
 
-def _summary(files, output: Path):
+def _summary(files, output: str):
     n = sum(len(v) for v in files.values())
-    console.print(f"[green]wrote {n} files[/] to {output}/")
+    console.print(Text.assemble((f"wrote {n} files", "green"), f" to {output}/"))
     html = [p for p in files.get("html", [])]
     if html:
         console.print(f"report: {Path(html[0]).resolve()}")
@@ -159,8 +202,7 @@ def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
 
     from .report.tables import seed_tables
 
-    if lang not in ("ru", "en"):
-        _fail(f"--lang must be one of: ['ru', 'en']; got {lang!r}")
+    _check_lang(lang)
     model = _load(file)
     analysis = _assemble(model)
     tabs = seed_tables(analysis, lang=lang)
@@ -201,11 +243,12 @@ def _fmt_cell(v):
 
 
 @app.command()
-def demo(output: Path = typer.Option(Path("assur-demo"), "-o", "--output"),
+def demo(output: str = typer.Option("assur-demo", "-o", "--output"),
          lang: str = typer.Option("en", "--lang")):
     """Analyze the bundled seed-003 hitch into ./assur-demo/."""
     from .io import bundled
 
+    _check_lang(lang)
     model = _load(bundled("hitch_003"))
     _, files = _run_report(model, output, lang, FORMATS)
     _summary(files, output)

@@ -19,7 +19,7 @@ from typing import Iterable, Mapping
 
 import numpy as np
 
-from . import diagnostics
+from . import diagnostics, inputs
 from .errors import AssemblyError, ModelError
 from .groups import Distance, Frame, Group, Link, registry
 from .groups.base import is_number
@@ -470,6 +470,7 @@ class Mechanism:
 
         if on_failure not in ("raise", "report"):
             raise ValueError("on_failure must be one of: ['raise', 'report']")
+        inputs.check_params(self, params)
         mech = self.with_params(**params) if params else self
         prog = compile_program(mech, outputs)
         ptab = prog.param_table(mech.params)
@@ -535,6 +536,7 @@ class Mechanism:
 
     # ---- coordinates ---------------------------------------------------------------
     def _coordinates_array(self, q, m_params):
+        q = inputs.coordinates_array(q, self, m_params)
         k = len(self.coordinates)
         if np.iscomplexobj(q):
             raise ModelError("generalized coordinates must be real numbers [m or rad]")

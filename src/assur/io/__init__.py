@@ -30,7 +30,9 @@ assur.io.ModelFileError: x.toml:1: range: missing required key "range"
 from __future__ import annotations
 
 import difflib
+import os
 import re
+import stat
 import tomllib
 from dataclasses import dataclass
 from importlib import resources
@@ -44,7 +46,7 @@ from ..mechanism import Mechanism
 from ._build import Builder
 from ._errors import ModelFileError, key_path
 from ._extends import resolve as resolve_extends
-from ._lines import line_index
+from ._lines import line_index, line_of
 
 ModelFileError.__module__ = __name__  # shown as assur.io.ModelFileError
 
@@ -91,22 +93,101 @@ _TOML_POS = re.compile(r"\s*\(at line (\d+), column (\d+)\)\s*$")
 _TOML_END = re.compile(r"\s*\(at end of document\)\s*$")
 
 
-def _parse_toml(text: str, name: str) -> dict:
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        msg = str(e)
-        m = _TOML_POS.search(msg)
-        if m:
-            line, col = int(m.group(1)), int(m.group(2))
-            problem = f"TOML syntax error: {msg[:m.start()]} (column {col})"
-            if "Illegal character '\\n'" in msg:
-                problem += "; is a string missing its closing quote?"
+#: deepest nesting of arrays, inline tables and dotted keys a model file may use (the
+#: format itself needs 5: ``machine.weights[0].P[0]``)
+MAX_DEPTH = 32
+#: largest model file read [bytes] (64 MiB; a file of a million range values is ~10 MiB)
+MAX_FILE_BYTES = 64 * 1024**2
+
+_TOKENS = re.compile(r'"""[\s\S]*?"""|\'\'\'[\s\S]*?\'\'\'|"(?:[^"\\\n]|\\.)*"|'
+                     r"'[^'\n]*'|#[^\n]*|[\[\]{}\n]")
+_KEY_BEFORE = re.compile(r"\s*([^=\[\]{}#]+?)\s*=\s*$")
+_LONG_INT = re.compile(r"\d[\d_]{4000,}")
+
+
+def _bracket_depth_error(text: str, name: str):
+    """A :class:`ModelFileError` at the first line where arrays or inline tables nest
+    deeper than :data:`MAX_DEPTH`, or None (one linear pass, no recursion)."""
+    depth, line, key = 0, 1, ""
+    for m in _TOKENS.finditer(text):
+        tok = m.group()
+        if tok == "\n":
+            line += 1
+        elif tok in "[{":
+            if depth == 0:  # the key this value belongs to, as written
+                start = text.rfind("\n", 0, m.start()) + 1
+                k = _KEY_BEFORE.match(text, start, m.start())
+                key = k.group(1).strip() if k else ""
+            depth += 1
+            if depth > MAX_DEPTH:
+                return ModelFileError(name, line, key, f"arrays or inline tables nested more "
+                                                       f"than {MAX_DEPTH} deep")
+        elif tok in "]}":
+            depth = max(depth - 1, 0)
         else:
-            lines = text.rstrip("\n").count("\n") + 1
-            line = lines
-            problem = f"TOML syntax error: {_TOML_END.sub('', msg)} (at the end of the file)"
-        raise ModelFileError(name, line, "", problem) from None
+            line += tok.count("\n")
+    return None
+
+
+def _data_depth_error(data, name, text):
+    """A :class:`ModelFileError` at the first key path deeper than :data:`MAX_DEPTH`
+    (dotted keys, table headers), or None; iterative."""
+    stack = [((), data)]
+    while stack:
+        path, v = stack.pop()
+        if len(path) > MAX_DEPTH:
+            where = path[:MAX_DEPTH + 1]
+            return ModelFileError(name, line_of(line_index(text), where), key_path(where[:4])
+                                  + ".…", f"keys nested more than {MAX_DEPTH} deep")
+        if isinstance(v, dict):
+            stack.extend((path + (k,), x) for k, x in v.items())
+        elif isinstance(v, list):
+            stack.extend((path + (i,), x) for i, x in enumerate(v))
+    return None
+
+
+def _parse_toml(text: str, name: str) -> dict:
+    deep = _bracket_depth_error(text, name)
+    if deep is not None:
+        raise deep
+    try:
+        data = tomllib.loads(text)
+    except ValueError as e:
+        if isinstance(e, tomllib.TOMLDecodeError):
+            raise _syntax_error(e, text, name) from None
+        if "digits" not in str(e):
+            raise
+        # tomllib lets int() refuse integers of more than 4300 digits: one user error
+        m = _LONG_INT.search(text)
+        line = text.count("\n", 0, m.start()) + 1 if m else 1
+        start = text.rfind("\n", 0, m.start()) + 1 if m else 0
+        k = _KEY_BEFORE.match(text, start, m.start()) if m else None
+        raise ModelFileError(name, line, k.group(1).strip() if k else "", "an integer with more than 4000 digits; "
+                                             "expected a number of at most 1e300") from None
+    except RecursionError:  # nesting that _bracket_depth_error does not see (guard)
+        raise ModelFileError(name, 1, "", f"nesting deeper than {MAX_DEPTH} levels") from None
+    deep = _data_depth_error(data, name, text)
+    if deep is not None:
+        raise deep
+    return data
+
+
+def _syntax_error(e, text, name):
+    """The :class:`ModelFileError` of a :class:`tomllib.TOMLDecodeError`."""
+    msg = str(e)
+    m = _TOML_POS.search(msg)
+    if m:
+        line, col = int(m.group(1)), int(m.group(2))
+        problem = f"TOML syntax error: {msg[:m.start()]} (column {col})"
+        if "Illegal character '\\n'" in msg:
+            problem += "; is a string missing its closing quote?"
+    else:
+        lines = text.rstrip("\n").count("\n") + 1
+        line = lines
+        problem = f"TOML syntax error: {_TOML_END.sub('', msg)} (at the end of the file)"
+    return ModelFileError(name, line, "", problem)
+
+
 
 
 def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> Model:
@@ -166,9 +247,12 @@ def load(path) -> Model:
         ``path`` was given.
     FileNotFoundError
         If there is no such file.
+    ModelError
+        If ``path`` is not a regular file (a directory, a FIFO, a device), cannot
+        be read, or is larger than :data:`MAX_FILE_BYTES`.
     """
     p = Path(path)
-    data = p.read_bytes()
+    data = read_model_bytes(p, str(path))
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as e:
@@ -176,6 +260,46 @@ def load(path) -> Model:
         raise ModelFileError(str(path), line, "", f"expected UTF-8 text, found the byte "
                                                   f"0x{data[e.start]:02x}") from None
     return loads(text, name=str(path), source=p)
+
+
+def read_model_bytes(p: Path, shown: str) -> bytes:
+    """The bytes of the model file ``p``, refusing what is not a regular file of at
+    most :data:`MAX_FILE_BYTES` *before* opening it (a FIFO would block, a device
+    such as ``/dev/zero`` would never end).
+
+    Raises
+    ------
+    FileNotFoundError
+        No such file.
+    ModelError
+        ``"<path>: is a directory …"``, ``"<path>: not a regular file …"``,
+        ``"<path>: file name too long"``, ``"<path>: … larger than 64 MiB"``.
+    """
+    from ..errors import ModelError
+    try:
+        st = os.stat(p)
+    except FileNotFoundError:
+        raise
+    except (OSError, ValueError) as e:  # name too long, NUL byte, permission: one message
+        why = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
+        raise ModelError(f"{shown}: cannot read the model file: {why}") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise ModelError(f"{shown}: is a directory; expected a model file (.toml)")
+    if not stat.S_ISREG(st.st_mode):
+        raise ModelError(f"{shown}: not a regular file (a FIFO, socket or device); expected "
+                         f"a model file (.toml)")
+    if st.st_size > MAX_FILE_BYTES:
+        raise ModelError(f"{shown}: the file has {st.st_size / 1024**2:.1f} MiB; a model file "
+                         f"may have at most {MAX_FILE_BYTES // 1024**2} MiB")
+    try:
+        with open(p, "rb") as f:
+            data = f.read(MAX_FILE_BYTES + 1)
+    except OSError as e:  # permission denied, I/O error: one message
+        raise ModelError(f"{shown}: cannot read the model file: {e.strerror or e}") from None
+    if len(data) > MAX_FILE_BYTES:  # grew while reading
+        raise ModelError(f"{shown}: a model file may have at most "
+                         f"{MAX_FILE_BYTES // 1024**2} MiB")
+    return data
 
 
 def _bundled_names():

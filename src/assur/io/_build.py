@@ -22,10 +22,12 @@ Four passes over the file's tables (:class:`Builder`):
 
 from __future__ import annotations
 
+import math
 
 import numpy as np
 
 from ..errors import AssemblyError, ModelError
+from ..inputs import bytes_per_position, check_memory, span_problem
 from ..mechanism import Mechanism
 from ..stability import Machine
 from . import _schema as S
@@ -40,6 +42,7 @@ _FLAGS = {
     "nonneg": (lambda v: v >= 0, lambda k: f"a non-negative {k.name}"),
     "fraction": (lambda v: 0 < v <= 1, lambda k: "a number in (0, 1]"),
     "share": (lambda v: 0 <= v < 1, lambda k: "a number in [0, 1)"),
+    "count": (lambda v: v > 0, lambda k: "a positive whole number"),
 }
 
 # per group type: value fields (kind, flag, may be a coordinate), point inputs, the
@@ -77,9 +80,22 @@ _LOAD_VALUES = {
 _LOAD_POINTS = {"weight": ("point",), "force": ("point",), "moment": (), "spring": ("a", "b"),
                 "mass": ("point",)}
 _CYLINDER_VALUES = {"bore": (LENGTH, "positive"), "rod": (LENGTH, "nonneg"),
-                    "count": (NUMBER, "positive"), "eta_mech": (NUMBER, "fraction"),
+                    "count": (NUMBER, "count"), "eta_mech": (NUMBER, "fraction"),
                     "eta_hyd": (NUMBER, "fraction"), "p_relief": (PRESSURE, "nonneg"),
                     "dp_throttle": (PRESSURE, "nonneg"), "dp_line": (PRESSURE, "nonneg")}
+
+
+#: the kind of span (:data:`assur.inputs.SPANS`) a flag asks for
+_SPAN_OF_FLAG = {"fraction": "efficiency", "count": "count"}
+
+
+def _span(kind, flag, si):
+    """What is wrong with ``si`` against the physical span of ``kind`` (and ``flag``:
+    an efficiency, a cylinder count, a positive value), or None."""
+    span = _SPAN_OF_FLAG.get(flag) or (kind.name if kind is not None else None)
+    if span is None or isinstance(si, str):
+        return None
+    return span_problem(span, float(si), flag in ("positive", "count"))
 
 
 def _unreadable(err, expected, found):
@@ -190,6 +206,9 @@ class Builder:
             raise self.error(path, f"{e}, found {S.show(v)}") from None
         if flag and not _FLAGS[flag][0](si):
             raise self.error(path, f"expected {_FLAGS[flag][1](kind)}, found {S.show(v)}")
+        problem = _span(kind, flag, si)
+        if problem:
+            raise self.error(path, f"{problem}, found {S.show(v)}")
         self.resolved[path] = si
         return si
 
@@ -273,6 +292,11 @@ class Builder:
                     self.value(("groups", i, field), getattr(g, field), kind, flag, coord_ok)
             if g.type == "pose_point":
                 self.position(("groups", i, "at"), g.at)
+        for j, c in enumerate(self.coords):  # only groups have used coordinates so far
+            if c not in self.coord_kind:
+                raise self.error(("model", "coordinates", j),
+                                 f'the coordinate "{c}" is not used by any group: nothing moves '
+                                 f"with it (drive an input group with it, or remove it)")
         for i, ld in enumerate(self.loads):
             for field, (kind, flag) in _LOAD_VALUES[ld.type].items():
                 if field in ld.model_fields_set:
@@ -336,12 +360,19 @@ class Builder:
             try:
                 si = to_si(raw, kind)
             except UnitError as e:
-                raise self.error(path, f"{e}, found {shown} ({name} is used as {kind.article} "
-                                       f"at {key_path(use[1])})") from None
-            for flag, where in self.param_flag.get(name, ()):
+                used = (f" ({name} is used as {kind.article} at {key_path(use[1])})" if use
+                        else "")
+                raise self.error(path, f"{e}, found {shown}{used}") from None
+            flags = self.param_flag.get(name, ())
+            for flag, where in flags:
                 if not _FLAGS[flag][0](si):
                     raise self.error(path, f"expected {_FLAGS[flag][1](kind)}, found "
                                            f"{shown} ({name} is used at {key_path(where)})")
+            for flag, where in tuple(flags) or ((None, use[1] if use else None),):
+                problem = _span(kind or (unit_kind(raw) if raw.unit else None), flag, si)
+                if problem:
+                    at = f" ({name} is used at {key_path(where)})" if where else ""
+                    raise self.error(path, f"{problem}, found {shown}{at}")
             out[name] = si
         self.params = out
         self.param_kind = {n: (u[0] if u else (unit_kind(r) if r.unit else None))
@@ -465,6 +496,14 @@ class Builder:
                   self.resolved}
             if "side" in c.model_fields_set:
                 kw["side"] = c.side
+            if c.side == "rod":  # the annulus π(D² − d²)/4 needs 0 < d < D
+                bore = self.number(cp + ("bore",))
+                rod = self.number(cp + ("rod",)) if cp + ("rod",) in self.resolved else 0.0
+                if not 0 < rod < bore:
+                    raise self.error(cp + ("rod",) if cp + ("rod",) in self.resolved else cp,
+                                     f"a rod-side cylinder needs 0 < rod < bore, found rod "
+                                     f"{S.show(c.rod)} = {rod:.6g} m and bore {S.show(c.bore)} = "
+                                     f"{bore:.6g} m")
             mech = self.guarded(cp, lambda: mech.cylinder(c.name, c.coordinate, **kw))
         if sp.machine is not None:
             mech = self.machine(mech, points)
@@ -703,9 +742,22 @@ class Builder:
                 msg = msg.replace(f" ({c.source})", "")
             raise self.error(("solve", i), msg) from None
 
+    def memory(self, mech, paths, count, counts):
+        """Refuse a range whose grid (with the coordinates before it, ``counts``) would
+        need more memory than :func:`assur.inputs.max_memory`, before allocating."""
+        total = count
+        for c in counts.values():
+            total *= c
+        try:
+            check_memory(total, bytes_per_position(mech),
+                         "the range" if len(self.coords) == 1 else "the grid of the ranges")
+        except ModelError as e:
+            raise self.error(paths[0], str(e)) from None
+
     def positions(self, mech):
         params = mech.params
         axes = {}
+        counts = {}
         for c in self.coords:
             r = self.spec.range[c]
             rp = ("range", c)
@@ -723,16 +775,25 @@ class Builder:
                                                    f"from = {S.show(r.from_)}, found "
                                                    f"{S.show(r.to)}")
                 count = r.count
-                if count is None:  # from, to and step: the step must divide the span
+                if count is not None:
+                    self.memory(mech, [rp + ("count",)], float(count), counts)
+                else:  # from, to and step: the step must divide the span
                     step = val(rp + ("step",))
                     n = (hi - lo) / step if step else -1.0
-                    if not (n > 0 and abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))):
+                    if n > 0:  # before rounding: a step of 1e-300 m gives inf positions
+                        self.memory(mech, [rp + ("step",)], n + 1, counts)
+                    if not (math.isfinite(n) and n > 0
+                            and abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))):
                         raise self.error(rp + ("step",),
                                          f"expected a step that divides to − from = "
                                          f"{hi - lo:.6g} into whole intervals (with the sign "
                                          f"of to − from), found {S.show(r.step)}")
                     count = int(round(n)) + 1
                 a = np.linspace(lo, hi, count)
+            counts[c] = a.size
+            if "values" in r.model_fields_set:
+                self.memory(mech, [rp + ("values",)], a.size, {k: v for k, v in counts.items()
+                                                               if k != c})
             a.setflags(write=False)
             axes[c] = a
         if len(self.coords) == 1:
@@ -743,11 +804,27 @@ class Builder:
             grid.setflags(write=False)
         return grid, axes
 
+    def precheck_memory(self, mech):
+        """Refuse ranges given by ``count`` or ``values`` that are too large before the
+        ``[[solve]]`` conditions run (a step's count needs the solved parameters)."""
+        counts, paths = {}, []
+        for c in self.coords:
+            r = self.spec.range[c]
+            if "values" in r.model_fields_set:
+                counts[c] = len(r.values)
+                paths.append(("range", c, "values"))
+            elif r.count is not None:
+                counts[c] = r.count
+                paths.append(("range", c, "count"))
+        if paths:
+            self.memory(mech, paths[::-1], 1.0, counts)
+
     def build(self):
         self.validate()
         self.uses()
         self.parameters()
         mech = self.mechanism()
+        self.precheck_memory(mech)
         conds_mech, solved = self.solve(mech)
         grid, axes = self.positions(conds_mech)
         return conds_mech, grid, axes, solved

@@ -383,19 +383,26 @@ def allowed_keys(cls, loc) -> list[str]:
     return []
 
 
-def show(v) -> str:
-    """A value as it would be written in TOML (for "found …" in messages)."""
+def show(v, _depth=0) -> str:
+    """A value as it would be written in TOML (for "found …" in messages); long
+    strings, huge integers and deep nesting are abbreviated."""
+    if _depth > 3 and isinstance(v, (list, tuple, dict)):
+        return "[…]" if isinstance(v, (list, tuple)) else "{ … }"
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, str):
+        if len(v) > 80:
+            v = v[:60] + "…" + v[-10:]
         return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(v, int) and abs(v) > 10**30:  # repr of a huge int is unreadable (or fails)
+        return f"an integer of about {int(abs(v).bit_length() * 0.30103) + 1} digits"
     if isinstance(v, (int, float)):
         return repr(v)
     if isinstance(v, (list, tuple)):
-        inner = ", ".join(show(x) for x in v[:4]) + (", …" if len(v) > 4 else "")
+        inner = ", ".join(show(x, _depth + 1) for x in v[:4]) + (", …" if len(v) > 4 else "")
         return f"[{inner}]"
     if isinstance(v, dict):
-        inner = ", ".join(f"{k} = {show(x)}" for k, x in list(v.items())[:3])
+        inner = ", ".join(f"{k} = {show(x, _depth + 1)}" for k, x in list(v.items())[:3])
         return "{ " + inner + (", …" if len(v) > 3 else "") + " }"
     return type(v).__name__
 

@@ -22,6 +22,8 @@ from functools import lru_cache
 _NUMBER = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 _UNIT_CHARS = re.compile(r"^[A-Za-zµμΩ°%·²³0-9*/^(). _-]*$")
 _NAME = re.compile(r"^[^\W\d]\w*$")
+#: largest integer a file may hold (a float above it loses more than rounding)
+_MAX_INT = 10**300
 
 
 @dataclass(frozen=True)
@@ -89,6 +91,8 @@ def parse(value) -> Raw | str:
         or an unknown unit (the message names it).
     """
     if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if isinstance(value, int) and abs(value) > _MAX_INT:  # float() would overflow
+            raise UnitError("expected a number of at most 1e300 in magnitude")
         if not math.isfinite(value):  # TOML has inf and nan
             raise UnitError("expected a finite number")
         return Raw(value, None, repr(value))
@@ -99,16 +103,51 @@ def parse(value) -> Raw | str:
     if not m:
         raise UnitError("")
     mag = float(m.group(1))
+    if not math.isfinite(mag):  # "1e999" reads as inf
+        raise UnitError("expected a finite number (at most about 1.8e308 in magnitude)")
     unit = m.group(2)
     if not unit:
         return Raw(mag, None, value)
     if not _UNIT_CHARS.match(unit) or unit[:1].isdigit():
         raise UnitError(f'cannot read the unit "{unit}"')
-    try:
-        registry().parse_units(_normalise(unit))
-    except Exception:  # pint raises several types for unknown or malformed units
-        raise UnitError(f'unknown unit "{unit}"') from None
+    problem = _unit_problem(unit)
+    if problem:
+        raise UnitError(problem)
     return Raw(mag, unit, value)
+
+
+@lru_cache(maxsize=4096)
+def _unit_problem(unit: str) -> str | None:
+    """Why pint cannot use ``unit`` (unknown, or a scale to SI beyond a float), or None;
+    cached: a file repeats the same few units (loading stays linear in its size)."""
+    try:
+        u = _parse_units(unit)
+    except Exception:  # pint raises several types for unknown or malformed units
+        return f'unknown unit "{unit}"'
+    try:  # the unit's scale to SI must be a finite, non-zero float ("km^1000" is not)
+        scale = registry().Quantity(1.0, u).to_base_units().magnitude
+        _root(unit)
+    except (OverflowError, ZeroDivisionError, ArithmeticError):
+        scale = math.inf
+    if not (math.isfinite(scale) and scale != 0.0):
+        return (f'cannot use the unit "{unit}": its scale to SI units is beyond the range of '
+                f"a float; expected a unit such as m, mm, kN, MPa, deg")
+    return None
+
+
+@lru_cache(maxsize=4096)
+def _parse_units(unit: str):
+    return registry().parse_units(_normalise(unit))
+
+
+@lru_cache(maxsize=4096)
+def _root(unit: str):
+    return registry().get_root_units(_parse_units(unit))[1]
+
+
+@lru_cache(maxsize=4096)
+def _dimensionality(unit: str):
+    return registry().Quantity(1.0, _parse_units(unit)).dimensionality
 
 
 def _normalise(unit: str) -> str:
@@ -124,17 +163,21 @@ def unit_kind(raw: Raw) -> Kind | None:
     return None
 
 
-def _compatible(raw: Raw, kind: Kind) -> bool:
+@lru_cache(maxsize=4096)
+def _compatible_unit(unit: str, kind: Kind) -> bool:
     ureg = registry()
-    u = ureg.parse_units(_normalise(raw.unit))
-    root = ureg.get_root_units(u)[1]
+    root = _root(unit)
     if kind is ANGLE:
         return root == ureg.radian
     if kind is NUMBER:
         return root == ureg.dimensionless
     if root == ureg.radian:
         return False
-    return ureg.Quantity(1.0, u).dimensionality == ureg.parse_units(kind.si).dimensionality
+    return _dimensionality(unit) == ureg.parse_units(kind.si).dimensionality
+
+
+def _compatible(raw: Raw, kind: Kind) -> bool:
+    return _compatible_unit(raw.unit, kind)
 
 
 def to_si(raw: Raw, kind: Kind | None):
@@ -153,9 +196,22 @@ def to_si(raw: Raw, kind: Kind | None):
     unit = _normalise(raw.unit)
     if kind is None:
         q = ureg.Quantity(raw.magnitude, unit).to_base_units()
-        return float(q.magnitude)
+        return _finite(float(q.magnitude), raw)
     if not _compatible(raw, kind):
         raise UnitError(f"expected {kind.article} (e.g. {kind.example})")
-    if kind is ANGLE and ureg.parse_units(unit) == ureg.degree:
+    if kind is ANGLE and _parse_units(raw.unit) == ureg.degree:
         return math.radians(raw.magnitude)  # the same rounding as a plain number
-    return float(ureg.Quantity(raw.magnitude, unit).to(kind.si or "dimensionless").magnitude)
+    return _finite(raw.magnitude * _factor(raw.unit, kind.si or "dimensionless"), raw)
+
+
+@lru_cache(maxsize=4096)
+def _factor(unit: str, si: str) -> float:
+    """The SI value of 1 ``unit`` (the kinds have no offset units), cached."""
+    return float(registry().Quantity(1.0, _parse_units(unit)).to(si).magnitude)
+
+
+def _finite(si: float, raw: Raw) -> float:
+    if not math.isfinite(si):
+        raise UnitError("expected a value whose size in SI units is a finite number (at "
+                        "most about 1.8e308)")
+    return si
