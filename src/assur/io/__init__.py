@@ -101,7 +101,7 @@ MAX_FILE_BYTES = 64 * 1024**2
 
 _TOKENS = re.compile(r'"""[\s\S]*?"""|\'\'\'[\s\S]*?\'\'\'|"(?:[^"\\\n]|\\.)*"|'
                      r"'[^'\n]*'|#[^\n]*|[\[\]{}\n]")
-_KEY_BEFORE = re.compile(r"\s*([^=\[\]{}#]+?)\s*=\s*$")
+_KEY_BEFORE = re.compile(r"""\s*("(?:[^"\\]|\\.)*"|'[^']*'|[^=\[\]{}#"']+?)\s*=\s*$""")
 _LONG_INT = re.compile(r"\d[\d_]{4000,}")
 
 
