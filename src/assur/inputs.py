@@ -12,7 +12,8 @@ refused in a file is refused in the same words through ``params=``:
   least 1 µm; an efficiency is in [0.01, 1]; a cylinder count is a whole number
   1 … 1000; forces, pressures … are at most 1e12 in SI);
 * :func:`check_memory` — the memory a request needs, estimated *before* anything
-  is allocated, against the limit :func:`max_memory` (default 2 GiB per request,
+  is allocated, against the limit :func:`max_memory` (default half the physical memory, at least
+  2 GiB per request,
   settable with the environment variable ``ASSUR_MAX_MEMORY``, e.g. ``"8 GiB"``,
   ``"500 MiB"`` or a number of bytes);
 * :func:`check_finite` — the results of an analysis hold no NaN or infinity
@@ -35,8 +36,16 @@ from .errors import ModelError
 
 #: environment variable holding the memory limit of one request
 MAX_MEMORY_ENV = "ASSUR_MAX_MEMORY"
-#: default memory limit of one request [bytes] (2 GiB)
+#: smallest default memory limit of one request [bytes] (2 GiB)
 DEFAULT_MAX_MEMORY = 2 * 1024**3
+
+
+def _physical_memory() -> int:
+    """Physical memory of the machine [bytes], 0 when unknown."""
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE")) * int(os.sysconf("SC_PHYS_PAGES"))
+    except (AttributeError, ValueError, OSError):  # not a POSIX system
+        return 0
 
 _UNITS = {"": 1, "b": 1, "k": 1000, "kb": 1000, "m": 1000**2, "mb": 1000**2, "g": 1000**3,
           "gb": 1000**3, "t": 1000**4, "tb": 1000**4, "kib": 1024, "mib": 1024**2,
@@ -64,7 +73,8 @@ MAX_COUNT = 1000
 
 
 def max_memory() -> int:
-    """The memory limit of one request [bytes]: ``$ASSUR_MAX_MEMORY`` or 2 GiB.
+    """The memory limit of one request [bytes]: ``$ASSUR_MAX_MEMORY``, else half the
+    machine's physical memory (at least 2 GiB).
 
     Raises
     ------
@@ -73,7 +83,7 @@ def max_memory() -> int:
     """
     text = os.environ.get(MAX_MEMORY_ENV, "").strip()
     if not text:
-        return DEFAULT_MAX_MEMORY
+        return max(DEFAULT_MAX_MEMORY, _physical_memory() // 2)
     m = _SIZE.match(text)
     unit = m.group(2).lower() if m else None
     if not m or unit not in _UNITS or not math.isfinite(float(m.group(1))):
@@ -200,13 +210,6 @@ def _short(v) -> str:
 
 
 # ---- parameters ----------------------------------------------------------------------
-_GROUP_ROLES = {  # role -> (kind, must be positive)
-    "x": ("length", False), "y": ("length", False), "ra": ("length", True),
-    "rb": ("length", True), "lever": ("length", True), "radius": ("length", True),
-    "length": ("length", True), "base": ("length", True), "opposite": ("length", True),
-    "offset": ("length", False), "dx": ("length", False), "dy": ("length", False),
-    "phase": ("angle", False), "direction": ("angle", False), "angle": ("angle", False),
-}
 _LOAD_ROLES = {  # load attribute -> (kind, must be positive)
     "P": ("force", False), "fx": ("force", False), "fy": ("force", False),
     "M": ("moment", False), "rate": ("stiffness", False), "free_length": ("length", False),
@@ -256,10 +259,11 @@ def _roles(mech):
         out.setdefault(key, []).append((kind, positive, where, ref))
 
     for g in mech.groups:
-        for role, ref in g.refs().items():
-            if role in _GROUP_ROLES:
-                kind, pos = _GROUP_ROLES[role]
-                add(ref, kind, pos, f"{g.kind} {g.name!r}.{role}")
+        # the group type's own fields say what each value is (assur.groups.base.Field)
+        for f in g.fields:
+            if f.role == "value" and f.quantity:
+                add(getattr(g, f.name), f.quantity, f.flag == "positive",
+                    f"{g.kind} {g.name!r}.{f.name}")
     for ld in tuple(getattr(mech, "loads", ())) + tuple(getattr(mech, "cylinders", ())):
         for attr, (kind, pos) in _LOAD_ROLES.items():
             if hasattr(ld, attr):

@@ -285,11 +285,39 @@ def trig_table(prog: Program, ptab: np.ndarray) -> np.ndarray:
     return out
 
 
-def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=()):
+#: subdivisions of an interval the continuity check flags, and how often a flagged
+#: sub-interval is subdivided again, before the flag is believed
+REFINE_POINTS = 32
+REFINE_DEPTH = 3
+#: intervals refined per call at most (beyond: the flags stand, as reported)
+REFINE_MAX = 256
+
+
+def _refine_continuity(prog, ptab, qarr, n, status, flagged, rows, depth):
+    """Re-check flagged intervals on a finer grid of solved positions.
+
+    The cubic Hermite check is exact for smooth squared heights, but near another
+    group's dead point the analogs grow like 1/sin μ and the cubic overshoots although
+    the triangle stays open; a flag stands only if the group fails on the finer grid
+    too (refined again, up to :data:`REFINE_DEPTH` levels).
+    """
+    if depth >= REFINE_DEPTH:
+        return
+    for e in flagged[:REFINE_MAX]:
+        d = e // n
+        q = np.linspace(qarr[0, e - 1], qarr[0, e], REFINE_POINTS + 1)[None, :]
+        sub = execute(prog, np.ascontiguousarray(ptab[:, d:d + 1]), q, q.shape[1], True,
+                      rows=rows, out_pts=(), depth=depth + 1)
+        if (sub["status"] < 0).all():
+            status[e] = -1
+
+
+def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=(),
+            depth=0):
     """Run the kernel; returns the raw output arrays and the status per element.
 
     ``rows`` (a prefix of the program's groups) and ``out_pts``/``out_sca`` run a
-    part of the program (pre-passes at a pose).
+    part of the program (pre-passes at a pose, refinements of the continuity check).
     """
     k, E = qarr.shape
     if rows is None:
@@ -318,6 +346,9 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
                          dtype=np.int64)
         if KR.check_continuity(gout, qarr, n, status, amount, codes):
+            flagged = np.flatnonzero((status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY)
+                                     & (status >= 0))
+            _refine_continuity(prog, ptab, qarr, n, status, flagged, rows_, depth)
             out[:, (status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY) & (status >= 0)] = 0.0
 
     def angle(row, i):
