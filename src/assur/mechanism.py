@@ -83,7 +83,7 @@ class Mechanism:
                  groups: Iterable = (), links: Iterable[Link] = (),
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
-                 machine=None, gravity: float | None = None):
+                 machine=None, gravity: float | None = None, _params_checked: bool = False):
         self.name = name
         self.title = title or name
         self.coordinates = tuple(coordinates)
@@ -108,18 +108,34 @@ class Mechanism:
         #: acceleration of gravity for the masses' weights [m/s²] (None: the default
         #: :data:`assur.statics.GRAVITY`)
         self.gravity = gravity
-        if gravity is not None and not (math.isfinite(float(gravity)) and float(gravity) > 0):
-            raise ModelError(f"mechanism {name!r}: gravity must be a positive number [m/s²], "
-                             f"got {gravity!r}")
-        self._validate()
+        self._check_gravity()
+        self._validate(check_params=not _params_checked)
 
     # ---- building (each returns a new mechanism) -------------------------------
+    #: attributes a copy may change without validating the structure again
+    _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity"})
+
     def _with(self, **kw):
+        if kw and set(kw) <= self._DATA_ONLY and ("params" not in kw
+                                                  or set(kw["params"]) == set(self.params)):
+            # same structure and parameter names: reuse the validated topology, check
+            # only the values that changed (solving conditions calls this many times)
+            new = object.__new__(Mechanism)
+            new.__dict__.update(self.__dict__)
+            for k, v in kw.items():
+                setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables")
+                        else tuple(v) if k == "notes" else v)
+            if "params" in kw:
+                new._check_params({n: v for n, v in kw["params"].items()
+                                   if v is not self.params[n]})
+            if "gravity" in kw:
+                new._check_gravity()
+            return new
         d = dict(name=self.name, coordinates=self.coordinates, params=self.params,
                  title=self.title, groups=self.groups, links=self.links,
                  distances=self.distances, tables=self.tables, notes=self.notes,
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
-                 gravity=self.gravity)
+                 gravity=self.gravity, _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)
 
@@ -274,7 +290,7 @@ class Mechanism:
         t = self._topology
         return {k: {"points": list(v), "variable": k in t.variable} for k, v in t.bodies.items()}
 
-    def _validate(self):
+    def _validate(self, check_params=True):
         known: set[str] = set()
         names: set[str] = set()
         where = f"mechanism {self.name!r}"
@@ -309,11 +325,21 @@ class Mechanism:
         dup = {n for n in lnames if lnames.count(n) > 1}
         if dup:
             raise ModelError(f"{where}: duplicate link/distance names {sorted(dup)}")
-        for n, v in self.params.items():
+        if check_params:
+            self._check_params(self.params)
+
+    def _check_params(self, params):
+        for n, v in params.items():
             a = np.asarray(v, dtype=float)
             if a.ndim > 1 or not np.all(np.isfinite(a)):
-                raise ModelError(f"{where}: parameter {n!r} must be a finite "
+                raise ModelError(f"mechanism {self.name!r}: parameter {n!r} must be a finite "
                                  f"number or a 1-D array over designs, got {v!r}")
+
+    def _check_gravity(self):
+        g = self.gravity
+        if g is not None and not (math.isfinite(float(g)) and float(g) > 0):
+            raise ModelError(f"mechanism {self.name!r}: gravity must be a positive number "
+                             f"[m/s²], got {g!r}")
 
     def _validate_loads(self, known):
         from .loads import Couple, Cylinder, Mass, PointForce, Spring, Weight

@@ -195,13 +195,26 @@ def to_si(raw: Raw, kind: Kind | None):
     ureg = registry()
     unit = _normalise(raw.unit)
     if kind is None:
-        q = ureg.Quantity(raw.magnitude, unit).to_base_units()
-        return _finite(float(q.magnitude), raw)
+        factor = _base_factor(unit)
+        if factor is None:  # an offset unit (°C…): pint converts the value itself
+            q = ureg.Quantity(raw.magnitude, unit).to_base_units()
+            return _finite(float(q.magnitude), raw)
+        return _finite(raw.magnitude * factor, raw)
     if not _compatible(raw, kind):
         raise UnitError(f"expected {kind.article} (e.g. {kind.example})")
     if kind is ANGLE and _parse_units(raw.unit) == ureg.degree:
         return math.radians(raw.magnitude)  # the same rounding as a plain number
     return _finite(raw.magnitude * _factor(raw.unit, kind.si or "dimensionless"), raw)
+
+
+@lru_cache(maxsize=4096)
+def _base_factor(unit: str):
+    """The base-unit value of 1 ``unit``, or None for an offset unit; cached per unit
+    (loading is linear in the number of values, not in pint's parsing)."""
+    q = registry().Quantity(1.0, unit)
+    if not q._is_multiplicative:
+        return None
+    return float(q.to_base_units().magnitude)
 
 
 @lru_cache(maxsize=4096)
