@@ -290,13 +290,14 @@ class Builder:
         self.add("rpr_dyad", name, a=a, b=b, out=out, length=self.par("l" + out, ell),
                  offset=self.par("e" + out, e), branch=sigma, links=(name + "r", name + "s"))
 
-    def prp_dyad(self, name, a, out, b_frame, line_link_a=None, b_free=False):
+    def prp_dyad(self, name, a, out, b_frame, line_link_a=None, side="a"):
         """PRP dyad at the reference pose: line a through the known point ``a`` at the
         absolute angle θa (drawn; with ``line_link_a = (P, Q)`` its ``direction_a`` is
         θa − angle(P→Q)), the pin ``out`` at τ ∈ ±[0.2, 1] m along it, line b through
         ``out`` at θb = θa ± [0.5, π − 0.5] (|sin| of the angle between the lines >
         0.47) and a new frame point ``b_frame`` on line b at ±[0.2, 1] m from
-        ``out``."""
+        ``out``. ``side="b"`` swaps the roles in the group: the known point's line is
+        its line b (``line_link_b``), the frame point's its line a."""
         A = self.pos[a]
         tha = self.draw(-math.pi, math.pi, f"{name}: angle of line a")
         delta = self.draw(0.5, math.pi - 0.5, f"{name}: angle between the lines")
@@ -313,10 +314,16 @@ class Builder:
         if line_link_a:
             P, Q = (self.pos[x] for x in line_link_a)
             beta_a = tha - _ang(Q - P)
-        self.add("prp_dyad", name, a=a, b=b_frame, out=out,
-                 direction_a=self.par("dira" + out, beta_a),
-                 direction_b=self.par("dirb" + out, thb),
-                 line_link_a=line_link_a, links=(name + "a", name + "b"))
+        if side == "a":
+            self.add("prp_dyad", name, a=a, b=b_frame, out=out,
+                     direction_a=self.par("dira" + out, beta_a),
+                     direction_b=self.par("dirb" + out, thb),
+                     line_link_a=line_link_a, links=(name + "a", name + "b"))
+        else:
+            self.add("prp_dyad", name, a=b_frame, b=a, out=out,
+                     direction_a=self.par("dira" + out, thb),
+                     direction_b=self.par("dirb" + out, beta_a),
+                     line_link_b=line_link_a, links=(name + "a", name + "b"))
 
     def pose_point(self, name, origin, toward, out, coord):
         """Point fixed to the link origin→toward by its offset at the reference pose."""
@@ -756,7 +763,7 @@ def check(case):
 # Each distinct *structure* (group types, connections, branch signs, parameter
 # order) is a separately generated and numba-compiled kernel (seconds each, cached
 # on disk afterwards, ~10–25 s each here), so the discrete choices below are
-# deliberately few (1–2 structures per test, 21 in all; both branches of every
+# deliberately few (1–3 structures per test, 22 in all; both branches of every
 # group type are still covered).
 # Everything continuous — frame points, lengths, angles, positions, batch size —
 # is random.
@@ -994,10 +1001,12 @@ def prp_family(data):
     """PRP dyad III (sliders ``IIIa`` on line a, ``IIIb`` on line b, pin D).
     ``slider``: a slider input drives block B along a fixed line; line a passes
     through B (a translating body) at a fixed direction, line b through a frame
-    point F. ``link``: four-bar; line a passes through the rocker's joint C and turns
-    with the rocker B0→C (``line_link_a``); line b through a frame point F.
+    point F. ``link a``: four-bar; line a passes through the rocker's joint C and
+    turns with the rocker B0→C (``line_link_a``); line b through a frame point F.
+    ``link b``: the same with the roles of the lines swapped (``line_link_b``; the
+    pin is then owned by the slider on the moving line).
     Shared with the kinetostatics tests."""
-    kind = data.draw(st.sampled_from(["slider", "link"]), label="structure")
+    kind = data.draw(st.sampled_from(["slider", "link a", "link b"]), label="structure")
     if kind == "slider":
         b = Builder(data, "slider + PRP dyad", ("s",))
         b.frame_random("O")
@@ -1007,7 +1016,7 @@ def prp_family(data):
     else:
         b = Builder(data, "four-bar + PRP dyad", ("th",))
         b.fourbar("th")
-        b.prp_dyad("III", "C", "D", "F", line_link_a=("B0", "C"))
+        b.prp_dyad("III", "C", "D", "F", line_link_a=("B0", "C"), side=kind[-1])
         b.link("1", "A0", "A")
         b.link("3", "B0", "C")
         b.distance("CD", "C", "D")
@@ -1028,5 +1037,5 @@ def test_rpr_dyad(data):
 def test_prp_dyad(data):
     """(i) PRP dyad (two sliders joined by a pin): fixed lines through a translating
     slider block and a frame point, driven by a slider input; or a line carried by
-    the moving rocker of a four-bar (``line_link_a``) and a fixed line."""
+    the moving rocker of a four-bar (as line a or line b) and a fixed line."""
     check(prp_family(data).build())
