@@ -13,7 +13,9 @@ single designs and batches), at scattered positions away from dead points:
    fourth-order **central differences of the kernel's first-order analogs**
    (:func:`fd_hessian`, step chosen by :func:`fd_steps`);
 3. ``closure_residual() <= 1e-9 m`` and every group's constraints recomputed from
-   the returned points (|out−a| = ra, |out−b| = rb of each RRR dyad…) to 1e-9 m,
+   the returned points (|out−a| = ra, |out−b| = rb of each RRR dyad; |out−a| = ℓ, the signed
+   distance e of the sleeve pivot from the rod's line and the side of the slide of
+   each RPR dyad; the pin on both lines of each PRP dyad…) to 1e-9 m,
    plus the solved reference pose equal to the geometry it was built from.
 
 Why the references are independent of the kernel's derivative code: the kernel
@@ -38,7 +40,10 @@ Construction: joint positions are drawn at a reference pose and lengths and
 branches derived from them (|sin μ| > 0.45 there); positions are drawn around it
 and solved with ``on_failure="report"``, ``check_continuity=False``; positions
 that fail or come within |sin μ| < 0.05 of a dead point of an RRR dyad (|cos γ| <
-0.05, radius against line, of an RRP dyad) are replaced by the reference pose.
+0.05, radius against line, of an RRP dyad; slide |s|/|a–b| < 0.05 of an RPR dyad;
+|sin| of the angle between the lines < 0.05 of a PRP dyad) are replaced by the
+reference pose (where the RPR slide is > 0.45·|a–b| and the PRP lines cross at
+more than 0.5 rad).
 """
 
 from __future__ import annotations
@@ -51,7 +56,8 @@ from hypothesis import HealthCheck, Phase, assume, given, settings, target
 from hypothesis import strategies as st
 
 from assur import Mechanism
-from assur.groups import Crank, CylinderLever, Dyad, Frame, PosePoint, RigidPoint, SliderDyad, SliderInput
+from assur.groups import Crank, CylinderLever, DoubleSliderDyad, Dyad, Frame, PosePoint, \
+    RigidPoint, SleeveDyad, SliderDyad, SliderInput
 
 #: complex step [m or rad]
 H_CS = 1e-30
@@ -59,7 +65,8 @@ H_CS = 1e-30
 RTOL = 1e-7
 #: closure / position tolerance [m]
 CLOSURE_TOL = 1e-9
-#: smallest |sin μ| of an RRR dyad (|cos γ| of an RRP dyad) at a checked position
+#: smallest |sin μ| of an RRR dyad (|cos γ| of an RRP dyad, |s|/|a–b| of an RPR dyad, |sin|
+#: of the angle between the lines of a PRP dyad) at a checked position
 MARGIN = 0.05
 #: finite-difference step of the second-order check relative to the length over
 #: which the analogs change (at most the coordinate's scale), see fd_steps
@@ -263,6 +270,60 @@ class Builder:
         self.add("slider_dyad", name, a=a, out=out, radius=radius_coord or self.par("r" + out, r),
                  line_point=line_point, direction=self.par("beta" + out, beta),
                  line_link=line_link, branch=sigma, links=(name + "r", name + "s"))
+
+    def rpr_dyad(self, name, a, b, out, sigma):
+        """RPR dyad (rod pinned at ``a`` through a sleeve pivoted at ``b``) at the
+        reference pose: B − A is the rod's direction û turned by ψ ∈ [−1.1, 1.1] rad,
+        so the slide s = (B − A)·û = σ|AB|cos ψ (|s|/|AB| > 0.45, sign σ = ``branch``)
+        and the offset e = û × (B − A) = |AB| sin ψ (B on the left of û for e > 0);
+        ``out`` at ℓ ∈ [0.3, 1.5]·|AB| along û."""
+        A, B = self.pos[a], self.pos[b]
+        w = B - A
+        D = _norm(w)
+        psi = self.draw(-1.1, 1.1, f"{name}: angle of the sleeve off the rod")
+        ell = self.draw(0.3, 1.5, f"{name}: |{a}–{out}| / |{a}–{b}|") * D
+        e = D * np.sin(psi)
+        s = sigma * D * np.cos(psi)
+        # B − A = s·û + e·R90(û) is û turned by atan2(e, s)
+        u = _rot(w, -np.arctan2(e, s)) / D[:, None]
+        self.pos[out] = A + ell[:, None] * u
+        self.add("rpr_dyad", name, a=a, b=b, out=out, length=self.par("l" + out, ell),
+                 offset=self.par("e" + out, e), branch=sigma, links=(name + "r", name + "s"))
+
+    def prp_dyad(self, name, a, out, b_frame, line_link_a=None, side="a"):
+        """PRP dyad at the reference pose: line a through the known point ``a`` at the
+        absolute angle θa (drawn; with ``line_link_a = (P, Q)`` its ``direction_a`` is
+        θa − angle(P→Q)), the pin ``out`` at τ ∈ ±[0.2, 1] m along it, line b through
+        ``out`` at θb = θa ± [0.5, π − 0.5] (|sin| of the angle between the lines >
+        0.47) and a new frame point ``b_frame`` on line b at ±[0.2, 1] m from
+        ``out``. ``side="b"`` swaps the roles in the group: the known point's line is
+        its line b (``line_link_b``), the frame point's its line a."""
+        A = self.pos[a]
+        tha = self.draw(-math.pi, math.pi, f"{name}: angle of line a")
+        delta = self.draw(0.5, math.pi - 0.5, f"{name}: angle between the lines")
+        sgn = np.where(self.draw(-1.0, 1.0, f"{name}: side of line b") < 0, -1.0, 1.0)
+        thb = tha + sgn * delta
+        tau = self.draw(0.2, 1.0, f"{name}: |{a}–{out}|") * np.where(
+            self.draw(-1.0, 1.0, f"{name}: sign along line a") < 0, -1.0, 1.0)
+        C = A + tau[:, None] * _dir(tha)
+        self.pos[out] = C
+        rho = self.draw(0.2, 1.0, f"{name}: |{b_frame}–{out}|") * np.where(
+            self.draw(-1.0, 1.0, f"{name}: sign along line b") < 0, -1.0, 1.0)
+        self.frame(b_frame, C + rho[:, None] * _dir(thb))
+        beta_a = tha
+        if line_link_a:
+            P, Q = (self.pos[x] for x in line_link_a)
+            beta_a = tha - _ang(Q - P)
+        if side == "a":
+            self.add("prp_dyad", name, a=a, b=b_frame, out=out,
+                     direction_a=self.par("dira" + out, beta_a),
+                     direction_b=self.par("dirb" + out, thb),
+                     line_link_a=line_link_a, links=(name + "a", name + "b"))
+        else:
+            self.add("prp_dyad", name, a=b_frame, b=a, out=out,
+                     direction_a=self.par("dira" + out, thb),
+                     direction_b=self.par("dirb" + out, beta_a),
+                     line_link_b=line_link_a, links=(name + "a", name + "b"))
 
     def pose_point(self, name, origin, toward, out, coord):
         """Point fixed to the link origin→toward by its offset at the reference pose."""
@@ -542,7 +603,33 @@ def margins(case, r):
             w = _point(case, r, g.out) - _point(case, r, g.a)
             # (a non-assembled element has w = 0: margin 0)
             out = np.minimum(out, np.abs((u * w).sum(-1)) / np.maximum(_norm(w), 1e-300))
+        elif isinstance(g, SleeveDyad):
+            # slide |s| = |(B − A)·û| over |A–B|, û along the rod A → out
+            w = _point(case, r, g.b) - _point(case, r, g.a)
+            u = _point(case, r, g.out) - _point(case, r, g.a)
+            out = np.minimum(out, np.abs((u * w).sum(-1)) / np.maximum(_norm(u) * _norm(w),
+                                                                       1e-300))
+        elif isinstance(g, DoubleSliderDyad):
+            # |sin| of the angle between the two lines
+            ua, ub = _prp_dirs(case, r, g)
+            out = np.minimum(out, np.abs(ua[..., 0] * ub[..., 1] - ua[..., 1] * ub[..., 0]))
     return out
+
+
+def _line_of(case, r, direction, line_link):
+    """Unit direction (M, n, 2) of a line: ``direction`` from +x, or turned from the
+    direction P → Q of ``line_link = (P, Q)`` (solved points)."""
+    beta = np.broadcast_to(case.val(direction), case.Q.shape[:2])
+    if line_link:
+        d = _point(case, r, line_link[1]) - _point(case, r, line_link[0])
+        return _rot(d, beta) / _norm(d)[..., None]
+    return _dir(beta)
+
+
+def _prp_dirs(case, r, g):
+    """Unit directions of the two lines of a PRP dyad."""
+    return (_line_of(case, r, g.direction_a, g.line_link_a),
+            _line_of(case, r, g.direction_b, g.line_link_b))
 
 
 def _line_dir(case, r, g):
@@ -598,6 +685,23 @@ def check_closure(case, r):
             w = P[g.out] - P[g.line_point]
             errs[g.name + " (on its line)"] = np.abs(u[..., 0] * w[..., 1] - u[..., 1] * w[..., 0])
             errs[g.name] = np.abs(dist(g.a, g.out) - v(g.radius))
+        elif isinstance(g, SleeveDyad):
+            # the rod A → out has length ℓ; B is at the signed distance e from its line
+            # (û × (B − A) = e, B on the left for e > 0) and ahead of A along û for
+            # branch +1 (behind for −1): σ·(B − A)·û > 0
+            u = (P[g.out] - P[g.a]) / dist(g.a, g.out)[..., None]
+            w = P[g.b] - P[g.a]
+            errs[g.name] = np.abs(dist(g.a, g.out) - v(g.length))
+            errs[g.name + " (sleeve offset)"] = np.abs(u[..., 0] * w[..., 1]
+                                                       - u[..., 1] * w[..., 0] - v(g.offset))
+            assert (g.branch * (u * w).sum(-1) > 0).all(), \
+                f"{g.name}: the sleeve is on the wrong side of the rod's pin\n{case.reproducer()}"
+        elif isinstance(g, DoubleSliderDyad):
+            # out on line a through a and on line b through b
+            for p, u in zip((g.a, g.b), _prp_dirs(case, r, g)):
+                w = P[g.out] - P[p]
+                errs[f"{g.name} (on the line through {p})"] = np.abs(u[..., 0] * w[..., 1]
+                                                                     - u[..., 1] * w[..., 0])
         elif isinstance(g, PosePoint):
             # fixed to the link origin→toward at its offset of the reference pose
             o, t, c = (case.b.pos[x][:, None] for x in (g.origin, g.toward, g.out))
@@ -659,7 +763,7 @@ def check(case):
 # Each distinct *structure* (group types, connections, branch signs, parameter
 # order) is a separately generated and numba-compiled kernel (seconds each, cached
 # on disk afterwards, ~10–25 s each here), so the discrete choices below are
-# deliberately few (1–2 structures per test, 17 in all; both branches of every
+# deliberately few (1–3 structures per test, 22 in all; both branches of every
 # group type are still covered).
 # Everything continuous — frame points, lengths, angles, positions, batch size —
 # is random.
@@ -872,3 +976,66 @@ def test_crank_radius_as_coordinate(data):
     b.link("2", "A", "C")
     b.link("3", "B0", "C")
     check(b.build())
+
+
+def rpr_family(data):
+    """Crank A0–A and an RPR dyad III (rod ``IIIr``, sleeve ``IIIs``), the slotted
+    lever (кулиса): ``sleeve on the crank`` — the rod pinned at the frame point B0
+    slides through a sleeve pivoted at the crank end A (branch +1); ``rod on the
+    crank`` — the rod pinned at A slides through a sleeve pivoted at B0 (branch −1).
+    Length ℓ and offset e are parameters. Shared with the kinetostatics tests."""
+    kind = data.draw(st.sampled_from(["sleeve on the crank", "rod on the crank"]),
+                     label="structure")
+    b = Builder(data, f"crank + RPR dyad, {kind}", ("th",))
+    b.input("crank", "th")
+    b.frame_near("B0", "A", 0.3, 1.0)
+    a, s, sigma = ("B0", "A", 1) if kind == "sleeve on the crank" else ("A", "B0", -1)
+    b.rpr_dyad("III", a, s, "D", sigma)
+    b.link("1", "A0", "A")
+    b.link("rod", a, "D")
+    b.distance("AB0", a, s)
+    return b
+
+
+def prp_family(data):
+    """PRP dyad III (sliders ``IIIa`` on line a, ``IIIb`` on line b, pin D).
+    ``slider``: a slider input drives block B along a fixed line; line a passes
+    through B (a translating body) at a fixed direction, line b through a frame
+    point F. ``link a``: four-bar; line a passes through the rocker's joint C and
+    turns with the rocker B0→C (``line_link_a``); line b through a frame point F.
+    ``link b``: the same with the roles of the lines swapped (``line_link_b``; the
+    pin is then owned by the slider on the moving line).
+    Shared with the kinetostatics tests."""
+    kind = data.draw(st.sampled_from(["slider", "link a", "link b"]), label="structure")
+    if kind == "slider":
+        b = Builder(data, "slider + PRP dyad", ("s",))
+        b.frame_random("O")
+        b.slider_input("O", "B", "s")
+        b.prp_dyad("III", "B", "D", "F")
+        b.distance("OB", "O", "B")
+    else:
+        b = Builder(data, "four-bar + PRP dyad", ("th",))
+        b.fourbar("th")
+        b.prp_dyad("III", "C", "D", "F", line_link_a=("B0", "C"), side=kind[-1])
+        b.link("1", "A0", "A")
+        b.link("3", "B0", "C")
+        b.distance("CD", "C", "D")
+    b.distance("FD", "F", "D")
+    return b
+
+
+@SETTINGS
+@given(st.data())
+def test_rpr_dyad(data):
+    """(h) RPR dyad (rod through a pivoted sleeve) driven by a crank, both roles of
+    the crank end (sleeve pivot, branch +1; rod pin, branch −1)."""
+    check(rpr_family(data).build())
+
+
+@SETTINGS
+@given(st.data())
+def test_prp_dyad(data):
+    """(i) PRP dyad (two sliders joined by a pin): fixed lines through a translating
+    slider block and a frame point, driven by a slider input; or a line carried by
+    the moving rocker of a four-bar (as line a or line b) and a fixed line."""
+    check(prp_family(data).build())

@@ -14,7 +14,10 @@ each test checks, for every mechanism family whose reactions assur models
 (cylinder–lever input with rigid points, pose points and an RRR dyad; crank input
 with an RRR dyad, rigid points, pose points; slider input with an RRR dyad; RRR
 dyads whose radius is a second coordinate and an RRP dyad whose radius is, k = 2;
-RRP slider dyads on a fixed line and on a line carried by a moving link):
+RRP slider dyads on a fixed line and on a line carried by a moving link; RPR
+dyads — the slotted lever — driven by a crank, the sleeve on the crank or the rod;
+PRP dyads on fixed lines through a slider block and a frame point, or with a line
+carried by a moving rocker):
 
 1. the actuator force by virtual work equals the one from the joint reactions,
    ``actuator_force(c) == actuator_force_from_reactions(c)`` for every coordinate;
@@ -92,10 +95,11 @@ from hypothesis import Phase, assume, given, settings, target
 from hypothesis import strategies as st
 
 from assur import statics
-from assur.groups import Crank, CylinderLever, Dyad, SliderDyad, SliderInput
+from assur.groups import Crank, CylinderLever, DoubleSliderDyad, Dyad, SleeveDyad, SliderDyad, \
+    SliderInput
 
 from test_analogs_random import MARGIN, SETTINGS, Builder, _dir, _floats, _line_dir, _point, \
-    cylinder_dyad_family, rrp_family, \
+    _prp_dirs, cylinder_dyad_family, prp_family, rpr_family, rrp_family, \
     analogs, fd_steps, margins
 
 #: gravity for the masses [m/s²] (assur's default, the seeds' value)
@@ -404,6 +408,10 @@ def angle_pair(mech, body):
             return angle_pair(mech, guide_of(mech, g))
         if isinstance(g, SliderInput) and g.links[0] == body:
             return None
+        if isinstance(g, SleeveDyad) and g.links[1] == body:
+            return angle_pair(mech, g.links[0])  # the sleeve turns with the rod
+        if isinstance(g, DoubleSliderDyad) and body in g.links:
+            return angle_pair(mech, prp_guides(mech, g)[g.links.index(body)])
     raise AssertionError(f"link {body!r} with one point is no slider block")
 
 
@@ -414,6 +422,18 @@ def guide_of(mech, g):
         (b,) = [b for b, v in mech.bodies.items() if p in v["points"] and q in v["points"]]
         return b
     return mech.owner(g.line_point)
+
+
+def prp_guides(mech, g):
+    """The links carrying line a and line b of a PRP dyad."""
+    def carrier(p, line_link):
+        if line_link:
+            P, Q = line_link
+            (b,) = [b for b, v in mech.bodies.items() if P in v["points"] and Q in v["points"]]
+            return b
+        return mech.owner(p)
+
+    return carrier(g.a, g.line_link_a), carrier(g.b, g.line_link_b)
 
 
 class Motion:
@@ -520,7 +540,10 @@ def reference_statics(mot, forces, couples):
     crank a pin at its pivot and the drive moment T; a slider input a prismatic pair
     with the frame (normal force N, moment M, drive force F along the line); an RRP
     dyad pins at its outer joint and at the block, and a prismatic pair block–guide
-    (N, M). A cylinder (a link whose length is a coordinate) is two bodies, one at
+    (N, M); an RPR dyad pins rod–owner(a) at a and sleeve–owner(b) at b and a
+    prismatic pair rod–sleeve at b (N along the rod's normal, M); a PRP dyad
+    prismatic pairs guide a–slider a and guide b–slider b at the pin (N along each
+    line's normal, M) and a pin slider a–slider b. A cylinder (a link whose length is a coordinate) is two bodies, one at
     each end, joined by a prismatic pair whose axial force (positive pushing the
     ends apart) is the actuator force; a load at an end acts on that end's body.
     Each moving body: ΣF = 0 and ΣM = 0 about its own first point.
@@ -617,6 +640,20 @@ def reference_statics(mot, forces, couples):
             prism(guide_of(mech, g), lb, g.out, _line_dir(case, mot.r, g))
             if is_coord(g.radius):
                 cylinder(la, g.radius)
+        elif isinstance(g, SleeveDyad):
+            rod, sleeve = g.links
+            pin(mech.owner(g.a), rod, g.a)
+            pin(mech.owner(g.b), sleeve, g.b)
+            # the sleeve (at its pivot b) slides along the rod's line a → out
+            d = X[g.out] - X[g.a]
+            prism(rod, sleeve, g.b, d / _mag(d)[..., None])
+        elif isinstance(g, DoubleSliderDyad):
+            la, lb = g.links
+            ga, gb = prp_guides(mech, g)
+            ua, ub = _prp_dirs(case, mot.r, g)
+            prism(ga, la, g.out, ua)
+            prism(gb, lb, g.out, ub)
+            pin(la, lb, g.out)
     # loads: assign nodes first so that every body has its rows
     rhs_items = [(node(b, p), p, f) for b, p, f in forces] + \
         [(node(b), None, M) for b, M in couples]
@@ -987,6 +1024,24 @@ def test_rrp_slider_dyads(data):
     """RRP dyads on a fixed line and on a line carried by the moving rocker (normal
     force and moment of the prismatic pair): checks 1–5."""
     check_statics(prepare(rrp_family(data)), data)
+
+
+@SETTINGS
+@given(st.data())
+def test_rpr_dyad(data):
+    """RPR dyad (slotted lever) driven by a crank, the sleeve pivoted at the crank
+    end or the rod pinned there (pins at a and b, prismatic pair rod–sleeve with its
+    normal force and moment): checks 1–5."""
+    check_statics(prepare(rpr_family(data)), data)
+
+
+@SETTINGS
+@given(st.data())
+def test_prp_dyad(data):
+    """PRP dyad on fixed lines through a slider block and a frame point (driven by
+    the slider input), or with a line carried by the moving rocker (two prismatic
+    pairs with normal forces and moments, a pin between the sliders): checks 1–5."""
+    check_statics(prepare(prp_family(data)), data)
 
 
 # ---------------------------------------------------------------------------------

@@ -23,6 +23,16 @@ def _where(mech, ptab, qarr, n, e):
     return f"at position {pos} ({at})" + (f" of design {d}" if ptab.shape[1] > 1 else "")
 
 
+def group_links(mech, g) -> tuple[str, ...]:
+    """The links a group's messages name: the links it adds, by the names the
+    topology gives them (the user's, or the defaults "<group>:a", ":b" when
+    ``links=`` is omitted); for a group that puts a point on an existing link
+    (``link_roles`` None), that link."""
+    links = tuple(mech.topology.group_links.get(g.name, ()))
+    roles = getattr(g, "link_roles", ())
+    return links if roles is None else links[:len(roles)]
+
+
 def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
     """``(message, amount, group or measure)`` of the failure at element ``e``."""
     opi, code = divmod(int(status[e]), CODES_PER_OP)
@@ -33,7 +43,7 @@ def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
         obj = (mech.links + mech.distances)[opi - ngroups]
         return f"link {obj.name!r}: its two points coincide {where}", 0.0, obj
     g = mech.groups[opi]
-    links = g.group_links()
+    links = group_links(mech, g)
     ltxt = f" (links {', '.join(links)})" if links else ""
     if code == FAIL_CONTINUITY:
         c = mech.coordinates[0]
@@ -88,7 +98,7 @@ def assembly_error(mech, prog, ptab, qarr, status, amount, n, ok):
     if ptab.shape[1] > 1:
         nd = len(np.unique(idx // n))
         msg += f"; {nd} of {ptab.shape[1]} designs fail, first design {d}"
-    links = g.group_links() if hasattr(g, "group_links") else ()
+    links = group_links(mech, g) if hasattr(g, "group_links") else ()
     return AssemblyError(msg, group=g.name, links=links,
                          coordinate=dict(zip(mech.coordinates, qarr[:, e])), design=d,
                          position=pos, amount=amt, failures=ok)
