@@ -25,8 +25,7 @@ from .groups import group_type
 from .groups.base import is_number
 from .kernel import emit as KE
 from .kernel import run as KR
-from .kernel.cache import load_source
-from .kernel.source import generate
+from .kernel.compose import load_kernel
 
 __all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_table"]
 
@@ -199,7 +198,7 @@ def _kernel_for(rows, measures, k, out_pts, out_sca):
     key = (rows, measures, k, out_pts, out_sca)
     fn = _KERNELS.get(key)
     if fn is None:
-        fn = _KERNELS[key] = load_source(generate(rows, measures, k, out_pts, out_sca))
+        fn = _KERNELS[key] = load_kernel(rows, measures, k, out_pts, out_sca)
     return fn
 
 

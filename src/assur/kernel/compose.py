@@ -1,0 +1,272 @@
+"""Composed kernels for large structures: one small compiled function per distinct
+group *shape*, called in order by a generated driver.
+
+The fused kernel of :mod:`assur.kernel.source` is fastest at run time, but numba
+and LLVM compile it in time that grows faster than the number of groups. Above
+:data:`THRESHOLD` groups (and measures) a structure gets a composed kernel instead,
+with the same signature, outputs, status codes and continuity staging:
+
+* each group's code (and each measure's) is emitted as for the fused kernel, with
+  group index 0, and made *canonical*: the values it shares with other groups (the
+  jets of its points ``x5_0``…, its measures ``s2``…, its continuity staging
+  ``g0``/``gd0``) are renamed ``v0, v1, …`` in order of appearance, its parameter and
+  trig rows ``P0, P1, …`` and ``T0, …``, its status codes offset by an argument
+  ``sb`` (``CODES_PER_OP·i``). Groups of one type that differ only in which points
+  and parameters they use have the same canonical source;
+* each distinct canonical source is one ``@njit(cache=True)`` function over a block
+  of elements of one design: it reads its inputs from rows of a state array
+  ``S[row, j]``, runs the straight-line code (vectorizable loop), writes its
+  outputs back. It is stored in the kernel cache by its hash, so it is compiled
+  once per machine and shared by every structure that uses it;
+* the driver (generated per structure, small) loops over the blocks and calls, for
+  each group, its function through an if-chain over function numbers with the
+  group's rows (tables of integers, constants of the driver), then copies the
+  requested quantities to ``out`` (0 at failed elements) and the staging to ``gout``.
+
+Compile time is that of the distinct functions (a few per group type, once) plus a
+driver whose size grows with the number of distinct functions, not of groups. The
+values are those of the fused kernel bit for bit: the same expressions in the same
+order, passed between groups through memory in float64.
+"""
+
+from __future__ import annotations
+
+import ast
+import hashlib
+import re
+
+from ..groups import group_type
+from .cache import load_source
+from .emit import CODES_PER_OP, Emitter
+from .select import branchless
+from .source import CHUNK, FORMAT, _emit_measure, generate, quantities
+
+__all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "load_kernel"]
+
+#: structures with more groups + measures than this get a composed kernel (set to
+#: 0 to compose every structure, to a large number to fuse every one)
+THRESHOLD = 24
+
+#: elements per call of a group function (the state array is (names, BLOCK))
+BLOCK = 64
+
+_EXPORTED = re.compile(r"^(?:[xys]\d+(?:_\w+)?|gd?\d+)$")
+
+
+class _Canon(ast.NodeTransformer):
+    """Renames exported names to v{k}, makes conditional expressions selects and
+    status codes relative to ``sb``."""
+
+    def __init__(self):
+        self.names: dict[str, int] = {}
+        self.loaded: set = set()
+        self.stored: set = set()
+
+    def visit_Name(self, node):
+        if _EXPORTED.match(node.id):
+            k = self.names.setdefault(node.id, len(self.names))
+            if isinstance(node.ctx, ast.Store):
+                self.stored.add(node.id)
+            elif node.id not in self.stored:
+                self.loaded.add(node.id)
+            return ast.copy_location(ast.Name(f"v{k}", node.ctx), node)
+        return node
+
+    def visit_Assign(self, node):
+        # st = code if (...) else st  ->  st = _sel(..., sb + code, st)
+        v = node.value
+        if (len(node.targets) == 1 and isinstance(node.targets[0], ast.Name)
+                and node.targets[0].id == "st" and isinstance(v, ast.IfExp)
+                and isinstance(v.body, ast.Constant) and isinstance(v.body.value, int)):
+            v.body = ast.BinOp(ast.Name("sb", ast.Load()), ast.Add(), ast.Constant(v.body.value))
+        node.value = self.visit(node.value)  # loads before the store
+        node.targets = [self.visit(t) for t in node.targets]
+        return node
+
+    def visit_IfExp(self, node):
+        self.generic_visit(node)
+        return ast.copy_location(
+            ast.Call(func=ast.Name("_sel", ast.Load()),
+                     args=[node.test, node.body, node.orelse], keywords=[]), node)
+
+
+def canonical(lines):
+    """Canonical form of one group's emitted lines.
+
+    Returns ``(body, names, inputs, outputs, prows, trows)``: the body's lines,
+    the exported names in the order of their ``v{k}``, which of them are read
+    before written (inputs) and which are written (outputs), and the parameter
+    and trig rows of ``P{k}`` and ``T{k}``.
+    """
+    prows: dict[int, int] = {}
+    trows: dict[int, int] = {}
+
+    def sub_p(m):
+        return f"P{prows.setdefault(int(m.group(1)), len(prows))}"
+
+    def sub_t(m):
+        return f"T{trows.setdefault(int(m.group(1)), len(trows))}"
+
+    tr = _Canon()
+    body = []
+    for line in lines:
+        s = line.strip()
+        if not s or s.startswith("#"):
+            continue
+        s = re.sub(r"trig\[(\d+), d\]", sub_t, re.sub(r"params\[(\d+), d\]", sub_p, s))
+        tree = tr.visit(ast.parse(s))
+        body.append(ast.unparse(ast.fix_missing_locations(tree)))
+    names = sorted(tr.names, key=tr.names.get)
+    outputs = [n for n in names if n in tr.stored]
+    inputs = [n for n in names if n in tr.loaded]
+    return body, names, inputs, outputs, list(prows), list(trows)
+
+
+def _group_source(body, names, inputs, outputs, n_p, n_t):
+    """Source of the compiled function of one canonical group."""
+    k = {n: i for i, n in enumerate(names)}
+    ind = "        "
+    head = [f"    P{i} = params[prm[{i}], d]" for i in range(n_p)]
+    head += [f"    T{i} = trig[trg[{i}], d]" for i in range(n_t)]
+    head += [f"    r{i} = loc[{i}]" for i in range(len(names))]
+    loads = [ind + f"v{k[n]} = S[r{k[n]}, j]" for n in inputs]
+    stores = [ind + f"S[r{k[n]}, j] = v{k[n]}" for n in outputs]
+    return (f'"""Generated by assur.kernel.compose (format {FORMAT}); do not edit."""\n'
+            "import math\nfrom numba import njit\n"
+            "from assur.kernel.select import sel as _sel\n\n\n"
+            '@njit(cache=True, error_model="numpy", nogil=True)\n'
+            "def grp(S, stv, params, trig, q, d, e0, n, loc, prm, trg, sb):\n"
+            + "\n".join(head + ["    for j in range(n):", ind + "e = e0 + j",
+                                ind + "st = stv[j]"] + loads
+                        + [ind + b for b in body] + stores + [ind + "stv[j] = st"]) + "\n")
+
+
+def _int_array(name, values):
+    vals = ", ".join(str(int(v)) for v in values) or ""
+    return f"{name} = np.array([{vals}], dtype=np.int64)\n"
+
+
+def generate_composed(rows, measures, K, out_pts, out_sca):
+    """Sources of the composed kernel: ``(group_sources, driver)`` where the driver
+    imports the group functions by the cache keys of their sources."""
+    items = []  # (emitted lines, status base, real names of the continuity staging)
+    cont = []
+    for i, row in enumerate(rows):
+        gt = group_type(row[0])
+        E = Emitter(K)
+        gt.emit(E, 0, tuple(int(v) for v in row[1:]))
+        lines = E.lines
+        if gt.continuity and K == 1:
+            cont.append(i)
+            lines = [re.sub(r"\bg(d?)0\b", rf"g\g<1>{i}", ln) for ln in lines]
+        items.append((lines, i * CODES_PER_OP))
+    n = len(rows)
+    for j, (kind, s_, P, Q) in enumerate(measures):
+        E = Emitter(K)
+        _emit_measure(E, 0, kind, s_, P, Q)
+        items.append((E.lines, (n + j) * CODES_PER_OP))
+    srcs, keys = [], {}
+    state: dict[str, int] = {}
+    calls = []  # (function number, loc rows, param rows, trig rows, status base)
+    for lines, sb in items:
+        body, names, inputs, outputs, prows, trows = canonical(lines)
+        src = _group_source(body, names, inputs, outputs, len(prows), len(trows))
+        if src not in keys:
+            keys[src] = len(srcs)
+            srcs.append(src)
+        for nm in inputs:
+            if nm not in state:
+                raise ValueError(f"assur compose: {nm} is read before it is computed")
+        loc = [state.setdefault(nm, len(state)) for nm in names]
+        calls.append((keys[src], loc, prows, trows, sb))
+    angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
+    qs = quantities(K, out_pts, out_sca, angle_slots)
+    qrow = [state[v] for v in qs]
+    grow = [state[f"g{s}{i}"] for i in cont for s in ("", "d")]
+    hashes = [hashlib.sha1(s.encode()).hexdigest()[:20] for s in srcs]
+    off = lambda lists: [0] + [sum(len(x) for x in lists[:i + 1]) for i in range(len(lists))]
+    tab = _int_array("_FN", [c[0] for c in calls])
+    tab += _int_array("_LOC", [v for c in calls for v in c[1]])
+    tab += _int_array("_LOFF", off([c[1] for c in calls]))
+    tab += _int_array("_PRM", [v for c in calls for v in c[2]])
+    tab += _int_array("_POFF", off([c[2] for c in calls]))
+    tab += _int_array("_TRG", [v for c in calls for v in c[3]])
+    tab += _int_array("_TOFF", off([c[3] for c in calls]))
+    tab += _int_array("_SB", [c[4] for c in calls])
+    tab += _int_array("_QROW", qrow) + _int_array("_GROW", grow)
+    imports = "".join(f'_f{k} = _group("{h}")\n' for k, h in enumerate(hashes))
+    ind = "                    "
+    chain = []
+    for k in range(len(srcs)):
+        chain.append(ind + ("if" if k == 0 else "elif") + f" fn == {k}:")
+        chain.append(ind + f"    _f{k}(S, stv, params, trig, q, d, b0, nb, loc, prm, trg, sb)")
+    driver = f'''"""Generated by assur.kernel.compose (format {FORMAT}); do not edit."""
+import math
+import numpy as np
+from numba import njit
+from assur.kernel.compose import _group
+
+{imports}
+{tab}
+
+@njit(cache=True, error_model="numpy", nogil=True)
+def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
+    """Chunks c_start…c_end−1 of the elements (see assur.kernel.source), by
+    {len(srcs)} group functions called {len(calls)} times per block of elements."""
+    E = q.shape[1]
+    NQ = {len(qs)}
+    NG = {len(grow)}
+    if out.shape[0] != NQ or gout.shape[0] != NG or out.shape[1] != E:
+        raise ValueError("assur kernel: output arrays do not match the program")
+    S = np.zeros(({max(len(state), 1)}, {BLOCK}))
+    stv = np.empty({BLOCK}, dtype=np.int64)
+    cpd = (npd + {CHUNK} - 1) // {CHUNK}
+    for c in range(c_start, c_end):
+        d = c // cpd
+        e0 = d * npd + (c % cpd) * {CHUNK}
+        e1 = min(d * npd + npd, e0 + {CHUNK})
+        for b0 in range(e0, e1, {BLOCK}):
+            nb = min({BLOCK}, e1 - b0)
+            for j in range(nb):
+                stv[j] = -1
+            for g in range({len(calls)}):
+                fn = _FN[g]
+                loc = _LOC[_LOFF[g]:_LOFF[g + 1]]
+                prm = _PRM[_POFF[g]:_POFF[g + 1]]
+                trg = _TRG[_TOFF[g]:_TOFF[g + 1]]
+                sb = _SB[g]
+                if True:
+''' + "\n".join(chain) + f'''
+            for j in range(nb):
+                status[b0 + j] = stv[j]
+            for r in range(NQ):
+                src = _QROW[r]
+                for j in range(nb):
+                    out[r, b0 + j] = S[src, j] if stv[j] < 0 else 0.0
+            if check:
+                for r in range(NG):
+                    src = _GROW[r]
+                    for j in range(nb):
+                        gout[r, b0 + j] = S[src, j] if stv[j] < 0 else 0.0
+'''
+    return srcs, driver
+
+
+def _group(key):
+    """The compiled function of a group source already written to the cache."""
+    from .cache import _loaded, cache_dir
+    mod = _loaded.get(key)
+    if mod is None:
+        return load_source((cache_dir() / f"k_{key}.py").read_text(), "grp")
+    return mod.grp
+
+
+def load_kernel(rows, measures, K, out_pts, out_sca):
+    """The compiled kernel of a structure: fused up to :data:`THRESHOLD` groups and
+    measures, composed above."""
+    if len(rows) + len(measures) <= THRESHOLD:
+        return load_source(generate(rows, measures, K, out_pts, out_sca))
+    srcs, driver = generate_composed(rows, measures, K, out_pts, out_sca)
+    for s in srcs:
+        load_source(s, "grp")
+    return load_source(driver)
