@@ -24,9 +24,13 @@ HERE = Path(__file__).resolve().parent
 SIZES = (5, 10, 20, 50, 100, 200)
 
 
-def measure(kind: str, n: int) -> dict:
+def measure(kind: str, n: int, threshold=None) -> dict:
     sys.path.insert(0, str(HERE))
     import numpy as np
+
+    from assur.kernel import compose
+    if threshold is not None:
+        compose.THRESHOLD = threshold
 
     from structures import with_groups
 
@@ -55,15 +59,17 @@ def measure(kind: str, n: int) -> dict:
     except ImportError:
         rss = float("nan")
     return dict(kind=kind, n=n, groups=len(prog.rows), lines=src.count("\n"),
+                composed=len(prog.rows) + len(prog.measures) > compose.THRESHOLD,
                 generate=t_gen, compile=t_first - t_warm, rss_mb=rss)
 
 
-def run_one(kind: str, n: int, timeout: float = 600) -> dict:
+def run_one(kind: str, n: int, timeout: float = 600, threshold=None) -> dict:
     """``measure`` in a fresh process with fresh caches."""
     with tempfile.TemporaryDirectory() as tmp:
         env = dict(os.environ, ASSUR_CACHE_DIR=tmp, NUMBA_CACHE_DIR=tmp)
         try:
-            p = subprocess.run([sys.executable, str(Path(__file__).resolve()), kind, str(n)],
+            p = subprocess.run([sys.executable, str(Path(__file__).resolve()), kind, str(n)]
+                               + ([] if threshold is None else [str(threshold)]),
                                env=env, capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return dict(kind=kind, n=n, error=f"timeout after {timeout:.0f} s")
@@ -87,8 +93,9 @@ def table(kinds=("rigid", "chain"), sizes=SIZES, timeout=600, out=print):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 3:
-        print(json.dumps(measure(sys.argv[1], int(sys.argv[2]))))
+    if len(sys.argv) in (3, 4):
+        th = int(sys.argv[3]) if len(sys.argv) == 4 else None
+        print(json.dumps(measure(sys.argv[1], int(sys.argv[2]), th)))
     else:
         sizes = tuple(int(s) for s in sys.argv[1].split(",")) if len(sys.argv) == 2 else SIZES
         table(sizes=sizes)

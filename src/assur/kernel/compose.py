@@ -45,10 +45,10 @@ __all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "load_kernel"
 
 #: structures with more groups + measures than this get a composed kernel (set to
 #: 0 to compose every structure, to a large number to fuse every one)
-THRESHOLD = 24
+THRESHOLD = 20
 
 #: elements per call of a group function (the state array is (names, BLOCK))
-BLOCK = 64
+BLOCK = 256
 
 _EXPORTED = re.compile(r"^(?:[xys]\d+(?:_\w+)?|gd?\d+)$")
 
