@@ -6,7 +6,11 @@
 Each measurement runs in a fresh process with a fresh kernel cache
 (``ASSUR_CACHE_DIR``) and numba cache (``NUMBA_CACHE_DIR``): the time is that of
 the first ``solve`` of a new structure (source generation, numba typing, LLVM),
-less that of a second, warm one. KIND is ``rigid`` (the seed-003 hitch plus rigid
+less that of a second, warm one. The group functions of composed kernels are shared
+by all structures (cached on disk): the first composed structure of a process here
+compiles them cold, as on a new machine. ``generate`` is the time of the fused
+kernel's source and ``lines`` its length (for comparison; a composed structure does
+not compile it). KIND is ``rigid`` (the seed-003 hitch plus rigid
 points) or ``chain`` (a chain of RRR dyads, each with its own frame point).
 """
 
@@ -80,15 +84,17 @@ def run_one(kind: str, n: int, timeout: float = 600, threshold=None) -> dict:
 
 
 def table(kinds=("rigid", "chain"), sizes=SIZES, timeout=600, out=print):
-    out(f"{'structure':<10} {'N':>5} {'groups':>6} {'lines':>7} {'generate s':>10} "
-        f"{'compile s':>10} {'s/group':>8} {'max RSS MB':>10}")
+    out(f"{'structure':<10} {'N':>5} {'groups':>6} {'kernel':>8} {'lines':>7} "
+        f"{'generate s':>10} {'compile s':>10} {'s/group':>8} {'max RSS MB':>10}")
     for kind in kinds:
         for n in sizes:
             r = run_one(kind, n, timeout)
             if "error" in r:
                 out(f"{kind:<10} {n:>5}  failed: {r['error']}")
                 continue
-            out(f"{kind:<10} {n:>5} {r['groups']:>6} {r['lines']:>7} {r['generate']:>10.3f} "
+            path = "composed" if r["composed"] else "fused"
+            out(f"{kind:<10} {n:>5} {r['groups']:>6} {path:>8} {r['lines']:>7} "
+                f"{r['generate']:>10.3f} "
                 f"{r['compile']:>10.2f} {r['compile'] / r['groups']:>8.3f} {r['rss_mb']:>10.0f}")
 
 

@@ -423,12 +423,31 @@ def print_checks(title, checks):
                   f"{'ok' if ok else 'MISMATCH'}")
 
 
+def compile_section(sizes):
+    """Cold compile time of the kinematics kernel against the number of groups (issue
+    7), one fresh process and kernel cache per structure (``compile_time.py``)."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import compile_time
+
+    from assur.kernel import compose
+
+    print("compile time: first solve of a new structure, cold caches, one process each")
+    print("  rigid: examples.hitch_003() (10 groups) + rigid points; chain: cylinder–lever "
+          "+ RRR dyads, each with its own frame point")
+    print(f"  fused kernel up to {compose.THRESHOLD} groups + measures, composed above "
+          f"(assur.kernel.compose); 'lines' = lines of the fused source")
+    compile_time.table(sizes=tuple(sizes), out=lambda s: print("  " + s, flush=True))
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--sizes", default="1e3,1e5,1e6",
                     help="comma-separated numbers of positions (default 1e3,1e5,1e6)")
     ap.add_argument("--budget", type=float, default=1.0,
                     help="seconds to spend per callable and size before stopping repeats")
+    ap.add_argument("--compile-sizes", default="5,10,20,50,100,200",
+                    help="group counts of the compile-time section (default "
+                         "5,10,20,50,100,200; empty: skip it)")
     args = ap.parse_args(argv)
     sizes = [int(float(s)) for s in args.sizes.split(",")]
 
@@ -606,6 +625,9 @@ def main(argv=None):
         print("      R07y, R67y and §5.2–5.3); there the same printed formulas evaluated in "
               "long double (untimed) agree with assur.")
     print()
+    if args.compile_sizes:
+        compile_section([int(v) for v in args.compile_sizes.split(",")])
+        print()
     print("targets (issues): (a) ≥ 1e8, (b) ≥ 2e7, (c) ≥ 1e7 positions/s on this 2-core "
           "machine; 'met' compares the assur column only.")
     print("These are throughputs and ratios to a numpy peer in the same process, for reading; "
