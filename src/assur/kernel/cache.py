@@ -17,7 +17,7 @@ from pathlib import Path
 
 __all__ = ["cache_dir", "set_cache_dir", "load_source"]
 
-_lock = threading.Lock()
+_lock = threading.RLock()  # a driver's import loads its group functions
 _loaded: dict[str, object] = {}
 _override: list = []
 

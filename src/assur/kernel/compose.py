@@ -195,7 +195,7 @@ def generate_composed(rows, measures, K, out_pts, out_sca):
     tab += _int_array("_SB", [c[4] for c in calls])
     tab += _int_array("_QROW", qrow) + _int_array("_GROW", grow)
     imports = "".join(f'_f{k} = _group("{h}")\n' for k, h in enumerate(hashes))
-    ind = "                    "
+    ind = "                "
     chain = []
     for k in range(len(srcs)):
         chain.append(ind + ("if" if k == 0 else "elif") + f" fn == {k}:")
@@ -235,7 +235,6 @@ def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
                 prm = _PRM[_POFF[g]:_POFF[g + 1]]
                 trg = _TRG[_TOFF[g]:_TOFF[g + 1]]
                 sb = _SB[g]
-                if True:
 ''' + "\n".join(chain) + f'''
             for j in range(nb):
                 status[b0 + j] = stv[j]
@@ -253,7 +252,8 @@ def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
 
 
 def _group(key):
-    """The compiled function of a group source already written to the cache."""
+    """The compiled function of a group source written to the cache (a driver's
+    import calls this; :func:`load_kernel` has loaded them before)."""
     from .cache import _loaded, cache_dir
     mod = _loaded.get(key)
     if mod is None:

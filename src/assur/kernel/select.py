@@ -50,7 +50,17 @@ def _make_sel():
     return sel
 
 
-sel = _make_sel()
+_made: list = []
+
+
+def __getattr__(name):
+    # ``sel`` is made on first use (by a generated kernel): importing assur does not
+    # import numba
+    if name == "sel":
+        if not _made:
+            _made.append(_make_sel())
+        return _made[0]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class _IfExpToSel(ast.NodeTransformer):

@@ -10,6 +10,11 @@ with respect to the ``k`` generalized coordinates are held in local variables (a
 second-order forward jet), so the analogs are exact to rounding. Only the
 requested outputs are written to memory.
 
+Every conditional expression of the emitted code becomes a branch-free select
+(:mod:`assur.kernel.select`): the element loop is one basic block, which keeps
+numba's compile time linear in its length. Large structures get a composed kernel
+instead (:mod:`assur.kernel.compose`, chosen by ``assur.program``).
+
 The source depends only on the structure (group types, connections, k and the
 requested outputs), never on parameter values: it is cached on disk and compiled
 once per machine (:mod:`assur.kernel.cache`).
