@@ -145,7 +145,7 @@ def check_memory(positions: float, per_position: float, what: str) -> None:
 
 
 # ---- coordinates ---------------------------------------------------------------------
-def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
+def coordinates_array(q, mech, designs: int = 1, per_position: float | None = None) -> np.ndarray:
     """The generalized coordinates ``q`` of :meth:`Mechanism.solve` as a finite float
     array, checked before the engine allocates anything.
 
@@ -156,6 +156,9 @@ def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
     mech : Mechanism
     designs : int
         Number of designs of the parameters (the coordinates broadcast over them).
+    per_position : float, optional
+        Bytes one position of one design takes in this request (default: a full
+        analysis, :func:`bytes_per_position`).
 
     Returns
     -------
@@ -196,7 +199,8 @@ def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
     n = a.size // (k if k > 1 and a.ndim >= 1 and a.shape[-1] == k else 1)
     if a.ndim <= (1 if k == 1 else 2):
         n *= max(int(designs), 1)
-    check_memory(n, bytes_per_position(mech), f"{name}: solving")
+    check_memory(n, bytes_per_position(mech) if per_position is None else per_position,
+                 f"{name}: solving")
     if not np.isfinite(a).all():
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(a))[0])
         raise ModelError(f"{name}: the generalized coordinate value at index {bad} is not "

@@ -500,14 +500,14 @@ class Mechanism:
         mech = self.with_params(**params) if params else self
         prog = compile_program(mech, outputs)
         ptab = prog.param_table(mech.params)
-        qarr, shape, m, n = mech._coordinates_array(q, ptab.shape[1])
+        qarr, shape, m, n = mech.coordinate_array(q, ptab.shape[1])
         if ptab.shape[1] == 1 and m > 1:
             ptab = np.repeat(ptab, m, axis=1)
         elif ptab.shape[1] != m:
             raise ModelError(f"mechanism {self.name!r}: parameters describe {ptab.shape[1]} "
                              f"designs but the coordinates {m}")
         ptab = np.ascontiguousarray(ptab)
-        pose_failures = mech._prepare(prog, ptab)
+        pose_failures = mech.prepare(prog, ptab)
         check = bool(check_continuity and len(self.coordinates) == 1 and n > 1)
         res = execute(prog, ptab, qarr, n, check)
         status = res["status"]
@@ -525,13 +525,31 @@ class Mechanism:
                                                          res["amount"], n)
         return kin
 
-    def analyze(self, q, params=None, *, qdot=None, qddot=None, **kw):
+    def analyze(self, q, params=None, *, qdot=None, qddot=None, outputs=None, reduce=False,
+                **kw):
         """Kinematics, actuator forces, joint reactions, cylinders and stability in one
-        call; returns :class:`assur.analysis.Analysis` (see :func:`assur.analysis.analyze`)."""
+        call; returns :class:`assur.analysis.Analysis` (see :func:`assur.analysis.analyze`).
+
+        With ``outputs=[…]`` only those are computed, by the fused kinematics + statics
+        kernel, and a :class:`assur.fused.Fused` is returned (see :meth:`evaluate`)."""
+        if outputs is not None:
+            if qdot is not None or qddot is not None:
+                raise ModelError("analyze(outputs=…) computes static loads only; leave out "
+                                 "qdot and qddot, or omit outputs for the full analysis")
+            return self.evaluate(q, params, outputs=outputs, reduce=reduce, **kw)
         from .analysis import analyze
         return analyze(self, q, params=params, qdot=qdot, qddot=qddot, **kw)
 
-    def _prepare(self, prog, ptab):
+    def evaluate(self, q, params=None, *, outputs, reduce=False, on_failure="raise", g=None):
+        """Only the ``outputs`` asked for (e.g. ``["G(ГЦ, 56)", "Rx(0, 5)", "F(S)"]``),
+        computed by one fused kinematics + statics kernel per structure; with
+        ``reduce=True`` their minimum, maximum and where over the positions of each
+        design, without storing the positions. See :mod:`assur.fused` for the
+        output functions and their units."""
+        from .fused import evaluate
+        return evaluate(self, q, params, outputs, reduce=reduce, on_failure=on_failure, g=g)
+
+    def prepare(self, prog, ptab):
         """Run the groups' pre-passes (derived per-design rows, e.g. a point fixed at
         a pose). Returns the :class:`AssemblyError` of poses that cannot assemble
         (their rows stay 0); the caller raises them unless the main range fails
@@ -561,8 +579,10 @@ class Mechanism:
         return failures
 
     # ---- coordinates ---------------------------------------------------------------
-    def _coordinates_array(self, q, m_params):
-        q = inputs.coordinates_array(q, self, m_params)
+    def coordinate_array(self, q, m_params, per_position=None):
+        """The coordinates ``q`` as a (k, m·n) array, their result shape, m and n;
+        checked (:func:`assur.inputs.coordinates_array`) before anything is allocated."""
+        q = inputs.coordinates_array(q, self, m_params, per_position)
         k = len(self.coordinates)
         if np.iscomplexobj(q):
             raise ModelError("generalized coordinates must be real numbers [m or rad]")
