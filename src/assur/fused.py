@@ -36,6 +36,7 @@ fused kernel does not check continuity between positions (``solve`` does).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 
@@ -44,6 +45,7 @@ import numpy as np
 from . import diagnostics
 from .errors import ModelError
 from .groups import group_type
+from .groups.base import is_number
 from .hydraulics import piston_area
 from .kernel import run as KR
 from .kernel.cache import load_source
@@ -84,9 +86,11 @@ def parse_output(text: str) -> tuple:
 class _Fused(ReactionContextBase):
     """Load and reaction context whose values are symbols of the generated code."""
 
-    def __init__(self, mech, prog, tracer, rod_ends, g, cyl_rows):
+    def __init__(self, mech, prog, tracer, rod_ends, cyl_rows, literal_rows):
         super().__init__(mech, rod_ends)
-        self.prog, self.t, self.g = prog, tracer, g
+        self.prog, self.t = prog, tracer
+        self.literal_rows = literal_rows
+        self.g = self.value(_G)
         self.moving = False
         self.k = len(mech.coordinates)
         self.vw = [0.0] * self.k
@@ -102,11 +106,18 @@ class _Fused(ReactionContextBase):
         return self.t.sym(f"x{s}_{a}"), self.t.sym(f"y{s}_{a}")
 
     def value(self, ref):
+        """A coordinate, a parameter, or a number: the numbers of loads are rows of the
+        parameter table too (:func:`_literals`), so one kernel serves any load values."""
         if isinstance(ref, str):
             if ref in self.mech.coordinates:
                 return self.t.sym(f"q[{self.mech.coordinates.index(ref)}, e]")
+            if ref == _G:
+                return self.t.sym(f"params[{self.literal_rows[_G]}, d]")
             return self.t.sym(f"params[{self.prog.param_row(ref)}, d]")
-        return float(ref)
+        v = float(ref)
+        if v in self.prog.literals:
+            return self.t.sym(f"params[{self.prog.param_row(v)}, d]")
+        return self.t.sym(f"params[{self.literal_rows[v]}, d]")
 
     def inv(self, x):
         if isinstance(x, Sym):
@@ -225,6 +236,30 @@ class _Fused(ReactionContextBase):
         return (G - load) / load * 100.0
 
 
+_G = "__gravity__"
+
+
+def _literals(mech, g, n0):
+    """Rows (from ``n0``) of gravity and of every number the loads give, and their
+    values: ``({value or _G: row}, [values])`` in a fixed order."""
+    rows, values = {_G: n0}, [float(g)]
+    for ld in mech.loads:
+        for f in dataclasses.fields(ld):
+            v = getattr(ld, f.name)
+            if is_number(v) and float(v) not in rows:
+                rows[float(v)] = n0 + len(values)
+                values.append(float(v))
+    return rows, values
+
+
+def _load_signature(mech):
+    """The loads with their numbers left out (the kernel's structure)."""
+    return tuple((type(ld).__name__,) + tuple("#" if is_number(getattr(ld, f.name))
+                                              else getattr(ld, f.name)
+                                              for f in dataclasses.fields(ld))
+                 for ld in mech.loads)
+
+
 def _is_float(s):
     try:
         float(s)
@@ -264,7 +299,8 @@ def _source(mech, prog, specs, reduce, g):
     for i, row in enumerate(prog.rows):
         group_type(row[0]).emit(E, i, tuple(row[1:]))
     n0 = len(prog.param_names) + len(prog.literals) + prog.n_derived
-    cyl_rows, _ = _cylinder_rows(mech, n0)
+    cyl_rows, cyl_values = _cylinder_rows(mech, n0)
+    literal_rows, _ = _literals(mech, g, n0 + len(cyl_values))
     tracer = Tracer(E)
     topo = mech.topology
 
@@ -273,7 +309,7 @@ def _source(mech, prog, specs, reduce, g):
 
     rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
                                                                is_coord)}
-    ctx = _Fused(mech, prog, tracer, rod_ends, g, cyl_rows)
+    ctx = _Fused(mech, prog, tracer, rod_ends, cyl_rows, literal_rows)
     fns = {fn for fn, _ in specs}
     if fns & {"F", "Fr", "Rx", "Ry", "R", "Rm", "p"}:
         for ld in mech.loads:
@@ -342,8 +378,8 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
 
 def _kernel(mech, prog, specs, reduce, g):
     """The compiled fused kernel of a structure, its loads and outputs (cached)."""
-    key = (prog.rows, tuple(prog.slot.items()), mech.loads, mech.links, mech.distances,
-           tuple(c.name for c in mech.cylinders), specs, bool(reduce), g,
+    key = (prog.rows, tuple(prog.slot.items()), _load_signature(mech), mech.links,
+           mech.distances, tuple(c.name for c in mech.cylinders), specs, bool(reduce),
            prog.param_names, prog.literals)
     try:
         hit = _KERNELS.get(key)
@@ -460,6 +496,8 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     ptab = prog.param_table(m_.params)
     kern = _kernel(m_, prog, specs, reduce, g)
     _, cyl_values = _cylinder_rows(m_, ptab.shape[0])
+    cyl_values = list(cyl_values) + [np.array([v]) for v in
+                                     _literals(m_, g, ptab.shape[0] + len(cyl_values))[1]]
     if cyl_values:
         md = max([ptab.shape[1]] + [v.shape[0] for v in cyl_values])
         ptab = np.concatenate([np.broadcast_to(ptab, (ptab.shape[0], md))]
