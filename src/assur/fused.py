@@ -57,7 +57,7 @@ from .statics import GRAVITY, ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 
-FORMAT = "1"
+FORMAT = "3"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
@@ -295,7 +295,7 @@ _KERNELS: dict = {}
 def _source(mech, prog, specs, reduce, g):
     """Source of the fused kernel (see the module docstring)."""
     K = prog.k
-    E = Emitter(K)
+    E = Emitter(K, order=1)  # the outputs need first-order analogs at most
     for i, row in enumerate(prog.rows):
         group_type(row[0]).emit(E, i, tuple(row[1:]))
     n0 = len(prog.param_names) + len(prog.literals) + prog.n_derived

@@ -20,7 +20,7 @@ __all__ = ["Sym", "Tracer"]
 
 _BINARY = {np.add: "+", np.subtract: "-", np.multiply: "*", np.true_divide: "/",
            np.power: "**"}
-_CALLS = {np.hypot: "math.hypot", np.arctan2: "math.atan2", np.sin: "math.sin",
+_CALLS = {np.arctan2: "math.atan2", np.sin: "math.sin",
           np.cos: "math.cos", np.tan: "math.tan", np.sqrt: "math.sqrt",
           np.arcsin: "math.asin", np.arccos: "math.acos", np.arctan: "math.atan",
           np.exp: "math.exp", np.log: "math.log", np.absolute: "abs"}
@@ -114,6 +114,11 @@ class Sym:
             return tracer.new(f"-{code(inputs[0])}")
         if ufunc is np.positive:
             return inputs[0]
+        if ufunc is np.hypot:
+            # √(a² + b²): a libm hypot call would keep the element loop from being
+            # vectorized; the lengths of a model are bounded (assur.inputs), no overflow
+            a, b = (code(x) for x in inputs)
+            return tracer.new(f"math.sqrt({a} * {a} + {b} * {b})")
         if ufunc in _CALLS:
             return tracer.new(f"{_CALLS[ufunc]}({', '.join(code(x) for x in inputs)})")
         return NotImplemented
