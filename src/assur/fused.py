@@ -57,7 +57,7 @@ from .statics import GRAVITY, ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 
-FORMAT = "3"
+FORMAT = "4"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
@@ -332,22 +332,30 @@ def _source(mech, prog, specs, reduce, g):
     nout = len(specs)
     post = [ind + "status[e] = st", ind + "ok_ = st < 0", ind + "j = e - e0"]
     after = []
+    # the element loop stages the outputs in a chunk buffer (branch-free, vectorized);
+    # stored: copied out row by row; reduced: one scalar pass over the buffer per chunk
+    post += [ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0" for k_ in range(nout)]
     if reduce:
-        for k_ in range(nout):
-            pre += (f"            mn{k_} = math.inf\n            amn{k_} = -1.0\n"
-                    f"            mx{k_} = -math.inf\n            amx{k_} = -1.0\n")
-            post += [ind + f"u_ = ok_ and (o{k_} < mn{k_})",
-                     ind + f"amn{k_} = float(e - d * npd) if u_ else amn{k_}",
-                     ind + f"mn{k_} = o{k_} if u_ else mn{k_}",
-                     ind + f"u_ = ok_ and (o{k_} > mx{k_})",
-                     ind + f"amx{k_} = float(e - d * npd) if u_ else amx{k_}",
-                     ind + f"mx{k_} = o{k_} if u_ else mx{k_}"]
-            after += [f"            red[{4 * k_}, c] = mn{k_}",
-                      f"            red[{4 * k_ + 1}, c] = mx{k_}",
-                      f"            red[{4 * k_ + 2}, c] = amn{k_}",
-                      f"            red[{4 * k_ + 3}, c] = amx{k_}"]
+        post.append(ind + f"buf[{nout}, j] = 1.0 if ok_ else 0.0")
+        after += [f"            for r in range({nout}):",
+                  "                mn = math.inf",
+                  "                mx = -math.inf",
+                  "                amn = -1.0",
+                  "                amx = -1.0",
+                  "                for jj in range(e1 - e0):",
+                  f"                    if buf[{nout}, jj] > 0.0:",
+                  "                        v = buf[r, jj]",
+                  "                        if v < mn:",
+                  "                            mn = v",
+                  "                            amn = float(e0 + jj - d * npd)",
+                  "                        if v > mx:",
+                  "                            mx = v",
+                  "                            amx = float(e0 + jj - d * npd)",
+                  "                red[4 * r, c] = mn",
+                  "                red[4 * r + 1, c] = mx",
+                  "                red[4 * r + 2, c] = amn",
+                  "                red[4 * r + 3, c] = amx"]
     else:
-        post += [ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0" for k_ in range(nout)]
         after += [f"            for r in range({nout}):",
                   "                for jj in range(e1 - e0):",
                   "                    out[r, e0 + jj] = buf[r, jj]"]
@@ -362,7 +370,7 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
     """Fused kernel: chunks c_start…c_end−1 (runs of ≤ {CHUNK} positions of one
     design); out: ({nout}, E) outputs or red: (4·{nout}, chunks) min, max, argmin,
     argmax per chunk."""
-    buf = np.empty(({max(nout, 1)}, {CHUNK}))
+    buf = np.empty(({nout + 1}, {CHUNK}))
     cpd = (npd + {CHUNK} - 1) // {CHUNK}
     for c in range(c_start, c_end):
         d = c // cpd
