@@ -522,7 +522,9 @@ def fd_steps(case, kern):
     for _, J, H in kern.values():
         s1 = (np.abs(J).max(axis=2) * c).max(axis=-1)  # (M, n): |J| in family units
         s2 = (np.abs(H).max(axis=2) * c[..., None]).max(axis=-2)  # (M, n, k): |∂J/∂q_j|
-        with_h = s2 > 0
+        # a Hessian of rounding size (e.g. a denormal drawn angle) sets no step: only
+        # one large enough that |J|/|H| stays a finite number of lengths
+        with_h = s2 > 1e-200 * np.maximum(s1[..., None], 1.0)
         rho = np.where(with_h, np.minimum(rho, s1[..., None] / np.where(with_h, s2, 1.0)), rho)
     return H_REL * np.minimum(c, rho)
 

@@ -37,6 +37,7 @@ fused kernel does not check continuity between positions (``solve`` does).
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import re
 
@@ -69,6 +70,7 @@ _ARITY = {"X": (1,), "Y": (1,), "dX": (1, 2), "dY": (1, 2), "I": (1, 2), "phi": 
 _CALL = re.compile(r"^\s*([A-Za-z]+)\s*\((.*)\)\s*$")
 
 
+@functools.lru_cache(maxsize=4096)
 def parse_output(text: str) -> tuple:
     """``"Rx(0, 5)"`` → ``("Rx", ("0", "5"))``; raises :class:`ModelError`."""
     m = _CALL.match(str(text))
@@ -464,6 +466,25 @@ class Fused:
         return f"Fused({list(self.outputs)}, shape={self.shape}, reduced={self._reduced is not None})"
 
 
+def _plan(mech, specs, reduce, g):
+    """The kernel, the full parameter table (with the cylinders' constants and the loads'
+    numbers), the trig table and the pre-pass failures of a mechanism's own values."""
+    prog = mech.program()
+    ptab, trig, pose_failures = mech.prepared(prog)
+    kern = _kernel(mech, prog, specs, reduce, g)
+    _, extra = _cylinder_rows(mech, ptab.shape[0])
+    extra = list(extra) + [np.array([v]) for v in _literals(mech, g, ptab.shape[0] +
+                                                            len(extra))[1]]
+    if extra:
+        md = max([ptab.shape[1]] + [v.shape[0] for v in extra])
+        ptab = np.concatenate([np.broadcast_to(ptab, (ptab.shape[0], md))]
+                              + [np.broadcast_to(v, (md,))[None] for v in extra])
+        trig = np.broadcast_to(trig, (trig.shape[0], md))
+    ptab = np.ascontiguousarray(ptab, dtype=float)
+    trig = np.ascontiguousarray(trig)
+    return kern, ptab, trig, pose_failures
+
+
 def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="raise", g=None):
     """Selected outputs of the fused kinematics + statics kernel.
 
@@ -500,26 +521,16 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     inputs.check_params(mech, params)
     m_ = mech.with_params(**params) if params else mech
     g = gravity_of(m_) if g is None else float(g)
-    prog = compile_program(m_)
-    ptab = prog.param_table(m_.params)
-    kern = _kernel(m_, prog, specs, reduce, g)
-    _, cyl_values = _cylinder_rows(m_, ptab.shape[0])
-    cyl_values = list(cyl_values) + [np.array([v]) for v in
-                                     _literals(m_, g, ptab.shape[0] + len(cyl_values))[1]]
-    if cyl_values:
-        md = max([ptab.shape[1]] + [v.shape[0] for v in cyl_values])
-        ptab = np.concatenate([np.broadcast_to(ptab, (ptab.shape[0], md))]
-                              + [np.broadcast_to(v, (md,))[None] for v in cyl_values])
-    per_pos = 8.0 * (prog.k + 2 + (0 if reduce else len(specs)))
+    kern, ptab, trig, pose_failures = m_.memo(("fused", specs, bool(reduce), g),
+                                              lambda: _plan(m_, specs, reduce, g))
+    per_pos = 8.0 * (m_.program().k + 2 + (0 if reduce else len(specs)))
     qarr, shape, m, n = m_.coordinate_array(q, ptab.shape[1], per_pos)
     if ptab.shape[1] == 1 and m > 1:
-        ptab = np.repeat(ptab, m, axis=1)
+        ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
     elif ptab.shape[1] != m:
         raise ModelError(f"mechanism {mech.name!r}: parameters describe {ptab.shape[1]} "
                          f"designs but the coordinates {m}")
-    ptab = np.ascontiguousarray(ptab, dtype=float)
-    pose_failures = m_.prepare(prog, ptab)
-    trig = trig_table(prog, ptab)
+    prog = m_.program()
     E = qarr.shape[1]
     cpd = (n + CHUNK - 1) // CHUNK
     nchunks = m * cpd

@@ -28,6 +28,7 @@ from __future__ import annotations
 import math
 import os
 import re
+import weakref
 from typing import Mapping
 
 import numpy as np
@@ -110,11 +111,18 @@ def bytes_per_position(mech) -> int:
     plus the coordinates and per-position flags. Measured peaks (seed
     003 at 10⁵ positions) stay below this estimate.
     """
-    k = len(mech.coordinates)
-    jet = 1 + k + k * k
-    points = sum(len(g.outputs()) for g in mech.groups)
-    scalars = len(mech.links) + len(mech.distances)
-    return int(8 * ((2 * points + scalars) * jet * 2 + 8 * k + 128))
+    hit = _PER_POSITION.get(mech)
+    if hit is None:
+        k = len(mech.coordinates)
+        jet = 1 + k + k * k
+        points = sum(len(g.outputs()) for g in mech.groups)
+        scalars = len(mech.links) + len(mech.distances)
+        hit = _PER_POSITION[mech] = int(8 * ((2 * points + scalars) * jet * 2 + 8 * k + 128))
+    return hit
+
+
+#: bytes per position of each mechanism (immutable objects)
+_PER_POSITION: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 def check_memory(positions: float, per_position: float, what: str) -> None:
@@ -277,6 +285,10 @@ def _roles(mech):
     return out
 
 
+#: mechanisms whose own parameter values passed :func:`check_params` (immutable objects)
+_CHECKED: "weakref.WeakSet" = weakref.WeakSet()
+
+
 def check_params(mech, params: Mapping | None = None) -> None:
     """Validate parameter overrides ``params`` (and the mechanism's own values) as a
     model file's values are validated.
@@ -290,6 +302,8 @@ def check_params(mech, params: Mapping | None = None) -> None:
     ModelError
         Naming the parameter, the value, the role and the expected span.
     """
+    if not params and mech in _CHECKED:
+        return  # the mechanism's own values, checked on an earlier call
     name = f"mechanism {mech.name!r}"
     merged = dict(mech.params)
     if params:
@@ -339,6 +353,8 @@ def check_params(mech, params: Mapping | None = None) -> None:
                 raise ModelError(f"{name}: {label}: {span_problem(kind, x, pos)}, found "
                                  f"{x!r} [{_SI.get(kind, '-')}]"
                                  + (f" (design {bad})" if a.size > 1 else ""))
+    if not params:
+        _CHECKED.add(mech)
 
 
 def _first_outside(kind, a, positive):
