@@ -168,6 +168,57 @@ def group_types() -> dict[str, type[_Group]]:
     return _SPECS["specs"]
 
 
+#: markers of the generated group-types table in ``docs/model-format.md``
+TABLE_BEGIN = ("<!-- BEGIN group types: generated from the registry by assur.io.schema_table() "
+               "(python docs/gen_groups.py); do not edit -->")
+TABLE_END = "<!-- END group types -->"
+
+
+def _cell(text: str) -> str:
+    return str(text).replace("|", "\\|")
+
+
+def _default(v) -> str:
+    if isinstance(v, float) and v.is_integer():
+        return str(int(v))
+    return str(v)
+
+
+def _key(cls, f) -> str:
+    """One key of the docs table: name (what it holds, unit, default): doc."""
+    if f.role == "point":
+        what = "point it adds" if f.name in cls.out_fields else "point"
+    elif f.role == "line":
+        what = "two points"
+    elif f.role == "value":
+        what = f.quantity + (" > 0" if f.flag == "positive" else "")
+        what += " or a coordinate" if f.coordinate_ok else ""
+    elif f.role == "coordinate":
+        what = f"{f.quantity} coordinate"
+    elif f.role == "position":
+        what = "position"
+    else:
+        what = "1 or -1"
+    if not f.required:
+        what += ", *optional*" + ("" if f.default is None else f", {_default(f.default)}")
+    return f"`{f.name}` ({what})" + (f": {f.doc}" if f.doc else "")
+
+
+def schema_table() -> str:
+    """The Markdown table of the ``[[groups]]`` types of ``docs/model-format.md``,
+    generated from the registry: type, kind, keys (what each holds, its quantity and
+    unit, its default, its description) and the links the group adds."""
+    from ..groups import group_type
+    rows = ["| type | kind | keys | links |", "|---|---|---|---|"]
+    for name in group_types():
+        cls = group_type(name)
+        keys = "; ".join(_key(cls, f) for f in cls.fields)
+        links = ("[carrier], *optional*" if cls.link_roles is None else
+                 "[" + ", ".join(cls.link_roles) + "]")
+        rows.append(f"| `{name}` | {_cell(cls.kind)} | {_cell(keys)} | {_cell(links)} |")
+    return "\n".join(rows) + "\n"
+
+
 def __getattr__(name):
     if name == "GROUP_TYPES":
         return group_types()
