@@ -134,6 +134,9 @@ def group_spec(cls) -> type[_Group]:
         if f.role not in _ROLE_TYPES:
             raise ValueError(f"group type {cls.type_name!r}: field {f.name!r} has the unknown "
                              f"role {f.role!r} (one of: {', '.join(_ROLE_TYPES)})")
+        if f.role in ("value", "coordinate") and f.quantity not in ("length", "angle"):
+            raise ValueError(f"group type {cls.type_name!r}: field {f.name!r} needs a quantity "
+                             f"(length or angle), has {f.quantity!r}")
         fields[f.name] = (_ROLE_TYPES[f.role], ... if f.required else f.default)
 
     def _check_fields(self):
