@@ -103,6 +103,19 @@ class RigidPoint(Group):
         Field("branch", "branch", default=None, doc="side of the triangle's turn, ±1"),
     )
 
+    @classmethod
+    def check_fields(cls, given):
+        if "angle" in given:
+            extra = sorted(set(given) & {"base", "opposite", "branch"})
+            if extra:
+                return ("expected either angle, or base, opposite and branch (the triangle), "
+                        "not both: remove " + ", ".join(extra))
+        elif not {"base", "opposite", "branch"} <= set(given):
+            missing = sorted({"base", "opposite", "branch"} - set(given))
+            return ("expected angle, or base, opposite and branch (the triangle); missing "
+                    + ", ".join(missing))
+        return None
+
     def validate(self, coordinates):
         if self.angle is None and (self.base is None or self.opposite is None):
             return "expected angle, or base, opposite and branch (the triangle)"
