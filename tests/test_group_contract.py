@@ -49,6 +49,7 @@ from typing import Callable
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -64,7 +65,7 @@ RTOL_EQ = 1e-9
 #: characteristic length converting moments to forces [m]
 ELL0 = 1.0
 
-CONTRACT_SETTINGS = settings(SETTINGS, max_examples=25)
+CONTRACT_SETTINGS = settings(SETTINGS, max_examples=examples(25))
 
 
 @dataclass(frozen=True)

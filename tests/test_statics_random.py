@@ -92,6 +92,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import Phase, assume, given, settings, target
 from hypothesis import strategies as st
 
@@ -1054,7 +1055,7 @@ FAMILIES = {"cylinder-lever": cylinder_lever_family, "crank": crank_family,
             "slider": slider_family, "cylinder radius (k = 2)": cylinder_radius_family,
             "RRP": rrp_family, "RPR": rpr_family, "PRP": prp_family}
 # every random load placement is a new kernel to compile: few examples per family
-FUSED_SETTINGS = settings(SETTINGS, max_examples=6)
+FUSED_SETTINGS = settings(SETTINGS, max_examples=max(3, examples(6)))
 
 
 def check_fused(case, data):
