@@ -195,7 +195,7 @@ class Builder:
         if radius_coord:
             self.coordinate(radius_coord, r, 0.2 * r, r)
         self.add("crank", "crank", pivot=pivot, out=out,
-                 radius=radius_coord or self.par("R" + out, r), angle=coord,
+                 radius=radius_coord or self.par("R" + out, r), q=coord,
                  phase=self.par("phase", phase), links=("1",))
         self.coordinate(coord, th0 - phase, 1.0, 1.0)
 
@@ -669,7 +669,7 @@ def check_closure(case, r):
             errs[g.name] = np.maximum(np.abs(dist(g.a, g.out) - v(g.ra)),
                                       np.abs(dist(g.b, g.out) - v(g.rb)))
         elif isinstance(g, Crank):
-            want = P[g.pivot] + v(g.radius)[..., None] * _dir(v(g.angle) + v(g.phase))
+            want = P[g.pivot] + v(g.radius)[..., None] * _dir(v(g.q) + v(g.phase))
             errs[g.name] = _norm(P[g.out] - want)
         elif isinstance(g, SliderInput):
             want = P[g.origin] + (v(g.s) + v(g.offset))[..., None] * _dir(v(g.direction))
@@ -967,7 +967,7 @@ def test_crank_radius_as_coordinate(data):
     test); minimal case::
 
         m = (Mechanism("polar", coordinates=("th", "R")).frame("O", 0.0, 0.0)
-             .crank("c", pivot="O", out="A", radius="R", angle="th"))
+             .crank("c", pivot="O", out="A", radius="R", q="th"))
         m.solve(np.array([[0.4, 0.8]])).dx("A")  # [[-0.3115, cos 0.4 = 0.9211]]
     """
     b = Builder(data, "polar crank", ("th", "R"))

@@ -347,7 +347,7 @@ name = "crank"
 pivot = "0"
 out = "A"
 radius = "r"
-angle = "q"
+q = "q"
 phase = "90 deg"
 [[groups]]
 type = "dyad"

@@ -47,7 +47,7 @@ name = "crank"
 pivot = "O"
 out = "A"
 radius = "r"
-angle = "q"
+q = "q"
 links = ["2"]
 
 [[groups]]
@@ -119,7 +119,7 @@ def test_rpr_slotted_lever_file_equals_python():
     model = io.loads(SLOTTED, name="slotted.toml")
     py = (Mechanism("slotted", coordinates=("q",), params={"r": 0.1, "e": 0.01, "l": 0.5})
           .frame("O", 0.0, 0.0).frame("B0", 0.0, -0.3)
-          .crank("crank", pivot="O", out="A", radius="r", angle="q", links=("2",))
+          .crank("crank", pivot="O", out="A", radius="r", q="q", links=("2",))
           .rpr_dyad("III", a="B0", b="A", out="D", length="l", offset="e", branch=1,
                     links=("rod", "sleeve"))
           .link("rod", "B0", "D"))
@@ -269,7 +269,7 @@ def test_schema_table_rows():
     rigid = next(r for r in rows if r.startswith("| `rigid_point` |"))
     assert "`angle` (angle, *optional*)" in rigid and rigid.endswith("| [carrier], *optional* |")
     crank = next(r for r in rows if r.startswith("| `crank` |"))
-    assert "`angle` (angle coordinate)" in crank and "`out` (point it adds)" in crank
+    assert "`q` (angle coordinate)" in crank and "`out` (point it adds)" in crank
     assert all(r.count(" | ") == 3 for r in rows[2:])  # every pipe in a cell is escaped
 
 

@@ -628,9 +628,9 @@ def reference_statics(mot, forces, couples):
         elif isinstance(g, Crank):
             (l,) = g.links
             pin(mech.owner(g.pivot), l, g.pivot)
-            act[g.angle] = column(("m", node(l), 1.0), ("m", node(mech.owner(g.pivot)), -1.0))
+            act[g.q] = column(("m", node(l), 1.0), ("m", node(mech.owner(g.pivot)), -1.0))
             p, parts, _ = joints[(mech.owner(g.pivot), l)]
-            joints[(mech.owner(g.pivot), l)] = (p, parts, act[g.angle])
+            joints[(mech.owner(g.pivot), l)] = (p, parts, act[g.q])
         elif isinstance(g, SliderInput):
             (l,) = g.links
             beta = np.broadcast_to(case.val(g.direction), shape)
@@ -1197,7 +1197,7 @@ def test_inertia_without_qddot_two_coordinates(data):
         from assur.statics import solve
         m = (Mechanism("k2", coordinates=("th", "S2"))
              .frame("A0", 0.0, 0.0).frame("B0", 0.8, 0.1)
-             .crank("c", pivot="A0", out="A", radius=0.3, angle="th", links=("1",))
+             .crank("c", pivot="A0", out="A", radius=0.3, q="th", links=("1",))
              .dyad("II", a="A", b="B0", out="C", ra="S2", rb=0.7, branch=1,
                    links=("2", "3"))
              .mass("3", 10.0, "C", J=0.5))

@@ -38,7 +38,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import math
 import re
 
 import numpy as np
@@ -53,8 +52,7 @@ from .kernel.cache import load_source
 from .kernel.emit import Emitter
 from .kernel.source import CHUNK
 from .kernel.sym import Sym, Tracer, code
-from .program import compile_program, trig_table
-from .statics import GRAVITY, ReactionContextBase
+from .statics import ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 

@@ -35,6 +35,9 @@ import numpy as np
 
 from .errors import ModelError
 
+__all__ = ["max_memory", "fmt_bytes", "bytes_per_position", "check_memory", "coordinates_array",
+           "span_problem", "check_params", "check_finite", "SPANS", "MAX_MEMORY_ENV"]
+
 #: environment variable holding the memory limit of one request
 MAX_MEMORY_ENV = "ASSUR_MAX_MEMORY"
 #: smallest default memory limit of one request [bytes] (2 GiB)

@@ -18,11 +18,11 @@ Real-time quantities follow from the analogs for any coordinate rates
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-from .errors import AssemblyError, SingularPositionError
+from .errors import SingularPositionError
+
+__all__ = ["Kinematics", "SINGULAR_RTOL"]
 
 #: |φ_j'| below this fraction of its largest magnitude over the range counts as zero
 SINGULAR_RTOL = 1e-9

@@ -33,6 +33,8 @@ from typing import Union
 
 import numpy as np
 
+__all__ = ["Weight", "PointForce", "Couple", "Spring", "Mass", "Cylinder", "LOAD_TYPES"]
+
 Ref = Union[str, float, int]
 
 

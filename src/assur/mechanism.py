@@ -13,7 +13,6 @@ generalized coordinates are arrays of shape ``(n,)`` (one design) or ``(m, n)``
 from __future__ import annotations
 
 import math
-from functools import cached_property
 from types import MappingProxyType
 from typing import Iterable, Mapping
 
@@ -154,6 +153,12 @@ class Mechanism:
             raise ModelError(f"unknown group type {type_name!r}; known: {sorted(types)}")
         cls = types[type_name]
         roles = {f.name: f.role for f in cls.fields}
+        for f in cls.fields:
+            if f.role == "coordinate" and f.name != "angle" and "angle" in kw and \
+                    "angle" not in roles:
+                raise ModelError(f"{cls.kind} {name!r}: its coordinate is given as "
+                                 f"{f.name}=…, not angle=… (angle is a fixed angle in every "
+                                 f"group that has one)")
         for k, v in list(kw.items()):
             if k == "links" or roles.get(k) == "line":
                 kw[k] = tuple(v) if v is not None else (() if k == "links" else None)

@@ -333,11 +333,9 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         names_p = prog.out_pts if out_pts is None else tuple(out_pts)
         names_s = prog.out_sca if out_pts is None else tuple(out_sca)
         kern = prog.kernel(names_p, names_s)
-        measures = prog.measures
     else:
         names_p, names_s = tuple(out_pts), tuple(out_sca)
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), ())
-        measures = ()
     npo, nso = len(names_p), len(names_s)
     ang = [i for i, s in enumerate(names_s) if prog.kinds[s] == "angle"]
     sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang))

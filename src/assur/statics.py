@@ -28,7 +28,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import AssemblyError, ModelError
+from .errors import ModelError
+
+__all__ = ["Statics", "GRAVITY", "applied_loads", "virtual_work_forces", "solve",
+           "ReactionContextBase", "ReactionContext"]
 
 #: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
 #: value engineering worksheets use (all the seeds do). A model may set its own
@@ -254,7 +257,6 @@ def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):
     ``F_j = −Q_j``, ``Q_j = Σ F·∂r/∂q_j + Σ M·∂φ/∂q_j`` (spring forces enter as the
     point forces of their tension).
     """
-    mech = kin.mechanism
     forces, couples, _ = applied_loads(kin, qdot, qddot, g)
     Q = np.zeros((kin.k, kin.m, kin.n))
     for link, pt, fx, fy in forces:

@@ -3,7 +3,6 @@ angle): seed 003 φ34 = φ3 + φBD, seed 000's bell-crank triangle L3, L4, L34."
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import ClassVar
 
