@@ -70,6 +70,9 @@ S_MIN, S_MAX = 0.42, 0.67
 TARGET_A = 1e8  # positions/s, issue target for the cylinder–lever group alone
 TARGET_B = 2e7  # positions/s, issue target for the whole hitch with analogs
 TARGET_C = 1e7  # positions/s, issue 3 target for the full pipeline (analyze + all values)
+TARGET_D = 1e7  # designs·positions/s, issue 7: reduced over positions in the kernel (same
+                # order as (c); the issue names no number)
+TARGET_SOLVE1, TARGET_ANALYZE1 = 20e-6, 50e-6  # s, issue 7: one position
 TOL = 1e-9      # agreement: max |Δ| < TOL for every compared quantity (absolute)
 TOL_REL = 1e-9  # (c) agreement: max |Δ| / max |peer| < TOL_REL for every quantity
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -253,6 +256,50 @@ def assur_pipeline(mech, S, P6):
     return v
 
 
+#: the values of (c) that the fused kernel computes (§4–§6, without §2–§3)
+FUSED_KEYS = ("Fgc", "Pgc", "G56", "GS6", "dGS65", "Fgc_R", "Ra", "Rb", "dRa", "dRb")
+
+
+def fused_outputs():
+    """The outputs of the fused pipeline (c'): §4 force, pressure, capacities, reserve;
+    §5 the tabulated reactions and the force from them; X(S6) for §6."""
+    outs = ["F(S)", "p(ГЦ)", "G(ГЦ, 56)", "G(ГЦ, S6)", "reserve(ГЦ, S6, P6)", "Fr(S)",
+            "X(S6)"]
+    for _, i, j, _ in SEED_REACTIONS + EXTRA_REACTIONS:
+        outs += [f"Rx({i}, {j})", f"Ry({i}, {j})"]
+    return outs
+
+
+def fused_pipeline(mech, S, outs, stability):
+    """(c'): ``mech.evaluate(S, outputs=…)`` — one fused kernel writes only these
+    values — then the axle reactions from X(S6) (``assur.stability.axle_reactions``)."""
+    f = mech.evaluate(S, outputs=outs)
+    machine, weight = stability
+    st = stability_module().axle_reactions(machine, weight, f["X(S6)"])
+    v = {"Fgc": f["F(S)"], "Pgc": f["p(ГЦ)"], "G56": f["G(ГЦ, 56)"], "GS6": f["G(ГЦ, S6)"],
+         "dGS65": f["reserve(ГЦ, S6, P6)"], "Fgc_R": f["Fr(S)"]}
+    for name, i, j, _ in SEED_REACTIONS + EXTRA_REACTIONS:
+        v[name + "_ij"] = np.stack([f[f"Rx({i}, {j})"], f[f"Ry({i}, {j})"]], -1)
+    v.update(Ra=st.reaction("A"), Rb=st.reaction("B"), dRa=st.share("A"), dRb=st.share("B"))
+    return v
+
+
+def stability_module():
+    from assur import stability
+    return stability
+
+
+def check_fused(vf, va):
+    """Worst relative difference of (c') against the array pipeline (c) per value."""
+    rows = []
+    keys = list(FUSED_KEYS) + [n + "_ij" for n, *_ in SEED_REACTIONS + EXTRA_REACTIONS]
+    for k in keys:
+        a, b = np.asarray(vf[k], float), np.asarray(va[k], float)
+        d = float(np.max(np.abs(a - b)) / max(np.max(np.abs(b)), 1e-300))
+        rows.append((k, d, bool(np.all(np.isfinite(a))) and d < TOL_REL))
+    return rows
+
+
 def pipeline_pairs(v):
     """(label, group, assur array, peer key) for every compared quantity of (c)."""
     out = [(k, "§4 Fgc Pgc G56 GS6 ΔGS65", v[k], k) for k in ("Fgc", "Pgc", "G56", "GS6",
@@ -363,8 +410,8 @@ def check_peer_tables():
 def cache_dirs(pkg_dir):
     """Directories where numba may keep assur's compiled kernels."""
     dirs = [pkg_dir]
-    from assur import _kernel  # generated kernels live outside the package
-    dirs.append(str(_kernel.cache_dir()))
+    from assur.kernel import cache_dir  # generated kernels live outside the package
+    dirs.append(str(cache_dir()))
     if os.environ.get("NUMBA_CACHE_DIR"):
         dirs.append(os.environ["NUMBA_CACHE_DIR"])
     return dirs
@@ -625,11 +672,101 @@ def main(argv=None):
         print("      R07y, R67y and §5.2–5.3); there the same printed formulas evaluated in "
               "long double (untimed) agree with assur.")
     print()
+
+    # ---- (c') the fused pipeline -----------------------------------------------------
+    outs = fused_outputs()
+    carry = hitch.machine
+    mach = carry.machine_for({r: float(np.atleast_1d(hitch.params[r])[0])
+                              for r in carry.ref_names()})
+    stab = (mach, float(hitch.value_of(carry.weight)))
+    print("(c') the same §4–§6 values from the fused kinematics + statics kernel (issue 7)")
+    print(f"    assur: examples.hitch_003().evaluate(S, outputs=[{len(outs)} outputs: F(S), "
+          "p(ГЦ), G(ГЦ, 56), G(ГЦ, S6), reserve(ГЦ, S6, P6), Fr(S),")
+    print("           X(S6), Rx/Ry of the 9 tabulated joints]) + axle reactions from X(S6) — "
+          "one generated loop writes only these")
+    print("    numpy: seed003_numpy.pipeline (as in (c), which also computes §2–§3)")
+    per_pos = 8 * (len(outs) + 2)
+    print(f"    memory per position: {per_pos} B (outputs, q, status) against "
+          f"{int(__import__('assur').inputs.bytes_per_position(hitch))} B estimated for "
+          "analyze()")
+    print(HEAD)
+    fchecks = []
+    for n in sizes:
+        S = np.linspace(S_MIN, S_MAX, n)
+        funcs = {"fused": lambda: fused_pipeline(hitch, S, outs, stab),
+                 "numpy": lambda: peer.pipeline(S)}
+        for f in funcs.values():
+            f()
+        best, reps, last = time_interleaved(funcs, min_reps_for(n), args.budget)
+        print(line(n, "evaluate(S, outputs=…) + axles", reps, best["fused"], best["numpy"],
+                   TARGET_C))
+        fchecks.append((n, check_fused(last["fused"], assur_pipeline(hitch, S, P6))))
+        del last
+    print(f"  agreement fused vs analyze (c); pass if max|Δ|/max|value| < {TOL_REL:g}")
+    for n, rows in fchecks:
+        k, d, _ = max(rows, key=lambda r: r[1])
+        ok = all(r[2] for r in rows)
+        print(f"    N={fmt_n(n):>4}  {len(rows)} values  worst {k:<8} {d:9.2e}  "
+              f"{'ok' if ok else 'MISMATCH'}")
+        ok_all &= ok
+    print()
+
+    # ---- (d) a batch of designs reduced in the kernel ---------------------------------
+    M, npos = 10**5, 50
+    rng = np.random.default_rng(3)
+    pert = {k: float(hitch.params[k]) * (1 + 0.01 * rng.standard_normal(M))
+            for k in ("L3", "L5", "L6", "L7", "XS6", "YS6") if k in hitch.params}
+    Sd = np.broadcast_to(np.linspace(S_MIN, S_MAX, npos), (M, npos))
+    out_d = ["reserve(ГЦ, S6, P6)"]
+    md = 1000
+    pert_small = {k: v[:md] for k, v in pert.items()}
+
+    def reduce_d():
+        return hitch.evaluate(Sd, pert, outputs=out_d, reduce=True, on_failure="report")
+
+    def array_d():
+        a = hitch.analyze(Sd[:md], params=pert_small, on_failure="report")
+        return a.cylinder("ГЦ").reserve("S6", P6).min(axis=1)
+
+    print(f"(d) minimum capacity reserve ΔGS65 over {npos} positions for each of {M:.0e} "
+          f"designs (±1 % on {', '.join(pert)}), reduced in the kernel")
+    print("    assur: evaluate(S, params, outputs=['reserve(ГЦ, S6, P6)'], reduce=True) — "
+          "no position stored")
+    print(f"    peer:  analyze(S, params) + .reserve('S6', P6).min(axis=1) on the first {md} "
+          "designs (the array pass)")
+    print(f"    memory per position: 16 B (q, status) + {4 * 8 * len(out_d)} B per "
+          f"{256}-position chunk for the reductions")
+    reduce_d()
+    array_d()
+    best, reps, last = time_interleaved({"d": reduce_d, "a": array_d}, 3, args.budget)
+    rd, ra = M * npos / best["d"], md * npos / best["a"]
+    dmin = float(np.max(np.abs(last["d"].min(out_d[0])[:md] - last["a"])))
+    ok = dmin < 1e-9 * float(np.max(np.abs(last["a"])))
+    print(f"    assur {best['d'] * 1e3:9.1f} ms  {rd:.3e} designs·positions/s;  array pass "
+          f"{ra:.3e}/s;  ratio {rd / ra:.1f}x;  target {TARGET_D:.0e}  "
+          f"{'yes' if rd >= TARGET_D else 'no'};  min agrees to {dmin:.1e} %  "
+          f"{'ok' if ok else 'MISMATCH'}")
+    ok_all &= ok
+    del last
+    print()
+
+    # ---- one position ------------------------------------------------------------------
+    q1 = np.array([0.5])
+    one = {"solve": lambda: hitch.solve(q1), "analyze": lambda: hitch.analyze(q1),
+           "evaluate": lambda: hitch.evaluate(q1, outputs=["G(ГЦ, 56)"])}
+    best, reps, _ = time_interleaved(one, 200, 0.3 * args.budget)
+    print("one position (dynamics calls the mechanism thousands of times, the page once per "
+          "slider move):")
+    for k, tgt in (("solve", TARGET_SOLVE1), ("analyze", TARGET_ANALYZE1),
+                   ("evaluate", TARGET_ANALYZE1)):
+        print(f"    {k + '(S = 0.5)':<22} {best[k] * 1e6:9.1f} µs   target ≤ {tgt * 1e6:.0f} µs  "
+              f"{'yes' if best[k] <= tgt else 'no'}")
+    print()
     if args.compile_sizes:
         compile_section([int(v) for v in args.compile_sizes.split(",")])
         print()
-    print("targets (issues): (a) ≥ 1e8, (b) ≥ 2e7, (c) ≥ 1e7 positions/s on this 2-core "
-          "machine; 'met' compares the assur column only.")
+    print("targets (issues): (a) ≥ 1e8, (b) ≥ 2e7, (c) and (c') ≥ 1e7 positions/s, (d) ≥ 1e7 "
+          "designs·positions/s on this 2-core machine; 'met' compares the assur column only.")
     print("These are throughputs and ratios to a numpy peer in the same process, for reading; "
           "no test asserts on time.")
     if not ok_all:

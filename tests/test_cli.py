@@ -1,9 +1,7 @@
 """The command line: check, analyze, demo — exit codes, messages, files written."""
 
-import csv
 from pathlib import Path
 
-import numpy as np
 import pytest
 from typer.testing import CliRunner
 

@@ -2,7 +2,6 @@
 evaluated by a whitelisted expression walker (never ``eval``), column sign maps,
 ``[model] gravity`` — general hooks, so that no seed is named in the core."""
 
-import math
 import pathlib
 import re
 

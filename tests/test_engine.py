@@ -25,7 +25,7 @@ def crank_dyad(ra=2.65, rb=0.6):
     """Crank r = 1 about the origin, dyad from the crank tip to the frame point (0, 3)."""
     return (Mechanism("crank-dyad", coordinates=("q",), params=dict(ra=ra, rb=rb))
             .frame("O", 0.0, 0.0).frame("B", 0.0, 3.0)
-            .crank("crank", pivot="O", out="A", radius=1.0, angle="q", links=("1",))
+            .crank("crank", pivot="O", out="A", radius=1.0, q="q", links=("1",))
             .dyad("II", a="A", b="B", out="C", ra="ra", rb="rb", branch=1, links=("2", "3"))
             .link("1", "O", "A").link("2", "A", "C").link("3", "B", "C"))
 
@@ -40,7 +40,7 @@ def crank_dyad(ra=2.65, rb=0.6):
     (lambda: Mechanism("x").frame("O", 0, 0).frame("P", 1, 0)
      .dyad("d", a="O", b="P", out="C", ra=1, rb=1, branch=0), "branch must be +1 or -1"),
     (lambda: Mechanism("x").frame("O", 0, 0).crank("c", pivot="O", out="A", radius=1,
-                                                    angle="phi"), "not a generalized coordinate"),
+                                                    q="phi"), "not a generalized coordinate"),
     (lambda: Mechanism("x").frame("O", 0, 0).link("1", "O", "Z"), "unknown point 'Z'"),
     (lambda: Mechanism("x", params={"L": float("nan")}), "finite"),
     (lambda: Mechanism("x", coordinates=()), "at least one generalized coordinate"),

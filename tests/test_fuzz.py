@@ -11,7 +11,6 @@ cases every time (4 × 80 file cases with ``@seed`` + 40 option cases).
 
 from __future__ import annotations
 
-import math
 import re
 
 import numpy as np

@@ -49,6 +49,7 @@ from typing import Callable
 
 import numpy as np
 import pytest
+from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -64,7 +65,7 @@ RTOL_EQ = 1e-9
 #: characteristic length converting moments to forces [m]
 ELL0 = 1.0
 
-CONTRACT_SETTINGS = settings(SETTINGS, max_examples=25)
+CONTRACT_SETTINGS = settings(SETTINGS, max_examples=examples(25))
 
 
 @dataclass(frozen=True)
@@ -367,7 +368,7 @@ def test_failure_names_default_and_carrier_links():
 
         from assur import Mechanism
         m = (Mechanism("x", coordinates=("th",)).frame("A0", 0, 0).frame("B0", 1, 0)
-             .crank("c", pivot="A0", out="A", radius=0.3, angle="th")
+             .crank("c", pivot="A0", out="A", radius=0.3, q="th")
              .dyad("bad", a="A", b="B0", out="E", ra=5.0, rb=0.1, branch=1))
         m.solve([0.1])  # AssemblyError: RRR dyad 'bad' cannot assemble at position 0
                         # (th = 0.1): … — no links; err.links == ()
@@ -375,7 +376,7 @@ def test_failure_names_default_and_carrier_links():
     Fix: messages and ``AssemblyError.links`` take the group's links from the
     topology (:func:`assur.diagnostics.group_links`)."""
     base = (Mechanism("x", coordinates=("th",)).frame("A0", 0.0, 0.0).frame("B0", 1.0, 0.0)
-            .crank("c", pivot="A0", out="A", radius=0.3, angle="th"))
+            .crank("c", pivot="A0", out="A", radius=0.3, q="th"))
     with pytest.raises(AssemblyError) as info:
         base.dyad("bad", a="A", b="B0", out="E", ra=5.0, rb=0.1, branch=1).solve([0.1])
     assert info.value.links == ("bad:a", "bad:b")

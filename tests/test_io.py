@@ -166,10 +166,12 @@ MESSAGES = {
                            'groups[0].lever',
     "point_defined_later": 'point "45" is defined later, by groups[2]',
     "points_not_on_one_link": "points '01' and '23' are not both on link '3'",
+    "prp_dyad_direction_given_as_length": 'expected an angle (e.g. "22 deg"), found "150 mm"',
     "range_count_below_two": "expected an integer ≥ 2, found 1",
     "range_two_forms": "not both values and from/to",
     "range_unknown_coordinate": 'unknown coordinate "T": expected one of the coordinates (S)',
     "rigid_point_both_forms": "expected either angle, or base, opposite and branch",
+    "rpr_dyad_missing_length": 'missing required key "length"',
     "solve_bracket_reversed": "expected [low, high] with low < high",
     "solve_equals_wrong_dimension": 'expected a length (e.g. "0.48 m"), found "20 deg"',
     "solve_no_root": "no root for L4 in the bracket [0.48, 0.9]",
@@ -345,7 +347,7 @@ name = "crank"
 pivot = "0"
 out = "A"
 radius = "r"
-angle = "q"
+q = "q"
 phase = "90 deg"
 [[groups]]
 type = "dyad"

@@ -307,7 +307,7 @@ def crank_rocker(positions):
     return (Mechanism("crank-rocker", coordinates=("q",), params=dict(ra=3.5, rb=2.5, P=100.0),
                       tables={"ratios": [("1", "3")], "transmissions": ["C"]})
             .frame("O", 0.0, 0.0).frame("B", 4.0, 0.0)
-            .crank("crank", pivot="O", out="A", radius=1.0, angle="q", links=("1",))
+            .crank("crank", pivot="O", out="A", radius=1.0, q="q", links=("1",))
             .dyad("II", a="A", b="B", out="C", ra="ra", rb="rb", branch=1, links=("2", "3"))
             .link("1", "O", "A").link("2", "A", "C").link("3", "B", "C")
             .weight("C", "P")).analyze(positions)

@@ -15,7 +15,7 @@ import pytest
 from assur import examples
 from assur.columns import column_signs, signs_of
 
-from seed_tables import T003_4_1, T003_5_1, assert_printed, table
+from seed_tables import T003_4_1, T003_5_1, assert_printed
 
 
 @pytest.fixture(scope="module")

@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import examples as n_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -129,7 +130,7 @@ fractions = st.floats(0.05, 0.95)
 weights = st.floats(1e3, 1e5)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=n_examples(150), deadline=None)
 @given(L=lengths, bf=fractions, reach=st.floats(0.05, 3.0), p_ues=weights,
        x_gr=st.floats(0.0, 2.0), p_gr=st.floats(0.0, 3e4))
 def test_lab1_eq16_eq18_agree_with_general_limit(L, bf, reach, p_ues, x_gr, p_gr):
@@ -156,7 +157,7 @@ def test_lab1_eq16_eq18_agree_with_general_limit(L, bf, reach, p_ues, x_gr, p_gr
         assert math.isclose(float(at.steered_share), 20.0, rel_tol=1e-9)
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=n_examples(100), deadline=None)
 @given(xa=st.floats(-5, 5), gap=st.floats(0.3, 5), steer=st.sampled_from(["front", "rear"]),
        # weights of at least 1 mN or none (a subnormal weight, 5e-324 N, has no physical
        # meaning and defeats any relative tolerance)

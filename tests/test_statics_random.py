@@ -91,6 +91,8 @@ import math
 from dataclasses import replace
 
 import numpy as np
+import pytest
+from conftest import examples
 from hypothesis import Phase, assume, given, settings, target
 from hypothesis import strategies as st
 
@@ -626,9 +628,9 @@ def reference_statics(mot, forces, couples):
         elif isinstance(g, Crank):
             (l,) = g.links
             pin(mech.owner(g.pivot), l, g.pivot)
-            act[g.angle] = column(("m", node(l), 1.0), ("m", node(mech.owner(g.pivot)), -1.0))
+            act[g.q] = column(("m", node(l), 1.0), ("m", node(mech.owner(g.pivot)), -1.0))
             p, parts, _ = joints[(mech.owner(g.pivot), l)]
-            joints[(mech.owner(g.pivot), l)] = (p, parts, act[g.angle])
+            joints[(mech.owner(g.pivot), l)] = (p, parts, act[g.q])
         elif isinstance(g, SliderInput):
             (l,) = g.links
             beta = np.broadcast_to(case.val(g.direction), shape)
@@ -1045,6 +1047,63 @@ def test_prp_dyad(data):
 
 
 # ---------------------------------------------------------------------------------
+# the fused kinematics + statics kernel (assur.fused) against the array pass
+# ---------------------------------------------------------------------------------
+#: relative tolerance of the fused kernel against the separate reverse pass
+RTOL_FUSED = 1e-9
+FAMILIES = {"cylinder-lever": cylinder_lever_family, "crank": crank_family,
+            "slider": slider_family, "cylinder radius (k = 2)": cylinder_radius_family,
+            "RRP": rrp_family, "RPR": rpr_family, "PRP": prp_family}
+# every random load placement is a new kernel to compile: few examples per family
+FUSED_SETTINGS = settings(SETTINGS, max_examples=max(3, examples(6)))
+
+
+def check_fused(case, data):
+    """The fused kernel's reactions (every joint: Rx, Ry, Rm) and actuator forces (F by
+    virtual work, Fr from the reactions) equal those of :func:`assur.statics.solve`
+    (the separate reverse pass over arrays) to RTOL_FUSED × the reaction scale R or
+    the actuator scale A of the module docstring (static loads: the fused kernel has
+    no inertia)."""
+    loads = draw_loads(data, case.mech, "loads")
+    assume_springs_long(case, loads)
+    full = Solved(case, loads, None, None)
+    outs = [f"{f}({i}, {j})" for _, i, j in full.st.joints for f in ("Rx", "Ry", "Rm")]
+    outs += [f"{f}({c})" for c in case.mech.coordinates for f in ("F", "Fr")]
+    fz = full.mech.evaluate(case.api_q(case.Q), outputs=outs, on_failure="report")
+    assert fz.ok.all()
+
+    def where():
+        return reproducer(case, loads, None, None)
+
+    w = 0.0
+    for _, i, j in full.st.joints:
+        got = np.stack([case.shaped(fz[f"Rx({i}, {j})"]), case.shaped(fz[f"Ry({i}, {j})"])], -1)
+        w = max(w, _assert_close(f"fused reaction of {i} on {j}", got, full.reaction(i, j),
+                                 RTOL_FUSED * full.R, where))
+        w = max(w, _assert_close(f"fused moment of {i} on {j}",
+                                 case.shaped(fz[f"Rm({i}, {j})"]) / ELL0,
+                                 full.moment(i, j) / ELL0, RTOL_FUSED * full.R, where))
+    for jc, c in enumerate(case.mech.coordinates):
+        tol = RTOL_FUSED * full.A[..., jc]
+        w = max(w, _assert_close(f"fused actuator force {c} (virtual work)",
+                                 case.shaped(fz[f"F({c})"]), full.vw(c), tol, where))
+        w = max(w, _assert_close(f"fused actuator force {c} (reactions)",
+                                 case.shaped(fz[f"Fr({c})"]), full.rx(c), tol, where))
+    WORST["fused vs array pass"] = max(WORST.get("fused vs array pass", 0.0), w)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("family", list(FAMILIES))
+@FUSED_SETTINGS
+@given(data=st.data())
+def test_fused_kernel_reactions_equal_the_reverse_pass(family, data):
+    """Random mechanisms of every family with random static loads: the fused kernel
+    (one generated loop: positions, jets, loads, reactions in reverse order) gives the
+    reactions and actuator forces of the separate array pass to 1e-9 relative."""
+    check_fused(prepare(FAMILIES[family](data)), data)
+
+
+# ---------------------------------------------------------------------------------
 # regressions: bugs these tests found (fixed)
 # ---------------------------------------------------------------------------------
 @BUG_SETTINGS
@@ -1138,7 +1197,7 @@ def test_inertia_without_qddot_two_coordinates(data):
         from assur.statics import solve
         m = (Mechanism("k2", coordinates=("th", "S2"))
              .frame("A0", 0.0, 0.0).frame("B0", 0.8, 0.1)
-             .crank("c", pivot="A0", out="A", radius=0.3, angle="th", links=("1",))
+             .crank("c", pivot="A0", out="A", radius=0.3, q="th", links=("1",))
              .dyad("II", a="A", b="B0", out="C", ra="S2", rb=0.7, branch=1,
                    links=("2", "3"))
              .mass("3", 10.0, "C", J=0.5))

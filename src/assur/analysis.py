@@ -10,6 +10,8 @@ from . import statics as _statics
 from .inputs import check_finite
 from .hydraulics import CylinderResult
 
+__all__ = ["Analysis", "analyze", "gravity_of"]
+
 
 class Analysis:
     """Results of :meth:`assur.Mechanism.analyze`.

@@ -7,6 +7,8 @@ engineer can act on it without a debugger.
 
 from __future__ import annotations
 
+__all__ = ["ModelError", "AssemblyError", "SingularPositionError"]
+
 
 class ModelError(ValueError):
     """A mechanism description is inconsistent (unknown point, duplicate name, bad value)."""

@@ -25,6 +25,8 @@ import numpy as np
 
 from .mechanism import Mechanism
 
+__all__ = ["hitch_003", "hitch_003_range", "header_000", "header_000_fixed", "header_000_range"]
+
 #: seed 003: the exact roots of its three Find blocks (printed rounded to 4 digits:
 #: L4 = 0.6613, Sp = 0.4694, L7 = 0.7522; the printed tables used these values).
 #: ``hitch_003.toml`` solves them again from the conditions; the roots agree to 1e-9.

@@ -24,6 +24,8 @@ import numpy as np
 
 from .errors import SingularPositionError
 
+__all__ = ["piston_area", "CylinderResult"]
+
 
 def piston_area(bore, rod=0.0, side="piston"):
     """Pressurised area [m²] of a cylinder with bore D and rod d [m]."""

@@ -28,11 +28,15 @@ from __future__ import annotations
 import math
 import os
 import re
+import weakref
 from typing import Mapping
 
 import numpy as np
 
 from .errors import ModelError
+
+__all__ = ["max_memory", "fmt_bytes", "bytes_per_position", "check_memory", "coordinates_array",
+           "span_problem", "check_params", "check_finite", "SPANS", "MAX_MEMORY_ENV"]
 
 #: environment variable holding the memory limit of one request
 MAX_MEMORY_ENV = "ASSUR_MAX_MEMORY"
@@ -110,11 +114,18 @@ def bytes_per_position(mech) -> int:
     plus the coordinates and per-position flags. Measured peaks (seed
     003 at 10⁵ positions) stay below this estimate.
     """
-    k = len(mech.coordinates)
-    jet = 1 + k + k * k
-    points = sum(len(g.outputs()) for g in mech.groups)
-    scalars = len(mech.links) + len(mech.distances)
-    return int(8 * ((2 * points + scalars) * jet * 2 + 8 * k + 128))
+    hit = _PER_POSITION.get(mech)
+    if hit is None:
+        k = len(mech.coordinates)
+        jet = 1 + k + k * k
+        points = sum(len(g.outputs()) for g in mech.groups)
+        scalars = len(mech.links) + len(mech.distances)
+        hit = _PER_POSITION[mech] = int(8 * ((2 * points + scalars) * jet * 2 + 8 * k + 128))
+    return hit
+
+
+#: bytes per position of each mechanism (immutable objects)
+_PER_POSITION: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 def check_memory(positions: float, per_position: float, what: str) -> None:
@@ -145,7 +156,7 @@ def check_memory(positions: float, per_position: float, what: str) -> None:
 
 
 # ---- coordinates ---------------------------------------------------------------------
-def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
+def coordinates_array(q, mech, designs: int = 1, per_position: float | None = None) -> np.ndarray:
     """The generalized coordinates ``q`` of :meth:`Mechanism.solve` as a finite float
     array, checked before the engine allocates anything.
 
@@ -156,6 +167,9 @@ def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
     mech : Mechanism
     designs : int
         Number of designs of the parameters (the coordinates broadcast over them).
+    per_position : float, optional
+        Bytes one position of one design takes in this request (default: a full
+        analysis, :func:`bytes_per_position`).
 
     Returns
     -------
@@ -196,7 +210,8 @@ def coordinates_array(q, mech, designs: int = 1) -> np.ndarray:
     n = a.size // (k if k > 1 and a.ndim >= 1 and a.shape[-1] == k else 1)
     if a.ndim <= (1 if k == 1 else 2):
         n *= max(int(designs), 1)
-    check_memory(n, bytes_per_position(mech), f"{name}: solving")
+    check_memory(n, bytes_per_position(mech) if per_position is None else per_position,
+                 f"{name}: solving")
     if not np.isfinite(a).all():
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(a))[0])
         raise ModelError(f"{name}: the generalized coordinate value at index {bad} is not "
@@ -273,6 +288,10 @@ def _roles(mech):
     return out
 
 
+#: mechanisms whose own parameter values passed :func:`check_params` (immutable objects)
+_CHECKED: "weakref.WeakSet" = weakref.WeakSet()
+
+
 def check_params(mech, params: Mapping | None = None) -> None:
     """Validate parameter overrides ``params`` (and the mechanism's own values) as a
     model file's values are validated.
@@ -286,6 +305,8 @@ def check_params(mech, params: Mapping | None = None) -> None:
     ModelError
         Naming the parameter, the value, the role and the expected span.
     """
+    if not params and mech in _CHECKED:
+        return  # the mechanism's own values, checked on an earlier call
     name = f"mechanism {mech.name!r}"
     merged = dict(mech.params)
     if params:
@@ -335,6 +356,8 @@ def check_params(mech, params: Mapping | None = None) -> None:
                 raise ModelError(f"{name}: {label}: {span_problem(kind, x, pos)}, found "
                                  f"{x!r} [{_SI.get(kind, '-')}]"
                                  + (f" (design {bad})" if a.size > 1 else ""))
+    if not params:
+        _CHECKED.add(mech)
 
 
 def _first_outside(kind, a, positive):

@@ -18,14 +18,47 @@ Real-time quantities follow from the analogs for any coordinate rates
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
-from .errors import AssemblyError, SingularPositionError
+from .errors import SingularPositionError
+
+__all__ = ["Kinematics", "SINGULAR_RTOL"]
 
 #: |φ_j'| below this fraction of its largest magnitude over the range counts as zero
 SINGULAR_RTOL = 1e-9
+
+
+class _FramePoints(dict):
+    """Frame points' (2, m, n) positions from the parameter table, made on first use."""
+
+    def __init__(self, rows, params, shape):
+        super().__init__()
+        self._rows, self._params, self._shape = rows, params, shape
+
+    def __contains__(self, name):
+        return name in self._rows
+
+    def __missing__(self, name):
+        rx, ry = self._rows[name]
+        xy = np.stack([self._params[rx], self._params[ry]])[:, :, None]  # (2, m, 1)
+        v = self[name] = np.broadcast_to(xy, self._shape)
+        return v
+
+    def items(self):
+        return ((k, self[k]) for k in self._rows)
+
+    def keys(self):
+        return self._rows.keys()
+
+    def __iter__(self):
+        return iter(self._rows)
+
+    def __len__(self):
+        return len(self._rows)
+
+    def sliced(self, sl):
+        """The same points restricted to positions ``sl`` of the last axis."""
+        return {k: v[sl] for k, v in self.items()}
 
 
 class Kinematics:
@@ -65,10 +98,7 @@ class Kinematics:
         self._pdd = raw["pdd"].reshape(-1, 2, k, k, m, n)
         self._sv = raw["sv"].reshape(-1, m, n)
         # frame points are design constants: served from the parameters, not the kernel
-        self._frame = {}
-        for name, (rx, ry) in prog.frame_rows.items():
-            xy = np.stack([params[rx], params[ry]])[:, :, None]  # (2, m, 1)
-            self._frame[name] = np.broadcast_to(xy, (2, m, n))
+        self._frame = _FramePoints(prog.frame_rows, params, (2, m, n))
         self._sd = raw["sd"].reshape(-1, k, m, n)
         self._sdd = raw["sdd"].reshape(-1, k, k, m, n)
 
@@ -83,7 +113,8 @@ class Kinematics:
         b.ok = self.ok[sl]
         b._pv, b._pd, b._pdd = self._pv[sl], self._pd[sl], self._pdd[sl]
         b._sv, b._sd, b._sdd = self._sv[sl], self._sd[sl], self._sdd[sl]
-        b._frame = {k: v[sl] for k, v in self._frame.items()}
+        b._frame = self._frame.sliced(sl) if hasattr(self._frame, "sliced") else \
+            {k: v[sl] for k, v in self._frame.items()}
         return b
 
     # ---- helpers -----------------------------------------------------------------

@@ -16,12 +16,24 @@ Sign conventions
 
 Every value may be a number or the name of a model parameter (so it may vary over
 a batch of designs).
+
+Each load applies itself through :meth:`apply` to a *load context* (the contract):
+``value(ref)``, ``point(p)`` → (x, y), ``owner(p)``, ``force(link, point, fx, fy)``,
+``couple(link, M)``, ``nonzero(L, what)``, ``spring(load, T, L)``, ``g`` [m/s²],
+``moving`` and, when moving, ``acceleration(point)`` → (a_x, a_y) and
+``angular_acceleration(link)`` → ε. The same code then serves the array evaluation
+(:func:`assur.statics.applied_loads`) and the generated fused kernel
+(:mod:`assur.fused`), where the values are symbols of the emitted code.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Union
+
+import numpy as np
+
+__all__ = ["Weight", "PointForce", "Couple", "Spring", "Mass", "Cylinder", "LOAD_TYPES"]
 
 Ref = Union[str, float, int]
 
@@ -36,6 +48,9 @@ class Weight:
     link: str | None = None
     name: str | None = None
 
+    def apply(self, c):
+        c.force(self.link or c.owner(self.point), self.point, 0.0, -c.value(self.P))
+
 
 @dataclass(frozen=True)
 class PointForce:
@@ -47,6 +62,10 @@ class PointForce:
     link: str | None = None
     name: str | None = None
 
+    def apply(self, c):
+        c.force(self.link or c.owner(self.point), self.point, c.value(self.fx),
+                c.value(self.fy))
+
 
 @dataclass(frozen=True)
 class Couple:
@@ -55,6 +74,9 @@ class Couple:
     link: str
     M: Ref
     name: str | None = None
+
+    def apply(self, c):
+        c.couple(self.link, c.value(self.M))
 
 
 @dataclass(frozen=True)
@@ -73,6 +95,18 @@ class Spring:
     preload: Ref = 0.0
     links: tuple[str, str] | None = None
 
+    def apply(self, c):
+        (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
+        dx, dy = bx - ax, by - ay
+        L = np.hypot(dx, dy)
+        c.nonzero(L, f"spring {self.name!r}: its ends {self.a!r} and {self.b!r} coincide")
+        T = c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
+        ux, uy = dx / L, dy / L
+        la, lb = self.links or (c.owner(self.a), c.owner(self.b))
+        c.force(la, self.a, T * ux, T * uy)
+        c.force(lb, self.b, -T * ux, -T * uy)
+        c.spring(self, T, L)
+
 
 @dataclass(frozen=True)
 class Mass:
@@ -84,6 +118,14 @@ class Mass:
     m: Ref
     point: str
     J: Ref = 0.0
+
+    def apply(self, c):
+        m = c.value(self.m)
+        c.force(self.link, self.point, 0.0, -m * c.g)
+        if c.moving:
+            acc_x, acc_y = c.acceleration(self.point)
+            c.force(self.link, self.point, -m * acc_x, -m * acc_y)
+            c.couple(self.link, -c.value(self.J) * c.angular_acceleration(self.link))
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,6 @@ generalized coordinates are arrays of shape ``(n,)`` (one design) or ``(m, n)``
 from __future__ import annotations
 
 import math
-from functools import cached_property
 from types import MappingProxyType
 from typing import Iterable, Mapping
 
@@ -23,7 +22,7 @@ from . import diagnostics, inputs
 from .errors import AssemblyError, ModelError
 from .groups import Distance, Frame, Group, Link, registry
 from .groups.base import is_number
-from .program import compile_program, execute
+from .program import compile_program, execute, trig_table
 from .topology import Topology, build_topology
 
 __all__ = ["Mechanism"]
@@ -108,6 +107,8 @@ class Mechanism:
         #: acceleration of gravity for the masses' weights [m/s²] (None: the default
         #: :data:`assur.statics.GRAVITY`)
         self.gravity = gravity
+        #: programs and prepared tables of this (immutable) mechanism
+        self._cache: dict = {}
         self._check_gravity()
         self._validate(check_params=not _params_checked)
 
@@ -122,6 +123,8 @@ class Mechanism:
             # only the values that changed (solving conditions calls this many times)
             new = object.__new__(Mechanism)
             new.__dict__.update(self.__dict__)
+            # same structure: the programs hold; the prepared tables do not
+            new._cache = {k: v for k, v in self._cache.items() if k[0] == "program"}
             for k, v in kw.items():
                 setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables")
                         else tuple(v) if k == "notes" else v)
@@ -150,6 +153,12 @@ class Mechanism:
             raise ModelError(f"unknown group type {type_name!r}; known: {sorted(types)}")
         cls = types[type_name]
         roles = {f.name: f.role for f in cls.fields}
+        for f in cls.fields:
+            if f.role == "coordinate" and f.name != "angle" and "angle" in kw and \
+                    "angle" not in roles:
+                raise ModelError(f"{cls.kind} {name!r}: its coordinate is given as "
+                                 f"{f.name}=…, not angle=… (angle is a fixed angle in every "
+                                 f"group that has one)")
         for k, v in list(kw.items()):
             if k == "links" or roles.get(k) == "line":
                 kw[k] = tuple(v) if v is not None else (() if k == "links" else None)
@@ -498,18 +507,16 @@ class Mechanism:
             raise ValueError("on_failure must be one of: ['raise', 'report']")
         inputs.check_params(self, params)
         mech = self.with_params(**params) if params else self
-        prog = compile_program(mech, outputs)
-        ptab = prog.param_table(mech.params)
-        qarr, shape, m, n = mech._coordinates_array(q, ptab.shape[1])
+        prog = mech.program(outputs)
+        ptab, trig, pose_failures = mech.prepared(prog)
+        qarr, shape, m, n = mech.coordinate_array(q, ptab.shape[1])
         if ptab.shape[1] == 1 and m > 1:
-            ptab = np.repeat(ptab, m, axis=1)
+            ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
         elif ptab.shape[1] != m:
             raise ModelError(f"mechanism {self.name!r}: parameters describe {ptab.shape[1]} "
                              f"designs but the coordinates {m}")
-        ptab = np.ascontiguousarray(ptab)
-        pose_failures = mech._prepare(prog, ptab)
         check = bool(check_continuity and len(self.coordinates) == 1 and n > 1)
-        res = execute(prog, ptab, qarr, n, check)
+        res = execute(prog, ptab, qarr, n, check, trig=trig)
         status = res["status"]
         failed = status >= 0
         if pose_failures and not failed.any():
@@ -525,13 +532,59 @@ class Mechanism:
                                                          res["amount"], n)
         return kin
 
-    def analyze(self, q, params=None, *, qdot=None, qddot=None, **kw):
+    def analyze(self, q, params=None, *, qdot=None, qddot=None, outputs=None, reduce=False,
+                **kw):
         """Kinematics, actuator forces, joint reactions, cylinders and stability in one
-        call; returns :class:`assur.analysis.Analysis` (see :func:`assur.analysis.analyze`)."""
+        call; returns :class:`assur.analysis.Analysis` (see :func:`assur.analysis.analyze`).
+
+        With ``outputs=[…]`` only those are computed, by the fused kinematics + statics
+        kernel, and a :class:`assur.fused.Fused` is returned (see :meth:`evaluate`)."""
+        if outputs is not None:
+            if qdot is not None or qddot is not None:
+                raise ModelError("analyze(outputs=…) computes static loads only; leave out "
+                                 "qdot and qddot, or omit outputs for the full analysis")
+            return self.evaluate(q, params, outputs=outputs, reduce=reduce, **kw)
         from .analysis import analyze
         return analyze(self, q, params=params, qdot=qdot, qddot=qddot, **kw)
 
-    def _prepare(self, prog, ptab):
+    def evaluate(self, q, params=None, *, outputs, reduce=False, on_failure="raise", g=None):
+        """Only the ``outputs`` asked for (e.g. ``["G(ГЦ, 56)", "Rx(0, 5)", "F(S)"]``),
+        computed by one fused kinematics + statics kernel per structure; with
+        ``reduce=True`` their minimum, maximum and where over the positions of each
+        design, without storing the positions. See :mod:`assur.fused` for the
+        output functions and their units."""
+        from .fused import evaluate
+        return evaluate(self, q, params, outputs, reduce=reduce, on_failure=on_failure, g=g)
+
+    def memo(self, key, make):
+        """A value derived from this (immutable) mechanism, made once by ``make()`` and
+        kept with it (programs, prepared tables, fused kernels)."""
+        v = self._cache.get(key)
+        if v is None:
+            v = self._cache[key] = make()
+        return v
+
+    def program(self, outputs=None):
+        """The compiled :class:`~assur.program.Program` writing ``outputs`` (cached)."""
+        key = None if outputs is None else tuple(outputs)
+        prog = self._cache.get(("program", key))
+        if prog is None:
+            prog = self._cache[("program", key)] = compile_program(self, key)
+        return prog
+
+    def prepared(self, prog):
+        """The parameter table of this mechanism's values for ``prog``, shape (rows, m),
+        its fixed angles' cos/sin table and the failures of its pre-passes (cached: the
+        mechanism is immutable): callers must not write to them."""
+        hit = self._cache.get(("prepared", id(prog)))
+        if hit is None or hit[0] is not prog:
+            ptab = np.ascontiguousarray(prog.param_table(self.params))
+            failures = self.prepare(prog, ptab)
+            trig = trig_table(prog, ptab)
+            hit = self._cache[("prepared", id(prog))] = (prog, ptab, trig, failures)
+        return hit[1], hit[2], hit[3]
+
+    def prepare(self, prog, ptab):
         """Run the groups' pre-passes (derived per-design rows, e.g. a point fixed at
         a pose). Returns the :class:`AssemblyError` of poses that cannot assemble
         (their rows stay 0); the caller raises them unless the main range fails
@@ -561,8 +614,10 @@ class Mechanism:
         return failures
 
     # ---- coordinates ---------------------------------------------------------------
-    def _coordinates_array(self, q, m_params):
-        q = inputs.coordinates_array(q, self, m_params)
+    def coordinate_array(self, q, m_params, per_position=None):
+        """The coordinates ``q`` as a (k, m·n) array, their result shape, m and n;
+        checked (:func:`assur.inputs.coordinates_array`) before anything is allocated."""
+        q = inputs.coordinates_array(q, self, m_params, per_position)
         k = len(self.coordinates)
         if np.iscomplexobj(q):
             raise ModelError("generalized coordinates must be real numbers [m or rad]")

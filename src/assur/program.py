@@ -158,6 +158,15 @@ class Program:
     prepares: tuple
     _kernels: dict = field(default_factory=dict, compare=False, repr=False)
 
+    @property
+    def continuity_rows(self) -> tuple:
+        """Indices of the groups checked for continuity between positions (k = 1)."""
+        c = self._kernels.get("continuity")
+        if c is None:
+            c = self._kernels["continuity"] = tuple(
+                i for i, r in enumerate(self.rows) if group_type(r[0]).continuity)
+        return c
+
     def param_row(self, ref) -> int:
         """Row of a number (literal) or a parameter name."""
         if is_number(ref):
@@ -312,7 +321,7 @@ def _refine_continuity(prog, ptab, qarr, n, status, flagged, rows, depth):
 
 
 def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=(),
-            depth=0):
+            depth=0, trig=None):
     """Run the kernel; returns the raw output arrays and the status per element.
 
     ``rows`` (a prefix of the program's groups) and ``out_pts``/``out_sca`` run a
@@ -323,24 +332,27 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         names_p = prog.out_pts if out_pts is None else tuple(out_pts)
         names_s = prog.out_sca if out_pts is None else tuple(out_sca)
         kern = prog.kernel(names_p, names_s)
-        measures = prog.measures
     else:
         names_p, names_s = tuple(out_pts), tuple(out_sca)
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), ())
-        measures = ()
     npo, nso = len(names_p), len(names_s)
     ang = [i for i, s in enumerate(names_s) if prog.kinds[s] == "angle"]
-    sizes = [npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang)]
+    sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang))
     out = np.empty((sum(sizes), E))
-    parts = np.split(out, np.cumsum(sizes)[:-1])
+    parts, r0 = [], 0
+    for size in sizes:
+        parts.append(out[r0:r0 + size])
+        r0 += size
     sv = parts[3].reshape(nso, E)
     status = np.empty(E, dtype=np.int64)
     # the depth of a continuity failure, written by that pass at its failures only
     amount = np.empty(E)
     rows_ = prog.rows if rows is None else rows
-    cont = [i for i, r in enumerate(rows_) if group_type(r[0]).continuity] if k == 1 else []
+    cont = (prog.continuity_rows if rows is None else
+            [i for i, r in enumerate(rows_) if group_type(r[0]).continuity]) if k == 1 else []
     gout = np.empty((2 * len(cont), E if check else 1))
-    KR.run(kern, ptab, trig_table(prog, ptab), qarr, n, check, out, gout, status)
+    KR.run(kern, ptab, trig_table(prog, ptab) if trig is None else trig, qarr, n, check, out,
+           gout, status)
     if check and cont:
         codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
                          dtype=np.int64)

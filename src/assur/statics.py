@@ -28,8 +28,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import AssemblyError, ModelError
-from .loads import Couple, Mass, PointForce, Spring, Weight
+from .errors import ModelError
+
+__all__ = ["Statics", "GRAVITY", "applied_loads", "virtual_work_forces", "solve",
+           "ReactionContextBase", "ReactionContext"]
 
 #: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
 #: value engineering worksheets use (all the seeds do). A model may set its own
@@ -177,6 +179,52 @@ def _values(kin):
     return val
 
 
+class _LoadCollector:
+    """Load context over arrays (see :mod:`assur.loads`): collects the point forces,
+    couples and springs of the loads, broadcastable to (m, n)."""
+
+    def __init__(self, kin, g, qd=None, qdd=None):
+        self.kin = kin
+        self.mech = kin.mechanism
+        self.value = _values(kin)
+        self.g = g
+        self.moving = qd is not None
+        self.qd, self.qdd = qd, qdd
+        self.forces, self.couples, self.springs = [], [], []
+
+    def point(self, p):
+        return self.kin.value(p)
+
+    def owner(self, p):
+        return self.mech.owner(p)
+
+    def force(self, link, point, fx, fy):
+        self.forces.append((link, point, fx, fy))
+
+    def couple(self, link, M):
+        self.couples.append((link, M))
+
+    def spring(self, load, T, L):
+        self.springs.append((load, T, L))
+
+    def nonzero(self, L, what):
+        if np.any(L == 0):
+            raise ModelError(f"{what} at {int((L == 0).sum())} position(s); its direction is "
+                             f"undefined there")
+
+    def acceleration(self, point):
+        J1 = self.kin.jacobian(point)  # (2, k, m, n)
+        J2 = self.kin.hessian(point)
+        acc = (np.einsum("ckmn,mnk->cmn", J1, self.qdd)
+               + np.einsum("mnk,cklmn,mnl->cmn", self.qd, J2, self.qd))
+        return acc[0], acc[1]
+
+    def angular_acceleration(self, link):
+        w1, w2 = self.kin.body_rates(link)
+        return (np.einsum("kmn,mnk->mn", w1, self.qdd)
+                + np.einsum("mnk,klmn,mnl->mn", self.qd, w2, self.qd))
+
+
 def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
     """The applied loads as point forces and link moments, each with its link.
 
@@ -187,11 +235,8 @@ def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
     couples : list of (link, M) [N·m]
     springs : list of (Spring, T, L) with the tension T [N] and length L [m]
     """
-    mech = kin.mechanism
-    val = _values(kin)
-    forces, couples, springs = [], [], []
-    moving = qdot is not None
-    if moving:
+    qd = qdd = None
+    if qdot is not None:
         qd = np.broadcast_to(np.asarray(qdot, float).reshape(kin.shape + (-1,))
                              if kin.k > 1 else np.asarray(qdot, float)[..., None],
                              kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
@@ -200,41 +245,10 @@ def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
         qdd = np.broadcast_to(np.asarray(qddot, float)[..., None]
                               if kin.k == 1 else np.asarray(qddot, float),
                               kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
-    for ld in mech.loads:
-        if isinstance(ld, Weight):
-            forces.append((ld.link or mech.owner(ld.point), ld.point, 0.0, -val(ld.P)))
-        elif isinstance(ld, PointForce):
-            forces.append((ld.link or mech.owner(ld.point), ld.point, val(ld.fx), val(ld.fy)))
-        elif isinstance(ld, Couple):
-            couples.append((ld.link, val(ld.M)))
-        elif isinstance(ld, Spring):
-            ax, ay = kin.value(ld.a)
-            bx, by = kin.value(ld.b)
-            L = np.hypot(bx - ax, by - ay)
-            if np.any(L == 0):
-                raise ModelError(f"spring {ld.name!r}: its ends {ld.a!r} and {ld.b!r} coincide "
-                                 f"at {int((L == 0).sum())} position(s); its direction is "
-                                 f"undefined there")
-            T = val(ld.preload) + val(ld.rate) * (L - val(ld.free_length))
-            ux, uy = (bx - ax) / L, (by - ay) / L
-            la, lb = ld.links or (mech.owner(ld.a), mech.owner(ld.b))
-            forces.append((la, ld.a, T * ux, T * uy))
-            forces.append((lb, ld.b, -T * ux, -T * uy))
-            springs.append((ld, T, L))
-        elif isinstance(ld, Mass):
-            mval = val(ld.m)
-            forces.append((ld.link, ld.point, 0.0, -mval * g))
-            if moving:
-                J1 = kin.jacobian(ld.point)  # (2, k, m, n)
-                J2 = kin.hessian(ld.point)
-                acc = (np.einsum("ckmn,mnk->cmn", J1, qdd)
-                       + np.einsum("mnk,cklmn,mnl->cmn", qd, J2, qd))
-                forces.append((ld.link, ld.point, -mval * acc[0], -mval * acc[1]))
-                w1, w2 = kin.body_rates(ld.link)
-                eps = np.einsum("kmn,mnk->mn", w1, qdd) + np.einsum("mnk,klmn,mnl->mn", qd, w2,
-                                                                    qd)
-                couples.append((ld.link, -val(ld.J) * eps))
-    return forces, couples, springs
+    c = _LoadCollector(kin, g, qd, qdd)
+    for ld in kin.mechanism.loads:
+        ld.apply(c)
+    return c.forces, c.couples, c.springs
 
 
 def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):
@@ -243,7 +257,6 @@ def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):
     ``F_j = −Q_j``, ``Q_j = Σ F·∂r/∂q_j + Σ M·∂φ/∂q_j`` (spring forces enter as the
     point forces of their tension).
     """
-    mech = kin.mechanism
     forces, couples, _ = applied_loads(kin, qdot, qddot, g)
     Q = np.zeros((kin.k, kin.m, kin.n))
     for link, pt, fx, fy in forces:
@@ -318,10 +331,15 @@ def solve(kin, qdot=None, qddot=None, g=GRAVITY):
     return Statics(kin, vw, joints, act, residual, [])
 
 
-class ReactionContext:
+class ReactionContextBase:
     """What a group's :meth:`~assur.groups.base.Group.reactions` works with, in the
     reverse-order pass: the loads accumulated on every body (as wrenches about the
     origin), the joint reactions recorded so far and the actuator forces.
+
+    The group code is plain arithmetic and numpy ufuncs on what the context gives, so
+    that one implementation serves both :class:`ReactionContext` (arrays over designs
+    and positions) and the generated fused kernel (:mod:`assur.fused`, symbols).
+    Subclasses provide ``point``, ``value``, ``record``, ``inv`` and ``shape``.
 
     Attributes
     ----------
@@ -331,29 +349,14 @@ class ReactionContext:
         ``(m, n)``: designs and positions.
     """
 
-    def __init__(self, kin, rod_ends):
-        self.kin = kin
-        self.mech = kin.mechanism
-        self.shape = (kin.m, kin.n)
+    def __init__(self, mech, rod_ends):
+        self.mech = mech
         self.links = ()
-        self.W = {b: [0.0, 0.0, 0.0] for b in self.mech.topology.bodies}
+        self.W = {b: [0.0, 0.0, 0.0] for b in mech.topology.bodies}
         self.joints = {}
         self.act = {}
         self._rod_ends = rod_ends
         self._at = {}  # (link, point) -> loads applied there, for a cylinder's axial force
-        self._val = _values(kin)
-
-    def point(self, p):
-        """(x, y) of a point, arrays (m, n) [m]."""
-        return self.kin.value(p)
-
-    def value(self, ref):
-        """Value of a number or parameter, broadcastable to (m, n)."""
-        return self._val(ref)
-
-    def full(self, v):
-        """``v`` broadcast to (m, n) as float."""
-        return np.broadcast_to(np.asarray(v, float), self.shape)
 
     def owner(self, p):
         """The body that owns a point."""
@@ -374,7 +377,7 @@ class ReactionContext:
 
     def apply(self, body, pt, fx, fy):
         """Add the force (fx, fy) at point ``pt`` to ``body``'s loads."""
-        px, py = self.kin.value(pt)
+        px, py = self.point(pt)
         w = self.W[body]
         w[0] = w[0] + fx
         w[1] = w[1] + fy
@@ -388,11 +391,6 @@ class ReactionContext:
         """Add a moment M [N·m] to ``body``'s loads."""
         self.W[body][2] = self.W[body][2] + M
 
-    def record(self, i, j, pt, fx, fy, mz=0.0):
-        """Record the force (and moment) of body i on body j at point ``pt``."""
-        self.joints[(i, j)] = (pt, np.broadcast_to(fx, self.shape),
-                               np.broadcast_to(fy, self.shape), np.broadcast_to(mz, self.shape))
-
     def axial(self, cyl, end, fx, fy, ux, uy):
         """A cylinder's push from the force (fx, fy) its rod end ``end`` exerts on the
         next link, less what the loads applied at that end to the cylinder take."""
@@ -404,6 +402,34 @@ class ReactionContext:
         (several actuators of one coordinate — a double-rod cylinder — add up)."""
         prev = self.act.get(coordinate)
         self.act[coordinate] = F if prev is None else prev + F
+
+
+class ReactionContext(ReactionContextBase):
+    """The reverse-order pass over arrays of shape (m, n) (designs, positions)."""
+
+    def __init__(self, kin, rod_ends):
+        super().__init__(kin.mechanism, rod_ends)
+        self.kin = kin
+        self.shape = (kin.m, kin.n)
+        self._val = _values(kin)
+
+    def point(self, p):
+        """(x, y) of a point, arrays (m, n) [m]."""
+        return self.kin.value(p)
+
+    def value(self, ref):
+        """Value of a number or parameter, broadcastable to (m, n)."""
+        return self._val(ref)
+
+    def inv(self, x):
+        """1/x, and 0 where x = 0 (a degenerate, failed position)."""
+        x = np.broadcast_to(np.asarray(x, float), self.shape)
+        return np.divide(1.0, x, out=np.zeros(self.shape), where=x != 0.0)
+
+    def record(self, i, j, pt, fx, fy, mz=0.0):
+        """Record the force (and moment) of body i on body j at point ``pt``."""
+        self.joints[(i, j)] = (pt, np.broadcast_to(fx, self.shape),
+                               np.broadcast_to(fy, self.shape), np.broadcast_to(mz, self.shape))
 
 
 def _solve(kin, qdot, qddot, g):

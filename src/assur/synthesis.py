@@ -25,6 +25,8 @@ from scipy.optimize import brentq
 
 from .errors import AssemblyError, ModelError
 
+__all__ = ["DesignError", "Condition", "SolvedCondition", "solve_conditions", "SCAN_POINTS"]
+
 #: grid of the bracket used to find sign changes (and to detect several roots)
 SCAN_POINTS = 257
 

@@ -17,6 +17,9 @@ member                      what it provides
                             docs table derive from them): :class:`Field`
 ``link_roles``              names of the links the group adds (``None``: it puts a point
                             on an existing link)
+``out_fields``              the point fields naming the points it adds (default ``out``)
+``check_fields(given)``     a message if the keys given together are not a valid form
+                            (the file schema's cross-key check), else None
 ``inputs()``/``outputs()``  the points it needs solved first / the points it adds
 ``refs()``                  its length/angle references by role (numbers, parameter or
                             coordinate names)
@@ -161,6 +164,8 @@ class Group:
     fields: ClassVar[tuple[Field, ...]] = ()
     #: names of the links the group adds, in order; None: a point on an existing link
     link_roles: ClassVar[tuple[str, ...] | None] = ()
+    #: the ``point`` fields that name the points the group adds (the others are inputs)
+    out_fields: ClassVar[tuple[str, ...]] = ("out",)
     #: op code, assigned by :func:`register`
     op: ClassVar[int] = -1
     #: True if the group emits ``g{i}``, ``gd{i}`` (squared triangle height and its
@@ -168,6 +173,13 @@ class Group:
     continuity: ClassVar[bool] = False
 
     # ---- description ------------------------------------------------------------
+    @classmethod
+    def check_fields(cls, given: set[str]) -> str | None:
+        """A message if the fields ``given`` (the keys written, of :attr:`fields`) do not
+        form a valid description together — e.g. two alternative forms mixed — else
+        None. The file schema calls it before any value is read."""
+        return None
+
     def inputs(self) -> tuple[str, ...]:
         """Names of the points this group needs solved first."""
         raise NotImplementedError

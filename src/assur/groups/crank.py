@@ -19,7 +19,10 @@ __all__ = ["Crank"]
 @dataclass(frozen=True)
 class Crank(Group):
     """Crank ``pivot–out`` of radius ``radius`` [m] turned by the coordinate
-    ``angle`` [rad] plus a fixed ``phase`` [rad]. ``links = (crank,)``.
+    ``q`` [rad] plus a fixed ``phase`` [rad]. ``links = (crank,)``.
+
+    The coordinate keyword is ``q`` (as ``s`` is for the cylinder–lever group and the
+    slider input): ``angle`` means a fixed angle in every group that has one.
 
     Reactions: the frame holds the crank at its pivot with the force and the
     driving moment ``M = −Σ M_pivot`` of the loads on the crank.
@@ -28,7 +31,7 @@ class Crank(Group):
     pivot: str = ""
     out: str = ""
     radius: Ref = 0.0
-    angle: str = ""
+    q: str = ""
     phase: Ref = 0.0
     links: tuple[str, ...] = ()
 
@@ -41,7 +44,7 @@ class Crank(Group):
         Field("pivot", "point", doc="the crank's pivot (known)"),
         Field("out", "point", doc="the crank pin it adds"),
         Field("radius", "value", "length", "positive", True, doc="|pivot–out| [m]"),
-        Field("angle", "coordinate", "angle", doc="the crank angle, a coordinate [°]"),
+        Field("q", "coordinate", "angle", doc="the crank angle, a coordinate [°]"),
         Field("phase", "value", "angle", default=0.0, doc="added to the angle [°]"),
     )
 
@@ -55,7 +58,7 @@ class Crank(Group):
         return {"radius": self.radius, "phase": self.phase}
 
     def coordinates_driven(self):
-        return (self.angle,)
+        return (self.q,)
 
     def topology(self, t):
         (l,) = t.link_names(self, 1)
@@ -66,11 +69,11 @@ class Crank(Group):
     def evaluate(self, pts, val):
         px, py = pts[self.pivot]
         r = val(self.radius)
-        th = val(self.angle) + val(self.phase)
+        th = val(self.q) + val(self.phase)
         pts[self.out] = (px + r * np.cos(th), py + r * np.sin(th))
 
     def compile(self, c):
-        return (c.slot(self.out), c.slot(self.pivot), c.lref(self.radius), c.coord(self.angle),
+        return (c.slot(self.out), c.slot(self.pivot), c.lref(self.radius), c.coord(self.q),
                 c.pref(self.phase))
 
     @classmethod
@@ -123,4 +126,4 @@ class Crank(Group):
         r.record(bP, l, P, -fx, -fy, -mp)
         r.apply(bP, P, fx, fy)
         r.apply_moment(bP, mp)
-        r.actuator(self.angle, -mp)
+        r.actuator(self.q, -mp)

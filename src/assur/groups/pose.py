@@ -14,7 +14,6 @@ from typing import ClassVar
 
 import numpy as np
 
-from ..errors import ModelError
 from .base import Field, Group, register
 from .rigid import rigid_emit, unit_eval
 

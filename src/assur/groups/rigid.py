@@ -3,7 +3,6 @@ angle): seed 003 φ34 = φ3 + φBD, seed 000's bell-crank triangle L3, L4, L34."
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -102,6 +101,19 @@ class RigidPoint(Group):
         Field("opposite", "value", "length", "positive", default=None, doc="|toward–out| [m]"),
         Field("branch", "branch", default=None, doc="side of the triangle's turn, ±1"),
     )
+
+    @classmethod
+    def check_fields(cls, given):
+        if "angle" in given:
+            extra = sorted(set(given) & {"base", "opposite", "branch"})
+            if extra:
+                return ("expected either angle, or base, opposite and branch (the triangle), "
+                        "not both: remove " + ", ".join(extra))
+        elif not {"base", "opposite", "branch"} <= set(given):
+            missing = sorted({"base", "opposite", "branch"} - set(given))
+            return ("expected angle, or base, opposite and branch (the triangle); missing "
+                    + ", ".join(missing))
+        return None
 
     def validate(self, coordinates):
         if self.angle is None and (self.base is None or self.opposite is None):

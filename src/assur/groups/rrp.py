@@ -34,7 +34,7 @@ def line_direction(r, direction, line_link):
     if line_link:
         (px, py), (qx, qy) = r.point(line_link[0]), r.point(line_link[1])
         return np.arctan2(qy - py, qx - px) + beta
-    return beta + np.zeros(r.shape)
+    return beta
 
 
 @register

@@ -140,66 +140,30 @@ def dyad_failure(g, code, pts, v, nm, a, b, ra_ref, rb_ref):
     return Group.failure(g, code, pts, v, nm)
 
 
-def _dyad_impl():
-    from numba import njit
-
-    @njit(cache=True, nogil=True, error_model="numpy")
-    def dyad_reactions(ax, ay, bx, by, cx, cy, fax, fay, ma, fbx, fby, mb, out):
-        """Reactions of an RRR dyad (links a: A–C, b: B–C) under the wrenches (F, M about
-        the origin) of its two links, in one fused pass over the positions.
-
-        ``[[-u_y, u_x], [-w_y, w_x]]·R_A = [r1, r2]`` with u = A−C, w = B−C. Writes
-        out[0:6] = R_A, R_C (force of a on b), R_B [N]; zero where the dyad is
-        degenerate (a failed position: det = 0)."""
-        m, n = ax.shape
-        for i in range(m):
-            for j in range(n):
-                c_x = cx[i, j]
-                c_y = cy[i, j]
-                f_ax = fax[i, j]
-                f_ay = fay[i, j]
-                f_bx = fbx[i, j]
-                f_by = fby[i, j]
-                mac = ma[i, j] - (c_x * f_ay - c_y * f_ax)
-                mbc = mb[i, j] - (c_x * f_by - c_y * f_bx)
-                ux = ax[i, j] - c_x
-                uy = ay[i, j] - c_y
-                wx = bx[i, j] - c_x
-                wy = by[i, j] - c_y
-                det = ux * wy - uy * wx
-                idet = 1.0 / det if det != 0.0 else 0.0
-                r1 = -mac
-                r2 = mbc - (wx * (f_ay + f_by) - wy * (f_ax + f_bx))
-                rax = (r1 * wx - ux * r2) * idet
-                ray = (-uy * r2 + wy * r1) * idet
-                rcx = rax + f_ax
-                rcy = ray + f_ay
-                out[0, i, j] = rax
-                out[1, i, j] = ray
-                out[2, i, j] = rcx
-                out[3, i, j] = rcy
-                out[4, i, j] = -rcx - f_bx
-                out[5, i, j] = -rcy - f_by
-
-    return dyad_reactions
-
-
-_dyad_kernel = None
-
-
 def dyad_reactions_block(r, a, b, c, la, lb, ra_ref, rb_ref):
-    """Reverse-order step of an RRR-type group in the reaction context ``r``."""
-    global _dyad_kernel
-    if _dyad_kernel is None:
-        _dyad_kernel = _dyad_impl()
+    """Reverse-order step of an RRR-type group in the reaction context ``r``.
+
+    Link a (A–C): ``R_A − R_C + F_a = 0``, ``(A−C)×R_A + M_a,C = 0``; link b (B–C):
+    ``R_B + R_C + F_b = 0``, ``(B−C)×R_B + M_b,C = 0``; so
+    ``[[−u_y, u_x], [−w_y, w_x]]·R_A = [r1, r2]`` with u = A−C, w = B−C (seed 003
+    §5.1–5.3, group by group). R_C is the force of link a on link b [N]; all zero
+    where the dyad is degenerate (a failed position: det = 0).
+    """
     bA, bB = r.owner(a), r.owner(b)
     ax, ay = r.point(a)
     bx, by = r.point(b)
     cx, cy = r.point(c)
-    args = [r.full(v) for v in (ax, ay, bx, by, cx, cy, *r.wrench(la), *r.wrench(lb))]
-    res = np.empty((6,) + r.shape)
-    _dyad_kernel(*args, res)
-    rax, ray, rcx, rcy, rbx, rby = res
+    fax, fay, mac = r.about(la, cx, cy)
+    fbx, fby, mbc = r.about(lb, cx, cy)
+    ux, uy = ax - cx, ay - cy
+    wx, wy = bx - cx, by - cy
+    idet = r.inv(ux * wy - uy * wx)
+    r1 = -mac
+    r2 = mbc - (wx * (fay + fby) - wy * (fax + fbx))
+    rax = (r1 * wx - ux * r2) * idet
+    ray = (wy * r1 - uy * r2) * idet
+    rcx, rcy = rax + fax, ray + fay
+    rbx, rby = -rcx - fbx, -rcy - fby
     r.record(bA, la, a, rax, ray)
     r.record(la, lb, c, rcx, rcy)
     r.record(bB, lb, b, rbx, rby)

@@ -47,10 +47,11 @@ from ._build import Builder
 from ._errors import ModelFileError, key_path
 from ._extends import resolve as resolve_extends
 from ._lines import line_index, line_of
+from ._schema import schema_table
 
 ModelFileError.__module__ = __name__  # shown as assur.io.ModelFileError
 
-__all__ = ["Model", "ModelFileError", "load", "loads", "bundled", "key_path"]
+__all__ = ["Model", "ModelFileError", "load", "loads", "bundled", "key_path", "schema_table"]
 
 
 @dataclass(frozen=True)

@@ -27,6 +27,7 @@ import math
 import numpy as np
 
 from ..errors import AssemblyError, ModelError
+from ..groups import group_type
 from ..inputs import bytes_per_position, check_memory, span_problem
 from ..mechanism import Mechanism
 from ..stability import Machine
@@ -45,30 +46,44 @@ _FLAGS = {
     "count": (lambda v: v > 0, lambda k: "a positive whole number"),
 }
 
-# per group type: value fields (kind, flag, may be a coordinate), point inputs, the
-# coordinate field, and the number of links the group adds (None: at most one)
-_GROUP_VALUES = {
-    "cylinder_lever": {"lever": (LENGTH, "positive", True)},
-    "dyad": {"ra": (LENGTH, "positive", True), "rb": (LENGTH, "positive", True)},
-    "crank": {"radius": (LENGTH, "positive", True), "phase": (ANGLE, None, False)},
-    "slider_input": {"offset": (LENGTH, None, False), "direction": (ANGLE, None, False)},
-    "slider_dyad": {"radius": (LENGTH, "positive", True), "direction": (ANGLE, None, False)},
-    "rigid_point": {"length": (LENGTH, "positive", True), "angle": (ANGLE, None, False),
-                    "base": (LENGTH, "positive", False),
-                    "opposite": (LENGTH, "positive", False)},
-    "pose_point": {"dx": (LENGTH, None, False), "dy": (LENGTH, None, False)},
-}
-_GROUP_POINTS = {
-    "cylinder_lever": ("base", "pivot"), "dyad": ("a", "b"), "crank": ("pivot",),
-    "slider_input": ("origin",), "slider_dyad": ("a", "line_point"),
-    "rigid_point": ("origin", "toward"), "pose_point": ("origin", "toward"),
-}
-_GROUP_COORD = {"cylinder_lever": ("s", LENGTH), "slider_input": ("s", LENGTH),
-                "crank": ("angle", ANGLE)}
-_GROUP_LINKS = {"cylinder_lever": ("cylinder", "lever"), "dyad": ("link at a", "link at b"),
-                "crank": ("crank",), "slider_input": ("slider",),
-                "slider_dyad": ("link at a", "slider"), "rigid_point": None,
-                "pose_point": None}
+#: the unit kind of a group field's ``quantity`` (:class:`assur.groups.Field`)
+_QUANTITY = {"length": LENGTH, "angle": ANGLE}
+
+
+def _group_type(g):
+    """The registered group type of a validated ``[[groups]]`` entry."""
+    return group_type(g.type)
+
+
+def _fields(g, *roles):
+    """The fields of group entry ``g``'s type with one of ``roles``, in their order."""
+    return [f for f in _group_type(g).fields if f.role in roles]
+
+
+def _group_values(g):
+    """``{field: (kind, flag, may be a coordinate)}`` of the value fields of ``g``."""
+    return {f.name: (_QUANTITY[f.quantity], f.flag, f.coordinate_ok)
+            for f in _fields(g, "value")}
+
+
+def _group_outputs(g):
+    """The names of the point fields of ``g`` that name the points it adds."""
+    return tuple(_group_type(g).out_fields)
+
+
+def _group_inputs(g, gp):
+    """``[(key path, point)]`` of the points ``g`` needs: its point fields that are not
+    outputs, then the pairs of its line fields that are given."""
+    outs = _group_outputs(g)
+    inputs = [(gp + (f.name,), getattr(g, f.name)) for f in _fields(g, "point")
+              if f.name not in outs]
+    for f in _fields(g, "line"):
+        pair = getattr(g, f.name)
+        if pair is not None:
+            inputs += [(gp + (f.name, k), p) for k, p in enumerate(pair)]
+    return inputs
+
+
 _LOAD_VALUES = {
     "weight": {"P": (FORCE, "nonneg")},
     "force": {"fx": (FORCE, None), "fy": (FORCE, None)},
@@ -135,7 +150,7 @@ class Builder:
     def validate(self):
         spec, errors = S.validate(S.FileSpec, self.data)
         self.groups, self.loads = [], []
-        for section, types, out in (("groups", S.GROUP_TYPES, self.groups),
+        for section, types, out in (("groups", S.group_types(), self.groups),
                                     ("loads", S.LOAD_TYPES, self.loads)):
             raw = self.data.get(section, [])
             if not isinstance(raw, list):
@@ -280,18 +295,19 @@ class Builder:
             self.value(("model", "gravity"), sp.model.gravity, ACCELERATION, "positive")
         # the kind of each coordinate, from the input groups that it drives
         for i, g in enumerate(self.groups):
-            if g.type in _GROUP_COORD:
-                field, kind = _GROUP_COORD[g.type]
-                self.coordinate_field(("groups", i, field), getattr(g, field), kind)
+            for f in _fields(g, "coordinate"):
+                self.coordinate_field(("groups", i, f.name), getattr(g, f.name),
+                                      _QUANTITY[f.quantity])
         for name, (x, y) in sp.frame.items():
             self.value(("frame", name, 0), x, LENGTH)
             self.value(("frame", name, 1), y, LENGTH)
         for i, g in enumerate(self.groups):
-            for field, (kind, flag, coord_ok) in _GROUP_VALUES[g.type].items():
+            for field, (kind, flag, coord_ok) in _group_values(g).items():
                 if field in g.model_fields_set:
                     self.value(("groups", i, field), getattr(g, field), kind, flag, coord_ok)
-            if g.type == "pose_point":
-                self.position(("groups", i, "at"), g.at)
+            for f in _fields(g, "position"):
+                if f.name in g.model_fields_set:
+                    self.position(("groups", i, f.name), getattr(g, f.name))
         for j, c in enumerate(self.coords):  # only groups have used coordinates so far
             if c not in self.coord_kind:
                 raise self.error(("model", "coordinates", j),
@@ -336,7 +352,8 @@ class Builder:
             raise self.error(("range",), f"expected a range for every coordinate "
                                          f"({', '.join(self.coords)}), missing "
                                          f"{', '.join(missing)}")
-        points = list(sp.frame) + [g.out for g in self.groups]
+        points = list(sp.frame) + [getattr(g, f) for g in self.groups
+                                   for f in _group_outputs(g)]
         quantities = {f"{a}{p}": LENGTH for p in points for a in "XY"}
         quantities.update({f"phi{l}": ANGLE for l in sp.links})
         quantities.update({d: LENGTH for d in sp.distances})
@@ -414,22 +431,21 @@ class Builder:
         # every point a group defines, to tell "defined later" from "unknown"
         later = {}
         for i, g in enumerate(self.groups):
-            later.setdefault(g.out, f"groups[{i}] ({g.name})")
+            for f in _group_outputs(g):
+                later.setdefault(getattr(g, f), f"groups[{i}] ({g.name})")
         names = {n: "the frame" for n in sp.frame}
         for i, g in enumerate(self.groups):
             gp = ("groups", i)
             if g.name in names:
                 raise self.error(gp + ("name",), f'the name "{g.name}" is already used by '
                                                  f"{names[g.name]}")
-            inputs = [(gp + (f,), getattr(g, f)) for f in _GROUP_POINTS[g.type]]
-            if g.type == "slider_dyad" and g.line_link is not None:
-                inputs += [(gp + ("line_link", k), p) for k, p in enumerate(g.line_link)]
-            for path, p in inputs:
+            for path, p in _group_inputs(g, gp):
                 self.point(path, p, known, {q: w for q, w in later.items() if q not in known})
-            if g.out in known:
-                raise self.error(gp + ("out",), f'point "{g.out}" is already defined by '
-                                                f"{known[g.out]}")
-            want = _GROUP_LINKS[g.type]
+            outs = [(gp + (f,), getattr(g, f)) for f in _group_outputs(g)]
+            for path, p in outs:
+                if p in known:
+                    raise self.error(path, f'point "{p}" is already defined by {known[p]}')
+            want = _group_type(g).link_roles
             if g.links and ((want is None and len(g.links) > 1) or
                             (want is not None and len(g.links) != len(want))):
                 expect = ("at most one link name (the link that carries the point)"
@@ -438,19 +454,21 @@ class Builder:
                           f"({', '.join(want)})")
                 raise self.error(gp + ("links",), f"expected {expect}, found {S.show(g.links)}")
             kw = {f: getattr(g, f) for f in g.model_fields_set - {"type", "name"}}
-            for f in _GROUP_VALUES[g.type]:
+            for f in _group_values(g):
                 if (gp + (f,)) in self.resolved:
                     kw[f] = self.resolved[gp + (f,)]
+            for f in _fields(g, "line"):
+                if kw.get(f.name) is not None:
+                    kw[f.name] = tuple(kw[f.name])
+            for f in _fields(g, "position"):
+                if f.name in kw:
+                    kw[f.name] = tuple(self.resolved[gp + (f.name, c)] for c in self.coords)
             if "links" in kw:
                 kw["links"] = tuple(kw["links"])
-            if g.type == "pose_point":
-                kw["at"] = tuple(self.resolved[gp + ("at", c)] for c in self.coords)
-            if g.type == "slider_dyad" and g.line_link is not None:
-                kw["line_link"] = tuple(g.line_link)
-            method = getattr(mech, g.type)
-            mech = self.guarded(gp, lambda: method(g.name, **kw))
+            mech = self.guarded(gp, lambda: mech.add_group(g.type, g.name, **kw))
             names[g.name] = f"groups[{i}]"
-            known[g.out] = f"groups[{i}] ({g.name})"
+            for _, p in outs:
+                known[p] = f"groups[{i}] ({g.name})"
         points = list(known)
         for section, add in (("links", "link"), ("distances", "distance")):
             for name, ends in getattr(sp, section).items():

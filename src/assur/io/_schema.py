@@ -7,8 +7,9 @@ references to parameters, points and links — is checked when the mechanism is
 built (:mod:`assur.io._build`), where the context is known.
 
 Groups and loads are tables with a ``type`` key; each type has its own model,
-picked from :data:`GROUP_TYPES` / :data:`LOAD_TYPES` (an unknown type is an error
-listing the valid ones).
+picked from :func:`group_types` / :data:`LOAD_TYPES` (an unknown type is an error
+listing the valid ones). The group models are not written here: they derive from
+the fields of the registered group types (:mod:`assur.groups`).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ import typing
 from typing import Annotated, Any, Optional
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StrictInt, StrictStr, \
-    ValidationError, model_validator
+    ValidationError, create_model, model_validator
 from pydantic_core import PydanticCustomError
 
 
@@ -118,89 +119,113 @@ class _Group(_Table):
     links: list[Name] = []
 
 
-class CylinderLeverSpec(_Group):
-    base: Name
-    pivot: Name
-    out: Name
-    lever: Value
-    s: Name
-    branch: Branch
+#: the annotation of a group field by its role (see :class:`assur.groups.Field`)
+_ROLE_TYPES = {"point": Name, "line": Optional[tuple[Name, Name]], "value": Value,
+               "coordinate": Name, "position": dict[str, Value], "branch": Branch}
 
 
-class DyadSpec(_Group):
-    a: Name
-    b: Name
-    out: Name
-    ra: Value
-    rb: Value
-    branch: Branch
+def group_spec(cls) -> type[_Group]:
+    """The pydantic model of one registered group type's ``[[groups]]`` table, derived
+    from its :attr:`~assur.groups.Group.fields`: ``type``, ``name``, ``links``, then
+    each field with the annotation of its role, required unless it has a default.
+    The type's :meth:`~assur.groups.Group.check_fields` is its cross-key check."""
+    fields = {}
+    for f in cls.fields:
+        if f.role not in _ROLE_TYPES:
+            raise ValueError(f"group type {cls.type_name!r}: field {f.name!r} has the unknown "
+                             f"role {f.role!r} (one of: {', '.join(_ROLE_TYPES)})")
+        if f.role in ("value", "coordinate") and f.quantity not in ("length", "angle"):
+            raise ValueError(f"group type {cls.type_name!r}: field {f.name!r} needs a quantity "
+                             f"(length or angle), has {f.quantity!r}")
+        fields[f.name] = (_ROLE_TYPES[f.role], ... if f.required else f.default)
 
-
-class CrankSpec(_Group):
-    pivot: Name
-    out: Name
-    radius: Value
-    angle: Name
-    phase: Value = 0.0
-
-
-class SliderInputSpec(_Group):
-    origin: Name
-    out: Name
-    s: Name
-    offset: Value = 0.0
-    direction: Value = 0.0
-
-
-class SliderDyadSpec(_Group):
-    a: Name
-    out: Name
-    radius: Value
-    line_point: Name
-    direction: Value = 0.0
-    line_link: Optional[tuple[Name, Name]] = None
-    branch: Branch
-
-
-class RigidPointSpec(_Group):
-    origin: Name
-    toward: Name
-    out: Name
-    length: Value
-    angle: Value = None
-    base: Value = None
-    opposite: Value = None
-    branch: Branch = None
-
-    @model_validator(mode="after")
-    def _one_form(self):
-        given = self.model_fields_set
-        if "angle" in given:
-            extra = sorted(given & {"base", "opposite", "branch"})
-            if extra:
-                raise PydanticCustomError(
-                    "rigid", "expected either angle, or base, opposite and branch (the "
-                             "triangle), not both: remove " + ", ".join(extra))
-        elif not {"base", "opposite", "branch"} <= given:
-            missing = sorted({"base", "opposite", "branch"} - given)
-            raise PydanticCustomError(
-                "rigid", "expected angle, or base, opposite and branch (the triangle); "
-                         "missing " + ", ".join(missing))
+    def _check_fields(self):
+        problem = cls.check_fields(set(self.model_fields_set) - {"type", "name", "links"})
+        if problem:
+            raise PydanticCustomError("group", problem)
         return self
 
-
-class PosePointSpec(_Group):
-    origin: Name
-    toward: Name
-    out: Name
-    dx: Value
-    dy: Value
-    at: dict[str, Value]
+    return create_model(f"{cls.__name__}Spec", __base__=_Group,
+                        __validators__={"_check_fields": model_validator(mode="after")(
+                            _check_fields)},
+                        __module__=__name__, **fields)
 
 
-GROUP_TYPES = {"cylinder_lever": CylinderLeverSpec, "dyad": DyadSpec, "crank": CrankSpec,
-               "slider_input": SliderInputSpec, "slider_dyad": SliderDyadSpec,
-               "rigid_point": RigidPointSpec, "pose_point": PosePointSpec}
+_SPECS: dict = {}
+
+
+def group_types() -> dict[str, type[_Group]]:
+    """The ``[[groups]]`` table models by ``type``, one per registered group type (the
+    frame, which is the ``[frame]`` section, excluded), in the order the package
+    :mod:`assur.groups` lists them (its ``__all__``; registration order follows the
+    modules' imports), then any type registered elsewhere."""
+    from .. import groups
+    listed = {name: k for k, name in enumerate(groups.__all__)}
+    reg = groups.registry()
+    order = sorted(reg, key=lambda n: (listed.get(reg[n].__name__, len(listed)),
+                                       list(reg).index(n)))
+    types = {n: reg[n] for n in order if n != "frame"}
+    key = tuple(types.items())
+    if _SPECS.get("key") != key:
+        _SPECS.update(key=key, specs={n: group_spec(c) for n, c in types.items()})
+    return _SPECS["specs"]
+
+
+#: markers of the generated group-types table in ``docs/model-format.md``
+TABLE_BEGIN = ("<!-- BEGIN group types: generated from the registry by assur.io.schema_table() "
+               "(python docs/gen_groups.py); do not edit -->")
+TABLE_END = "<!-- END group types -->"
+
+
+def _cell(text: str) -> str:
+    return str(text).replace("|", "\\|")
+
+
+def _default(v) -> str:
+    if isinstance(v, float) and v.is_integer():
+        return str(int(v))
+    return str(v)
+
+
+def _key(cls, f) -> str:
+    """One key of the docs table: name (what it holds, unit, default): doc."""
+    if f.role == "point":
+        what = "point it adds" if f.name in cls.out_fields else "point"
+    elif f.role == "line":
+        what = "two points"
+    elif f.role == "value":
+        what = f.quantity + (" > 0" if f.flag == "positive" else "")
+        what += " or a coordinate" if f.coordinate_ok else ""
+    elif f.role == "coordinate":
+        what = f"{f.quantity} coordinate"
+    elif f.role == "position":
+        what = "position"
+    else:
+        what = "1 or -1"
+    if not f.required:
+        what += ", *optional*" + ("" if f.default is None else f", {_default(f.default)}")
+    return f"`{f.name}` ({what})" + (f": {f.doc}" if f.doc else "")
+
+
+def schema_table() -> str:
+    """The Markdown table of the ``[[groups]]`` types of ``docs/model-format.md``,
+    generated from the registry: type, kind, keys (what each holds, its quantity and
+    unit, its default, its description) and the links the group adds."""
+    from ..groups import group_type
+    rows = ["| type | kind | keys | links |", "|---|---|---|---|"]
+    for name in group_types():
+        cls = group_type(name)
+        keys = "; ".join(_key(cls, f) for f in cls.fields)
+        links = ("[carrier], *optional*" if cls.link_roles is None else
+                 "[" + ", ".join(cls.link_roles) + "]")
+        rows.append(f"| `{name}` | {_cell(cls.kind)} | {_cell(keys)} | {_cell(links)} |")
+    return "\n".join(rows) + "\n"
+
+
+def __getattr__(name):
+    if name == "GROUP_TYPES":
+        return group_types()
+    raise AttributeError(name)
 
 
 # ---- [[loads]], [[cylinders]] ---------------------------------------------------------

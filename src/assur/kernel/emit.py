@@ -54,14 +54,19 @@ class Emitter:
     ----------
     K : int
         Number of generalized coordinates k.
+    order : int
+        Highest order of analogs emitted (1 or 2).
     pairs : list of (int, int)
-        The index pairs ``a ≤ b`` of the second analogs.
+        The index pairs ``a ≤ b`` of the second analogs (empty for order 1).
     """
 
-    def __init__(self, K: int):
+    def __init__(self, K: int, order: int = 2):
         self.K = K
+        self.order = order
         self.lines: list[str] = []
-        self.pairs = [(a, b) for a in range(K) for b in range(a, K)]
+        #: index pairs of the second analogs; empty when only first order is asked
+        #: (group code loops over them, so none of its second-order lines is emitted)
+        self.pairs = [(a, b) for a in range(K) for b in range(a, K)] if order >= 2 else []
 
     def __call__(self, line: str) -> None:
         self.lines.append("            " + line)

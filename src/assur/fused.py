@@ -1,0 +1,590 @@
+"""The fused kinematics + statics kernel: only the outputs asked for, reductions over
+positions in the kernel (DESIGN.md §10).
+
+:func:`evaluate` (``Mechanism.evaluate``, or ``Mechanism.analyze(..., outputs=…)``)
+generates one kernel per structure and set of outputs. For every element (design,
+position) it runs the groups' position and jet code (forward), the loads and the
+actuator forces by virtual work, the joint reactions group by group in reverse order
+(each group's own :meth:`~assur.groups.base.Group.reactions`, traced into the kernel
+by :mod:`assur.kernel.sym`, the same code that the array pass of :mod:`assur.statics`
+runs), and writes only the requested outputs — or, with ``reduce``, only their
+minimum/maximum and where they occur over the positions of each design, so that a
+sweep of millions of designs stores no positions at all.
+
+Outputs are written as function calls (units SI):
+
+=====================  ==============================================================
+``X(p)``, ``Y(p)``     coordinates of point p [m]
+``dX(p)``, ``dY(p)``   first analogs ∂x/∂q, ∂y/∂q (``dY(p, S)`` for k > 1) [m/m, m/rad]
+``I(p)``               transmission number dY/dq of p (= ``dY(p)``)
+``phi(l)``             angle of link l in (−π, π] (unwrapped along stored positions) [rad]
+``dphi(l)``            its analog dφ/dq [rad/m or rad/rad]
+``length(d)``          a named distance [m]
+``F(c)``               actuator force of coordinate c by virtual work [N or N·m]
+``Fr(c)``              the same from the joint reactions [N or N·m]
+``Rx(i, j)``, ``Ry``   force of link i on link j [N]; ``R(i, j)`` its magnitude,
+                       ``Rm(i, j)`` the moment at a prismatic pair or crank drive [N·m]
+``p(cyl)``             pressure of cylinder ``cyl`` F/(η_m·k·A·η_h) [Pa]
+``G(cyl, p)``          lift capacity at point p, k·p_max·A·η_h·η_m / I(p) [N]
+``reserve(cyl, p, P)`` capacity reserve (G − P)/P·100 for a load P (number or
+                       parameter) [%]
+=====================  ==============================================================
+
+Static loads only (weights, forces, moments, springs, the weights of masses); the
+fused kernel does not check continuity between positions (``solve`` does).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import re
+
+import numpy as np
+
+from . import diagnostics
+from .errors import ModelError
+from .groups import group_type
+from .groups.base import is_number
+from .hydraulics import piston_area
+from .kernel import run as KR
+from .kernel.cache import load_source
+from .kernel.emit import Emitter
+from .kernel.source import CHUNK
+from .kernel.sym import Sym, Tracer, code
+from .statics import ReactionContextBase
+
+__all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
+
+FORMAT = "4"
+REDUCTIONS = ("min", "max", "argmin", "argmax")
+#: unit of each output function (SI; "q" stands for the coordinate's unit)
+OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
+                "dphi": "rad/q", "length": "m", "F": "N", "Fr": "N", "Rx": "N", "Ry": "N",
+                "R": "N", "Rm": "N·m", "p": "Pa", "G": "N", "reserve": "%"}
+_ARITY = {"X": (1,), "Y": (1,), "dX": (1, 2), "dY": (1, 2), "I": (1, 2), "phi": (1,),
+          "dphi": (1, 2), "length": (1,), "F": (1,), "Fr": (1,), "Rx": (2,), "Ry": (2,),
+          "R": (2,), "Rm": (2,), "p": (1,), "G": (2,), "reserve": (3,)}
+_CALL = re.compile(r"^\s*([A-Za-z]+)\s*\((.*)\)\s*$")
+
+
+@functools.lru_cache(maxsize=4096)
+def parse_output(text: str) -> tuple:
+    """``"Rx(0, 5)"`` → ``("Rx", ("0", "5"))``; raises :class:`ModelError`."""
+    m = _CALL.match(str(text))
+    if not m or m.group(1) not in _ARITY:
+        raise ModelError(f"unknown output {text!r}: expected one of "
+                         f"{', '.join(f + '(…)' for f in _ARITY)}")
+    args = tuple(a.strip().strip("'\"") for a in m.group(2).split(",")) if m.group(2).strip() \
+        else ()
+    if len(args) not in _ARITY[m.group(1)]:
+        raise ModelError(f"output {text!r}: {m.group(1)} takes "
+                         f"{' or '.join(map(str, _ARITY[m.group(1)]))} argument(s)")
+    return m.group(1), args
+
+
+class _Fused(ReactionContextBase):
+    """Load and reaction context whose values are symbols of the generated code."""
+
+    def __init__(self, mech, prog, tracer, rod_ends, cyl_rows, literal_rows):
+        super().__init__(mech, rod_ends)
+        self.prog, self.t = prog, tracer
+        self.literal_rows = literal_rows
+        self.g = self.value(_G)
+        self.moving = False
+        self.k = len(mech.coordinates)
+        self.vw = [0.0] * self.k
+        self.cyl_rows = cyl_rows
+
+    # values ------------------------------------------------------------------------
+    def point(self, p):
+        s = self.prog.slot[p]
+        return self.t.sym(f"x{s}"), self.t.sym(f"y{s}")
+
+    def jet(self, p, a):
+        s = self.prog.slot[p]
+        return self.t.sym(f"x{s}_{a}"), self.t.sym(f"y{s}_{a}")
+
+    def value(self, ref):
+        """A coordinate, a parameter, or a number: the numbers of loads are rows of the
+        parameter table too (:func:`_literals`), so one kernel serves any load values."""
+        if isinstance(ref, str):
+            if ref in self.mech.coordinates:
+                return self.t.sym(f"q[{self.mech.coordinates.index(ref)}, e]")
+            if ref == _G:
+                return self.t.sym(f"params[{self.literal_rows[_G]}, d]")
+            return self.t.sym(f"params[{self.prog.param_row(ref)}, d]")
+        v = float(ref)
+        if v in self.prog.literals:
+            return self.t.sym(f"params[{self.prog.param_row(v)}, d]")
+        return self.t.sym(f"params[{self.literal_rows[v]}, d]")
+
+    def inv(self, x):
+        if isinstance(x, Sym):
+            return self.t.new(f"1.0 / {x.name} if {x.name} != 0.0 else 0.0")
+        return 1.0 / x if x != 0 else 0.0
+
+    def record(self, i, j, pt, fx, fy, mz=0.0):
+        self.joints[(i, j)] = (pt, fx, fy, mz)
+
+    # loads (assur.loads contract) ---------------------------------------------------
+    def force(self, link, point, fx, fy):
+        self.apply(link, point, fx, fy)
+        if point not in self.prog.frame_rows:
+            for a in range(self.k):
+                jx, jy = self.jet(point, a)
+                self.vw[a] = self.vw[a] + fx * jx + fy * jy
+
+    def couple(self, link, M):
+        self.apply_moment(link, M)
+        for a in range(self.k):
+            self.vw[a] = self.vw[a] + M * self.omega(link, a)
+
+    def nonzero(self, L, what):
+        """Coincident spring ends give a non-finite element, caught after the kernel."""
+
+    def spring(self, load, T, L):
+        pass
+
+    def omega(self, body, a):
+        """Angular analog ∂φ/∂q_a of a body (0 for the frame)."""
+        pq = self.mech.topology.angle_points(body)
+        if pq is None:
+            return 0.0
+        (px, py), (qx, qy) = self.point(pq[0]), self.point(pq[1])
+        (pxa, pya), (qxa, qya) = self.jet(pq[0], a), self.jet(pq[1], a)
+        dx, dy = qx - px, qy - py
+        return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
+
+    # outputs ------------------------------------------------------------------------
+    def coord_index(self, args, fn):
+        if len(args) > 1:
+            if args[1] not in self.mech.coordinates:
+                raise ModelError(f"output {fn}{args}: {args[1]!r} is not a coordinate "
+                                 f"{self.mech.coordinates}")
+            return self.mech.coordinates.index(args[1])
+        if self.k > 1:
+            raise ModelError(f"output {fn}({args[0]}): name the coordinate, e.g. "
+                             f"{fn}({args[0]}, {self.mech.coordinates[0]})")
+        return 0
+
+    def angle_points(self, link):
+        for lk in self.mech.links:
+            if lk.name == link:
+                return lk.tail, lk.head
+        pq = self.mech.topology.angle_points(link) if link in self.mech.topology.bodies \
+            else None
+        if pq is None:
+            raise ModelError(f"no link {link!r} with an angle; links: "
+                             f"{[l.name for l in self.mech.links]} and bodies "
+                             f"{[b for b in self.mech.topology.bodies if b != '0']}")
+        return pq
+
+    def output(self, fn, args):
+        need_point = fn in ("X", "Y", "dX", "dY", "I")
+        if need_point and args[0] not in self.prog.slot:
+            raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
+        if fn in ("X", "Y"):
+            return self.point(args[0])[fn == "Y"]
+        if fn in ("dX", "dY", "I"):
+            return self.jet(args[0], self.coord_index(args, fn))[fn != "dX"]
+        if fn in ("phi", "dphi"):
+            P, Q = self.angle_points(args[0])
+            (px, py), (qx, qy) = self.point(P), self.point(Q)
+            if fn == "phi":
+                return np.arctan2(qy - py, qx - px)
+            a = self.coord_index(args, fn)
+            (pxa, pya), (qxa, qya) = self.jet(P, a), self.jet(Q, a)
+            dx, dy = qx - px, qy - py
+            return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
+        if fn == "length":
+            dd = [x for x in self.mech.distances if x.name == args[0]]
+            if not dd:
+                raise ModelError(f"no distance {args[0]!r}")
+            (ax, ay), (bx, by) = self.point(dd[0].a), self.point(dd[0].b)
+            return np.hypot(bx - ax, by - ay)
+        if fn in ("F", "Fr"):
+            if args[0] not in self.mech.coordinates:
+                raise ModelError(f"output {fn}({args[0]}): not a coordinate "
+                                 f"{self.mech.coordinates}")
+            if fn == "F":
+                return -self.vw[self.mech.coordinates.index(args[0])]
+            return self.act.get(args[0], 0.0)
+        if fn in ("Rx", "Ry", "R", "Rm"):
+            key = (args[0], args[1])
+            if key not in self.joints:
+                raise ModelError(f"output {fn}({args[0]}, {args[1]}): no joint of link "
+                                 f"{args[0]!r} on link {args[1]!r}; joints: "
+                                 f"{sorted(self.joints)}")
+            _, fx, fy, mz = self.joints[key]
+            return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
+        cyl = self.cyl_rows.get(args[0])
+        if cyl is None:
+            raise ModelError(f"output {fn}(…): no cylinder {args[0]!r}; cylinders: "
+                             f"{sorted(self.cyl_rows)}")
+        c, rows = cyl
+        P = {k: self.t.sym(f"params[{r}, d]") for k, r in rows.items()}
+        j = self.mech.coordinates.index(c.coordinate)
+        if fn == "p":
+            return -self.vw[j] / (P["eta_mech"] * P["kAeta"])
+        if args[1] not in self.prog.slot:
+            raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
+        G = P["fmax_eta"] / self.jet(args[1], j)[1]
+        if fn == "G":
+            return G
+        load = self.value(args[2] if not _is_float(args[2]) else float(args[2]))
+        return (G - load) / load * 100.0
+
+
+_G = "__gravity__"
+
+
+def _literals(mech, g, n0):
+    """Rows (from ``n0``) of gravity and of every number the loads give, and their
+    values: ``({value or _G: row}, [values])`` in a fixed order."""
+    rows, values = {_G: n0}, [float(g)]
+    for ld in mech.loads:
+        for f in dataclasses.fields(ld):
+            v = getattr(ld, f.name)
+            if is_number(v) and float(v) not in rows:
+                rows[float(v)] = n0 + len(values)
+                values.append(float(v))
+    return rows, values
+
+
+def _load_signature(mech):
+    """The loads with their numbers left out (the kernel's structure)."""
+    return tuple((type(ld).__name__,) + tuple("#" if is_number(getattr(ld, f.name))
+                                              else getattr(ld, f.name)
+                                              for f in dataclasses.fields(ld))
+                 for ld in mech.loads)
+
+
+def _is_float(s):
+    try:
+        float(s)
+        return True
+    except ValueError:
+        return False
+
+
+def _cylinder_rows(mech, n0):
+    """Per-design constants of each cylinder as extra parameter rows from ``n0``:
+    ``{name: (Cylinder, {"eta_mech": row, "kAeta": row, "fmax_eta": row})}`` and the
+    row values (list of arrays over designs)."""
+    rows, values = {}, []
+    for c in mech.cylinders:
+        v = {f: np.atleast_1d(np.asarray(mech.value_of(getattr(c, f)), float))
+             for f in ("count", "eta_mech", "eta_hyd", "bore", "rod", "p_relief",
+                       "dp_throttle", "dp_line")}
+        area = piston_area(v["bore"], v["rod"], c.side)
+        kAeta = v["count"] * area * v["eta_hyd"]
+        pmax = v["p_relief"] - (v["dp_throttle"] + v["dp_line"])
+        names = {}
+        for key, arr in (("eta_mech", v["eta_mech"]), ("kAeta", kAeta),
+                         ("fmax_eta", kAeta * pmax * v["eta_mech"])):
+            names[key] = n0 + len(values)
+            values.append(arr)
+        rows[c.name] = (c, names)
+    return rows, values
+
+
+_KERNELS: dict = {}
+
+
+def _source(mech, prog, specs, reduce, g):
+    """Source of the fused kernel (see the module docstring)."""
+    K = prog.k
+    E = Emitter(K, order=1)  # the outputs need first-order analogs at most
+    for i, row in enumerate(prog.rows):
+        group_type(row[0]).emit(E, i, tuple(row[1:]))
+    n0 = len(prog.param_names) + len(prog.literals) + prog.n_derived
+    cyl_rows, cyl_values = _cylinder_rows(mech, n0)
+    literal_rows, _ = _literals(mech, g, n0 + len(cyl_values))
+    tracer = Tracer(E)
+    topo = mech.topology
+
+    def is_coord(ref):
+        return isinstance(ref, str) and ref in mech.coordinates
+
+    rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
+                                                               is_coord)}
+    ctx = _Fused(mech, prog, tracer, rod_ends, cyl_rows, literal_rows)
+    fns = {fn for fn, _ in specs}
+    if fns & {"F", "Fr", "Rx", "Ry", "R", "Rm", "p"}:
+        for ld in mech.loads:
+            ld.apply(ctx)
+    if fns & {"Fr", "Rx", "Ry", "R", "Rm"}:
+        for g_ in reversed(mech.groups):
+            ctx.links = topo.group_links[g_.name]
+            g_.reactions(ctx)
+    for k_, (fn, args) in enumerate(specs):
+        E(f"o{k_} = {code(ctx.output(fn, args))}")
+    lines = E.lines
+    prows = sorted({int(m) for line in lines for m in re.findall(r"params\[(\d+), d\]", line)})
+    trows = sorted({int(m) for line in lines for m in re.findall(r"trig\[(\d+), d\]", line)})
+    body = "\n".join("    " + re.sub(r"trig\[(\d+), d\]", r"T\1",
+                                      re.sub(r"params\[(\d+), d\]", r"P\1", line))
+                     for line in lines)
+    ind = " " * 16
+    pre = "".join(f"            P{r} = params[{r}, d]\n" for r in prows)
+    pre += "".join(f"            T{r} = trig[{r}, d]\n" for r in trows)
+    nout = len(specs)
+    post = [ind + "status[e] = st", ind + "ok_ = st < 0", ind + "j = e - e0"]
+    after = []
+    # the element loop stages the outputs in a chunk buffer (branch-free, vectorized);
+    # stored: copied out row by row; reduced: one scalar pass over the buffer per chunk
+    post += [ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0" for k_ in range(nout)]
+    if reduce:
+        post.append(ind + f"buf[{nout}, j] = 1.0 if ok_ else 0.0")
+        after += [f"            for r in range({nout}):",
+                  "                mn = math.inf",
+                  "                mx = -math.inf",
+                  "                amn = -1.0",
+                  "                amx = -1.0",
+                  "                for jj in range(e1 - e0):",
+                  f"                    if buf[{nout}, jj] > 0.0:",
+                  "                        v = buf[r, jj]",
+                  "                        if v < mn:",
+                  "                            mn = v",
+                  "                            amn = float(e0 + jj - d * npd)",
+                  "                        if v > mx:",
+                  "                            mx = v",
+                  "                            amx = float(e0 + jj - d * npd)",
+                  "                red[4 * r, c] = mn",
+                  "                red[4 * r + 1, c] = mx",
+                  "                red[4 * r + 2, c] = amn",
+                  "                red[4 * r + 3, c] = amx"]
+    else:
+        after += [f"            for r in range({nout}):",
+                  "                for jj in range(e1 - e0):",
+                  "                    out[r, e0 + jj] = buf[r, jj]"]
+    src = f'''"""Generated by assur.fused (format {FORMAT}); do not edit."""
+import math
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, error_model="numpy", nogil=True)
+def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
+    """Fused kernel: chunks c_start…c_end−1 (runs of ≤ {CHUNK} positions of one
+    design); out: ({nout}, E) outputs or red: (4·{nout}, chunks) min, max, argmin,
+    argmax per chunk."""
+    buf = np.empty(({nout + 1}, {CHUNK}))
+    cpd = (npd + {CHUNK} - 1) // {CHUNK}
+    for c in range(c_start, c_end):
+        d = c // cpd
+        e0 = d * npd + (c % cpd) * {CHUNK}
+        e1 = min(d * npd + npd, e0 + {CHUNK})
+        if e1 > e0:
+{pre}            for e in range(e0, e1):
+                st = -1
+{body}
+''' + "\n".join(post) + "\n" + "\n".join(after) + "\n"
+    return src
+
+
+def _kernel(mech, prog, specs, reduce, g):
+    """The compiled fused kernel of a structure, its loads and outputs (cached)."""
+    key = (prog.rows, tuple(prog.slot.items()), _load_signature(mech), mech.links,
+           mech.distances, tuple(c.name for c in mech.cylinders), specs, bool(reduce),
+           prog.param_names, prog.literals)
+    try:
+        hit = _KERNELS.get(key)
+    except TypeError:  # an unhashable value in a load: trace every time
+        key, hit = None, None
+    if hit is None:
+        hit = load_source(_source(mech, prog, specs, reduce, g))
+        if key is not None:
+            _KERNELS[key] = hit
+    return hit
+
+
+class Fused:
+    """Outputs of :func:`evaluate`: arrays shaped like the coordinates (or, reduced,
+    one value per design), with their units.
+
+    Attributes
+    ----------
+    outputs : tuple of str
+        The outputs as asked for.
+    ok : ndarray of bool
+        Where the mechanism assembled, shape (m, n) — or per design when reduced
+        (all positions assembled).
+    failures : int ndarray
+        Number of failed positions per design.
+    """
+
+    def __init__(self, outputs, units, values, reduced, ok, failures, shape):
+        self.outputs = tuple(outputs)
+        self.units = dict(units)
+        self._values = values
+        self._reduced = reduced
+        self.ok = ok
+        self.failures = failures
+        self.shape = shape
+
+    def __getitem__(self, name):
+        if self._reduced is not None:
+            raise KeyError(f"the outputs were reduced over the positions: use .min({name!r}), "
+                           f".max(…), .argmin(…) or .argmax(…)")
+        return self._values[self._key(name)]
+
+    def _key(self, name):
+        key = name if name in self.outputs else None
+        if key is None:
+            norm = {o.replace(" ", ""): o for o in self.outputs}
+            key = norm.get(str(name).replace(" ", ""))
+        if key is None:
+            raise KeyError(f"{name!r} is not an output; outputs: {list(self.outputs)}")
+        return key
+
+    def _red(self, name, op):
+        if self._reduced is None:
+            raise KeyError("evaluate(..., reduce=True) computes reductions over positions")
+        return self._reduced[op][self._key(name)]
+
+    def min(self, name):
+        """Smallest value over the positions of each design that assembled, shape (m,)."""
+        return self._red(name, "min")
+
+    def max(self, name):
+        """Largest value over the positions of each design, shape (m,)."""
+        return self._red(name, "max")
+
+    def argmin(self, name):
+        """Position index of the smallest value per design (−1: none assembled)."""
+        return self._red(name, "argmin")
+
+    def argmax(self, name):
+        """Position index of the largest value per design (−1: none assembled)."""
+        return self._red(name, "argmax")
+
+    def __repr__(self):
+        return f"Fused({list(self.outputs)}, shape={self.shape}, reduced={self._reduced is not None})"
+
+
+def _plan(mech, specs, reduce, g):
+    """The kernel, the full parameter table (with the cylinders' constants and the loads'
+    numbers), the trig table and the pre-pass failures of a mechanism's own values."""
+    prog = mech.program()
+    ptab, trig, pose_failures = mech.prepared(prog)
+    kern = _kernel(mech, prog, specs, reduce, g)
+    _, extra = _cylinder_rows(mech, ptab.shape[0])
+    extra = list(extra) + [np.array([v]) for v in _literals(mech, g, ptab.shape[0] +
+                                                            len(extra))[1]]
+    if extra:
+        md = max([ptab.shape[1]] + [v.shape[0] for v in extra])
+        ptab = np.concatenate([np.broadcast_to(ptab, (ptab.shape[0], md))]
+                              + [np.broadcast_to(v, (md,))[None] for v in extra])
+        trig = np.broadcast_to(trig, (trig.shape[0], md))
+    ptab = np.ascontiguousarray(ptab, dtype=float)
+    trig = np.ascontiguousarray(trig)
+    return kern, ptab, trig, pose_failures
+
+
+def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="raise", g=None):
+    """Selected outputs of the fused kinematics + statics kernel.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    q : array_like
+        Coordinates as for :meth:`Mechanism.solve` [m or rad].
+    params : mapping, optional
+        Parameter overrides (arrays over designs make a batch).
+    outputs : sequence of str
+        What to compute (see the module docstring), e.g. ``["G(ГЦ, 56)", "Rx(0, 5)"]``.
+    reduce : bool
+        Reduce each output over the positions of each design (min, max, argmin,
+        argmax) in the kernel instead of storing it.
+    on_failure : {"raise", "report"}
+        As for :meth:`Mechanism.solve`; with ``"report"`` failed elements are left
+        out of the outputs (0) and of the reductions, and counted in ``failures``.
+    g : float, optional
+        Gravity [m/s²] for masses (default: the model's).
+
+    Returns
+    -------
+    Fused
+    """
+    from .analysis import gravity_of
+    from . import inputs
+
+    if on_failure not in ("raise", "report"):
+        raise ValueError("on_failure must be one of: ['raise', 'report']")
+    if not outputs:
+        raise ModelError("evaluate: name at least one output, e.g. outputs=['Y(56)']")
+    specs = tuple(parse_output(o) for o in outputs)
+    inputs.check_params(mech, params)
+    m_ = mech.with_params(**params) if params else mech
+    g = gravity_of(m_) if g is None else float(g)
+    kern, ptab, trig, pose_failures = m_.memo(("fused", specs, bool(reduce), g),
+                                              lambda: _plan(m_, specs, reduce, g))
+    per_pos = 8.0 * (m_.program().k + 2 + (0 if reduce else len(specs)))
+    qarr, shape, m, n = m_.coordinate_array(q, ptab.shape[1], per_pos)
+    if ptab.shape[1] == 1 and m > 1:
+        ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
+    elif ptab.shape[1] != m:
+        raise ModelError(f"mechanism {mech.name!r}: parameters describe {ptab.shape[1]} "
+                         f"designs but the coordinates {m}")
+    prog = m_.program()
+    E = qarr.shape[1]
+    cpd = (n + CHUNK - 1) // CHUNK
+    nchunks = m * cpd
+    out = np.empty((0 if reduce else len(specs), E))
+    red = np.empty((4 * len(specs) if reduce else 0, nchunks))
+    status = np.empty(E, dtype=np.int64)
+    nthreads = min(KR.threads(), max(1, nchunks // 8))
+    per = (nchunks + nthreads - 1) // nthreads
+    if nthreads <= 1:
+        kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
+    else:
+        futs = [KR.pool().submit(kern, ptab, trig, qarr, n, out, red, status, i * per,
+                                 min(nchunks, (i + 1) * per)) for i in range(nthreads)]
+        for f in futs:
+            f.result()
+    failed = status >= 0
+    if pose_failures and not failed.any():
+        raise pose_failures[0]
+    if failed.any() and on_failure == "raise":
+        raise diagnostics.assembly_error(m_, prog, ptab, qarr, status, np.zeros(E), n,
+                                         ~failed.reshape(m, n))
+    nfail = failed.reshape(m, n).sum(axis=1)
+    units = {o: OUTPUT_UNITS[fn] for o, (fn, _) in zip(outputs, specs)}
+    if reduce:
+        r = red.reshape(len(specs), 4, m, cpd)
+        res = {op: {} for op in REDUCTIONS}
+        for k_, o in enumerate(outputs):
+            mn, mx = r[k_, 0], r[k_, 1]
+            imn, imx = np.argmin(mn, axis=1), np.argmax(mx, axis=1)
+            rows = np.arange(m)
+            res["min"][o] = mn[rows, imn]
+            res["max"][o] = mx[rows, imx]
+            res["argmin"][o] = r[k_, 2][rows, imn].astype(np.int64)
+            res["argmax"][o] = r[k_, 3][rows, imx].astype(np.int64)
+        _check_finite(res["min"], "minimum", nfail < n)
+        _check_finite(res["max"], "maximum", nfail < n)
+        return Fused(outputs, units, None, res, nfail == 0, nfail, (m,))
+    vals = {}
+    for k_, (o, (fn, _)) in enumerate(zip(outputs, specs)):
+        v = out[k_].reshape(m, n)
+        if fn == "phi" and n > 1:
+            v = np.unwrap(v, axis=1)
+        vals[o] = v.reshape(shape)
+    _check_finite(vals, "value")
+    return Fused(outputs, units, vals, None, ~failed.reshape(shape), nfail, shape)
+
+
+def _check_finite(values, what, where=None):
+    """Never return NaN or inf: name the output that is not finite (``where``: the
+    designs that count, e.g. those with an assembled position)."""
+    for name, v in values.items():
+        v = np.asarray(v)
+        bad = ~np.isfinite(v)
+        if where is not None:
+            bad &= np.asarray(where)
+        if bad.any():
+            idx = tuple(int(i) for i in np.argwhere(bad)[0])
+            raise ModelError(f"output {name}: {what} at {idx} is not finite ({v[idx]!r}): "
+                             f"a singular position (e.g. a transmission number of 0)")

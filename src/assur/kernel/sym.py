@@ -1,0 +1,127 @@
+"""Symbols that write code: trace plain arithmetic into a generated kernel.
+
+A :class:`Sym` stands for a scalar local variable of the generated element loop.
+Arithmetic on symbols and numbers, and the numpy ufuncs the group and load code
+uses (``np.hypot``, ``np.cos``, ``np.arctan2``…, dispatched through
+``__array_ufunc__``), emit one assignment each into an
+:class:`~assur.kernel.emit.Emitter` and return the symbol of the result. Numbers
+combine with numbers in Python (constants are folded), so a load that is zero
+costs nothing. This lets one implementation of a group's reactions or of a load
+serve both the array evaluation and the fused kernel (:mod:`assur.fused`).
+"""
+
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+
+__all__ = ["Sym", "Tracer"]
+
+_BINARY = {np.add: "+", np.subtract: "-", np.multiply: "*", np.true_divide: "/",
+           np.power: "**"}
+_CALLS = {np.arctan2: "math.atan2", np.sin: "math.sin",
+          np.cos: "math.cos", np.tan: "math.tan", np.sqrt: "math.sqrt",
+          np.arcsin: "math.asin", np.arccos: "math.acos", np.arctan: "math.atan",
+          np.exp: "math.exp", np.log: "math.log", np.absolute: "abs"}
+
+
+class Tracer:
+    """Names and emits the temporaries of traced expressions into ``E``."""
+
+    def __init__(self, E, prefix="z"):
+        self.E = E
+        self.prefix = prefix
+        self.n = 0
+
+    def new(self, expr: str) -> "Sym":
+        """Assign ``expr`` to a new local and return its symbol."""
+        name = f"{self.prefix}{self.n}"
+        self.n += 1
+        self.E(f"{name} = {expr}")
+        return Sym(name, self)
+
+    def sym(self, name: str) -> "Sym":
+        """The symbol of an existing local (or expression without side effects)."""
+        return Sym(name, self)
+
+
+def code(v) -> str:
+    """Source text of a symbol or a number."""
+    if isinstance(v, Sym):
+        return v.name
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        v = v[()]
+    if isinstance(v, numbers.Real):
+        return repr(float(v))
+    raise TypeError(f"cannot trace {type(v).__name__} into a kernel")
+
+
+class Sym:
+    """A scalar local of the generated code (see the module docstring)."""
+
+    __slots__ = ("name", "tracer")
+    __array_priority__ = 1000
+
+    def __init__(self, name, tracer):
+        self.name = name
+        self.tracer = tracer
+
+    def _bin(self, op, other, reverse=False):
+        a, b = (code(other), code(self)) if reverse else (code(self), code(other))
+        return self.tracer.new(f"{a} {op} {b}")
+
+    def __add__(self, o):
+        return self._bin("+", o)
+
+    def __radd__(self, o):
+        return self._bin("+", o, True)
+
+    def __sub__(self, o):
+        return self._bin("-", o)
+
+    def __rsub__(self, o):
+        return self._bin("-", o, True)
+
+    def __mul__(self, o):
+        return self._bin("*", o)
+
+    def __rmul__(self, o):
+        return self._bin("*", o, True)
+
+    def __truediv__(self, o):
+        return self._bin("/", o)
+
+    def __rtruediv__(self, o):
+        return self._bin("/", o, True)
+
+    def __pow__(self, o):
+        return self._bin("**", o)
+
+    def __neg__(self):
+        return self.tracer.new(f"-{self.name}")
+
+    def __pos__(self):
+        return self
+
+    def __array_ufunc__(self, ufunc, method, *inputs, **kwargs):
+        if method != "__call__" or kwargs:
+            return NotImplemented
+        tracer = next(x.tracer for x in inputs if isinstance(x, Sym))
+        if ufunc in _BINARY:
+            return tracer.new(f"{code(inputs[0])} {_BINARY[ufunc]} {code(inputs[1])}")
+        if ufunc is np.negative:
+            return tracer.new(f"-{code(inputs[0])}")
+        if ufunc is np.positive:
+            return inputs[0]
+        if ufunc is np.hypot:
+            # √(a² + b²): a libm hypot call would keep the element loop from being
+            # vectorized; the lengths of a model are bounded (assur.inputs), no overflow
+            a, b = (code(x) for x in inputs)
+            return tracer.new(f"math.sqrt({a} * {a} + {b} * {b})")
+        if ufunc in _CALLS:
+            return tracer.new(f"{_CALLS[ufunc]}({', '.join(code(x) for x in inputs)})")
+        return NotImplemented
+
+    def __repr__(self):
+        return f"Sym({self.name})"
