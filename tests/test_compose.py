@@ -33,8 +33,14 @@ def _execute(mech, q, check=True):
     """Raw kernel outputs of ``mech`` at ``q`` (shape (k, E), one design)."""
     prog = P.compile_program(mech)
     ptab = np.ascontiguousarray(prog.param_table(mech.params))
-    mech._prepare(prog, ptab)
+    mech.prepare(prog, ptab)
     return P.execute(prog, ptab, np.ascontiguousarray(q), q.shape[1], check)
+
+
+def _composed(mech):
+    """Whether the mechanism's kernel (in the current caches) is a composed one."""
+    kern = P.compile_program(mech).kernel()
+    return "group functions" in kern.py_func.__doc__
 
 
 def _hitch_k2():
@@ -65,8 +71,10 @@ def test_composed_equals_fused(force, case):
         q = np.stack([s.ravel(), t.ravel()])
     force("fused")
     a = _execute(mech, q)
+    assert not _composed(mech)
     force("composed")
     b = _execute(mech, q)
+    assert _composed(mech)
     assert (a["status"] >= 0).any() and (a["status"] < 0).any()
     for key in ("pv", "pd", "pdd", "sv", "sd", "sdd", "status"):
         assert a[key].shape == b[key].shape
@@ -78,10 +86,15 @@ def test_composed_equals_fused(force, case):
 def test_composed_solve_equals_fused(force):
     """Through the public API (continuity check and angles included)."""
     S = np.linspace(0.42, 0.67, 200)
+    m = examples.hitch_003()
     force("fused")
-    a = examples.hitch_003().solve(S)
+    getattr(m, "_cache", {}).clear()  # the mechanism's own cache of programs
+    a = m.solve(S)
+    assert not _composed(m)
     force("composed")
-    b = examples.hitch_003().solve(S)
+    getattr(m, "_cache", {}).clear()
+    b = m.solve(S)
+    assert _composed(m)
     for p in ("23", "34", "56", "67", "S6"):
         for f in ("x", "y", "dx", "dy", "ddx", "ddy"):
             assert np.array_equal(getattr(a, f)(p), getattr(b, f)(p)), (p, f)
@@ -113,6 +126,7 @@ def test_200_groups_solve():
     prog = P.compile_program(mech)
     assert len(prog.rows) == 200
     assert len(prog.rows) + len(prog.measures) > compose.THRESHOLD
+    assert _composed(mech)
     S = np.array([0.43, 0.50, 0.545, 0.61, 0.66])
     r = mech.solve(S)
     ref = mech.evaluate_positions({"S": S})
