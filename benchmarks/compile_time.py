@@ -60,11 +60,12 @@ def measure(kind: str, n: int, threshold=None) -> dict:
     t0 = time.perf_counter()
     m.solve(q, on_failure="report")
     t_warm = time.perf_counter() - t0
-    try:
-        import resource
-        rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    except ImportError:
-        rss = float("nan")
+    rss = float("nan")
+    try:  # this process's own peak (ru_maxrss would include the parent's at fork)
+        with open("/proc/self/status") as f:
+            rss = next(int(v.split()[1]) for v in f if v.startswith("VmHWM:")) / 1024
+    except (OSError, StopIteration):
+        pass
     return dict(kind=kind, n=n, groups=len(prog.rows), lines=src.count("\n"),
                 composed=compose is not None
                 and len(prog.rows) + len(prog.measures) > compose.THRESHOLD,
