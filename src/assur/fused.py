@@ -50,13 +50,14 @@ from .hydraulics import piston_area
 from .kernel import run as KR
 from .kernel.cache import load_source
 from .kernel.emit import Emitter
-from .kernel.source import CHUNK
+from .kernel.select import branchless
+from .kernel.source import CHUNK, hoisted
 from .kernel.sym import Sym, Tracer, code
 from .statics import ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 
-FORMAT = "4"
+FORMAT = "5"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
@@ -320,23 +321,17 @@ def _source(mech, prog, specs, reduce, g):
             g_.reactions(ctx)
     for k_, (fn, args) in enumerate(specs):
         E(f"o{k_} = {code(ctx.output(fn, args))}")
-    lines = E.lines
-    prows = sorted({int(m) for line in lines for m in re.findall(r"params\[(\d+), d\]", line)})
-    trows = sorted({int(m) for line in lines for m in re.findall(r"trig\[(\d+), d\]", line)})
-    body = "\n".join("    " + re.sub(r"trig\[(\d+), d\]", r"T\1",
-                                      re.sub(r"params\[(\d+), d\]", r"P\1", line))
-                     for line in lines)
+    body_lines, pre = hoisted(E.lines)
+    body = "\n".join(body_lines)
     ind = " " * 16
-    pre = "".join(f"            P{r} = params[{r}, d]\n" for r in prows)
-    pre += "".join(f"            T{r} = trig[{r}, d]\n" for r in trows)
     nout = len(specs)
     post = [ind + "status[e] = st", ind + "ok_ = st < 0", ind + "j = e - e0"]
     after = []
     # the element loop stages the outputs in a chunk buffer (branch-free, vectorized);
     # stored: copied out row by row; reduced: one scalar pass over the buffer per chunk
-    post += [ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0" for k_ in range(nout)]
+    post += [branchless(ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0") for k_ in range(nout)]
     if reduce:
-        post.append(ind + f"buf[{nout}, j] = 1.0 if ok_ else 0.0")
+        post.append(branchless(ind + f"buf[{nout}, j] = 1.0 if ok_ else 0.0"))
         after += [f"            for r in range({nout}):",
                   "                mn = math.inf",
                   "                mx = -math.inf",
@@ -363,6 +358,7 @@ def _source(mech, prog, specs, reduce, g):
 import math
 import numpy as np
 from numba import njit
+from assur.kernel.select import sel as _sel
 
 
 @njit(cache=True, error_model="numpy", nogil=True)

@@ -28,7 +28,7 @@ from ..groups import group_type
 from .emit import FAIL_COINCIDENT, Emitter, d, dd, fail, pt
 from .select import branchless
 
-__all__ = ["generate", "CHUNK", "FORMAT"]
+__all__ = ["generate", "hoisted", "quantities", "CHUNK", "FORMAT"]
 
 #: elements per work item of the element loop
 CHUNK = 256
@@ -76,6 +76,21 @@ def _emit_measure(E, i, kind, s_, P, Q):
             E(f"{dd(s, a, b)} = ({t}dx_{a} * {t}dx_{b} + {t}dy_{a} * {t}dy_{b}"
               f" + {t}dx * ({dd(qx, a, b)} - {dd(px, a, b)}) + {t}dy * "
               f"({dd(qy, a, b)} - {dd(py, a, b)}) - {d(s, a)} * {d(s, b)}) * {t}il")
+
+
+def hoisted(lines):
+    """The element loop's body (one level deeper, conditional expressions as branch-free
+    selects) with per-design reads ``params[r, d]``, ``trig[r, d]`` replaced by locals
+    ``P{r}``, ``T{r}``, and the lines that load those locals once per run of positions of
+    a design (so the loop reads only q and can be vectorized)."""
+    prows = sorted({int(m) for line in lines for m in re.findall(r"params\[(\d+), d\]", line)})
+    trows = sorted({int(m) for line in lines for m in re.findall(r"trig\[(\d+), d\]", line)})
+    body = [branchless(re.sub(r"trig\[(\d+), d\]", r"T\1",
+                              re.sub(r"params\[(\d+), d\]", r"P\1", "    " + line)))
+            for line in lines]
+    hoist = "".join(f"            P{r} = params[{r}, d]\n" for r in prows)
+    hoist += "".join(f"            T{r} = trig[{r}, d]\n" for r in trows)
+    return body, hoist
 
 
 def quantities(K, out_pts, out_sca, angle_slots):
@@ -126,13 +141,7 @@ def generate(rows, measures, K, out_pts, out_sca):
         _emit_measure(E, n + j, kind, s_, P, Q)
     # per-design values are loaded once per run of positions of a design, before the
     # element loop (so the loop reads only q and can be vectorized)
-    prows = sorted({int(m) for line in E.lines for m in re.findall(r"params\[(\d+), d\]", line)})
-    trows = sorted({int(m) for line in E.lines for m in re.findall(r"trig\[(\d+), d\]", line)})
-    body = [branchless(re.sub(r"trig\[(\d+), d\]", r"T\1",
-                              re.sub(r"params\[(\d+), d\]", r"P\1", "    " + line)))
-            for line in E.lines]
-    hoist = "".join(f"            P{r} = params[{r}, d]\n" for r in prows)
-    hoist += "".join(f"            T{r} = trig[{r}, d]\n" for r in trows)
+    body, hoist = hoisted(E.lines)
     angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
     qs = quantities(K, out_pts, out_sca, angle_slots)
     nq = len(qs)
