@@ -181,6 +181,13 @@ def coordinates_array(q, mech, designs: int = 1, per_position: float | None = No
         For ``None``, text, complex or ragged input, no positions, a value that is
         not finite, or more positions than the memory limit allows.
     """
+    if type(q) is np.ndarray and q.dtype == np.float64 and 0 < q.size <= 4096 and designs <= 1:
+        # the common small case (one or a few positions): the checks below, cheaper
+        if not np.isfinite(q).all():
+            bad = tuple(int(i) for i in np.argwhere(~np.isfinite(q))[0])
+            raise ModelError(f"mechanism {mech.name!r}: the generalized coordinate value at "
+                             f"index {bad} is not finite ({q[bad]!r})")
+        return q
     name = f"mechanism {mech.name!r}"
     if q is None:
         raise ModelError(f"{name}: the generalized coordinates are None; expected numbers "

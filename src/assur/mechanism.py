@@ -617,17 +617,9 @@ class Mechanism:
     def coordinate_array(self, q, m_params, per_position=None):
         """The coordinates ``q`` as a (k, m·n) array, their result shape, m and n;
         checked (:func:`assur.inputs.coordinates_array`) before anything is allocated."""
-        q = inputs.coordinates_array(q, self, m_params, per_position)
+        # real, finite floats of a size that fits in memory, or a ModelError
+        a = inputs.coordinates_array(q, self, m_params, per_position)
         k = len(self.coordinates)
-        if np.iscomplexobj(q):
-            raise ModelError("generalized coordinates must be real numbers [m or rad]")
-        try:
-            a = np.asarray(q, dtype=float)
-        except (TypeError, ValueError):
-            raise ModelError(f"generalized coordinates must be numbers, got {q!r}") from None
-        if not np.all(np.isfinite(a)):
-            bad = np.argwhere(~np.isfinite(a))[0]
-            raise ModelError(f"generalized coordinate value at index {tuple(bad)} is not finite")
         if k == 1:
             if a.ndim == 0:
                 a = a[None]

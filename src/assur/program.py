@@ -372,6 +372,10 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     if E >= 65536 and len(ang) > 1:
         for f in [KR.pool().submit(angle, row, i) for row, i in enumerate(ang)]:
             f.result()
+    elif ang and ang == list(range(ang[0], ang[0] + len(ang))) and not (check and n > 1):
+        # contiguous angle rows of a small problem: one ufunc call for all of them
+        rows_a = sv[ang[0]:ang[0] + len(ang)]
+        np.arctan2(rows_a, parts[6], out=rows_a)
     else:
         for row, i in enumerate(ang):
             angle(row, i)
