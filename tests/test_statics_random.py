@@ -1221,3 +1221,42 @@ def test_inertia_without_qddot_two_coordinates(data):
         assert np.allclose(a, b, rtol=1e-12, atol=1e-9 * s0.A.max()), (
             f"actuator force {c} with qddot omitted: {a.ravel()[:3]} != qddot = 0: "
             f"{b.ravel()[:3]}\n{reproducer(case, loads, Qd, np.zeros_like(Qd))}")
+
+
+def test_fused_kernel_shared_by_load_values_with_other_coincidences():
+    """Regression: the fused kernel of a load structure is shared by load values, and
+    its table rows must not depend on which of those values happen to be equal (a
+    weight and a force of 1 N shared a row, and the kernel cached for them then read
+    the wrong row for a weight of 1 N and a force of 2 N)."""
+    from assur import Mechanism
+    base = (Mechanism("crank-dyad", coordinates=("q",))
+            .frame("O", 0.0, 0.0).frame("B", 0.0, 3.0)
+            .crank("crank", pivot="O", out="A", radius=1.0, q="q", links=("1",))
+            .dyad("II", a="A", b="B", out="C", ra=2.65, rb=0.6, branch=1, links=("2", "3")))
+    q = np.linspace(0.0, 1.0, 7)
+    for P, fx, M in ((1.0, 1.0, 1.0), (1.0, 2.0, 3.0), (2.0, 2.0, 1.0)):
+        m = base.weight("C", P).force("A", fx, 0.5).moment("2", M)
+        kin = m.solve(q)
+        fz = statics.solve(kin, method="fused")
+        ar = statics.solve(kin, method="array")
+        for _, i, j in ar.joints:
+            assert np.allclose(fz.reaction(i, j), ar.reaction(i, j), rtol=1e-12, atol=1e-9)
+        assert np.allclose(fz.actuator_force("q"), ar.actuator_force("q"), rtol=1e-12)
+
+
+def test_statics_uses_the_fused_kernel_on_large_ranges():
+    """analyze() on ≥ FUSED_MIN elements takes the fused kernel (static loads); it
+    equals the array pass on the seed-003 hitch to 1e-9 relative."""
+    from assur import examples
+    m = examples.hitch_003()
+    kin = m.solve(np.linspace(0.42, 0.67, statics.FUSED_MIN + 1))
+    st = statics.solve(kin)
+    ar = statics.solve(kin, method="array")
+    scale = max(float(np.max(np.abs(ar.reaction(i, j)))) for _, i, j in ar.joints)
+    for _, i, j in ar.joints:
+        assert np.max(np.abs(st.reaction(i, j) - ar.reaction(i, j))) <= 1e-9 * scale
+    for c in m.coordinates:
+        assert np.allclose(st.actuator_force(c), ar.actuator_force(c), rtol=1e-9)
+        assert np.allclose(st.actuator_force_from_reactions(c),
+                           ar.actuator_force_from_reactions(c), rtol=1e-9)
+    assert max(float(np.max(r)) for r in st.equilibrium_residual()) <= 1e-9 * scale

@@ -53,11 +53,11 @@ from .kernel.emit import Emitter
 from .kernel.select import branchless
 from .kernel.source import CHUNK, hoisted
 from .kernel.sym import Sym, Tracer, code
-from .statics import ReactionContextBase
+from .statics import GRAVITY, ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 
-FORMAT = "5"
+FORMAT = "6"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
@@ -116,9 +116,9 @@ class _Fused(ReactionContextBase):
                 return self.t.sym(f"params[{self.literal_rows[_G]}, d]")
             return self.t.sym(f"params[{self.prog.param_row(ref)}, d]")
         v = float(ref)
-        if v in self.prog.literals:
-            return self.t.sym(f"params[{self.prog.param_row(v)}, d]")
-        return self.t.sym(f"params[{self.literal_rows[v]}, d]")
+        if v in self.literal_rows:  # a number of the loads (first: rows fixed by them)
+            return self.t.sym(f"params[{self.literal_rows[v]}, d]")
+        return self.t.sym(f"params[{self.prog.param_row(v)}, d]")
 
     def inv(self, x):
         if isinstance(x, Sym):
@@ -254,11 +254,53 @@ def _literals(mech, g, n0):
 
 
 def _load_signature(mech):
-    """The loads with their numbers left out (the kernel's structure)."""
-    return tuple((type(ld).__name__,) + tuple("#" if is_number(getattr(ld, f.name))
-                                              else getattr(ld, f.name)
-                                              for f in dataclasses.fields(ld))
-                 for ld in mech.loads)
+    """The loads with each number replaced by the index of its value among the loads'
+    distinct numbers (the kernel's structure: which rows it reads, not their values)."""
+    seen: dict = {}
+    out = []
+    for ld in mech.loads:
+        sig = [type(ld).__name__]
+        for f in dataclasses.fields(ld):
+            v = getattr(ld, f.name)
+            sig.append(("#", seen.setdefault(float(v), len(seen))) if is_number(v) else v)
+        out.append(tuple(sig))
+    return tuple(out)
+
+
+def joint_list(mech):
+    """The joints of a mechanism's reverse-order pass, ``((i, j, point), …)`` (force of
+    link i on link j at the point), traced once and kept with the mechanism."""
+    return mech.memo(("fused joints",), lambda: tuple(
+        (i, j, pt) for (i, j), (pt, *_r) in _trace_reactions(mech).joints.items()))
+
+
+def has_actuator(mech, c):
+    """True if the reverse pass gives an actuator force for coordinate ``c``."""
+    return c in mech.memo(("fused actuators",), lambda: frozenset(_trace_reactions(mech).act))
+
+
+def _trace_reactions(mech):
+    """The reaction context after tracing the loads and the reverse pass (into a
+    throw-away emitter: only its joints and actuators are read)."""
+    prog = mech.program()
+    n0 = len(prog.param_names) + len(prog.literals) + prog.n_derived
+    cyl_rows, cyl_values = _cylinder_rows(mech, n0)
+    literal_rows, _ = _literals(mech, GRAVITY, n0 + len(cyl_values))
+    topo = mech.topology
+
+    def is_coord(ref):
+        return isinstance(ref, str) and ref in mech.coordinates
+
+    rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
+                                                               is_coord)}
+    ctx = _Fused(mech, prog, Tracer(Emitter(prog.k, order=1)), rod_ends, cyl_rows,
+                 literal_rows)
+    for ld in mech.loads:
+        ld.apply(ctx)
+    for g_ in reversed(mech.groups):
+        ctx.links = topo.group_links[g_.name]
+        g_.reactions(ctx)
+    return ctx
 
 
 def _is_float(s):
@@ -511,7 +553,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
         raise ValueError("on_failure must be one of: ['raise', 'report']")
     if not outputs:
         raise ModelError("evaluate: name at least one output, e.g. outputs=['Y(56)']")
-    specs = tuple(parse_output(o) for o in outputs)
+    specs = tuple(o if isinstance(o, tuple) else parse_output(o) for o in outputs)
     inputs.check_params(mech, params)
     m_ = mech.with_params(**params) if params else mech
     g = gravity_of(m_) if g is None else float(g)

@@ -396,21 +396,17 @@ def check_finite(analysis) -> None:
     ModelError
     """
     kin = analysis.kinematics
+    name = f"mechanism {kin.mechanism.name!r}"
+    for bad in (kin.first_nonfinite(), analysis.statics.first_nonfinite()):
+        if bad is not None:
+            raise ModelError(f"{name}: the {bad[0]} is not finite (element {bad[1]}): the "
+                             f"inputs are outside the range where it can be computed; check "
+                             f"the sizes of lengths, loads, bores and efficiencies")
     items = []
-    for p in kin.points:
-        items.append((f"position of point {p!r}", lambda p=p: kin.point(p)))
-        items.append((f"first analog of point {p!r}", lambda p=p: (kin.dx(p), kin.dy(p))))
-    for l in kin.links:
-        items.append((f"{kin._kinds.get(l, 'angle')} of {l!r}", lambda l=l: kin._s(l)))
-    st = analysis.statics
-    for c in kin.coordinates:
-        items.append((f"actuator force along {c!r}", lambda c=c: st.actuator_force(c)))
-    for _, i, j in st.joints:
-        items.append((f"reaction R{i},{j}", lambda i=i, j=j: st.reaction(i, j)))
-    for name, cyl in analysis.cylinders.items():
-        items.append((f"pressure of cylinder {name!r}", lambda c=cyl: c.pressure))
-        items.append((f"force of cylinder {name!r}", lambda c=cyl: c.force_required))
-        items.append((f"largest force of cylinder {name!r}", lambda c=cyl: c.force_max))
+    for name_, cyl in analysis.cylinders.items():
+        items.append((f"pressure of cylinder {name_!r}", lambda c=cyl: c.pressure))
+        items.append((f"force of cylinder {name_!r}", lambda c=cyl: c.force_required))
+        items.append((f"largest force of cylinder {name_!r}", lambda c=cyl: c.force_max))
     for what, get in items:
         vals = get()
         for v in (vals if isinstance(vals, tuple) else (vals,)):

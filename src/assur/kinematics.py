@@ -139,6 +139,25 @@ class Kinematics:
         """True if the result holds the point (all points unless solved with ``outputs``)."""
         return point in self._pidx or point in self._frame
 
+    def first_nonfinite(self):
+        """``(what, element)`` of the first value that is NaN or infinite (positions,
+        analogs, link angles and distances), or None — one pass over the arrays."""
+        for what, arr, names in (("position of point", self._pv, list(self._pidx)),
+                                 ("first analog of point", self._pd, list(self._pidx)),
+                                 ("second analog of point", self._pdd, list(self._pidx)),
+                                 ("angle or length of", self._sv, list(self._sidx)),
+                                 ("analog of", self._sd, list(self._sidx))):
+            if arr.size and not np.isfinite(arr).all():
+                idx = np.argwhere(~np.isfinite(arr))[0]
+                return f"{what} {names[int(idx[0])]!r}", int(np.ravel_multi_index(
+                    tuple(idx[-2:]), arr.shape[-2:]))
+        return None
+
+    def has_all_points(self) -> bool:
+        """True if the result holds every point of the mechanism (not solved with
+        ``outputs=`` for some of them)."""
+        return all(self.has_point(p) for p in self.mechanism.points)
+
     def positions(self, i0, i1):
         """The same result restricted to positions i0:i1 (views, no copies)."""
         return self._positions(i0, i1)
