@@ -101,9 +101,9 @@ def test_formula_over_a_batch_of_designs():
                                rtol=1e-12)
 
 
-def test_division_by_zero_is_a_value_not_an_exception(hitch_analysis):
-    v = Formula("z", "1/(S - S)").evaluate(hitch_analysis.kinematics)
-    assert np.all(np.isinf(v))
+def test_division_by_zero_is_an_error_naming_the_formula(hitch_analysis):
+    with pytest.raises(FormulaError, match=r"formula 'z' = 1/\(S - S\)"):
+        Formula("z", "1/(S - S)").evaluate(hitch_analysis.kinematics)
 
 
 def test_unknown_names_are_refused_against_the_mechanism():

@@ -260,8 +260,14 @@ class Formula:
         Returns
         -------
         numpy.ndarray
-            Shape ``kin.shape``. Division by zero and domain errors give ``inf`` or
-            NaN (an empty cell in the tables), not an exception.
+            Shape ``kin.shape``.
+
+        Raises
+        ------
+        FormulaError
+            Where the formula divides by zero, leaves its domain or overflows: the
+            message names the formula and the first such position (never a NaN or an
+            infinity in a result).
         """
         mech = kin.mechanism
         self.check(mech)
@@ -300,9 +306,19 @@ class Formula:
                 return kin.dphi(_ref(node.args[0], "link"))
             return MATH_FUNCTIONS[f][0](*(walk(a) for a in node.args))
 
-        with np.errstate(all="ignore"):
-            out = walk(self._parsed[0])
-        return np.array(np.broadcast_to(np.asarray(out, dtype=float), kin.shape))
+        # floating-point exceptions become errors (never silenced into NaN/inf)
+        try:
+            with np.errstate(all="raise"):
+                out = np.array(np.broadcast_to(np.asarray(walk(self._parsed[0]),
+                                                          dtype=float), kin.shape))
+        except (FloatingPointError, ZeroDivisionError, OverflowError, ValueError) as e:
+            raise FormulaError(f"formula {self.name!r} = {self.expr}: cannot be evaluated "
+                               f"over the positions ({e})") from None
+        if not np.isfinite(out).all():
+            i = int(np.flatnonzero(~np.isfinite(out.ravel()))[0])
+            raise FormulaError(f"formula {self.name!r} = {self.expr}: not finite at element "
+                               f"{i} ({out.ravel()[i]!r})")
+        return out
 
 
 @dataclass(frozen=True)
