@@ -17,15 +17,14 @@ def hitch_plus_rigid(n_extra: int):
     and 6 in turn, each with parameters of its own (length, angle)."""
     m = examples.hitch_003()
     carriers = (("03", "23"), ("05", "56"), ("56", "67"))
-    params = dict(m.params)
-    groups = []
+    params, groups = {}, []
     for i in range(n_extra):
         o, t = carriers[i % 3]
         params[f"lr{i}"] = 0.05 + 0.3 * ((i * 0.618) % 1.0)
         params[f"br{i}"] = -math.pi + 2 * math.pi * ((i * 0.382) % 1.0)
         groups.append(RigidPoint(name=f"R{i}", origin=o, toward=t, out=f"R{i}",
                                  length=f"lr{i}", angle=f"br{i}"))
-    return m._with(params=params, groups=m.groups + tuple(groups))
+    return m.extended(groups, params)
 
 
 def dyad_chain(n_dyads: int, q_ref: float = 0.545):
@@ -35,7 +34,7 @@ def dyad_chain(n_dyads: int, q_ref: float = 0.545):
     right angle, so each dyad passes on at most the motion it receives."""
     base = examples.hitch_003()
     pts = base.evaluate_positions({"S": np.array([q_ref])})
-    px, py = (float(np.real(v[0])) for v in pts["23"])
+    px, py = (float(v[0]) for v in pts["23"])
     params = dict(base.params)
     groups = list(base.groups[:5])  # frames 01…07 and the cylinder–lever group
     prev = "23"

@@ -6,15 +6,21 @@ force each one by setting it (and emptying the program's kernel caches)."""
 
 from __future__ import annotations
 
-import math
+import os
+import sys
 from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from assur import Mechanism, PosePoint, RigidPoint, examples
+from assur import Mechanism, PosePoint, examples
 from assur import program as P
 from assur.kernel import compose
+
+# the structures of the compile-time benchmark, defined once (benchmarks/structures.py)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                "benchmarks"))
+from structures import hitch_plus_rigid  # noqa: E402
 
 
 @pytest.fixture
@@ -101,21 +107,6 @@ def test_composed_solve_equals_fused(force):
     for l in ("3", "5", "6", "7"):
         for f in ("phi", "dphi", "ddphi"):
             assert np.array_equal(getattr(a, f)(l), getattr(b, f)(l)), (l, f)
-
-
-def hitch_plus_rigid(n_extra):
-    """The hitch (10 groups) plus ``n_extra`` rigid points on links 3, 5 and 6 in
-    turn, each with its own length and angle."""
-    m = examples.hitch_003()
-    carriers = (("03", "23"), ("05", "56"), ("56", "67"))
-    params, groups = dict(m.params), []
-    for i in range(n_extra):
-        o, t = carriers[i % 3]
-        params[f"lr{i}"] = 0.05 + 0.3 * ((i * 0.618) % 1.0)
-        params[f"br{i}"] = -math.pi + 2 * math.pi * ((i * 0.382) % 1.0)
-        groups.append(RigidPoint(name=f"R{i}", origin=o, toward=t, out=f"R{i}",
-                                 length=f"lr{i}", angle=f"br{i}"))
-    return m._with(params=params, groups=m.groups + tuple(groups))
 
 
 def test_200_groups_solve():

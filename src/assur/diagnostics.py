@@ -58,7 +58,7 @@ def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
     params = {name: ptab[i, d] for i, name in enumerate(prog.param_names)}
     qd = {c: qarr[j, e] for j, c in enumerate(mech.coordinates)}
     pts = mech.evaluate_positions(qd, params, upto=opi) if opi else {}
-    pts = {k: (float(np.real(x)), float(np.real(y))) for k, (x, y) in pts.items()}
+    pts = {k: (float(x), float(y)) for k, (x, y) in pts.items()}
 
     def v(ref):
         if isinstance(ref, str) and ref in qd:

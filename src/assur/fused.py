@@ -51,7 +51,7 @@ from .kernel import run as KR
 from .kernel.cache import load_source
 from .kernel.emit import Emitter
 from .kernel.select import branchless
-from .kernel.source import CHUNK, hoisted
+from .kernel.source import CHUNK, chunk_loop, hoisted
 from .kernel.sym import Sym, Tracer, code
 from .statics import GRAVITY, ReactionContextBase
 
@@ -409,15 +409,7 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
     design); out: ({nout}, E) outputs or red: (4·{nout}, chunks) min, max, argmin,
     argmax per chunk."""
     buf = np.empty(({nout + 1}, {CHUNK}))
-    cpd = (npd + {CHUNK} - 1) // {CHUNK}
-    for c in range(c_start, c_end):
-        d = c // cpd
-        e0 = d * npd + (c % cpd) * {CHUNK}
-        e1 = min(d * npd + npd, e0 + {CHUNK})
-        if e1 > e0:
-{pre}            for e in range(e0, e1):
-                st = -1
-{body}
+{chunk_loop(pre)}{body}
 ''' + "\n".join(post) + "\n" + "\n".join(after) + "\n"
     return src
 

@@ -146,6 +146,17 @@ class Mechanism:
         """Return a mechanism with ``groups`` appended (solved after the existing ones)."""
         return self._with(groups=self.groups + tuple(groups))
 
+    def extended(self, groups=(), params=None) -> "Mechanism":
+        """Return a mechanism with ``groups`` appended and ``params`` added (new
+        parameter names; :meth:`with_params` changes existing ones)."""
+        p = dict(self.params)
+        clash = sorted(set(params or {}) & set(p))
+        if clash:
+            raise ModelError(f"mechanism {self.name!r}: parameters {clash} exist already; "
+                             f"change them with with_params")
+        p.update(params or {})
+        return self._with(params=p, groups=self.groups + tuple(groups))
+
     def add_group(self, type_name: str, name: str, **kw) -> "Mechanism":
         """Add a group of the registered type ``type_name`` (the model file's ``type``)."""
         types = registry()

@@ -529,7 +529,6 @@ def _solve(kin, qdot, qddot, g):
     reactions (:meth:`assur.groups.base.Group.reactions`)."""
     mech = kin.mechanism
     topo = mech.topology
-    m, n = kin.m, kin.n
     missing = [p for pts in topo.bodies.values() for p in pts if not kin.has_point(p)]
     if missing:
         raise ValueError(f"the kinematics lack points {missing}: solve without `outputs=`")

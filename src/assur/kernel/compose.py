@@ -38,8 +38,7 @@ import re
 from ..groups import group_type
 from .cache import load_source
 from .emit import CODES_PER_OP, Emitter
-from .select import branchless
-from .source import CHUNK, FORMAT, _emit_measure, generate, quantities
+from .source import CHUNK, FORMAT, emit_measure, generate, quantities
 
 __all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "load_kernel"]
 
@@ -163,7 +162,7 @@ def generate_composed(rows, measures, K, out_pts, out_sca):
     n = len(rows)
     for j, (kind, s_, P, Q) in enumerate(measures):
         E = Emitter(K)
-        _emit_measure(E, 0, kind, s_, P, Q)
+        emit_measure(E, 0, kind, s_, P, Q)
         items.append((E.lines, (n + j) * CODES_PER_OP))
     srcs, keys = [], {}
     state: dict[str, int] = {}
@@ -235,7 +234,7 @@ def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
                 prm = _PRM[_POFF[g]:_POFF[g + 1]]
                 trg = _TRG[_TOFF[g]:_TOFF[g + 1]]
                 sb = _SB[g]
-''' + "\n".join(chain) + f'''
+''' + "\n".join(chain) + '''
             for j in range(nb):
                 status[b0 + j] = stv[j]
             for r in range(NQ):

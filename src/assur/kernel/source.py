@@ -28,7 +28,8 @@ from ..groups import group_type
 from .emit import FAIL_COINCIDENT, Emitter, d, dd, fail, pt
 from .select import branchless
 
-__all__ = ["generate", "hoisted", "quantities", "CHUNK", "FORMAT"]
+__all__ = ["generate", "hoisted", "chunk_loop", "emit_measure", "quantities", "CHUNK",
+           "FORMAT"]
 
 #: elements per work item of the element loop
 CHUNK = 256
@@ -37,7 +38,7 @@ CHUNK = 256
 FORMAT = "19"
 
 
-def _emit_measure(E, i, kind, s_, P, Q):
+def emit_measure(E, i, kind, s_, P, Q):
     """Link angle (kind 'angle') or distance (kind 'distance') between two points."""
     K = E.K
     px, py = pt(P)
@@ -93,6 +94,20 @@ def hoisted(lines):
     return body, hoist
 
 
+def chunk_loop(hoist: str) -> str:
+    """The loop over work items (runs of ≤ CHUNK positions of one design: per-design
+    values are loop-invariant, the element loop a plain counted loop), with the
+    ``hoist`` lines before each run, up to the start of an element (``st = -1``)."""
+    return (f"    cpd = (npd + {CHUNK} - 1) // {CHUNK}\n"
+            "    for c in range(c_start, c_end):\n"
+            "        d = c // cpd\n"
+            f"        e0 = d * npd + (c % cpd) * {CHUNK}\n"
+            f"        e1 = min(d * npd + npd, e0 + {CHUNK})\n"
+            "        if e1 > e0:\n"
+            f"{hoist}            for e in range(e0, e1):\n"
+            "                st = -1\n")
+
+
 def quantities(K, out_pts, out_sca, angle_slots):
     """Names of the output rows, in order: point values, first, second analogs, then
     the measures likewise, then the dx of every output angle."""
@@ -138,7 +153,7 @@ def generate(rows, measures, K, out_pts, out_sca):
     n = len(rows)
     for j, (kind, s_, P, Q) in enumerate(measures):
         E(f"# measure {j}: {kind}")
-        _emit_measure(E, n + j, kind, s_, P, Q)
+        emit_measure(E, n + j, kind, s_, P, Q)
     # per-design values are loaded once per run of positions of a design, before the
     # element loop (so the loop reads only q and can be vectorized)
     body, hoist = hoisted(E.lines)
@@ -181,15 +196,7 @@ def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
     buf = np.empty(({max(len(qs), 1)}, {CHUNK}))
     # work items are runs of ≤ {CHUNK} positions of one design: the per-design values
     # are loop-invariant and the element loop is a plain counted loop (vectorizable)
-    cpd = (npd + {CHUNK} - 1) // {CHUNK}
-    for c in range(c_start, c_end):
-        d = c // cpd
-        e0 = d * npd + (c % cpd) * {CHUNK}
-        e1 = min(d * npd + npd, e0 + {CHUNK})
-        if e1 > e0:
-{hoist}            for e in range(e0, e1):
-                st = -1
-''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + '''        for r in range(NQ):
+{chunk_loop(hoist)}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + '''        for r in range(NQ):
             for j in range(e1 - e0):
                 out[r, e0 + j] = buf[r, j]
         if check:
