@@ -95,6 +95,8 @@ def _assemble(model):
 @app.command()
 def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     """Validate a model file, solve its conditions and assemble it over its range."""
+    from .report.values import solved_line
+
     t0 = time.perf_counter()
     model = _load(file)
     _assemble(model)
@@ -109,7 +111,7 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
         col = rng if rng.ndim == 1 else rng[..., j]
         tab.add_row(f"range of {c}", f"{col.min():.6g} … {col.max():.6g} ({col.size} positions)")
     for s in model.solved:
-        tab.add_row(f"solved {s.condition.unknown}", f"{s.value:.9g}  ({s.condition.describe()})")
+        tab.add_row(f"solved {s.condition.unknown}", solved_line(s, m, "en"))
     console.print(tab)
     _ok(f"{file} assembles at every position ({time.perf_counter() - t0:.2f} s)")
 

@@ -29,7 +29,7 @@ Each load applies itself through :meth:`apply` to a *load context* (the contract
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Union
+from typing import ClassVar, Union
 
 import numpy as np
 
@@ -48,6 +48,9 @@ class Weight:
     link: str | None = None
     name: str | None = None
 
+    #: the quantity of each value field (:mod:`assur.quantities`)
+    quantities: ClassVar = {"P": "force"}
+
     def apply(self, c):
         c.force(self.link or c.owner(self.point), self.point, 0.0, -c.value(self.P))
 
@@ -62,6 +65,8 @@ class PointForce:
     link: str | None = None
     name: str | None = None
 
+    quantities: ClassVar = {"fx": "force", "fy": "force"}
+
     def apply(self, c):
         c.force(self.link or c.owner(self.point), self.point, c.value(self.fx),
                 c.value(self.fy))
@@ -74,6 +79,8 @@ class Couple:
     link: str
     M: Ref
     name: str | None = None
+
+    quantities: ClassVar = {"M": "moment"}
 
     def apply(self, c):
         c.couple(self.link, c.value(self.M))
@@ -94,6 +101,8 @@ class Spring:
     free_length: Ref
     preload: Ref = 0.0
     links: tuple[str, str] | None = None
+
+    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force"}
 
     def apply(self, c):
         (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
@@ -118,6 +127,8 @@ class Mass:
     m: Ref
     point: str
     J: Ref = 0.0
+
+    quantities: ClassVar = {"m": "mass", "J": "inertia"}
 
     def apply(self, c):
         m = c.value(self.m)
@@ -169,6 +180,10 @@ class Cylinder:
     dp_throttle: Ref = 0.0
     dp_line: Ref = 0.0
     side: str = "piston"
+
+    quantities: ClassVar = {"bore": "length", "rod": "length", "count": "number",
+                            "eta_mech": "number", "eta_hyd": "number", "p_relief": "pressure",
+                            "dp_throttle": "pressure", "dp_line": "pressure"}
 
 
 LOAD_TYPES = {"weight": Weight, "force": PointForce, "moment": Couple, "spring": Spring,

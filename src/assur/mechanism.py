@@ -63,7 +63,11 @@ class Mechanism:
     params : mapping of str to float or array_like, shape (m,)
         Named parameters [SI units: m, rad]. Arrays make a batch of ``m`` designs.
     title : str, optional
-        Human title for reports.
+        Human title for reports (a :class:`assur.texts.Text` may carry translations).
+    units : mapping of str to Unit, optional
+        How to show each parameter to the user (:class:`assur.quantities.Unit`: the
+        unit a model file gave it, e.g. kN, MPa, mm, deg). Parameters without one are
+        shown in the SI unit of their quantity (angles in degrees).
 
     Examples
     --------
@@ -82,7 +86,8 @@ class Mechanism:
                  groups: Iterable = (), links: Iterable[Link] = (),
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
-                 machine=None, gravity: float | None = None, _params_checked: bool = False):
+                 machine=None, gravity: float | None = None, units: Mapping | None = None,
+                 _params_checked: bool = False):
         self.name = name
         self.title = title or name
         self.coordinates = tuple(coordinates)
@@ -91,6 +96,8 @@ class Mechanism:
         if len(set(self.coordinates)) != len(self.coordinates):
             raise ModelError(f"mechanism {name!r}: duplicate coordinate names {self.coordinates}")
         self.params = MappingProxyType(dict(params or {}))
+        #: display unit of each parameter (:class:`assur.quantities.Unit`), as given
+        self.units = MappingProxyType(dict(units or {}))
         self.groups = tuple(groups)
         self.links = tuple(links)
         self.distances = tuple(distances)
@@ -114,7 +121,7 @@ class Mechanism:
 
     # ---- building (each returns a new mechanism) -------------------------------
     #: attributes a copy may change without validating the structure again
-    _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity"})
+    _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity", "units"})
 
     def _with(self, **kw):
         if kw and set(kw) <= self._DATA_ONLY and ("params" not in kw
@@ -126,7 +133,7 @@ class Mechanism:
             # same structure: the programs hold; the prepared tables do not
             new._cache = {k: v for k, v in self._cache.items() if k[0] == "program"}
             for k, v in kw.items():
-                setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables")
+                setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables", "units")
                         else tuple(v) if k == "notes" else v)
             if "params" in kw:
                 new._check_params({n: v for n, v in kw["params"].items()
@@ -138,7 +145,7 @@ class Mechanism:
                  title=self.title, groups=self.groups, links=self.links,
                  distances=self.distances, tables=self.tables, notes=self.notes,
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
-                 gravity=self.gravity, _params_checked="params" not in kw)
+                 gravity=self.gravity, units=self.units, _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)
 
@@ -248,6 +255,13 @@ class Mechanism:
     def with_gravity(self, g) -> "Mechanism":
         """Return a copy whose masses weigh m·g, g [m/s²]."""
         return self._with(gravity=float(g))
+
+    def with_units(self, **units) -> "Mechanism":
+        """Return a copy that shows parameters in the given units
+        (:class:`assur.quantities.Unit`, e.g. ``P=Unit("kN", 1e3)``)."""
+        u = dict(self.units)
+        u.update(units)
+        return self._with(units=u)
 
     def with_tables(self, **tables) -> "Mechanism":
         t = dict(self.tables)

@@ -441,6 +441,22 @@ class Carrying:
                 terms += list(p) + list(x)
         return sorted({r for _, r in terms if isinstance(r, str)})
 
+    def quantities(self):
+        """``{parameter: quantity}`` of the parameters the machine's data refer to
+        (:mod:`assur.quantities`): axle and weight positions are lengths, weights
+        forces; the implement's weight too."""
+        out = {}
+        if isinstance(self.weight, str):
+            out[self.weight] = "force"
+        if self.refs:
+            for terms in self.refs["axles"].values():
+                out.update({r: "length" for _, r in terms if isinstance(r, str)})
+            for part in ("weights", "counterweights"):
+                for _, p, x in self.refs.get(part, ()):
+                    out.update({r: "force" for _, r in p if isinstance(r, str)})
+                    out.update({r: "length" for _, r in x if isinstance(r, str)})
+        return out
+
     def machine_for(self, params):
         """The :class:`Machine` with its numbers from the parameter values ``params``
         (one design: scalars)."""

@@ -53,6 +53,9 @@ class Condition:
         Required value [m or rad].
     source : str, optional
         Where the condition comes from (a file and line), for messages.
+    unit : assur.quantities.Unit, optional
+        The unit to show the target (and the residual) in: the one the file wrote
+        ``equals`` in (``"90 deg"``); None: the quantity's default (m, or degrees).
     """
 
     unknown: str
@@ -61,6 +64,7 @@ class Condition:
     quantity: str
     target: float
     source: str | None = None
+    unit: object = None
 
     def describe(self):
         at = ", ".join(f"{k} = {v}" for k, v in self.at.items())

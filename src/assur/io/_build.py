@@ -31,11 +31,12 @@ from ..groups import group_type
 from ..inputs import bytes_per_position, check_memory, span_problem
 from ..mechanism import Mechanism
 from ..stability import Machine
+from ..texts import text
 from . import _schema as S
 from ._errors import ModelFileError, key_path
 from ._lines import line_of
 from ._units import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, MOMENT, NUMBER, PRESSURE, \
-    STIFFNESS, UnitError, is_name, parse, to_si, unit_kind
+    STIFFNESS, UnitError, display_unit, is_name, parse, to_si, unit_kind
 
 # constraints on values beyond their kind: (test, words)
 _FLAGS = {
@@ -369,6 +370,7 @@ class Builder:
     # ---- pass 2: parameters ---------------------------------------------------------------
     def parameters(self):
         out = {}
+        self.units = {}
         for name, raw in self.params_raw.items():
             path = ("params", name)
             use = self.param_use.get(name)
@@ -391,6 +393,7 @@ class Builder:
                     at = f" ({name} is used at {key_path(where)})" if where else ""
                     raise self.error(path, f"{problem}, found {shown}{at}")
             out[name] = si
+            self.units[name] = display_unit(raw, kind)
         self.params = out
         self.param_kind = {n: (u[0] if u else (unit_kind(r) if r.unit else None))
                            for n, r in self.params_raw.items() for u in [self.param_use.get(n)]}
@@ -421,8 +424,8 @@ class Builder:
     def mechanism(self) -> Mechanism:
         sp = self.spec
         mech = self.guarded(("model",), lambda: Mechanism(
-            sp.model.name, coordinates=self.coords, params=self.params,
-            title=sp.model.title, notes=tuple(sp.model.notes)))
+            sp.model.name, coordinates=self.coords, params=self.params, units=self.units,
+            title=text(sp.model.title), notes=tuple(text(n) for n in sp.model.notes)))
         known = {}  # point -> where defined
         for name in sp.frame:
             known[name] = "the frame"
@@ -649,14 +652,15 @@ class Builder:
                 scale = self.display_scale(fp + ("unit",), f.unit)
                 try:
                     formula = Formula(f.name, f.expr, unit=f.unit, scale=scale, table=f.table,
-                                      label=f.label, flags=tuple(f.flags))
+                                      label=text(f.label),
+                                      flags=tuple(text(x) for x in f.flags))
                     formula.check(mech)
                 except FormulaError as e:
                     raise self.error(fp + ("expr",), str(e)) from None
                 formulas.append(formula)
             out["formulas"] = tuple(formulas)
         if t.signs is not None:
-            out["signs"] = tuple(SignMap(tuple(m.columns), m.sign, m.note) for m in t.signs)
+            out["signs"] = tuple(SignMap(tuple(m.columns), m.sign, text(m.note)) for m in t.signs)
         return mech.with_tables(**out) if out else mech
 
     def display_scale(self, path, unit):
@@ -706,13 +710,17 @@ class Builder:
                 raise self.error(sp + ("bracket",), f"expected [low, high] with low < high, "
                                                     f"found {S.show(list(s.bracket))}")
             target = self.resolved[sp + ("equals",)]
+            raw = parse(s.equals)
             if isinstance(target, str):
+                shown = self.units.get(target)
                 target = self.params[target]
+            else:
+                shown = display_unit(raw, quantities[s.quantity])
             at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
             line = self.line(sp)
             file = getattr(line, "file", None) or self.file
             conds.append(Condition(s.unknown, tuple(bracket), at, s.quantity, float(target),
-                                   source=f"{file}:{int(line)}"))
+                                   source=f"{file}:{int(line)}", unit=shown))
         return conds
 
     def bracket_value(self, path, v, unknown):

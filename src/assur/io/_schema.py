@@ -55,6 +55,27 @@ def _sign(v):
 #: a number, or a string: a value with its unit or a parameter name
 Value = Annotated[Any, AfterValidator(_value)]
 
+#: the languages a text may be given in (:mod:`assur.texts`)
+_LANGS = ("en", "ru")
+
+
+def _text(v):
+    if isinstance(v, str):
+        return v
+    if isinstance(v, dict):
+        bad = [k for k in v if k not in _LANGS]
+        if bad or not v or not all(isinstance(x, str) for x in v.values()):
+            raise PydanticCustomError(
+                "text", "expected a text: a string, or a table of languages such as "
+                        '{ en = "…", ru = "…" } (languages: en, ru)')
+        return dict(v)
+    raise PydanticCustomError("text", 'expected a text: a string, or a table of languages '
+                                      'such as { en = "…", ru = "…" }')
+
+
+#: user text: a string or ``{ en = "…", ru = "…" }`` (:func:`assur.texts.text`)
+Text = Annotated[Any, AfterValidator(_text)]
+
 
 def _terms(v):
     if isinstance(v, list):
@@ -79,9 +100,9 @@ class _Table(BaseModel):
 # ---- [model], [range] ---------------------------------------------------------------
 class ModelSection(_Table):
     name: Name
-    title: Optional[StrictStr] = None
+    title: Optional[Text] = None
     coordinates: Annotated[list[Name], Field(min_length=1)]
-    notes: list[StrictStr] = []
+    notes: list[Text] = []
     gravity: Value = None
 
 
@@ -317,15 +338,15 @@ class FormulaSpec(_Table):
     expr: StrictStr
     unit: StrictStr = "-"
     table: Optional[StrictStr] = None
-    label: Optional[StrictStr] = None
-    flags: list[StrictStr] = []
+    label: Optional[Text] = None
+    flags: list[Text] = []
 
 
 class SignSpec(_Table):
     """Columns printed with a sign, and why (:class:`assur.columns.SignMap`)."""
     columns: Annotated[list[Name], Field(min_length=1)]
     sign: Sign
-    note: StrictStr = ""
+    note: Text = ""
 
 
 class TablesSpec(_Table):

@@ -217,6 +217,24 @@ def to_si(raw: Raw, kind: Kind | None):
     return _finite(raw.magnitude * _factor(raw.unit, kind.si or "dimensionless"), raw)
 
 
+def display_unit(raw: Raw, kind: Kind | None):
+    """The :class:`assur.quantities.Unit` to show a value written as ``raw`` in, used as
+    ``kind``: the unit the file wrote (``"27.5 kN"`` → kN), or for a plain number the
+    kind's default (an angle in degrees, otherwise SI)."""
+    from ..quantities import DEFAULT_UNITS, Unit, unit_text
+
+    name = kind.name if kind is not None else (unit_kind(raw).name
+                                               if raw.unit and unit_kind(raw) else None)
+    if raw.unit is None:
+        return DEFAULT_UNITS.get(name, Unit("-"))
+    if kind is ANGLE and _parse_units(raw.unit) == registry().degree:
+        return Unit(unit_text(raw.unit), math.pi / 180)
+    if kind is not None:
+        return Unit(unit_text(raw.unit), _factor(raw.unit, kind.si or "dimensionless"))
+    factor = _base_factor(_normalise(raw.unit))
+    return Unit(unit_text(raw.unit), factor) if factor else DEFAULT_UNITS.get(name, Unit("-"))
+
+
 @lru_cache(maxsize=4096)
 def _base_factor(unit: str):
     """The base-unit value of 1 ``unit``, or None for an offset unit; cached per unit

@@ -28,6 +28,7 @@ import numpy as np
 from matplotlib.patches import Polygon, Rectangle
 
 from ..loads import Weight
+from ..texts import localize
 from .figures import new_figure
 from .labels import check_lang, t, unit
 from .tables import _View
@@ -238,7 +239,7 @@ def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.
     ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
     ax.grid(True, alpha=0.3)
     shown = "; ".join(_qtext(geo, v, i, lang) for i in positions)
-    ax.set_title(f"{v.mech.title}\n{shown}", fontsize=10)
+    ax.set_title(f"{localize(v.mech.title, lang)}\n{shown}", fontsize=10)
     return fig
 
 
@@ -286,7 +287,7 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
             art.remove()
         _pose(ax, geo, i)
         _limits(ax, geo)
-        ax.set_title(f"{v.mech.title}\n{_qtext(geo, v, i, lang)}", fontsize=9)
+        ax.set_title(f"{localize(v.mech.title, lang)}\n{_qtext(geo, v, i, lang)}", fontsize=9)
         fig.canvas.draw()
         if i == 0:  # the axes are fixed: lay the figure out once
             fig.set_layout_engine("none")

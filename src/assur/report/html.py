@@ -16,78 +16,16 @@ from pathlib import Path
 
 import numpy as np
 
-from ..loads import Couple, Mass, PointForce, Spring, Weight
+from ..quantities import display_units
+from ..texts import localize
 from .labels import TEXT, check_lang, t, unit
+from .values import parameter_value, solved_line
 
-__all__ = ["write_html", "render_html", "parameter_units"]
+__all__ = ["write_html", "render_html"]
 
 #: decimals shown per unit (the seeds' printed precision)
 DECIMALS = {"m": 3, "deg": 1, "-": 3, "rad/m": 3, "N": 0, "Pa": 0, "%": 1, "N·m": 0,
             "m/rad": 3}
-
-#: role of a reference in a group -> unit
-_ROLE_UNITS = {"x": "m", "y": "m", "ra": "m", "rb": "m", "lever": "m", "s": "m",
-               "radius": "m", "phase": "rad", "offset": "m", "direction": "rad",
-               "length": "m", "angle": "rad", "base": "m", "opposite": "m", "dx": "m",
-               "dy": "m"}
-
-
-def parameter_units(mech) -> dict:
-    """Unit of each parameter, inferred from where the model uses it.
-
-    A parameter used as a length of a group is in m, as an angle in rad, as a
-    weight or force in N, as a cylinder bore in m, a pressure in Pa, an efficiency
-    or a count in ``-``. Parameters used nowhere get ``""``.
-    """
-    units = {}
-
-    def put(ref, u):
-        if isinstance(ref, str) and ref in mech.params and ref not in units:
-            units[ref] = u
-
-    for g in mech.groups:
-        for role, ref in g.refs().items():
-            put(ref, _ROLE_UNITS.get(role, ""))
-        for ref in getattr(g, "at", ()) or ():
-            put(ref, "m")
-    for ld in mech.loads:
-        if isinstance(ld, Weight):
-            put(ld.P, "N")
-        elif isinstance(ld, PointForce):
-            put(ld.fx, "N")
-            put(ld.fy, "N")
-        elif isinstance(ld, Couple):
-            put(ld.M, "N·m")
-        elif isinstance(ld, Spring):
-            put(ld.rate, "N/m")
-            put(ld.free_length, "m")
-            put(ld.preload, "N")
-        elif isinstance(ld, Mass):
-            put(ld.m, "kg")
-            put(ld.J, "kg·m²")
-    for c in mech.cylinders:
-        put(c.bore, "m")
-        put(c.rod, "m")
-        put(c.count, "-")
-        put(c.eta_mech, "-")
-        put(c.eta_hyd, "-")
-        for f in (c.p_relief, c.dp_throttle, c.dp_line):
-            put(f, "Pa")
-    carry = mech.machine
-    if carry is not None:
-        put(getattr(carry, "weight", None), "N")
-        refs = getattr(carry, "refs", None) or {}
-        for terms in refs.get("axles", {}).values():
-            for _, r in terms:
-                put(r, "m")
-        for part in ("weights", "counterweights"):
-            for _, p_terms, x_terms in refs.get(part, ()):
-                for _, r in p_terms:
-                    put(r, "N")
-                for _, r in x_terms:
-                    put(r, "m")
-    return {name: units.get(name, "") for name in mech.params}
-
 
 def _fmt(x, u, lang):
     """A number as the seeds print it."""
@@ -107,17 +45,6 @@ def _fmt(x, u, lang):
     return s.lstrip("-") if float(s) == 0 else s
 
 
-def _fmt_param(v, u, lang):
-    a = np.asarray(v, dtype=float)
-    if a.ndim and a.size > 1:
-        return f"[{a.size}] {a.min():.6g} … {a.max():.6g}"
-    x = float(a.reshape(-1)[0]) if a.ndim else float(a)
-    s = f"{x:.9g}"
-    if u == "rad":
-        s += f" ({np.degrees(x):.6g}°)"
-    return s
-
-
 def _data_uri(png: bytes) -> str:
     return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
 
@@ -134,8 +61,9 @@ def _kind(g, lang):
 def _summary(analysis, lang):
     mech = analysis.mechanism
     kin = analysis.kinematics
-    units = parameter_units(mech)
-    params = [(n, _fmt_param(v, units[n], lang), unit(units[n], lang) if units[n] else "—")
+    units = display_units(mech)
+    params = [(n, parameter_value(v, units[n]),
+               "°" if units[n].is_degrees else unit(units[n].text, lang))
               for n, v in mech.params.items()]
     coords = []
     for c in kin.coordinates:
@@ -164,8 +92,7 @@ def _summary(analysis, lang):
             machine.append(f"{name}: {p:.6g} {unit('N', lang)}, x = {x:.6g} {unit('m', lang)}")
         machine.append(f"min share: {100 * mc.min_share:g} %" if lang == "en"
                        else f"минимальная доля: {100 * mc.min_share:g} %")
-    solved = [f"{sc.condition.unknown} = {sc.value:.9g} ({sc.condition.describe()}; "
-              f"residual {sc.residual:.2g})" for sc in getattr(analysis, "solved", ())]
+    solved = [solved_line(sc, mech, lang, units) for sc in getattr(analysis, "solved", ())]
     return dict(params=params, coords=coords, groups=groups, links=links, machine=machine,
                 solved=solved)
 
@@ -206,12 +133,13 @@ def _figure_items(figures, lang):
 def _warnings(analysis, tables, lang):
     mech = analysis.mechanism
     groups = []
-    model_notes = list(mech.notes) + list(getattr(analysis.kinematics, "failures", []))
+    model_notes = [localize(n, lang) for n in mech.notes] + list(
+        getattr(analysis.kinematics, "failures", []))
     groups.append((t("model_notes", lang), model_notes))
     from ..columns import formulas_of, signs_of
-    sign_notes = [m.note for m in signs_of(mech) if m.note]
+    sign_notes = [localize(m.note, lang) for m in signs_of(mech) if m.note]
     groups.append((t("statics_flags", lang), sign_notes))
-    stab = [x for f in formulas_of(mech) for x in f.flags]
+    stab = [localize(x, lang) for f in formulas_of(mech) for x in f.flags]
     groups.append((t("stability_flags", lang), stab))
     seen = set(model_notes) | set(sign_notes) | set(stab)
     other = []
@@ -371,7 +299,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     L = {k: v[lang] for k, v in TEXT.items()}
     mech = analysis.mechanism
     return tpl.render(
-        lang=lang, L=L, title=mech.title, name=mech.name,
+        lang=lang, L=L, title=localize(mech.title, lang), name=mech.name,
         summary=_summary(analysis, lang),
         tables=[_table_view(tab, lang) for tab in tables],
         figures=_figure_items(dict(figures), lang),

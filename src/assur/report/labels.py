@@ -8,6 +8,8 @@ language (``"м"``, ``"Н"`` in Russian).
 
 from __future__ import annotations
 
+import re
+
 LANGS = ("en", "ru")
 
 #: key -> {lang: text}
@@ -147,6 +149,8 @@ TEXT = {
     "y_m": {"en": "y", "ru": "Y"},
     "at": {"en": "{0} = {1}", "ru": "{0} = {1}"},
     "centre_of_mass": {"en": "centre of mass", "ru": "центр масс"},
+    "solved_line": {"en": "{0} = {1}: {2} ({3}residual {4})",
+                    "ru": "{0} = {1}: {2} ({3}невязка {4})"},
     "singular": {"en": "{0} is singular at {1} position(s) ({2}); shown as empty there",
                  "ru": "{0} не определено в {1} положениях ({2}); там оставлено пустым"},
 }
@@ -171,6 +175,19 @@ def t(key: str, lang: str, *args) -> str:
     return s.format(*args) if args else s
 
 
+#: unit atoms (a symbol with its prefix) -> Russian spelling, for units a user wrote
+_ATOMS_RU = {"m": "м", "mm": "мм", "cm": "см", "dm": "дм", "km": "км", "N": "Н", "kN": "кН",
+             "MN": "МН", "Pa": "Па", "kPa": "кПа", "MPa": "МПа", "GPa": "ГПа", "bar": "бар",
+             "kg": "кг", "g": "г", "t": "т", "s": "с", "min": "мин", "h": "ч", "rad": "рад",
+             "deg": "град", "rpm": "об/мин", "l": "л", "L": "л", "W": "Вт", "kW": "кВт",
+             "J": "Дж", "kJ": "кДж", "kgf": "кгс", "tf": "тс", "Hz": "Гц", "percent": "%"}
+
+
 def unit(u: str, lang: str) -> str:
-    """A unit symbol spelled for ``lang`` (SI symbols in English)."""
-    return UNITS_RU.get(u, u) if check_lang(lang) == "ru" else u
+    """A unit symbol spelled for ``lang`` (as written in English; in Russian each
+    symbol with its prefix translated: ``kN·m`` → ``кН·м``, ``l/min`` → ``л/мин``)."""
+    if check_lang(lang) != "ru":
+        return u
+    if u in UNITS_RU:
+        return UNITS_RU[u]
+    return re.sub(r"[A-Za-z]+", lambda m: _ATOMS_RU.get(m.group(0), m.group(0)), u)

@@ -75,6 +75,7 @@ import numpy as np
 
 from ..errors import SingularPositionError
 from ..loads import Weight
+from ..texts import LANGS, localize
 from .labels import TEXT, check_lang
 
 __all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
@@ -92,7 +93,9 @@ def _both(key, *args):
 
 
 def _same(text):
-    return {"en": text, "ru": text}
+    """{lang: text} of a model's own text (a :class:`assur.texts.Text` carries its
+    translations; a plain string is the same in every language)."""
+    return {lang: localize(text, lang) for lang in LANGS}
 
 
 @dataclass(frozen=True)
