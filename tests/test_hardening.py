@@ -36,7 +36,7 @@ def _check(path):
 
 
 def test_markup_in_user_text_printed_literally(tmp_path):
-    p = _file(tmp_path, HITCH.replace('title = "Mini-tractor', 'title = "[/bold] Mini-tractor'))
+    p = _file(tmp_path, HITCH.replace('en = "Mini-tractor', 'en = "[/bold] Mini-tractor'))
     r = _check(p)
     assert r.exit_code == 0 and "[/bold] Mini-tractor" in r.output
     # an error on line 100: ":100:" stays, it is not an emoji code
