@@ -347,19 +347,26 @@ class CrankDynamics:
         """Every joint with a reaction: ``[(point, i, j), ...]``."""
         return self.statics.joints
 
-    def load_power(self):
-        """Σ F·v + Σ M·ω_i of all applied loads, weights and inertia loads [W],
-        computed from the velocities of the points and links where they act."""
+    def power_terms(self):
+        """The power of every load [W], shape (terms, …): F·v of each point force
+        (weights and inertia forces included) at the velocity of its point, then
+        M·ω_i of each moment (inertia moments included) at its link's angular
+        velocity."""
         kin = self.kinematics
         forces, couples, _ = _statics.applied_loads(kin, self.qdot, self.qddot, self.g)
-        P = np.zeros((kin.m, kin.n))
+        terms = []
         for link, pt, fx, fy in forces:
             v = kin.jacobian(pt)[:, 0] * self._qd
-            P = P + fx * v[0] + fy * v[1]
+            terms.append(np.broadcast_to(fx * v[0] + fy * v[1], (kin.m, kin.n)))
         for link, M in couples:
             w1, _ = kin.body_rates(link)
-            P = P + M * w1[0] * self._qd
-        return kin.reshape(P)
+            terms.append(np.broadcast_to(M * w1[0] * self._qd, (kin.m, kin.n)))
+        return np.stack([kin.reshape(t) for t in terms])
+
+    def load_power(self):
+        """Σ F·v + Σ M·ω_i of all applied loads, weights and inertia loads [W]
+        (the sum of :meth:`power_terms`)."""
+        return self.power_terms().sum(axis=0)
 
     def power_residual(self):
         """``M_drive·ω + Σ F·v + Σ M·ω_i`` [W] with the driving moment from the joint
