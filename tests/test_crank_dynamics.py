@@ -78,7 +78,8 @@ def power_check(dyn):
 def newton_euler_check(dyn):
     f, mo = dyn.equilibrium_residual()
     kin = dyn.kinematics
-    forces = [np.abs(m.inertia_force).sum(-1) + m.m.reshape(-1, *([1] * (kin.shape.__len__() - 1)))
+    # load scale: inertia forces and weights, and the reactions they cause
+    forces = [np.abs(m.inertia_force).sum(-1) + m.m.reshape(-1, *([1] * (len(kin.shape) - 1)))
               * dyn.g for m in dyn.masses]
     S = np.sum(forces, axis=0) + sum(np.abs(st_r) for st_r in
                                       [np.hypot(*np.moveaxis(dyn.reaction(i, j), -1, 0))
@@ -305,6 +306,8 @@ def test_flywheel_errors():
         flywheel(q, np.full_like(q, 100.0), M, 10.0, delta=0.5)
     with pytest.raises(ValueError, match="would stop"):
         flywheel(q, J, 1e4 * M, 1.0, J_flywheel=0.0)
+    with pytest.raises(ValueError, match="zero at φ = 180°"):
+        flywheel(q, 1 + np.cos(q), M, 10.0, J_flywheel=0.0)
 
 
 # ---------------------------------------------------------------------------------

@@ -281,6 +281,11 @@ def flywheel(q, J_red, M_c, omega_mean, delta=None, J_flywheel=None, dJ_red=None
         if not (math.isfinite(Jf) and Jf >= 0):
             raise ValueError(f"J_flywheel must be ≥ 0 [kg·m²], got {J_flywheel!r}")
         inertia = Jp + Jf
+        if inertia.min() <= 0:
+            i = int(np.argmin(inertia))
+            raise ValueError(f"the reduced moment of inertia J_red + J_f is zero at "
+                             f"φ = {math.degrees(q[i]):.6g}°: give the crank (or the "
+                             f"flywheel) a moment of inertia")
 
         def excess(T0):
             w = speed_of(T0, E, inertia)

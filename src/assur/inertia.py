@@ -114,10 +114,11 @@ def with_masses(mech, masses: Iterable[LinkMass]):
         if lm.link not in topo.bodies or lm.link == "0":
             raise ModelError(f"{where}: mass of unknown or fixed link {lm.link!r} (moving "
                              f"links: {sorted(b for b in topo.bodies if b != '0')})")
-        for what, v, ok in (("m", lm.m, lambda x: x > 0), ("J", lm.J, lambda x: x >= 0)):
+        for what, v, ok, rule in (("m", lm.m, lambda x: x > 0, "> 0 [kg]"),
+                                  ("J", lm.J, lambda x: x >= 0, "≥ 0 [kg·m²]")):
             if not (isinstance(v, (int, float)) and math.isfinite(v) and ok(v)):
                 raise ModelError(f"{where}: link {lm.link!r}: {what} = {v!r} must be a finite "
-                                 f"number {'> 0' if what == 'm' else '≥ 0'} [kg{'·m²' if what == 'J' else ''}]")
+                                 f"number {rule}")
         if lm.point is not None:
             if lm.along or lm.offset:
                 raise ModelError(f"{where}: link {lm.link!r}: give the centre of mass either as "

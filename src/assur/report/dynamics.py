@@ -52,7 +52,7 @@ _TEXT = {
     "fw": {"en": "they meet at (−J_f, −T0): J_f = {0:.4g} kg·m², δ = {1:.4g}",
            "ru": "пересекаются в (−J_м, −T0): J_м = {0:.4g} кг·м², δ = {1:.4g}"},
     "omega": {"en": "crank speed |ω|", "ru": "угловая скорость кривошипа |ω|"},
-    "angle": {"en": "crank angle φ1", "ru": "угол кривошипа φ1"},
+    "angle": {"en": "crank angle {0}", "ru": "угол кривошипа {0}"},
     "energy": {"en": "work of the loads ΔE", "ru": "работа сил ΔE"},
     "force_x": {"en": "R_x", "ru": "R_x"},
     "force_y": {"en": "R_y", "ru": "R_y"},
@@ -86,8 +86,8 @@ def _sorted_degrees(q, *ys):
     return (deg[order],) + tuple(np.ravel(y)[order] for y in ys)
 
 
-def _xlabel(lang):
-    return f"{_t('angle', lang)} [{unit('deg', lang)}]"
+def _xlabel(lang, coordinate="φ"):
+    return f"{_t('angle', lang, coordinate)} [{unit('deg', lang)}]"
 
 
 def centre_of_mass(dynamics, lang="en", balancing=None):
@@ -146,7 +146,8 @@ def reduced_moment(dynamics, lang="en"):
     driving moment from the reactions [N·m], against the crank angle [°]."""
     lang = check_lang(lang)
     fig = new_figure()
-    ax = _axes(fig, _t("f_mred", lang), _xlabel(lang), f"M [{unit('N·m', lang)}]")
+    ax = _axes(fig, _t("f_mred", lang), _xlabel(lang, dynamics.coordinate),
+               f"M [{unit('N·m', lang)}]")
     x, a, b, c = _sorted_degrees(dynamics.q, dynamics.reduced_moment,
                                  dynamics.reduced_moment_without_inertia,
                                  dynamics.driving_moment_from_reactions)
@@ -162,7 +163,8 @@ def reduced_inertia(dynamics, lang="en"):
     """J_red [kg·m²] and dJ_red/dφ [kg·m²/rad] against the crank angle [°]."""
     lang = check_lang(lang)
     fig = new_figure()
-    ax = _axes(fig, _t("f_jred", lang), _xlabel(lang), f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
+    ax = _axes(fig, _t("f_jred", lang), _xlabel(lang, dynamics.coordinate),
+               f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
     x, J, dJ = _sorted_degrees(dynamics.q, dynamics.reduced_inertia,
                                dynamics.reduced_inertia_derivative)
     ax.plot(x, J, color="C0", label="$J_{red}$")
