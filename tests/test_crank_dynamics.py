@@ -322,6 +322,7 @@ def test_balancing_reduces_the_example_amplitudes(example):
     cms = [CounterMass("3", (0.0, 30.0), (-0.3, 0.3), (-0.1, 0.1)),
            CounterMass("1", (0.0, 20.0), (-0.1, 0.1), (-0.1, 0.1))]
     b = balance(kin, cms, objective="amplitudes", seed=1)
+    assert b.success, b.message
     assert b.before.amplitude_x > 3.5e-3 and b.before.amplitude_y > 3.3e-3
     assert b.after.amplitude_x <= 0.5e-3
     assert b.after.amplitude_y <= 1.5e-3

@@ -169,7 +169,7 @@ def _frame_basis(kin, link):
     return P, u, n
 
 
-def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=200, popsize=30,
+def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=1000, popsize=30,
             tol=1e-10):
     """Counter-masses that minimise the amplitudes (or the area) of the common
     centre of mass over the positions of ``kin`` (one turn), within bounds.
