@@ -79,14 +79,14 @@ def shoelace(x, y):
 
 def _moments(kin):
     """Σ m·r_S (2, m, n) and Σ m (m, 1) of the moving masses."""
-    from .inertia import _design_value, masses_of
+    from .inertia import design_value, masses_of
     masses = masses_of(kin.mechanism)
     if not masses:
         raise ModelError(f"mechanism {kin.mechanism.name!r} has no masses on moving links")
     num = np.zeros((2, kin.m, kin.n))
     tot = np.zeros((kin.m, 1))
     for ld in masses:
-        m = _design_value(kin, ld.m)
+        m = design_value(kin, ld.m)
         num = num + m * kin.value(ld.point)
         tot = tot + m
     return num, tot

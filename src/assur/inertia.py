@@ -49,7 +49,7 @@ from .errors import ModelError
 from .loads import LOAD_TYPES
 
 __all__ = ["LinkMass", "with_masses", "masses_of", "MassMotion", "CrankDynamics",
-           "crank_dynamics", "reduced_inertia"]
+           "crank_dynamics", "reduced_inertia", "design_value"]
 
 _MASS = LOAD_TYPES["mass"]
 
@@ -191,8 +191,9 @@ class MassMotion:
     inertia_moment: np.ndarray
 
 
-def _design_value(kin, ref):
-    """A mass or inertia as an array (m, 1) over designs."""
+def design_value(kin, ref):
+    """A value of the mechanism (a number or a parameter name, e.g. a mass [kg] or
+    an inertia [kg·m²]) as an array of shape (m, 1) over the designs of ``kin``."""
     v = np.asarray(kin.mechanism.value_of(ref), dtype=float)
     return np.broadcast_to(v.reshape(-1, 1), (kin.m, 1)) if v.ndim else np.full((kin.m, 1),
                                                                                 float(v))
@@ -232,8 +233,8 @@ def reduced_inertia(kin):
     Jr = np.zeros((kin.m, kin.n))
     dJr = np.zeros((kin.m, kin.n))
     for ld in masses_of(kin.mechanism):
-        m = _design_value(kin, ld.m)
-        J = _design_value(kin, ld.J)
+        m = design_value(kin, ld.m)
+        J = design_value(kin, ld.J)
         d1 = kin.jacobian(ld.point)[:, 0]  # (2, m, n)
         d2 = kin.hessian(ld.point)[:, 0, 0]
         w1, w2 = kin.body_rates(ld.link)
@@ -316,8 +317,8 @@ class CrankDynamics:
     def _motion(self, ld):
         kin, qd, qdd = self.kinematics, self._qd, self._qdd
         o = kin.reshape
-        m = _design_value(kin, ld.m)
-        J = _design_value(kin, ld.J)
+        m = design_value(kin, ld.m)
+        J = design_value(kin, ld.J)
         d1 = kin.jacobian(ld.point)[:, 0]
         d2 = kin.hessian(ld.point)[:, 0, 0]
         w1, w2 = kin.body_rates(ld.link)

@@ -26,7 +26,7 @@ import typing
 from dataclasses import dataclass
 from typing import Optional
 
-from pydantic import model_validator
+from pydantic import BaseModel, ConfigDict, model_validator
 from pydantic_core import PydanticCustomError
 
 from ..balancing import OBJECTIVES, CounterMass
@@ -36,14 +36,18 @@ from ._units import INERTIA, LENGTH, MASS, NUMBER
 __all__ = ["DynamicsSpec", "build_dynamics"]
 
 
-class CounterMassEntry(S._Table):
+class _Section(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=False)
+
+
+class CounterMassEntry(_Section):
     link: S.Name
     mass: tuple[S.Value, S.Value]
     along: tuple[S.Value, S.Value] = (0.0, 0.0)
     offset: tuple[S.Value, S.Value] = (0.0, 0.0)
 
 
-class DynamicsSection(S._Table):
+class DynamicsSection(_Section):
     delta: S.Value = None
     flywheel: S.Value = None
     objective: typing.Literal[OBJECTIVES] = "amplitudes"
