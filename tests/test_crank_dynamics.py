@@ -280,6 +280,21 @@ def test_kinetostatics_with_the_flywheel_motion_needs_a_constant_driving_moment(
     assert np.all(qd < 0) and fw.omega_min > 0
 
 
+def test_flywheel_analytic_case():
+    """Constant J_red = J0 and M_c = A·sin φ: ΔE = A(1 − cos φ) swings by 2A between
+    φ = 0 and π, and ω_max² − ω_min² = 4A/I with ω_max + ω_min = 2ω_m gives
+    I = J0 + J_f = 2A/(δ·ω_m²) exactly, for any δ (the positions hold 0 and π)."""
+    q = np.radians(np.arange(0.0, 360.0, 1.0))
+    J0, A, wm = 2.0, 50.0, 10.0
+    for delta in (0.1, 0.3):
+        fw = flywheel(q, np.full_like(q, J0), A * np.sin(q), wm, delta=delta)
+        assert fw.J_flywheel == pytest.approx(2 * A / (delta * wm ** 2) - J0, rel=1e-12)
+        assert fw.J_classical == pytest.approx(2 * A / (delta * wm ** 2), rel=1e-12)
+        assert fw.driving_moment == pytest.approx(0.0, abs=1e-12)
+        assert np.allclose(fw.energy, A * (1 - np.cos(q)), rtol=0, atol=1e-12)
+        assert fw.omega.max() == pytest.approx(wm * (1 + delta / 2), rel=1e-12)
+
+
 def test_periodic_integral_is_exact_for_resolved_modes():
     q = np.linspace(0, 2 * np.pi, 64, endpoint=False) + 0.3
     f = 2.0 + np.cos(3 * q) - 2 * np.sin(q)
