@@ -72,6 +72,9 @@ class Model:
         The ``[[solve]]`` conditions in the order solved, with roots and residuals.
     source : Path or None
         The file loaded (None for :func:`loads`).
+    dynamics : DynamicsSpec or None
+        The ``[dynamics]`` section (flywheel target, counter-masses;
+        :mod:`assur.io._dynamics`, docs/crank-dynamics.md), None without one.
     """
 
     mechanism: Mechanism
@@ -79,6 +82,7 @@ class Model:
     ranges: Mapping[str, np.ndarray]
     solved: tuple = ()
     source: Path | None = None
+    dynamics: object = None
 
     @property
     def name(self) -> str:
@@ -226,7 +230,8 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
         data, index = resolve_extends(data, index, name, source, _parse_toml)
     builder = Builder(name, data, index)
     mech, grid, axes, solved = builder.build()
-    return Model(mech, grid, MappingProxyType(axes), tuple(solved), source)
+    return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
+                 builder.dynamics)
 
 
 def load(path) -> Model:

@@ -850,6 +850,8 @@ class Builder:
         self.uses()
         self.parameters()
         mech = self.mechanism()
+        from ._dynamics import build_dynamics
+        self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
         self.precheck_memory(mech)
         conds_mech, solved = self.solve(mech)
         grid, axes = self.positions(conds_mech)

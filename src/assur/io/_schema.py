@@ -381,6 +381,8 @@ class FileSpec(_Table):
     machine: Optional[MachineSpec] = None
     tables: Optional[TablesSpec] = None
     solve: list[SolveSpec] = []
+    #: [dynamics]: checked by :mod:`assur.io._dynamics` (flywheel, counter-masses)
+    dynamics: Optional[dict[str, Any]] = None
 
 
 # ---- errors ---------------------------------------------------------------------------

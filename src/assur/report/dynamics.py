@@ -1,0 +1,244 @@
+"""Diagrams of a crank mechanism's dynamics (matplotlib, Agg): views of
+:class:`assur.inertia.CrankDynamics`, :class:`assur.flywheel.Flywheel` and
+:class:`assur.balancing.Balancing` (seed 001 lab 3, figs. 3.3, 3.4).
+
+=====================  ==========================================================
+name                   what
+=====================  ==========================================================
+``centre_of_mass``     the common centre of mass over a turn [mm], before and
+                       after balancing, with A_x, A_y and the area (fig. 3.3)
+``hodographs``         reaction hodographs R_y against R_x [N] of the model's
+                       named reactions (fig. 3.4: R34), with inertia
+``reduced_moment``     reduced moment on the crank with and without inertia, and
+                       the driving moment [N·m] against the crank angle [°]
+``reduced_inertia``    J_red [kg·m²] and dJ_red/dφ against the crank angle [°]
+``energy_mass``        Wittenbauer's energy–mass diagram ΔE(J_red) with the
+                       tangents of ω_max, ω_min, and ω(φ) with the flywheel
+=====================  ==========================================================
+
+:func:`figures` makes all that apply in one call. Crank angles are shown in
+degrees wrapped to [0°, 360°) and sorted, so no line crosses a wrap.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .figures import new_figure
+from .labels import check_lang, unit
+
+__all__ = ["figures", "centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",
+           "energy_mass", "DYNAMICS_FIGURES"]
+
+_TEXT = {
+    "f_com": {"en": "Common centre of mass over a crank turn",
+              "ru": "Перемещение общего центра масс за оборот кривошипа"},
+    "before": {"en": "without counter-masses", "ru": "без противовесов"},
+    "after": {"en": "with counter-masses", "ru": "с противовесами"},
+    "amp": {"en": "A_x = {0:.2f} mm, A_y = {1:.2f} mm, area {2:.2f} mm²",
+            "ru": "A_x = {0:.2f} мм, A_y = {1:.2f} мм, площадь {2:.2f} мм²"},
+    "mean": {"en": "about its mean (x̄, ȳ) = ({0:.1f}, {1:.1f}) mm",
+             "ru": "относительно среднего (x̄, ȳ) = ({0:.1f}, {1:.1f}) мм"},
+    "f_hodo": {"en": "Reaction hodographs over a turn", "ru": "Годографы реакций за оборот"},
+    "f_mred": {"en": "Reduced moment on the crank", "ru": "Приведённый момент на кривошипе"},
+    "m_all": {"en": "all loads, inertia included", "ru": "все нагрузки с силами инерции"},
+    "m_static": {"en": "without inertia", "ru": "без сил инерции"},
+    "m_drive": {"en": "driving moment (from the reactions)",
+                "ru": "движущий момент (по реакциям)"},
+    "f_jred": {"en": "Reduced moment of inertia", "ru": "Приведённый момент инерции"},
+    "f_wit": {"en": "Energy–mass diagram and the flywheel",
+              "ru": "Диаграмма энергомасс и маховик"},
+    "wit_tan": {"en": "tangents of ω_max, ω_min", "ru": "касательные ω_max, ω_min"},
+    "fw": {"en": "they meet at (−J_f, −T0): J_f = {0:.4g} kg·m², δ = {1:.4g}",
+           "ru": "пересекаются в (−J_м, −T0): J_м = {0:.4g} кг·м², δ = {1:.4g}"},
+    "omega": {"en": "crank speed |ω|", "ru": "угловая скорость кривошипа |ω|"},
+    "angle": {"en": "crank angle {0}", "ru": "угол кривошипа {0}"},
+    "energy": {"en": "work of the loads ΔE", "ru": "работа сил ΔE"},
+    "force_x": {"en": "R_x", "ru": "R_x"},
+    "force_y": {"en": "R_y", "ru": "R_y"},
+}
+
+_UNITS_RU = {"mm": "мм", "J": "Дж", "rad/s": "рад/с", "kg·m²/rad": "кг·м²/рад"}
+
+
+def _t(key, lang, *args):
+    s = _TEXT[key][check_lang(lang)]
+    return s.format(*args) if args else s
+
+
+def _u(u, lang):
+    return _UNITS_RU.get(u, unit(u, lang)) if lang == "ru" else u
+
+
+def _axes(fig, title, xlabel, ylabel):
+    ax = fig.add_subplot()
+    ax.set_title(title)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.35)
+    return ax
+
+
+def _sorted_degrees(q, *ys):
+    """Crank angles wrapped to [0°, 360°) and sorted, with the ys in that order."""
+    deg = np.mod(np.degrees(np.ravel(q)), 360.0)
+    order = np.argsort(deg, kind="stable")
+    return (deg[order],) + tuple(np.ravel(y)[order] for y in ys)
+
+
+def _xlabel(lang, coordinate="φ"):
+    return f"{_t('angle', lang, coordinate)} [{unit('deg', lang)}]"
+
+
+def centre_of_mass(dynamics, lang="en", balancing=None):
+    """The common centre of mass of the moving links over the turn, about its mean
+    position [mm] (seed 001 lab 3 fig. 3.3), before and, with ``balancing``, after
+    the counter-masses (the dot marks the first position)."""
+    lang = check_lang(lang)
+    fig = new_figure(6.4, 5.0)
+    mm = _u("mm", lang)
+    ax = _axes(fig, _t("f_com", lang), f"x − x̄ [{mm}]", f"y − ȳ [{mm}]")
+    paths = [(dynamics.centre, _t("before", lang))]
+    if balancing is not None:
+        paths.append((balancing.after, _t("after", lang)))
+    for c, label in paths:
+        x, y = np.ravel(c.x), np.ravel(c.y)
+        xm, ym = x.mean(), y.mean()
+        x, y = (x - xm) * 1e3, (y - ym) * 1e3
+        amp = _t("amp", lang, float(np.ravel(c.amplitude_x)[0]) * 1e3,
+                 float(np.ravel(c.amplitude_y)[0]) * 1e3, float(np.ravel(c.area)[0]) * 1e6)
+        where = _t("mean", lang, xm * 1e3, ym * 1e3)
+        ax.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.5,
+                label=f"{label}: {amp}\n{where}")
+        ax.plot(x[:1], y[:1], "o", color=ax.lines[-1].get_color(), ms=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def hodographs(dynamics, lang="en", reactions=None):
+    """Hodographs of joint reactions over the turn: R_y against R_x [N], with the
+    inertia loads (seed 001 lab 3 fig. 3.4, R34).
+
+    ``reactions``: ``{name: (i, j)}`` (the force of link i on link j); default the
+    model's named reactions (``tables["reactions"]``), else every joint with the
+    frame."""
+    lang = check_lang(lang)
+    if reactions is None:
+        reactions = dynamics.statics.named_reactions() or {
+            f"R{i}{j}": (i, j) for _, i, j in dynamics.joints if "0" in (i, j)}
+    fig = new_figure(6.4, 5.0)
+    N = unit("N", lang)
+    ax = _axes(fig, _t("f_hodo", lang), f"{_t('force_x', lang)} [{N}]",
+               f"{_t('force_y', lang)} [{N}]")
+    for name, (i, j) in reactions.items():
+        r = np.asarray(dynamics.reaction(i, j)).reshape(-1, 2)
+        ax.plot(np.append(r[:, 0], r[0, 0]), np.append(r[:, 1], r[0, 1]), lw=1.3, label=name)
+        ax.plot(r[:1, 0], r[:1, 1], "o", color=ax.lines[-1].get_color(), ms=4)
+    ax.plot([0], [0], "+", color="0.2", ms=10)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def reduced_moment(dynamics, lang="en"):
+    """Reduced moment of all loads (inertia included) and without inertia, and the
+    driving moment from the reactions [N·m], against the crank angle [°]."""
+    lang = check_lang(lang)
+    fig = new_figure()
+    ax = _axes(fig, _t("f_mred", lang), _xlabel(lang, dynamics.coordinate),
+               f"M [{unit('N·m', lang)}]")
+    x, a, b, c = _sorted_degrees(dynamics.q, dynamics.reduced_moment,
+                                 dynamics.reduced_moment_without_inertia,
+                                 dynamics.driving_moment_from_reactions)
+    ax.plot(x, a, label=r"$M_{red}$: " + _t("m_all", lang))
+    ax.plot(x, b, label=r"$M_{red}$: " + _t("m_static", lang))
+    ax.plot(x, c, "--", label=r"$M_{d}$: " + _t("m_drive", lang))
+    ax.set_xlim(0, 360)
+    fig.legend(loc="outside lower center", ncols=2, fontsize="small")
+    return fig
+
+
+def reduced_inertia(dynamics, lang="en"):
+    """J_red [kg·m²] and dJ_red/dφ [kg·m²/rad] against the crank angle [°]."""
+    lang = check_lang(lang)
+    fig = new_figure()
+    ax = _axes(fig, _t("f_jred", lang), _xlabel(lang, dynamics.coordinate),
+               f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
+    x, J, dJ = _sorted_degrees(dynamics.q, dynamics.reduced_inertia,
+                               dynamics.reduced_inertia_derivative)
+    ax.plot(x, J, color="C0", label="$J_{red}$")
+    ax2 = ax.twinx()
+    ax2.plot(x, dJ, color="C1", ls="--", label=r"$dJ_{red}/d\varphi$")
+    ax2.set_ylabel(rf"$dJ_{{red}}/d\varphi$ [{_u('kg·m²/rad', lang)}]")
+    ax.set_xlim(0, 360)
+    fig.legend(loc="outside lower center", ncols=2, fontsize="small")
+    return fig
+
+
+def energy_mass(flywheel, lang="en"):
+    """Wittenbauer's energy–mass diagram: ΔE [J] against J_red [kg·m²], with the
+    tangents of slopes ω_max²/2 and ω_min²/2 meeting at (−J_f, −T0); and the crank
+    speed |ω| [rad/s] over the turn with that flywheel."""
+    lang = check_lang(lang)
+    fig = new_figure(9.6, 4.2)
+    ax, ax2 = fig.subplots(1, 2)
+    J, E = np.ravel(flywheel.reduced_inertia), np.ravel(flywheel.energy)
+    ax.plot(J, E, lw=1.4, label="ΔE(J_red)")
+    # the tangents meet far away at (−J_f, −T0): drawn across the curve's own box
+    x0, y0 = -flywheel.J_flywheel, -flywheel.T0
+    pad_x, pad_y = 0.08 * np.ptp(J), 0.15 * np.ptp(E)
+    jx = np.array([J.min() - pad_x, J.max() + pad_x])
+    for w in (flywheel.omega_max, flywheel.omega_min):
+        ax.plot(jx, y0 + 0.5 * w ** 2 * (jx - x0), color="0.4", lw=0.8, ls="--")
+    ax.set_xlim(*jx)
+    ax.set_ylim(E.min() - pad_y, E.max() + pad_y)
+    ax.plot([], [], color="0.4", lw=0.8, ls="--", label=_t("wit_tan", lang))
+    ax.plot([], [], " ", label=_t("fw", lang, flywheel.J_flywheel, flywheel.delta))
+    ax.set_title(_t("f_wit", lang))
+    ax.set_xlabel(f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
+    ax.set_ylabel(f"{_t('energy', lang)} [{_u('J', lang)}]")
+    ax.grid(True, alpha=0.35)
+    ax.legend(fontsize="small", loc="lower right")
+    x, w = _sorted_degrees(flywheel.q, flywheel.omega)
+    ax2.plot(x, w, color="C2")
+    for v in (flywheel.omega_max, flywheel.omega_min, flywheel.omega_mean):
+        ax2.axhline(v, color="0.5", lw=0.7, ls=":")
+    ax2.set_xlim(0, 360)
+    ax2.set_title(_t("omega", lang))
+    ax2.set_xlabel(_xlabel(lang))
+    ax2.set_ylabel(f"|ω| [{_u('rad/s', lang)}]")
+    ax2.grid(True, alpha=0.35)
+    return fig
+
+
+#: the figures of :func:`figures`, in order
+DYNAMICS_FIGURES = ("centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",
+                    "energy_mass")
+
+
+def figures(dynamics, lang="en", flywheel=None, balancing=None):
+    """Every dynamics figure that applies, ``{name: Figure}`` (the energy–mass
+    diagram only with a ``flywheel``; the balanced path only with ``balancing``).
+
+    Parameters
+    ----------
+    dynamics : CrankDynamics
+        :func:`assur.inertia.crank_dynamics` (one design).
+    lang : {"en", "ru"}
+    flywheel : Flywheel, optional
+        :meth:`CrankDynamics.flywheel`.
+    balancing : Balancing, optional
+        :func:`assur.balancing.balance`.
+    """
+    lang = check_lang(lang)
+    if dynamics.kinematics.m != 1:
+        raise ValueError(f"figures of one design at a time; this result holds "
+                         f"{dynamics.kinematics.m}")
+    out = {"centre_of_mass": centre_of_mass(dynamics, lang, balancing),
+           "hodographs": hodographs(dynamics, lang),
+           "reduced_moment": reduced_moment(dynamics, lang),
+           "reduced_inertia": reduced_inertia(dynamics, lang)}
+    if flywheel is not None:
+        out["energy_mass"] = energy_mass(flywheel, lang)
+    return out
