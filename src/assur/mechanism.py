@@ -182,9 +182,14 @@ class Mechanism:
             raise ModelError(f"{cls.kind} {name!r}: {e}; its parameters: {allowed}") from None
         return self.add(g)
 
-    def frame(self, name, x, y) -> "Mechanism":
-        """Add a frame pivot at ``(x, y)`` [m] (numbers or parameter names)."""
-        return self.add(Frame(name=name, x=x, y=y))
+    def frame(self, name, x=None, y=None, *, origin=None, length=None,
+              angle=None) -> "Mechanism":
+        """Add a frame pivot at ``(x, y)`` [m] — or at ``origin + length∠angle`` from
+        the frame point ``origin`` (``length`` [m], ``angle`` [rad] from +x; seed 002:
+        ``.frame("O3", origin="O1", length="l10", angle="j10")``). Values are numbers
+        or parameter names; the polar form is evaluated per design, like any
+        parameter (:class:`assur.groups.Frame`)."""
+        return self.add(Frame(name=name, x=x, y=y, origin=origin, length=length, angle=angle))
 
     def link(self, name, tail, head) -> "Mechanism":
         """Name the link whose angle φ_name is the direction ``tail → head``."""

@@ -298,9 +298,13 @@ class Builder:
             for f in _fields(g, "coordinate"):
                 self.coordinate_field(("groups", i, f.name), getattr(g, f.name),
                                       _QUANTITY[f.quantity])
-        for name, (x, y) in sp.frame.items():
-            self.value(("frame", name, 0), x, LENGTH)
-            self.value(("frame", name, 1), y, LENGTH)
+        for name, fp in sp.frame.items():
+            if isinstance(fp, dict):  # polar: origin + length∠angle
+                self.value(("frame", name, "length"), fp["length"], LENGTH, "positive")
+                self.value(("frame", name, "angle"), fp["angle"], ANGLE)
+            else:
+                self.value(("frame", name, 0), fp[0], LENGTH)
+                self.value(("frame", name, 1), fp[1], LENGTH)
         for i, g in enumerate(self.groups):
             for field, (kind, flag, coord_ok) in _group_values(g).items():
                 if field in g.model_fields_set:
@@ -424,10 +428,27 @@ class Builder:
             sp.model.name, coordinates=self.coords, params=self.params,
             title=sp.model.title, notes=tuple(sp.model.notes)))
         known = {}  # point -> where defined
-        for name in sp.frame:
+        frame_names = list(sp.frame)
+        for name, fp in sp.frame.items():
+            if isinstance(fp, dict):
+                o = fp["origin"]
+                if o not in known:
+                    if o in frame_names:
+                        raise self.error(("frame", name, "origin"),
+                                         f'frame point "{o}" is not defined before "{name}": '
+                                         f"a polar frame point is placed from a frame point "
+                                         f"written before it")
+                    raise self.error(("frame", name, "origin"),
+                                     f'unknown frame point "{o}": expected one of the frame '
+                                     f'points written before it ({", ".join(known)})'
+                                     f"{S.did_you_mean(o, frame_names)}")
+                mech = self.guarded(("frame", name), lambda: mech.frame(
+                    name, origin=o, length=self.r("frame", name, "length"),
+                    angle=self.r("frame", name, "angle")))
+            else:
+                mech = self.guarded(("frame", name), lambda: mech.frame(
+                    name, self.r("frame", name, 0), self.r("frame", name, 1)))
             known[name] = "the frame"
-            mech = self.guarded(("frame", name), lambda: mech.frame(
-                name, self.r("frame", name, 0), self.r("frame", name, 1)))
         # every point a group defines, to tell "defined later" from "unknown"
         later = {}
         for i, g in enumerate(self.groups):

@@ -64,6 +64,37 @@ def _terms(v):
     return _value(v)
 
 
+_FRAME_KEYS = ("origin", "length", "angle")
+
+
+def _frame_point(v):
+    """A frame point: ``[x, y]``, or ``{ origin = "O1", length = …, angle = … }``."""
+    if isinstance(v, dict):
+        unknown = [k for k in v if k not in _FRAME_KEYS]
+        if unknown:
+            raise PydanticCustomError(
+                "frame", 'unknown key "{k}"{hint} in a polar frame point (allowed: origin, '
+                         'length, angle)', {"k": unknown[0], "hint": did_you_mean(
+                             unknown[0], _FRAME_KEYS)})
+        missing = [k for k in _FRAME_KEYS if k not in v]
+        if missing:
+            raise PydanticCustomError("frame", "a polar frame point needs origin, length and "
+                                               "angle; missing {m}", {"m": ", ".join(missing)})
+        if not isinstance(v["origin"], str) or not v["origin"].strip():
+            raise PydanticCustomError("frame", "origin: expected the name of a frame point")
+        return {"origin": v["origin"], "length": _value(v["length"]),
+                "angle": _value(v["angle"])}
+    if isinstance(v, list) and len(v) == 2:
+        return (_value(v[0]), _value(v[1]))
+    raise PydanticCustomError(
+        "frame", 'expected [x, y] (two lengths) or { origin = "<frame point>", length = …, '
+                 'angle = … }')
+
+
+#: a frame point: [x, y] or a polar table (origin, length, angle)
+FramePoint = Annotated[Any, AfterValidator(_frame_point)]
+
+
 #: a machine position or weight: a value, a parameter name with an optional leading
 #: "-", or a list of such terms that are added (e.g. ["-a", "-L"] for −(a + L))
 Terms = Annotated[Any, AfterValidator(_terms)]
@@ -351,7 +382,7 @@ class FileSpec(_Table):
     model: ModelSection
     params: dict[str, Value] = {}
     range: dict[str, RangeSpec]
-    frame: Annotated[dict[str, tuple[Value, Value]], Field(min_length=1)]
+    frame: Annotated[dict[str, FramePoint], Field(min_length=1)]
     groups: list[dict[str, Any]] = []
     links: dict[str, tuple[Name, Name]] = {}
     distances: dict[str, tuple[Name, Name]] = {}
