@@ -34,8 +34,8 @@ from ..stability import Machine
 from . import _schema as S
 from ._errors import ModelFileError, key_path
 from ._lines import line_of
-from ._units import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, MOMENT, NUMBER, PRESSURE, \
-    STIFFNESS, UnitError, is_name, parse, to_si, unit_kind
+from ._units import ACCELERATION, ANGLE, ANGULAR_VELOCITY, FORCE, INERTIA, LENGTH, MASS, \
+    MOMENT, NUMBER, PRESSURE, STIFFNESS, TIME, UnitError, is_name, parse, to_si, unit_kind
 
 # constraints on values beyond their kind: (test, words)
 _FLAGS = {
@@ -317,6 +317,7 @@ class Builder:
                 raise self.error(("model", "coordinates", j),
                                  f'the coordinate "{c}" is not used by any group: nothing moves '
                                  f"with it (drive an input group with it, or remove it)")
+        self.motion_uses()
         for i, ld in enumerate(self.loads):
             for field, (kind, flag) in _LOAD_VALUES[ld.type].items():
                 if field in ld.model_fields_set:
@@ -360,6 +361,7 @@ class Builder:
                                    for f in _group_outputs(g)]
         quantities = {f"{a}{p}": LENGTH for p in points for a in "XY"}
         quantities.update({f"phi{l}": ANGLE for l in sp.links})
+        quantities.update({f"phi{d[2]}": ANGLE for d in sp.distances.values() if d[2]})
         quantities.update({d: LENGTH for d in sp.distances})
         for i, s in enumerate(sp.solve):
             if s.quantity not in quantities:
@@ -369,6 +371,44 @@ class Builder:
                                  f"{S.did_you_mean(s.quantity, quantities)}")
             self.position(("solve", i, "at"), s.at)
             self.value(("solve", i, "equals"), s.equals, quantities[s.quantity])
+
+    def motion_uses(self):
+        """``[motion]``: one entry per crank coordinate — direction, speed (a value or a
+        table ω(t)), start (an angle)."""
+        for c, ms in self.spec.motion.items():
+            mp = ("motion", c)
+            if c not in self.coords:
+                raise self.error(mp, f'unknown coordinate "{c}": expected one of the '
+                                     f'coordinates ({", ".join(self.coords)})'
+                                     f"{S.did_you_mean(c, self.coords)}")
+            if self.kind_of_coordinate(c) is not ANGLE:
+                raise self.error(mp, f'the coordinate "{c}" is not a crank angle (it is '
+                                     f"{self.kind_of_coordinate(c).article}): a direction of "
+                                     f"rotation and a speed belong to a crank's coordinate")
+            if isinstance(ms.speed, dict):
+                for k, v in enumerate(ms.speed["t"]):
+                    self.value(mp + ("speed", "t", k), v, TIME)
+                for k, v in enumerate(ms.speed["omega"]):
+                    self.value(mp + ("speed", "omega", k), v, ANGULAR_VELOCITY, "positive")
+            elif ms.speed is not None:
+                self.value(mp + ("speed",), ms.speed, ANGULAR_VELOCITY, "positive")
+            if ms.start is not None:
+                self.value(mp + ("start",), ms.start, ANGLE)
+
+    def motions(self, mech):
+        for c, ms in self.spec.motion.items():
+            mp = ("motion", c)
+            kw = {}
+            if isinstance(ms.speed, dict):
+                kw["t"] = [self.number(mp + ("speed", "t", k)) for k in range(len(ms.speed["t"]))]
+                kw["omega"] = [self.number(mp + ("speed", "omega", k))
+                               for k in range(len(ms.speed["omega"]))]
+            elif ms.speed is not None:
+                kw["speed"] = self.number(mp + ("speed",))
+            if ms.start is not None:
+                kw["start"] = self.number(mp + ("start",))
+            mech = self.guarded(mp, lambda: mech.with_motion(c, ms.direction, **kw))
+        return mech
 
     # ---- pass 2: parameters ---------------------------------------------------------------
     def parameters(self):
@@ -493,11 +533,16 @@ class Builder:
         points = list(known)
         for section, add in (("links", "link"), ("distances", "distance")):
             for name, ends in getattr(sp, section).items():
-                for k, p in enumerate(ends):
-                    self.point((section, name, k), p, points)
+                form = isinstance(self.data[section][name], dict)
+                for k, p in enumerate(ends[:2]):
+                    self.point((section, name) + (("ab"[k],) if form else (k,)), p, points)
                 if section == "distances" and name in sp.links:
                     raise self.error((section, name), f'the name "{name}" is already a link '
                                                       f"in [links]")
+                if section == "distances" and ends[2] is not None and \
+                        ends[2] in set(sp.links) | set(sp.distances):
+                    raise self.error((section, name, "angle"),
+                                     f'the name "{ends[2]}" is already a link or a distance')
                 mech = self.guarded((section, name), lambda: getattr(mech, add)(name, *ends))
         bodies = list(mech.bodies)
 
@@ -549,6 +594,7 @@ class Builder:
         if sp.tables is not None:
             mech = self.tables(mech, points, bodies)
             mech = self.extra_columns(mech)
+        mech = self.motions(mech)
         if self._uses_gravity:
             g = self.number(("model", "gravity"))
             mech = self.guarded(("model", "gravity"), lambda: mech.with_gravity(g))
@@ -645,6 +691,9 @@ class Builder:
             out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
         if t.symbols is not None:
             out["symbols"] = dict(t.symbols)
+        for key in ("angles", "analogs"):
+            if getattr(t, key) is not None:
+                out[key] = getattr(t, key)
         return mech.with_tables(**out)
 
     def extra_columns(self, mech):
