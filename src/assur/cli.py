@@ -54,11 +54,14 @@ def _load(path: Path):
     from .io import load
 
     try:
-        return load(path)
+        model = load(path)
     except FileNotFoundError:
         _fail(f"{path}: no such file")
     except (ModelError, AssemblyError) as e:
         _fail(str(e))
+    for w in model.warnings:  # parameters nothing uses: file, line, key
+        err.print(Text.assemble(("warning:", "bold yellow"), " ", w), soft_wrap=True)
+    return model
 
 
 def _output_dir(output: str) -> Path:
@@ -89,6 +92,7 @@ def _assemble(model):
     except (AssemblyError, ModelError, SingularPositionError) as e:
         _fail(f"{model.source}: {e}")
     analysis.solved = tuple(model.solved)
+    analysis.model_warnings = tuple(model.warnings)  # for the report's warnings
     return analysis
 
 

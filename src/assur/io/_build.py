@@ -907,11 +907,34 @@ class Builder:
         if paths:
             self.memory(mech, paths[::-1], 1.0, counts)
 
+    def unused_parameters(self, mech):
+        """Warnings (``file:line: params.<name>: …``) for the parameters that nothing
+        uses: no group, frame point, load, cylinder, machine value, range, motion,
+        ``[[solve]]`` condition (unknown, bracket, target) or table formula."""
+        from ..columns import formulas_of
+        used = set(self.param_use)
+        for s in self.spec.solve:
+            used.add(s.unknown)
+            used.update(v for v in s.bracket if isinstance(v, str))
+        for f in formulas_of(mech):
+            used.update(f.names)
+        out = []
+        for name in self.params_raw:
+            if name not in used:
+                path = ("params", name)
+                line = self.line(path)
+                file = getattr(line, "file", None) or self.file
+                out.append(f"{file}:{int(line)}: {key_path(path)}: the parameter {name!r} is "
+                           f"not used by any group, frame point, load, condition or table "
+                           f"(a misspelt name?)")
+        return out
+
     def build(self):
         self.validate()
         self.uses()
         self.parameters()
         mech = self.mechanism()
+        self.warnings = self.unused_parameters(mech)
         self.precheck_memory(mech)
         conds_mech, solved = self.solve(mech)
         grid, axes = self.positions(conds_mech)

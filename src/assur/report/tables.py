@@ -21,7 +21,7 @@ symbol              unit      meaning
 ``X<p>``, ``Y<p>``  m         point coordinates (seed ``X23(S)``)
 ``<d>``             m         a named distance (seed 002 ``l7``, ``l9``); its
                               angle, when named, is a link (``phi7``)
-``d<d>``            m/rad, \-  its analog
+``d<d>``            m/rad, \\-  its analog
 ``closure``         m         largest closure residual of all groups (assur's
                               check; replaces the seed's ``X23s``… columns)
 ``U<i><j>``         \\-        transfer ratio φ_i'/φ_j' (seed ``U43``)
