@@ -160,15 +160,18 @@ class Motion:
 
     def _interval(self, s):
         t, w, a, S = self._table()
-        if np.any(s < 0) or np.any(s > S[-1]):
-            bad = s[(s < 0) | (s > S[-1])]
+        tol = 1e-12 * max(S[-1], 1.0)  # the ends of the travel, up to rounding
+        out = (s < -tol) | (s > S[-1] + tol)
+        if np.any(out):
+            bad = s[out]
             raise ModelError(
                 f"motion of {self.coordinate!r}: the table ω(t) turns the crank by "
                 f"{math.degrees(S[-1]):.6g}° from its start (along {self.direction_name}); "
                 f"{bad.size} position(s) lie outside that travel (e.g. "
                 f"{math.degrees(float(bad.reshape(-1)[0])):.6g}° of travel)")
+        s = np.clip(s, 0.0, S[-1])
         i = np.clip(np.searchsorted(S, s, side="right") - 1, 0, len(a) - 1)
-        return i, t, w, a, S
+        return i, s, t, w, a, S
 
     def rates(self, q) -> tuple[np.ndarray, np.ndarray]:
         """``(qdot, qddot)`` at the positions ``q`` [rad]: the coordinate's rate
@@ -186,8 +189,7 @@ class Motion:
                              f"table ω(t)) for real-time rates")
         if self.speed is not None:
             return (np.full(q.shape, self.direction * self.speed), np.zeros(q.shape))
-        s = self.travel(q)
-        i, t, w, a, S = self._interval(s)
+        i, s, t, w, a, S = self._interval(self.travel(q))
         om = np.sqrt(w[i] ** 2 + 2.0 * a[i] * (s - S[i]))
         return self.direction * om, self.direction * a[i]
 
@@ -199,7 +201,7 @@ class Motion:
             return s / self.speed
         if not self.has_speed:
             self.rates(q)  # raises: no speed
-        i, t, w, a, S = self._interval(s)
+        i, s, t, w, a, S = self._interval(s)
         om = np.sqrt(w[i] ** 2 + 2.0 * a[i] * (s - S[i]))
         return t[i] + 2.0 * (s - S[i]) / (w[i] + om)
 
