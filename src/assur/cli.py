@@ -110,6 +110,9 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     tab.add_column("value")
     tab.add_row("groups", str(len(m.groups)))
     tab.add_row("links", ", ".join(l.name for l in m.links))
+    if m.distances:
+        tab.add_row("distances", ", ".join(d.name + (f" (angle {d.angle})" if d.angle else "")
+                                           for d in m.distances))
     rng = model.range
     for j, c in enumerate(m.coordinates):
         col = rng if rng.ndim == 1 else rng[..., j]
