@@ -317,6 +317,12 @@ def test_angle_figure_sorted_no_line_across_a_wrap_and_equal_links_visible():
     assert "=" in l4.get_label() and l4.get_linestyle() == "--"
     l3 = lines[r"$\varphi_{\mathrm{3}}$"]
     assert l3.get_linestyle() == "-" and l4.get_marker() != l3.get_marker()
+    # the named distances l7, l9 have a figure of their own, sorted the same way
+    figs = F.figures(a)
+    assert "distances" in figs
+    d = {ln.get_label(): ln for ln in _lines(figs["distances"])}
+    order = np.argsort(np.mod(np.degrees(a.kinematics.q()), 360))
+    np.testing.assert_allclose(d["l7"].get_ydata(), a.kinematics.length("l7")[order])
     # the full turn, wrapped: φ9 passes 360° → 0°, and no segment spans the wrap
     t = io.load(io.bundled("combine_002_turn"))
     fig = F.angles(t.mechanism.analyze(t.range))

@@ -9,6 +9,7 @@ English (``lang``):
 name            what                                                   seed 003
 ==============  =====================================================  ===========
 ``angles``      link angles φ [°]                                      tables 2.1
+``distances``   named distances [m] (seed 002: l7, l9)                 —
 ``analogs``     angular-velocity analogs dφ/dq [rad/m]                 fig. 3.1
 ``transmission`` transmission numbers I = dY/dq [-]                    fig. 3.2
 ``capacity``    lift capacity G at the transmission points [kN], with  fig. 4.1
@@ -44,7 +45,8 @@ from matplotlib.figure import Figure
 from .labels import check_lang, t, unit
 from .tables import _View
 
-__all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "analogs", "transmission",
+__all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
+           "transmission",
            "capacity", "force", "pressure", "reactions", "hodograph", "stability"]
 
 _SPECIAL = set("_^$\\{}%#&~")
@@ -167,6 +169,25 @@ def angles(analysis, lang="en", design=None):
     for link in kin.links:
         p.line(ax, p.v.phi_values(link), _math(_PHI, link), angle=True)
     p.legend(fig, ax, len(kin.links))
+    return fig
+
+
+#: titles of the figures kept here (the lead may move them into :mod:`.labels`)
+_TITLES = {"f_distances": {"en": "Named distances", "ru": "Расстояния между точками"},
+           "y_distance": {"en": "distance", "ru": "расстояние"}}
+
+
+def distances(analysis, lang="en", design=None):
+    """Named distances [m] against the coordinate (seed 002: the helper vectors l7 =
+    |C–O6|, l9 = |A–O3|); None without named distances."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.distances:
+        return None
+    fig, ax = p.axes(_TITLES["f_distances"][p.lang], _TITLES["y_distance"][p.lang], "m")
+    for dist in v.mech.distances:
+        p.line(ax, v.pick(v.kin.length(dist.name)), dist.name)
+    p.legend(fig, ax, len(v.mech.distances))
     return fig
 
 
@@ -371,7 +392,7 @@ def stability(analysis, lang="en", design=None):
 
 
 #: name -> function, in the report's order
-FIGURES = {"angles": angles, "analogs": analogs, "transmission": transmission,
+FIGURES = {"angles": angles, "distances": distances, "analogs": analogs, "transmission": transmission,
            "capacity": capacity, "force": force, "pressure": pressure, "reactions": reactions,
            "hodograph": hodograph, "stability": stability}
 
