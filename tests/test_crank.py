@@ -225,6 +225,17 @@ def test_speed_table_integrates_exactly(omegas, dts, direction):
     np.testing.assert_allclose(qdd[inside], fd, rtol=1e-4, atol=1e-4 * np.max(np.abs(slope)))
 
 
+def test_continuous_positions_along_the_rotation():
+    """Seed 002's positions as it prints them (wrapped), made continuous clockwise."""
+    printed = [14.679] + [344.679 - 30 * k for k in range(11)] + [188.229]
+    got = np.degrees(Motion("j1", "cw").continuous(np.radians(printed)))
+    want = [14.679 - 30 * k for k in range(12)] + [-315.321 - 216.45]
+    np.testing.assert_allclose(got, want, atol=1e-9)
+    assert np.all(np.diff(got) < 0)
+    ccw = np.degrees(Motion("j1", "ccw").continuous(np.radians([350.0, 10.0, 5.0])))
+    np.testing.assert_allclose(ccw, [350.0, 370.0, 725.0], atol=1e-9)
+
+
 def test_speed_table_refuses_positions_beyond_its_travel_and_bad_tables():
     m = Motion("q", "ccw", t=(0.0, 1.0), omega=(1.0, 1.0))
     with pytest.raises(ModelError, match="outside that travel"):

@@ -152,6 +152,27 @@ class Motion:
         q0 = float(self.start) if self.start is not None else float(q.reshape(-1)[0])
         return self.direction * (q - q0)
 
+    def continuous(self, q) -> np.ndarray:
+        """Positions ``q`` [rad] (e.g. wrapped to [0, 2π) as a seed prints them) made
+        continuous along the direction of rotation: each position is reached from the
+        one before by turning forward less than a full turn. Seed 002's list
+        14.679°, 344.679°, …, 44.679°, 188.229° turning clockwise becomes 14.679°,
+        −15.321°, …, −315.321°, −531.771° (its 13th position is reached by turning on).
+
+        Parameters
+        ----------
+        q : array_like, shape (n,)
+
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+        """
+        q = np.asarray(q, dtype=float).reshape(-1)
+        if q.size < 2:
+            return q.copy()
+        step = np.mod(self.direction * np.diff(q), 2.0 * np.pi)   # forward turn, [0, 2π)
+        return np.concatenate([q[:1], q[0] + self.direction * np.cumsum(step)])
+
     def _table(self):
         t, w = np.array(self.t), np.array(self.omega)
         a = np.diff(w) / np.diff(t)                       # slope of ω on each interval
