@@ -174,7 +174,8 @@ def angles(analysis, lang="en", design=None):
 
 #: titles of the figures kept here (the lead may move them into :mod:`.labels`)
 _TITLES = {"f_distances": {"en": "Named distances", "ru": "Расстояния между точками"},
-           "y_distance": {"en": "distance", "ru": "расстояние"}}
+           "y_distance": {"en": "distance", "ru": "расстояние"},
+           "along": {"en": "along the rotation", "ru": "по вращению"}}
 
 
 def distances(analysis, lang="en", design=None):
@@ -195,7 +196,10 @@ def analogs(analysis, lang="en", design=None):
     """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S))."""
     p = _Plot(analysis, lang, design)
     kin, v = p.v.kin, p.v
-    fig, ax = p.axes(t("f_analogs", lang), t("y_analog", lang, p.c), v.analog_unit(p.c))
+    ylabel = t("y_analog", lang, p.c)
+    if v.rate_sign(p.c) != 1:  # the seeds' convention: along the crank's rotation
+        ylabel += " · sign " + p.c + "' (" + _TITLES["along"][p.lang] + ")"
+    fig, ax = p.axes(t("f_analogs", lang), ylabel, v.analog_unit(p.c))
     n = 0
     for sfx, w, c in v.wrts():
         for link in kin.links:  # along the crank's rotation where the tables say so
