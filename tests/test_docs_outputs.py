@@ -27,6 +27,7 @@ def _placeholders(mech=None):
     return {"<c>": _alt(mech.coordinates), "<p>": _alt(mech.points + mech.frame_points),
             "<l>": _alt(links), "<i><j>": _alt(links) + _alt(links),
             "<axle>": _alt([a.lower() for a in axles] + axles) if axles else "(?!)",
+            "<d>": _alt([d.name for d in mech.distances]) if mech.distances else "(?!)",
             "<formula>": None, "<name>": r"\w+"}
 
 

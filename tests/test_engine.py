@@ -88,7 +88,9 @@ def test_continuity_between_positions_is_checked():
     """Both samples assemble but the dyad cannot between them (|A–B| drops below
     ra − rb for q in 1.32…1.82): the engine says so instead of jumping over."""
     m = crank_dyad()
-    with pytest.raises(AssemblyError, match="cannot move continuously from q = 0 to q = 2") as e:
+    # q is a crank angle: the message gives it in degrees (2 rad = 114.592°)
+    with pytest.raises(AssemblyError,
+                       match="cannot move continuously from q = 0° to q = 114.592°") as e:
         m.solve([0.0, 2.0])
     assert e.value.group == "II"
     r = m.solve([0.0, 2.0], check_continuity=False)  # scattered positions: caller's choice

@@ -136,6 +136,9 @@ def expectation(path):
 
 #: what each message must say beyond the location: what was expected and what was found
 MESSAGES = {
+    "frame_polar_origin_defined_later": 'frame point "O1" is not defined before "O3"',
+    "motion_speed_given_as_length": 'expected an angular velocity (e.g. "300 rpm"), found '
+                                    '"300 mm"',
     "angle_unit_for_efficiency": 'expected a plain number (e.g. 0.84), found "0.84 deg"',
     "bad_unit": 'unknown unit "mmm": expected a length',
     "branch_value_off": "expected 1 or -1 (the assembly mode",

@@ -54,11 +54,14 @@ def _load(path: Path):
     from .io import load
 
     try:
-        return load(path)
+        model = load(path)
     except FileNotFoundError:
         _fail(f"{path}: no such file")
     except (ModelError, AssemblyError) as e:
         _fail(str(e))
+    for w in model.warnings:  # parameters nothing uses: file, line, key
+        err.print(Text.assemble(("warning:", "bold yellow"), " ", w), soft_wrap=True)
+    return model
 
 
 def _output_dir(output: str) -> Path:
@@ -89,6 +92,7 @@ def _assemble(model):
     except (AssemblyError, ModelError, SingularPositionError) as e:
         _fail(f"{model.source}: {e}")
     analysis.solved = tuple(model.solved)
+    analysis.model_warnings = tuple(model.warnings)  # for the report's warnings
     return analysis
 
 
@@ -96,6 +100,7 @@ def _assemble(model):
 def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     """Validate a model file, solve its conditions and assemble it over its range."""
     from .report.values import solved_line
+    import numpy as np
 
     t0 = time.perf_counter()
     model = _load(file)
@@ -106,10 +111,21 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     tab.add_column("value")
     tab.add_row("groups", str(len(m.groups)))
     tab.add_row("links", ", ".join(l.name for l in m.links))
+    if m.distances:
+        tab.add_row("distances", ", ".join(d.name + (f" (angle {d.angle})" if d.angle else "")
+                                           for d in m.distances))
     rng = model.range
     for j, c in enumerate(m.coordinates):
         col = rng if rng.ndim == 1 else rng[..., j]
-        tab.add_row(f"range of {c}", f"{col.min():.6g} … {col.max():.6g} ({col.size} positions)")
+        if m.coordinate_kind(c) == "angle":
+            deg = np.degrees(col)
+            tab.add_row(f"range of {c}", f"{deg[0]:.6g}° … {deg[-1]:.6g}° ({col.size} "
+                                         f"positions, {deg.min():.6g}° … {deg.max():.6g}°)")
+        else:
+            tab.add_row(f"range of {c}", f"{col.min():.6g} … {col.max():.6g} m ({col.size} "
+                                         f"positions)")
+    for mo in m.motions:
+        tab.add_row(f"motion of {mo.coordinate}", mo.describe())
     for s in model.solved:
         tab.add_row(f"solved {s.condition.unknown}", solved_line(s, m, "en"))
     console.print(tab)
@@ -126,22 +142,46 @@ def _formats(value: str):
 
 def _positions(analysis, draw_at):
     """Indices of the positions nearest to the coordinate values ``draw_at`` (one
-    coordinate; e.g. "0.42,0.67" [m or rad])."""
+    coordinate; e.g. "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a
+    crank). A crank angle matches its positions modulo 360° (188.229 finds the
+    position written −171.771)."""
     if not draw_at:
         return None
     kin = analysis.kinematics
     if kin.k != 1 or len(kin.shape) != 1:
         _fail("--draw-at needs a model with one coordinate and one design")
+    import numpy as np
+    angle = analysis.mechanism.coordinate_kind(kin.coordinates[0]) == "angle"
+    unit = "°" if angle else "m"
     try:
-        values = [float(v) for v in draw_at.split(",") if v.strip()]
+        values = [float(v.strip().removesuffix("°").removesuffix("deg").strip() if angle
+                        else v) for v in draw_at.split(",") if v.strip()]
     except ValueError:
-        _fail(f"--draw-at must be comma-separated numbers (SI), got {draw_at!r}")
-    q = kin.q()
+        _fail(f"--draw-at must be comma-separated numbers ({'degrees' if angle else 'm'}), "
+              f"got {draw_at!r}")
+    if not values:
+        _fail(f"--draw-at must name at least one position, got {draw_at!r}")
+    q = np.degrees(kin.q()) if angle else kin.q()
     lo, hi = float(q.min()), float(q.max())
-    bad = [v for v in values if not lo <= v <= hi]
+    if not angle:
+        bad = [v for v in values if not lo <= v <= hi]
+        if bad:
+            _fail(f"--draw-at {bad} is outside the range {lo:.6g} … {hi:.6g} m")
+        return [int(abs(q - v).argmin()) for v in values]
+    # crank angles: the nearest position on the circle; a value farther from every
+    # position than the largest step between neighbouring positions is not in the range
+    step = float(np.max(np.abs(np.diff(q)))) if q.size > 1 else 0.0
+    out, bad = [], []
+    for v in values:
+        d = np.abs((q - v + 180.0) % 360.0 - 180.0)
+        i = int(d.argmin())
+        if d[i] > max(step, 1e-9):
+            bad.append(v)
+        out.append(i)
     if bad:
-        _fail(f"--draw-at {bad} is outside the range {lo:.6g} … {hi:.6g}")
-    return [int(abs(q - v).argmin()) for v in values]
+        _fail(f"--draw-at {bad} [{unit}] is outside the positions of "
+              f"{kin.coordinates[0]}: {lo:.6g}° … {hi:.6g}° ({q.size} positions)")
+    return out
 
 
 def _run_report(model, output: str, lang: str, fmts, draw_at=None):
@@ -177,8 +217,10 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
             format: str = typer.Option(",".join(FORMATS), "--format",
                                        help="Comma-separated: csv,xlsx,html,png,svg,gif."),
             draw_at: str = typer.Option("", "--draw-at",
-                                        help="Coordinate values to draw the mechanism at, "
-                                             "e.g. 0.42,0.55 (SI; default: first and last).")):
+                                        help="Coordinate values to draw the mechanism at: "
+                                             "cylinder lengths in m (0.42,0.55), crank "
+                                             "angles in degrees (14.679,188.229); default: "
+                                             "first and last.")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
     _check_lang(lang)
     fmts = _formats(format)

@@ -14,12 +14,26 @@ from .errors import AssemblyError
 from .groups.base import fmt
 from .kernel.emit import CODES_PER_OP, FAIL_CONTINUITY
 
-__all__ = ["failure_message", "assembly_error", "describe_failures"]
+__all__ = ["failure_message", "assembly_error", "describe_failures", "coordinate_value",
+           "coordinate_text"]
+
+
+def coordinate_value(mech, c, v) -> str:
+    """A coordinate value as messages show it: a crank angle in degrees
+    (``"14.679°"``), a length as its number in metres (``"0.42"``)."""
+    if mech.coordinate_kind(c) == "angle":
+        return f"{float(np.degrees(v)):.6g}°"
+    return f"{float(v):.6g}"
+
+
+def coordinate_text(mech, c, v) -> str:
+    """``"j1 = 14.679°"``, ``"S = 0.42"`` (see :func:`coordinate_value`)."""
+    return f"{c} = {coordinate_value(mech, c, v)}"
 
 
 def _where(mech, ptab, qarr, n, e):
     d, pos = divmod(e, n)
-    at = ", ".join(f"{c} = {qarr[j, e]:.6g}" for j, c in enumerate(mech.coordinates))
+    at = ", ".join(coordinate_text(mech, c, qarr[j, e]) for j, c in enumerate(mech.coordinates))
     return f"at position {pos} ({at})" + (f" of design {d}" if ptab.shape[1] > 1 else "")
 
 
@@ -48,8 +62,9 @@ def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
     if code == FAIL_CONTINUITY:
         c = mech.coordinates[0]
         amt = float(amount[e])
-        head = (f"{g.kind} {g.name!r}{ltxt} cannot move continuously from {c} = "
-                f"{qarr[0, e - 1]:.6g} to {c} = {qarr[0, e]:.6g}"
+        head = (f"{g.kind} {g.name!r}{ltxt} cannot move continuously from "
+                f"{coordinate_text(mech, c, qarr[0, e - 1])} to "
+                f"{coordinate_text(mech, c, qarr[0, e])}"
                 f"{f' (design {d})' if ptab.shape[1] > 1 else ''}: ")
         return (head + "its triangle flattens or opens between these positions (the squared "
                 f"height, interpolated with its exact slope, dips to {amt:.3g} m²): a dead "
@@ -91,8 +106,10 @@ def assembly_error(mech, prog, ptab, qarr, status, amount, n, ok):
         pos_idx = fails_here - d * n
         runs = np.split(pos_idx, np.flatnonzero(np.diff(pos_idx) != 1) + 1)
         qd = qarr[0, d * n:(d + 1) * n]
-        spans = ", ".join(f"{qd[r[0]]:.6g}…{qd[r[-1]]:.6g}" if len(r) > 1 else
-                          f"{qd[r[0]]:.6g}" for r in runs[:5])
+        c0 = mech.coordinates[0]
+        spans = ", ".join(f"{coordinate_value(mech, c0, qd[r[0]])}…"
+                          f"{coordinate_value(mech, c0, qd[r[-1]])}" if len(r) > 1 else
+                          coordinate_value(mech, c0, qd[r[0]]) for r in runs[:5])
         msg += (f"; {len(fails_here)} of {n} positions fail"
                 f" ({mech.coordinates[0]} = {spans}{', …' if len(runs) > 5 else ''})")
     if ptab.shape[1] > 1:

@@ -7,7 +7,7 @@ engineer can act on it without a debugger.
 
 from __future__ import annotations
 
-__all__ = ["ModelError", "AssemblyError", "SingularPositionError"]
+__all__ = ["ModelError", "AssemblyError", "SingularPositionError", "ModelWarning"]
 
 
 class ModelError(ValueError):
@@ -48,3 +48,8 @@ class AssemblyError(ValueError):
 
 class SingularPositionError(ValueError):
     """A requested ratio or analog is singular (division by a zero analog) at some position."""
+
+
+class ModelWarning(UserWarning):
+    """Something in a model that is allowed but probably not meant (a parameter that
+    nothing uses — a misspelt key?); the message names the file, line and key."""

@@ -11,6 +11,10 @@ numbering:
   cannot assemble.
 * :func:`header_000_fixed` — the same header with an illustrative L4 = 0.652 m that
   assembles, ``header_000_fixed.toml``.
+* :func:`combine_002` — the crank-driven six-bar of a combine, seed 002,
+  ``combine_002.toml`` (l2 = 1.0 m; :func:`combine_002_printed`, the printed
+  l2 = 0.1 m, cannot assemble); :func:`combine_002_range` the seed's 13 crank
+  positions, :func:`combine_002_turn_range` a full clockwise turn.
 
 Each ``*_range()`` gives the seed's positions of the generalized coordinate (the
 file's ``[range]``). :func:`assur.io.load` gives the whole :class:`assur.io.Model`
@@ -25,7 +29,8 @@ import numpy as np
 
 from .mechanism import Mechanism
 
-__all__ = ["hitch_003", "hitch_003_range", "header_000", "header_000_fixed", "header_000_range"]
+__all__ = ["hitch_003", "hitch_003_range", "header_000", "header_000_fixed", "header_000_range",
+           "combine_002", "combine_002_printed", "combine_002_range", "combine_002_turn_range"]
 
 #: seed 003: the exact roots of its three Find blocks (printed rounded to 4 digits:
 #: L4 = 0.6613, Sp = 0.4694, L7 = 0.7522; the printed tables used these values).
@@ -132,3 +137,44 @@ def header_000_fixed(**params) -> Mechanism:
 def header_000_range() -> np.ndarray:
     """Seed 000: S_AA from 0.650 to 0.800 m in steps of 0.010 m [m]."""
     return np.array(_model("header_000").range)
+
+
+def combine_002(**params) -> Mechanism:
+    """Crank-driven six-bar of a combine, seed ``002_e16fe39845bb7e76.txt`` (bundled
+    file ``combine_002.toml``).
+
+    Loop 1 (seed eq. 2.3): crank l1 = O1A, coupler l2 = AB, rocker l3 = B→O3 with
+    O3 = O1 + l10∠j10; loop 2 (eq. 2.4): l4 = O3→C continues the rocker beyond O3
+    (j4 = j3), l5 = CD, l6 = D→O6 with O6 = O3 + l8∠j8. The helper vectors l9 = A→O3
+    and l7 = C→O6 (eqs. 2.5, 2.9–2.10) are named distances with their angles j9, j7.
+    The crank turns clockwise (φ1' = −1, eq. 2.20): its :class:`assur.motion.Motion`.
+
+    Generalized coordinate ``j1``: the crank angle [rad].
+
+    Notes
+    -----
+    Seed slips resolved (BRIEF.md): l2 is printed 0,1 m but is 1.0 m (with 0.1 the
+    first dyad cannot close: :func:`combine_002_printed`); the lost fixed angles
+    j10 = −7.125°, j8 = +12.54° are restored from the seed's withheld table.
+    """
+    return _mechanism("combine_002", params)
+
+
+def combine_002_printed(**params) -> Mechanism:
+    """Seed 002's six-bar with l2 = 0.1 m as its table 2.2 prints it
+    (``combine_002_printed.toml``): :meth:`~assur.Mechanism.solve` raises the
+    :class:`~assur.AssemblyError` of the first dyad (521 mm short at j1 = 14.679°)."""
+    return _mechanism("combine_002_printed", params)
+
+
+def combine_002_range() -> np.ndarray:
+    """Seed 002's 13 crank positions [rad]: j1 = 14.679° and steps of −30° (written
+    continuously along the clockwise turn: 14.679°, −15.321°, …, −315.321°), then
+    position 13 at 188.229° (written −171.771°)."""
+    return np.array(_model("combine_002").range)
+
+
+def combine_002_turn_range() -> np.ndarray:
+    """A full clockwise turn from j1 = 14.679°, one position per degree (361 positions,
+    ``combine_002_turn.toml``) [rad]."""
+    return np.array(_model("combine_002_turn").range)

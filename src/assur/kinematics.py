@@ -354,8 +354,10 @@ class Kinematics:
         if bad.any():
             if singular == "raise":
                 idx = np.argwhere(bad)[0]
-                qv = {c: float(self._q[j].reshape(self.shape)[tuple(idx)])
-                      for j, c in enumerate(self.coordinates)}
+                from .diagnostics import coordinate_text
+                qv = ", ".join(coordinate_text(self.mechanism, c,
+                                               float(self._q[j].reshape(self.shape)[tuple(idx)]))
+                               for j, c in enumerate(self.coordinates))
                 raise SingularPositionError(
                     f"{what} is singular at {int(bad.sum())} position(s), first at {qv}: the "
                     f"denominator analog is zero there (the link is at rest, e.g. a dead "

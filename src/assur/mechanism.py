@@ -87,6 +87,7 @@ class Mechanism:
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
                  machine=None, gravity: float | None = None, units: Mapping | None = None,
+                 motions: Iterable = (),
                  _params_checked: bool = False):
         self.name = name
         self.title = title or name
@@ -114,14 +115,18 @@ class Mechanism:
         #: acceleration of gravity for the masses' weights [m/s²] (None: the default
         #: :data:`assur.statics.GRAVITY`)
         self.gravity = gravity
+        #: direction of rotation and speed of crank coordinates (:class:`assur.motion.Motion`)
+        self.motions = tuple(motions)
         #: programs and prepared tables of this (immutable) mechanism
         self._cache: dict = {}
         self._check_gravity()
         self._validate(check_params=not _params_checked)
+        self._check_motions()
 
     # ---- building (each returns a new mechanism) -------------------------------
     #: attributes a copy may change without validating the structure again
-    _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity", "units"})
+    _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity", "units",
+                            "motions"})
 
     def _with(self, **kw):
         if kw and set(kw) <= self._DATA_ONLY and ("params" not in kw
@@ -134,18 +139,21 @@ class Mechanism:
             new._cache = {k: v for k, v in self._cache.items() if k[0] == "program"}
             for k, v in kw.items():
                 setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables", "units")
-                        else tuple(v) if k == "notes" else v)
+                        else tuple(v) if k in ("notes", "motions") else v)
             if "params" in kw:
                 new._check_params({n: v for n, v in kw["params"].items()
                                    if v is not self.params[n]})
             if "gravity" in kw:
                 new._check_gravity()
+            if "motions" in kw:
+                new._check_motions()
             return new
         d = dict(name=self.name, coordinates=self.coordinates, params=self.params,
                  title=self.title, groups=self.groups, links=self.links,
                  distances=self.distances, tables=self.tables, notes=self.notes,
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
-                 gravity=self.gravity, units=self.units, _params_checked="params" not in kw)
+                 gravity=self.gravity, units=self.units, motions=self.motions,
+                 _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)
 
@@ -189,17 +197,33 @@ class Mechanism:
             raise ModelError(f"{cls.kind} {name!r}: {e}; its parameters: {allowed}") from None
         return self.add(g)
 
-    def frame(self, name, x, y) -> "Mechanism":
-        """Add a frame pivot at ``(x, y)`` [m] (numbers or parameter names)."""
-        return self.add(Frame(name=name, x=x, y=y))
+    def frame(self, name, x=None, y=None, *, origin=None, length=None,
+              angle=None) -> "Mechanism":
+        """Add a frame pivot at ``(x, y)`` [m] — or at ``origin + length∠angle`` from
+        the frame point ``origin`` (``length`` [m], ``angle`` [rad] from +x; seed 002:
+        ``.frame("O3", origin="O1", length="l10", angle="j10")``). Values are numbers
+        or parameter names; the polar form is evaluated per design, like any
+        parameter (:class:`assur.groups.Frame`)."""
+        return self.add(Frame(name=name, x=x, y=y, origin=origin, length=length, angle=angle))
 
     def link(self, name, tail, head) -> "Mechanism":
         """Name the link whose angle φ_name is the direction ``tail → head``."""
         return self._with(links=self.links + (Link(name, tail, head),))
 
-    def distance(self, name, a, b) -> "Mechanism":
-        """Name the distance |a–b| [m] (e.g. a dependent cylinder length)."""
-        return self._with(distances=self.distances + (Distance(name, a, b),))
+    def distance(self, name, a, b, angle=None) -> "Mechanism":
+        """Name the distance |a–b| [m] (e.g. a dependent cylinder length); ``angle``
+        also names its direction a → b (an angle φ_angle, as a link of that name)."""
+        links = self.links + ((Link(angle, a, b),) if angle is not None else ())
+        return self._with(distances=self.distances + (Distance(name, a, b, angle),),
+                          links=links)
+
+    def distance_angle(self, name):
+        """The name of the link angle of the distance ``name`` (None if it has none)."""
+        for d in self.distances:
+            if d.name == name:
+                return d.angle
+        raise KeyError(f"no distance {name!r} in mechanism {self.name!r}; distances: "
+                       f"{[d.name for d in self.distances]}")
 
     # ---- loads and actuators ---------------------------------------------------
     def weight(self, point, P, link=None, name=None) -> "Mechanism":
@@ -262,6 +286,47 @@ class Mechanism:
         u = dict(self.units)
         u.update(units)
         return self._with(units=u)
+    def with_motion(self, coordinate, direction="ccw", speed=None, *, t=(), omega=(),
+                    start=None) -> "Mechanism":
+        """Return a copy whose crank coordinate ``coordinate`` turns in ``direction``
+        (``"ccw"``/+1, ``"cw"``/−1) at a constant ``speed`` |ω| [rad/s], or at a given
+        |ω(t)|: ``t`` [s], ``omega`` [rad/s] (see :class:`assur.motion.Motion`);
+        replaces an earlier motion of that coordinate."""
+        from .motion import Motion
+        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start)
+        return self._with(motions=tuple(x for x in self.motions if x.coordinate != coordinate)
+                          + (mo,))
+
+    def motion(self, coordinate=None):
+        """The :class:`assur.motion.Motion` of a coordinate (default: the only one),
+        or None when none is given."""
+        if coordinate is None:
+            if len(self.coordinates) != 1:
+                raise ModelError(f"mechanism {self.name!r} has {len(self.coordinates)} "
+                                 f"coordinates {self.coordinates}: name the one whose motion "
+                                 f"you want")
+            coordinate = self.coordinates[0]
+        return next((x for x in self.motions if x.coordinate == coordinate), None)
+
+    def _check_motions(self):
+        from .motion import Motion
+        seen = set()
+        for mo in self.motions:
+            if not isinstance(mo, Motion):
+                raise ModelError(f"mechanism {self.name!r}: motions must be "
+                                 f"assur.motion.Motion, got {mo!r}")
+            if mo.coordinate not in self.coordinates:
+                raise ModelError(f"mechanism {self.name!r}: a motion is given for "
+                                 f"{mo.coordinate!r}, which is not a generalized coordinate "
+                                 f"{list(self.coordinates)}")
+            if self.coordinate_kind(mo.coordinate) != "angle":
+                raise ModelError(f"mechanism {self.name!r}: the motion of {mo.coordinate!r} "
+                                 f"(a direction of rotation and a speed) needs a crank angle; "
+                                 f"{mo.coordinate!r} is a "
+                                 f"{self.coordinate_kind(mo.coordinate)} coordinate")
+            if mo.coordinate in seen:
+                raise ModelError(f"mechanism {self.name!r}: two motions of {mo.coordinate!r}")
+            seen.add(mo.coordinate)
 
     def with_tables(self, **tables) -> "Mechanism":
         t = dict(self.tables)
@@ -353,6 +418,7 @@ class Mechanism:
                 if p not in known:
                     raise ModelError(f"{where}: link/distance {obj.name!r} refers "
                                      f"to unknown point {p!r} (known: {sorted(known)})")
+        self._check_symbols(known)
         self._topology = build_topology(self.name, self.coordinates, self.groups)
         self._validate_loads(known)
         lnames = [l.name for l in self.links] + [d.name for d in self.distances]
@@ -374,6 +440,21 @@ class Mechanism:
         if g is not None and not (math.isfinite(float(g)) and float(g) > 0):
             raise ModelError(f"mechanism {self.name!r}: gravity must be a positive number "
                              f"[m/s²], got {g!r}")
+
+    def _check_symbols(self, points):
+        """A coordinate must not share its table symbol with a link angle, a point
+        coordinate or a distance (``phi1`` as a coordinate and the angle of link 1
+        would be two columns of one name)."""
+        links = [l.name for l in self.links] + [l for g in self.groups for l in g.group_links()]
+        taken = {f"phi{l}": f"the angle of link {l!r}" for l in links}
+        taken.update({f"{a}{p}": f"the {a.lower()} of point {p!r}" for p in points
+                      for a in "XY"})
+        taken.update({d.name: f"the distance {d.name!r}" for d in self.distances})
+        for c in self.coordinates:
+            if c in taken:
+                raise ModelError(f"mechanism {self.name!r}: the coordinate name {c!r} is also "
+                                 f"{taken[c]} in the tables; name the coordinate otherwise "
+                                 f"(e.g. 'j1' for a crank angle φ1, 'S' for a cylinder)")
 
     def _validate_loads(self, known):
         from .loads import Couple, Cylinder, Mass, PointForce, Spring, Weight
@@ -627,9 +708,10 @@ class Mechanism:
                     msg, _, _ = diagnostics.failure_message(self, prog, ptab, qpose, st,
                                                             res["amount"], 1, e)
                     at = dict(zip(self.coordinates, qpose[:, e]))
+                    pose = ", ".join(diagnostics.coordinate_text(self, c, v)
+                                     for c, v in at.items())
                     failures.append(AssemblyError(
-                        f"{g.kind} {g.name!r} is defined at the pose "
-                        f"{', '.join(f'{c} = {v:.6g}' for c, v in at.items())}, where the "
+                        f"{g.kind} {g.name!r} is defined at the pose {pose}, where the "
                         f"mechanism cannot assemble: {msg}", group=g.name,
                         links=g.group_links(), coordinate=at, design=e))
                 return {p: (res["pv"][j, 0], res["pv"][j, 1])

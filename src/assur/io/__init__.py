@@ -75,6 +75,11 @@ class Model:
     dynamics : DynamicsSpec or None
         The ``[dynamics]`` section (flywheel target, counter-masses;
         :mod:`assur.io._dynamics`, docs/crank-dynamics.md), None without one.
+    warnings : tuple of str
+        What the file allows but probably does not mean — a parameter that nothing
+        uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
+        print them; :func:`load` with ``warn=True`` issues them as
+        :class:`assur.errors.ModelWarning`.
     """
 
     mechanism: Mechanism
@@ -83,6 +88,7 @@ class Model:
     solved: tuple = ()
     source: Path | None = None
     dynamics: object = None
+    warnings: tuple = ()
 
     @property
     def name(self) -> str:
@@ -231,16 +237,29 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     builder = Builder(name, data, index)
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
-                 builder.dynamics)
+                 builder.dynamics,
+                 tuple(builder.warnings))
 
 
-def load(path) -> Model:
+def _warn(model: Model) -> Model:
+    import warnings
+
+    from ..errors import ModelWarning
+    for w in model.warnings:
+        warnings.warn(w, ModelWarning, stacklevel=3)
+    return model
+
+
+def load(path, *, warn: bool = False) -> Model:
     """Load a model file.
 
     Parameters
     ----------
     path : str or os.PathLike
         A ``.toml`` model file (see ``docs/model-format.md``).
+    warn : bool
+        Issue :attr:`Model.warnings` (parameters nothing uses) as
+        :class:`assur.errors.ModelWarning` (default: only keep them in the model).
 
     Returns
     -------
@@ -265,7 +284,8 @@ def load(path) -> Model:
         line = data[:e.start].count(b"\n") + 1
         raise ModelFileError(str(path), line, "", f"expected UTF-8 text, found the byte "
                                                   f"0x{data[e.start]:02x}") from None
-    return loads(text, name=str(path), source=p)
+    model = loads(text, name=str(path), source=p)
+    return _warn(model) if warn else model
 
 
 def read_model_bytes(p: Path, shown: str) -> bytes:

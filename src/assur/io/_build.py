@@ -35,8 +35,9 @@ from ..texts import text
 from . import _schema as S
 from ._errors import ModelFileError, key_path
 from ._lines import line_of
-from ._units import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, MOMENT, NUMBER, PRESSURE, \
-    STIFFNESS, UnitError, display_unit, is_name, parse, to_si, unit_kind
+from ._units import ACCELERATION, ANGLE, ANGULAR_VELOCITY, FORCE, INERTIA, LENGTH, MASS, \
+    MOMENT, NUMBER, PRESSURE, STIFFNESS, TIME, UnitError, display_unit, is_name, parse, to_si, \
+    unit_kind
 
 # constraints on values beyond their kind: (test, words)
 _FLAGS = {
@@ -299,9 +300,13 @@ class Builder:
             for f in _fields(g, "coordinate"):
                 self.coordinate_field(("groups", i, f.name), getattr(g, f.name),
                                       _QUANTITY[f.quantity])
-        for name, (x, y) in sp.frame.items():
-            self.value(("frame", name, 0), x, LENGTH)
-            self.value(("frame", name, 1), y, LENGTH)
+        for name, fp in sp.frame.items():
+            if isinstance(fp, dict):  # polar: origin + length∠angle
+                self.value(("frame", name, "length"), fp["length"], LENGTH, "positive")
+                self.value(("frame", name, "angle"), fp["angle"], ANGLE)
+            else:
+                self.value(("frame", name, 0), fp[0], LENGTH)
+                self.value(("frame", name, 1), fp[1], LENGTH)
         for i, g in enumerate(self.groups):
             for field, (kind, flag, coord_ok) in _group_values(g).items():
                 if field in g.model_fields_set:
@@ -314,6 +319,7 @@ class Builder:
                 raise self.error(("model", "coordinates", j),
                                  f'the coordinate "{c}" is not used by any group: nothing moves '
                                  f"with it (drive an input group with it, or remove it)")
+        self.motion_uses()
         for i, ld in enumerate(self.loads):
             for field, (kind, flag) in _LOAD_VALUES[ld.type].items():
                 if field in ld.model_fields_set:
@@ -357,6 +363,7 @@ class Builder:
                                    for f in _group_outputs(g)]
         quantities = {f"{a}{p}": LENGTH for p in points for a in "XY"}
         quantities.update({f"phi{l}": ANGLE for l in sp.links})
+        quantities.update({f"phi{d[2]}": ANGLE for d in sp.distances.values() if d[2]})
         quantities.update({d: LENGTH for d in sp.distances})
         for i, s in enumerate(sp.solve):
             if s.quantity not in quantities:
@@ -366,6 +373,44 @@ class Builder:
                                  f"{S.did_you_mean(s.quantity, quantities)}")
             self.position(("solve", i, "at"), s.at)
             self.value(("solve", i, "equals"), s.equals, quantities[s.quantity])
+
+    def motion_uses(self):
+        """``[motion]``: one entry per crank coordinate — direction, speed (a value or a
+        table ω(t)), start (an angle)."""
+        for c, ms in self.spec.motion.items():
+            mp = ("motion", c)
+            if c not in self.coords:
+                raise self.error(mp, f'unknown coordinate "{c}": expected one of the '
+                                     f'coordinates ({", ".join(self.coords)})'
+                                     f"{S.did_you_mean(c, self.coords)}")
+            if self.kind_of_coordinate(c) is not ANGLE:
+                raise self.error(mp, f'the coordinate "{c}" is not a crank angle (it is '
+                                     f"{self.kind_of_coordinate(c).article}): a direction of "
+                                     f"rotation and a speed belong to a crank's coordinate")
+            if isinstance(ms.speed, dict):
+                for k, v in enumerate(ms.speed["t"]):
+                    self.value(mp + ("speed", "t", k), v, TIME)
+                for k, v in enumerate(ms.speed["omega"]):
+                    self.value(mp + ("speed", "omega", k), v, ANGULAR_VELOCITY, "positive")
+            elif ms.speed is not None:
+                self.value(mp + ("speed",), ms.speed, ANGULAR_VELOCITY, "positive")
+            if ms.start is not None:
+                self.value(mp + ("start",), ms.start, ANGLE)
+
+    def motions(self, mech):
+        for c, ms in self.spec.motion.items():
+            mp = ("motion", c)
+            kw = {}
+            if isinstance(ms.speed, dict):
+                kw["t"] = [self.number(mp + ("speed", "t", k)) for k in range(len(ms.speed["t"]))]
+                kw["omega"] = [self.number(mp + ("speed", "omega", k))
+                               for k in range(len(ms.speed["omega"]))]
+            elif ms.speed is not None:
+                kw["speed"] = self.number(mp + ("speed",))
+            if ms.start is not None:
+                kw["start"] = self.number(mp + ("start",))
+            mech = self.guarded(mp, lambda: mech.with_motion(c, ms.direction, **kw))
+        return mech
 
     # ---- pass 2: parameters ---------------------------------------------------------------
     def parameters(self):
@@ -427,10 +472,27 @@ class Builder:
             sp.model.name, coordinates=self.coords, params=self.params, units=self.units,
             title=text(sp.model.title), notes=tuple(text(n) for n in sp.model.notes)))
         known = {}  # point -> where defined
-        for name in sp.frame:
+        frame_names = list(sp.frame)
+        for name, fp in sp.frame.items():
+            if isinstance(fp, dict):
+                o = fp["origin"]
+                if o not in known:
+                    if o in frame_names:
+                        raise self.error(("frame", name, "origin"),
+                                         f'frame point "{o}" is not defined before "{name}": '
+                                         f"a polar frame point is placed from a frame point "
+                                         f"written before it")
+                    raise self.error(("frame", name, "origin"),
+                                     f'unknown frame point "{o}": expected one of the frame '
+                                     f'points written before it ({", ".join(known)})'
+                                     f"{S.did_you_mean(o, frame_names)}")
+                mech = self.guarded(("frame", name), lambda: mech.frame(
+                    name, origin=o, length=self.r("frame", name, "length"),
+                    angle=self.r("frame", name, "angle")))
+            else:
+                mech = self.guarded(("frame", name), lambda: mech.frame(
+                    name, self.r("frame", name, 0), self.r("frame", name, 1)))
             known[name] = "the frame"
-            mech = self.guarded(("frame", name), lambda: mech.frame(
-                name, self.r("frame", name, 0), self.r("frame", name, 1)))
         # every point a group defines, to tell "defined later" from "unknown"
         later = {}
         for i, g in enumerate(self.groups):
@@ -475,11 +537,16 @@ class Builder:
         points = list(known)
         for section, add in (("links", "link"), ("distances", "distance")):
             for name, ends in getattr(sp, section).items():
-                for k, p in enumerate(ends):
-                    self.point((section, name, k), p, points)
+                form = isinstance(self.data[section][name], dict)
+                for k, p in enumerate(ends[:2]):
+                    self.point((section, name) + (("ab"[k],) if form else (k,)), p, points)
                 if section == "distances" and name in sp.links:
                     raise self.error((section, name), f'the name "{name}" is already a link '
                                                       f"in [links]")
+                if section == "distances" and ends[2] is not None and \
+                        ends[2] in set(sp.links) | set(sp.distances):
+                    raise self.error((section, name, "angle"),
+                                     f'the name "{ends[2]}" is already a link or a distance')
                 mech = self.guarded((section, name), lambda: getattr(mech, add)(name, *ends))
         bodies = list(mech.bodies)
 
@@ -531,6 +598,7 @@ class Builder:
         if sp.tables is not None:
             mech = self.tables(mech, points, bodies)
             mech = self.extra_columns(mech)
+        mech = self.motions(mech)
         if self._uses_gravity:
             g = self.number(("model", "gravity"))
             mech = self.guarded(("model", "gravity"), lambda: mech.with_gravity(g))
@@ -627,6 +695,9 @@ class Builder:
             out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
         if t.symbols is not None:
             out["symbols"] = dict(t.symbols)
+        for key in ("angles", "analogs"):
+            if getattr(t, key) is not None:
+                out[key] = getattr(t, key)
         return mech.with_tables(**out)
 
     def extra_columns(self, mech):
@@ -845,6 +916,28 @@ class Builder:
         if paths:
             self.memory(mech, paths[::-1], 1.0, counts)
 
+    def unused_parameters(self, mech):
+        """Warnings (``file:line: params.<name>: …``) for the parameters that nothing
+        uses: no group, frame point, load, cylinder, machine value, range, motion,
+        ``[[solve]]`` condition (unknown, bracket, target) or table formula."""
+        from ..columns import formulas_of
+        used = set(self.param_use)
+        for s in self.spec.solve:
+            used.add(s.unknown)
+            used.update(v for v in s.bracket if isinstance(v, str))
+        for f in formulas_of(mech):
+            used.update(f.names)
+        out = []
+        for name in self.params_raw:
+            if name not in used:
+                path = ("params", name)
+                line = self.line(path)
+                file = getattr(line, "file", None) or self.file
+                out.append(f"{file}:{int(line)}: {key_path(path)}: the parameter {name!r} is "
+                           f"not used by any group, frame point, load, condition or table "
+                           f"(a misspelt name?)")
+        return out
+
     def build(self):
         self.validate()
         self.uses()
@@ -852,6 +945,7 @@ class Builder:
         mech = self.mechanism()
         from ._dynamics import build_dynamics
         self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
+        self.warnings = self.unused_parameters(mech)
         self.precheck_memory(mech)
         conds_mech, solved = self.solve(mech)
         grid, axes = self.positions(conds_mech)

@@ -13,7 +13,8 @@ merged over it:
   when it gives a ``type`` (a complete ``[[groups]]`` or ``[[loads]]`` entry) —
   and any other entry is appended after the base's;
 * any other value, arrays of values included (``notes``, ``coordinates``, a frame
-  point's ``[x, y]``), replaces the base's.
+  point's ``[x, y]``), replaces the base's; so does a coordinate's ``[range]`` entry
+  and a ``[motion]`` speed table (one value in one of several forms).
 
 Every key keeps its location: the merged line index maps each key path to the
 line of the file the key came from, as a :class:`Line` (an ``int`` that knows its
@@ -81,9 +82,17 @@ def _is_table_array(v) -> bool:
     return isinstance(v, list) and bool(v) and all(isinstance(x, dict) for x in v)
 
 
+def _whole(mpath) -> bool:
+    """Inline tables that are one value in one of several forms, replaced whole: a
+    coordinate's ``[range]`` (values, or from/to/count, or from/to/step) and the
+    ω(t) table of a ``[motion]`` speed."""
+    return ((len(mpath) == 2 and mpath[0] == "range")
+            or (len(mpath) == 3 and mpath[0] == "motion" and mpath[2] == "speed"))
+
+
 def _merge(base, bsrc, bpath, child, csrc, cpath, mpath, out):
     """Merge ``child`` over ``base``; record locations under ``mpath``."""
-    if isinstance(base, dict) and isinstance(child, dict):
+    if isinstance(base, dict) and isinstance(child, dict) and not _whole(mpath):
         merged = {}
         for k, bv in base.items():
             if k in child:

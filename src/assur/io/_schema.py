@@ -85,6 +85,60 @@ def _terms(v):
     return _value(v)
 
 
+_FRAME_KEYS = ("origin", "length", "angle")
+
+
+def _frame_point(v):
+    """A frame point: ``[x, y]``, or ``{ origin = "O1", length = …, angle = … }``."""
+    if isinstance(v, dict):
+        unknown = [k for k in v if k not in _FRAME_KEYS]
+        if unknown:
+            raise PydanticCustomError(
+                "frame", 'unknown key "{k}"{hint} in a polar frame point (allowed: origin, '
+                         'length, angle)', {"k": unknown[0], "hint": did_you_mean(
+                             unknown[0], _FRAME_KEYS)})
+        missing = [k for k in _FRAME_KEYS if k not in v]
+        if missing:
+            raise PydanticCustomError("frame", "a polar frame point needs origin, length and "
+                                               "angle; missing {m}", {"m": ", ".join(missing)})
+        if not isinstance(v["origin"], str) or not v["origin"].strip():
+            raise PydanticCustomError("frame", "origin: expected the name of a frame point")
+        return {"origin": v["origin"], "length": _value(v["length"]),
+                "angle": _value(v["angle"])}
+    if isinstance(v, list) and len(v) == 2:
+        return (_value(v[0]), _value(v[1]))
+    raise PydanticCustomError(
+        "frame", 'expected [x, y] (two lengths) or { origin = "<frame point>", length = …, '
+                 'angle = … }')
+
+
+def _distance(v):
+    """A named distance: ``[a, b]``, or ``{ a = …, b = …, angle = "<name>" }`` naming
+    its direction a → b too."""
+    if isinstance(v, dict):
+        unknown = [k for k in v if k not in ("a", "b", "angle")]
+        if unknown:
+            raise PydanticCustomError("distance", 'unknown key "{k}" in a distance (allowed: '
+                                                  "a, b, angle)", {"k": unknown[0]})
+        if not all(isinstance(v.get(k), str) and v[k].strip() for k in ("a", "b")):
+            raise PydanticCustomError("distance", "a distance needs a and b, the names of two "
+                                                  "points")
+        ang = v.get("angle")
+        if ang is not None and not (isinstance(ang, str) and ang.strip()):
+            raise PydanticCustomError("distance", "angle: expected a name for the direction "
+                                                  "a → b")
+        return (v["a"], v["b"], ang)
+    if (isinstance(v, list) and len(v) == 2 and all(isinstance(x, str) and x.strip()
+                                                   for x in v)):
+        return (v[0], v[1], None)
+    raise PydanticCustomError("distance", 'expected ["a", "b"] (two points) or '
+                                          '{ a = "…", b = "…", angle = "<name>" }')
+
+
+#: a frame point: [x, y] or a polar table (origin, length, angle)
+FramePoint = Annotated[Any, AfterValidator(_frame_point)]
+
+
 #: a machine position or weight: a value, a parameter name with an optional leading
 #: "-", or a list of such terms that are added (e.g. ["-a", "-L"] for −(a + L))
 Terms = Annotated[Any, AfterValidator(_terms)]
@@ -131,6 +185,31 @@ class RangeSpec(_Table):
             raise PydanticCustomError("range", f"expected one of: {forms}; missing "
                                                + ", ".join(missing))
         return self
+
+
+def _speed(v):
+    """A crank speed: a value (``"300 rpm"``), or a table ``{ t = [...], omega = [...] }``."""
+    if isinstance(v, dict):
+        unknown = [k for k in v if k not in ("t", "omega")]
+        if unknown:
+            raise PydanticCustomError("speed", 'unknown key "{k}" in a speed table ω(t) '
+                                               "(allowed: t, omega)", {"k": unknown[0]})
+        for k in ("t", "omega"):
+            if not isinstance(v.get(k), list) or len(v[k]) < 2:
+                raise PydanticCustomError("speed", "a speed table needs t = [...] and "
+                                                   "omega = [...], at least two values each")
+        if len(v["t"]) != len(v["omega"]):
+            raise PydanticCustomError("speed", "t and omega need as many values ({a} and {b})",
+                                      {"a": len(v["t"]), "b": len(v["omega"])})
+        return {"t": [_value(x) for x in v["t"]], "omega": [_value(x) for x in v["omega"]]}
+    return _value(v)
+
+
+class MotionSpec(_Table):
+    """``[motion]`` of one crank coordinate: direction and speed (:mod:`assur.motion`)."""
+    direction: typing.Literal["ccw", "cw"] = "ccw"
+    speed: Annotated[Any, AfterValidator(_speed)] = None
+    start: Value = None
 
 
 # ---- [[groups]] ---------------------------------------------------------------------
@@ -358,6 +437,11 @@ class TablesSpec(_Table):
     symbols: dict[str, Name] = None
     formulas: list[FormulaSpec] = None
     signs: list[SignSpec] = None
+    #: angle columns: "continuous" along the positions, or "wrapped" to [0°, 360°)
+    angles: typing.Literal["continuous", "wrapped"] = None
+    #: analogs of a crank angle: with respect to the "coordinate", or along the direction
+    #: of "rotation" of its [motion] (dφ/dφ1 · sign φ1')
+    analogs: typing.Literal["coordinate", "rotation"] = None
 
 
 class SolveSpec(_Table):
@@ -372,10 +456,10 @@ class FileSpec(_Table):
     model: ModelSection
     params: dict[str, Value] = {}
     range: dict[str, RangeSpec]
-    frame: Annotated[dict[str, tuple[Value, Value]], Field(min_length=1)]
+    frame: Annotated[dict[str, FramePoint], Field(min_length=1)]
     groups: list[dict[str, Any]] = []
     links: dict[str, tuple[Name, Name]] = {}
-    distances: dict[str, tuple[Name, Name]] = {}
+    distances: dict[str, Annotated[Any, AfterValidator(_distance)]] = {}
     loads: list[dict[str, Any]] = []
     cylinders: list[CylinderSpec] = []
     machine: Optional[MachineSpec] = None
@@ -383,6 +467,7 @@ class FileSpec(_Table):
     solve: list[SolveSpec] = []
     #: [dynamics]: checked by :mod:`assur.io._dynamics` (flywheel, counter-masses)
     dynamics: Optional[dict[str, Any]] = None
+    motion: dict[str, MotionSpec] = {}
 
 
 # ---- errors ---------------------------------------------------------------------------

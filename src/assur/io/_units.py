@@ -54,6 +54,11 @@ KINDS = {k.name: k for k in (LENGTH, ANGLE, FORCE, PRESSURE, MASS, MOMENT, STIFF
 #: the acceleration of gravity ([model] gravity)
 ACCELERATION = Kind("acceleration", "an acceleration", "m/s**2", '"9.81 m/s^2"')
 KINDS[ACCELERATION.name] = ACCELERATION
+#: the speed of a crank and the times of a given ω(t) ([motion])
+ANGULAR_VELOCITY = Kind("angular velocity", "an angular velocity", "rad/s", '"300 rpm"')
+TIME = Kind("time", "a time", "s", '"0.5 s"')
+KINDS[ANGULAR_VELOCITY.name] = ANGULAR_VELOCITY
+KINDS[TIME.name] = TIME
 
 
 @lru_cache(maxsize=1)

@@ -195,7 +195,7 @@ def _limits(ax, geo):
 def _qtext(geo, v, i, lang):
     parts = []
     for c, q in geo.q.items():
-        val = np.degrees(q[i]) if v.is_angle(c) else q[i]
+        val = float(v.degrees(np.degrees(q[i]))) if v.is_angle(c) else q[i]
         parts.append(f"{c} = {val:.4g} {unit(v.coord_unit(c), lang)}")
     return ", ".join(parts)
 
@@ -249,8 +249,16 @@ def _animation_geometry(v, frames):
     if frames and v.k == 1 and len(v.kin.shape) == 1:
         q = v.kin.q()
         from ..errors import AssemblyError
+        c = v.coords[0]
+        lo, hi = q[0], q[-1]
+        if v.is_angle(c) and float(np.ptp(q)) > np.pi:
+            # a crank over more than half a turn: animate one whole turn from the first
+            # position, in its direction of rotation (else the way the positions go)
+            mo = v.mech.motion(c)
+            sense = mo.direction if mo is not None else (1 if q[-1] >= q[0] else -1)
+            hi = lo + sense * 2.0 * np.pi
         try:
-            kin = v.mech.solve(np.linspace(q[0], q[-1], int(frames)))
+            kin = v.mech.solve(np.linspace(lo, hi, int(frames)))
             return _Geometry(v, kin)
         except AssemblyError:
             # the finer grid crosses a position the user's own range does not: animate the

@@ -9,6 +9,7 @@ English (``lang``):
 name            what                                                   seed 003
 ==============  =====================================================  ===========
 ``angles``      link angles φ [°]                                      tables 2.1
+``distances``   named distances [m] (seed 002: l7, l9)                 —
 ``analogs``     angular-velocity analogs dφ/dq [rad/m]                 fig. 3.1
 ``transmission`` transmission numbers I = dY/dq [-]                    fig. 3.2
 ``capacity``    lift capacity G at the transmission points [kN], with  fig. 4.1
@@ -22,6 +23,14 @@ name            what                                                   seed 003
 
 :func:`figures` makes those whose data exist; :func:`save` writes PNG or SVG.
 For k > 1 coordinates the abscissa is the position number.
+
+Over a crank angle the abscissa is the angle in the tables' convention
+(continuous, or wrapped to [0°, 360°)); the positions are drawn sorted by it, so
+that a list such as seed 002's (14.679°, then −30° steps, then 188.229°) is one
+curve, and a curve of angles is broken where it wraps from 360° to 0° instead of
+drawing a line across the plot. A curve equal to one drawn before it (seed 002:
+φ4 = φ3, the two arms of one lever) is drawn dashed with other markers and
+labelled ``φ4 = φ3``, so both stay visible.
 """
 
 from __future__ import annotations
@@ -36,7 +45,8 @@ from matplotlib.figure import Figure
 from .labels import check_lang, t, unit
 from .tables import _View
 
-__all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "analogs", "transmission",
+__all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
+           "transmission",
            "capacity", "force", "pressure", "reactions", "hodograph", "stability"]
 
 _SPECIAL = set("_^$\\{}%#&~")
@@ -61,6 +71,39 @@ def new_figure(width=6.4, height=4.0) -> Figure:
     return fig
 
 
+#: line styles and markers of a curve that coincides with one drawn before it
+_SAME_STYLES = (dict(ls="--", marker="x", markersize=7, lw=1.6),
+                dict(ls=":", marker="+", markersize=9, lw=1.6),
+                dict(ls="-.", marker="D", markersize=5, markerfacecolor="none", lw=1.4))
+
+
+def plot_order(x):
+    """The positions sorted by the abscissa ``x`` (stable: equal values keep their
+    order), shape (n,)."""
+    return np.argsort(np.asarray(x), kind="stable")
+
+
+def wrap_breaks(y, period=360.0):
+    """Indices i where a wrapped angle jumps between the sorted positions i and i + 1
+    by more than half a ``period`` (a wrap from 360° to 0°, not a motion)."""
+    y = np.asarray(y, dtype=float)
+    return np.flatnonzero(np.abs(np.diff(y)) > 0.5 * period)
+
+
+def broken(x, y, breaks):
+    """``(x, y)`` as masked arrays with a masked point after each index of ``breaks``:
+    matplotlib draws no line across a masked point."""
+    if len(breaks) == 0:
+        return x, y
+    at = np.asarray(breaks) + 1
+    xs = np.ma.masked_array(np.insert(np.asarray(x, dtype=float), at, 0.0))
+    ys = np.ma.masked_array(np.insert(np.asarray(y, dtype=float), at, 0.0))
+    mask = np.zeros(xs.shape, dtype=bool)
+    mask[at + np.arange(len(at))] = True
+    xs.mask, ys.mask = mask, mask
+    return xs, ys
+
+
 class _Plot:
     """Shared abscissa and labels for one design."""
 
@@ -77,6 +120,9 @@ class _Plot:
             self.x = np.arange(v.n)
             self.xlabel = t("position", lang)
             self.c = v.coords[0]
+        #: the positions in the order drawn (sorted by the abscissa)
+        self.order = plot_order(self.x)
+        self._drawn: dict = {}
 
     def axes(self, title, ylabel, yunit, width=6.4, height=4.0):
         fig = new_figure(width, height)
@@ -87,10 +133,25 @@ class _Plot:
         ax.grid(True, alpha=0.35)
         return fig, ax
 
-    def line(self, ax, y, label, **kw):
+    def line(self, ax, y, label, angle=False, **kw):
+        """Draw ``y`` over the positions sorted by the abscissa; an ``angle`` curve [°]
+        in the wrapped convention is broken where it wraps; a curve equal to one
+        drawn before on these axes gets another style and the label ``this = that``."""
+        y = np.asarray(y, dtype=float)
+        drawn = self._drawn.setdefault(id(ax), [])
+        same = [lab for yy, lab in drawn if yy.shape == y.shape and np.allclose(
+            yy, y, rtol=0.0, atol=1e-9 * max(float(np.max(np.abs(y))) if y.size else 0.0, 1.0))]
+        drawn.append((y, label))
+        if same:
+            kw.update(_SAME_STYLES[(len(same) - 1) % len(_SAME_STYLES)])
+            label = f"{label} = {same[0]}"
+            kw.setdefault("zorder", 3)
         kw.setdefault("marker", "o")
         kw.setdefault("markersize", 3)
-        ax.plot(self.x, y, label=label, **kw)
+        xs, ys = self.x[self.order], y[self.order]
+        breaks = wrap_breaks(ys) if angle and self.v.angles == "wrapped" else []
+        xs, ys = broken(xs, ys, breaks)
+        ax.plot(xs, ys, label=label, **kw)
 
     @staticmethod
     def legend(fig, ax, n):
@@ -106,8 +167,28 @@ def angles(analysis, lang="en", design=None):
     kin = p.v.kin
     fig, ax = p.axes(t("f_angles", lang), t("y_angle", lang), "deg")
     for link in kin.links:
-        p.line(ax, p.v.pick(kin.phi(link, degrees=True)), _math(_PHI, link))
+        p.line(ax, p.v.phi_values(link), _math(_PHI, link), angle=True)
     p.legend(fig, ax, len(kin.links))
+    return fig
+
+
+#: titles of the figures kept here (the lead may move them into :mod:`.labels`)
+_TITLES = {"f_distances": {"en": "Named distances", "ru": "Расстояния между точками"},
+           "y_distance": {"en": "distance", "ru": "расстояние"},
+           "along": {"en": "along the rotation", "ru": "по вращению"}}
+
+
+def distances(analysis, lang="en", design=None):
+    """Named distances [m] against the coordinate (seed 002: the helper vectors l7 =
+    |C–O6|, l9 = |A–O3|); None without named distances."""
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.distances:
+        return None
+    fig, ax = p.axes(_TITLES["f_distances"][p.lang], _TITLES["y_distance"][p.lang], "m")
+    for dist in v.mech.distances:
+        p.line(ax, v.pick(v.kin.length(dist.name)), dist.name)
+    p.legend(fig, ax, len(v.mech.distances))
     return fig
 
 
@@ -115,12 +196,15 @@ def analogs(analysis, lang="en", design=None):
     """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S))."""
     p = _Plot(analysis, lang, design)
     kin, v = p.v.kin, p.v
-    fig, ax = p.axes(t("f_analogs", lang), t("y_analog", lang, p.c), v.analog_unit(p.c))
+    ylabel = t("y_analog", lang, p.c)
+    if v.rate_sign(p.c) != 1:  # the seeds' convention: along the crank's rotation
+        ylabel += " · sign " + p.c + "' (" + _TITLES["along"][p.lang] + ")"
+    fig, ax = p.axes(t("f_analogs", lang), ylabel, v.analog_unit(p.c))
     n = 0
     for sfx, w, c in v.wrts():
-        for link in kin.links:
+        for link in kin.links:  # along the crank's rotation where the tables say so
             lab = _math(_PHI, link, prime=True) + (f" ({c})" if sfx else "")
-            p.line(ax, v.pick(kin.dphi(link, w)), lab)
+            p.line(ax, v.rate_sign(c) * v.pick(kin.dphi(link, w)), lab)
             n += 1
     p.legend(fig, ax, n)
     return fig
@@ -139,7 +223,7 @@ def transmission(analysis, lang="en", design=None):
     n = 0
     for sfx, w, c in v.wrts():
         for pt in pts:
-            p.line(ax, v.pick(kin.transmission(pt, wrt=w)),
+            p.line(ax, v.rate_sign(c) * v.pick(kin.transmission(pt, wrt=w)),
                    _math("I", pt) + (f" ({c})" if sfx else ""))
             n += 1
     p.legend(fig, ax, n)
@@ -312,7 +396,7 @@ def stability(analysis, lang="en", design=None):
 
 
 #: name -> function, in the report's order
-FIGURES = {"angles": angles, "analogs": analogs, "transmission": transmission,
+FIGURES = {"angles": angles, "distances": distances, "analogs": analogs, "transmission": transmission,
            "capacity": capacity, "force": force, "pressure": pressure, "reactions": reactions,
            "hodograph": hodograph, "stability": stability}
 

@@ -19,6 +19,9 @@ symbol              unit      meaning
                               are printed in degrees
 ``phi<l>``          deg       angle of link l from +x, CCW (seed ``φ3(S)/deg``)
 ``X<p>``, ``Y<p>``  m         point coordinates (seed ``X23(S)``)
+``<d>``             m         a named distance (seed 002 ``l7``, ``l9``); its
+                              angle, when named, is a link (``phi7``)
+``d<d>``            m/rad, \\-  its analog
 ``closure``         m         largest closure residual of all groups (assur's
                               check; replaces the seed's ``X23s``… columns)
 ``U<i><j>``         \\-        transfer ratio φ_i'/φ_j' (seed ``U43``)
@@ -46,6 +49,13 @@ symbol              unit      meaning
 ``I<p>_ic``         \\-        φ'·(X<p> − Xp): I<p> through the instantaneous
                               centre (seed ``Imp``, ``lsp``)
 ==================  ========  ====================================================
+
+Conventions (``tables["angles"]``, ``tables["analogs"]`` of the model, or the
+arguments of :func:`seed_tables`): angle columns are continuous along the positions
+(default) or wrapped to [0°, 360°) as the seeds print them; analogs with respect to
+a crank angle are per the coordinate (default) or along the crank's direction of
+rotation, d/dφ1 · sign φ1' (its :class:`assur.motion.Motion`; the seeds turn
+clockwise and write φ1' = −1). Each table notes the convention in force.
 
 With k > 1 coordinates every analog symbol gets the suffix ``_<c>`` (``dphi3_S1``);
 with several cylinders ``G<p>`` and ``dG<p>`` get it too. Analogs with respect to
@@ -96,6 +106,38 @@ def _same(text):
     """{lang: text} of a model's own text (a :class:`assur.texts.Text` carries its
     translations; a plain string is the same in every language)."""
     return {lang: localize(text, lang) for lang in LANGS}
+
+
+#: labels of the crank-angle conventions and named distances (kept here; the lead may
+#: move them into :mod:`assur.report.labels`)
+_TEXT = {
+    "c_dist": {"en": "distance {0} = |{1}–{2}|", "ru": "расстояние {0} = |{1}–{2}|"},
+    "c_ddist": {"en": "analog d{0}/d{1} of the distance {0}",
+                "ru": "аналог d{0}/d{1} расстояния {0}"},
+    "wrapped": {"en": "angles wrapped to [0°, 360°) as the seeds print them",
+                "ru": "углы приведены к [0°, 360°), как в исходных расчётах"},
+    "rotation": {"en": "analogs along the direction of rotation of {0} ({1}): dφ/d{0} · "
+                       "sign {0}' with {0}' = {2:+d}, as the seeds write them (seed 002: "
+                       "φ1' = −1)",
+                 "ru": "аналоги по направлению вращения {0} ({1}): dφ/d{0} · sign {0}', "
+                       "{0}' = {2:+d}, как в исходных расчётах (пример 002: φ1' = −1)"},
+}
+
+
+def _mine(key, *args):
+    return {lang: txt.format(*args) for lang, txt in _TEXT[key].items()}
+
+
+#: how angle columns are shown (``tables["angles"]``)
+ANGLE_CONVENTIONS = ("continuous", "wrapped")
+#: how analogs with respect to a crank angle are shown (``tables["analogs"]``)
+ANALOG_CONVENTIONS = ("coordinate", "rotation")
+
+
+def wrap_degrees(a):
+    """Angles [°] wrapped to [0°, 360°) (the seeds' printing), any shape."""
+    w = np.mod(np.asarray(a, dtype=float), 360.0)
+    return np.where(w >= 360.0, w - 360.0, w)  # np.mod(-1e-17, 360) rounds to 360
 
 
 @dataclass(frozen=True)
@@ -189,10 +231,21 @@ class Table:
 class _View:
     """One design of an Analysis as 1-D arrays over the positions."""
 
-    def __init__(self, analysis, design=None):
+    def __init__(self, analysis, design=None, angles=None, analogs=None):
         self.a = analysis
         self.kin = analysis.kinematics
         self.mech = analysis.mechanism
+        tabs = self.mech.tables
+        #: angle columns: "continuous" (along the positions) or "wrapped" to [0°, 360°)
+        self.angles = angles or tabs.get("angles", "continuous")
+        #: analogs of a crank angle: per its "coordinate", or along its "rotation"
+        self.analogs = analogs or tabs.get("analogs", "coordinate")
+        if self.angles not in ANGLE_CONVENTIONS:
+            raise ValueError(f"angles must be one of: {list(ANGLE_CONVENTIONS)}; got "
+                             f"{self.angles!r}")
+        if self.analogs not in ANALOG_CONVENTIONS:
+            raise ValueError(f"analogs must be one of: {list(ANALOG_CONVENTIONS)}; got "
+                             f"{self.analogs!r}")
         shape = self.kin.shape
         if len(shape) == 2:
             if design is None:
@@ -242,9 +295,39 @@ class _View:
     def coord_unit(self, c):
         return "deg" if self.is_angle(c) else "m"
 
+    def degrees(self, a):
+        """Angles [°] in the view's convention (continuous, or wrapped to [0°, 360°))."""
+        return wrap_degrees(a) if self.angles == "wrapped" else np.asarray(a)
+
     def coord_values(self, c):
         v = self.pick(self.kin.q(c))
-        return np.degrees(v) if self.is_angle(c) else v
+        return self.degrees(np.degrees(v)) if self.is_angle(c) else v
+
+    def phi_values(self, link):
+        """φ of a link [°] over the positions, in the view's convention."""
+        return self.degrees(self.pick(self.kin.phi(link, degrees=True)))
+
+    def rate_sign(self, c):
+        """+1, or the sign of the crank's rotation (−1: clockwise) when analogs are shown
+        along the direction of rotation (``analogs = "rotation"``) and ``c`` is a crank
+        angle with a :class:`assur.motion.Motion`."""
+        if self.analogs != "rotation" or not self.is_angle(c):
+            return 1
+        mo = self.mech.motion(c)
+        return mo.direction if mo is not None else 1
+
+    def convention_notes(self, analogs=False):
+        """Notes of the conventions in force (wrapped angles; analogs along a rotation)."""
+        notes = []
+        if self.angles == "wrapped":
+            notes.append(_mine("wrapped"))
+        if analogs:
+            for c in self.coords:
+                if self.analogs == "rotation" and self.is_angle(c):
+                    mo = self.mech.motion(c)
+                    d = mo.direction if mo is not None else 1
+                    notes.append(_mine("rotation", c, "cw" if d < 0 else "ccw", d))
+        return notes
 
     def coord_label(self, c):
         key = {"angle": "c_crank", "slider": "c_slider", "cylinder": "c_cyl_len"}.get(
@@ -304,9 +387,11 @@ def _singular_note(view, what, values):
 def _table_2_1(v):
     cols = v.coord_columns()
     for link in v.kin.links:
-        cols.append(Column(f"phi{link}", "deg", v.pick(v.kin.phi(link, degrees=True)),
-                           _both("c_phi", link)))
-    return Table("2.1", _both("t2.1"), tuple(cols))
+        cols.append(Column(f"phi{link}", "deg", v.phi_values(link), _both("c_phi", link)))
+    for dist in v.mech.distances:  # named distances (their angles are links above)
+        cols.append(Column(dist.name, "m", v.pick(v.kin.length(dist.name)),
+                           _mine("c_dist", dist.name, dist.a, dist.b)))
+    return Table("2.1", _both("t2.1"), tuple(cols), tuple(v.convention_notes()))
 
 
 def _table_2_2(v):
@@ -331,13 +416,20 @@ def _table_3_1(v):
             if note:
                 notes.append(note)
     for sfx, w, c in v.wrts():
+        sign = v.rate_sign(c)
         for p in tab.get("transmissions", ()):
             cols.append(Column(f"I{p}{sfx}", v.transmission_unit(c),
-                               v.pick(kin.transmission(p, wrt=w)), _both("c_I", p, c)))
+                               sign * v.pick(kin.transmission(p, wrt=w)), _both("c_I", p, c)))
     for sfx, w, c in v.wrts():
+        sign = v.rate_sign(c)
         for link in kin.links:
-            cols.append(Column(f"dphi{link}{sfx}", v.analog_unit(c), v.pick(kin.dphi(link, w)),
-                               _both("c_dphi", link, c)))
+            cols.append(Column(f"dphi{link}{sfx}", v.analog_unit(c),
+                               sign * v.pick(kin.dphi(link, w)), _both("c_dphi", link, c)))
+        for dist in v.mech.distances:
+            cols.append(Column(f"d{dist.name}{sfx}", "m/rad" if v.is_angle(c) else "-",
+                               sign * v.pick(kin.dlength(dist.name, w)),
+                               _mine("c_ddist", dist.name, c)))
+    notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
 
 
@@ -496,7 +588,7 @@ def _table_ic(v):
 _BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_6_1, _table_ic)
 
 
-def seed_tables(analysis, lang="en", design=None) -> list:
+def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> list:
     """The worksheet's tables of an analysis, as data.
 
     Parameters
@@ -507,6 +599,15 @@ def seed_tables(analysis, lang="en", design=None) -> list:
         Checked only; every table carries both languages (``Table.title(lang)``).
     design : int, optional
         Which design of a batch to tabulate (required for a batch).
+    angles : {"continuous", "wrapped"}, optional
+        Angle columns (link angles, crank angles) continuous along the positions, or
+        wrapped to [0°, 360°) as the seeds print them (default: the model's
+        ``tables["angles"]``, else continuous).
+    analogs : {"coordinate", "rotation"}, optional
+        Analogs with respect to a crank angle as they are (d/dφ1), or along the
+        crank's direction of rotation (d/dφ1 · sign φ1', the seeds' convention:
+        seed 002 writes φ1' = −1 for its clockwise crank); default: the model's
+        ``tables["analogs"]``, else per coordinate.
 
     Returns
     -------
@@ -524,7 +625,7 @@ def seed_tables(analysis, lang="en", design=None) -> list:
     4.713
     """
     check_lang(lang)
-    v = _View(analysis, design)
+    v = _View(analysis, design, angles=angles, analogs=analogs)
     tables = [t for t in (b(v) for b in _BUILDERS) if t is not None]
     tables = _with_formulas(v, tables)
     # the model may name columns as its seed does (``tables.symbols``: F_S → Fgc …)

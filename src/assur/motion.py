@@ -1,0 +1,238 @@
+"""How a crank turns: direction of rotation and speed, as rates over positions.
+
+A :class:`Motion` belongs to one generalized coordinate (a crank angle φ1). It
+gives, for positions ``q`` [rad], the coordinate's rate ``qdot`` = φ1' [rad/s] and
+acceleration ``qddot`` = φ1'' [rad/s²] — the plain arrays the real-time quantities
+take (``v = J·q̇``, ``a = J·q̈ + q̇ᵀ·H·q̇``, DESIGN.md §2), the inertia loads and the
+reduced moment included.
+
+Sign convention (BRIEF.md: angles from +x, counter-clockwise positive)::
+
+        ccw (direction = +1): φ1 grows,   q̇ = +|ω|
+         ↺
+        O1 ●——— A
+         ↻
+        cw  (direction = −1): φ1 falls,   q̇ = −|ω|
+
+The seeds turn their cranks clockwise (seed 002 §2.20: "звено 1 вращается по
+часовой стрелке, φ1' = −1"). The *travel* of the crank is the angle turned along
+the direction of rotation, ``s = direction·(q − q_start) ≥ 0``; an analog "in the
+direction of rotation" (the seed's convention) is ``dφ/ds = direction·dφ/dφ1``.
+
+Speed
+-----
+* constant: ``|ω|`` [rad/s] (a file writes ``"300 rpm"`` or ``"31.4 rad/s"``):
+  ``qdot = direction·|ω|``, ``qddot = 0``, and the time of a position is
+  ``t = s/|ω|``;
+* a given ω(t): samples ``t`` [s] (increasing) and ``omega`` = |ω(t)| [rad/s]
+  (positive), linear between the samples. The crank then turns by
+  ``s(t) = ∫ω dt`` from ``q_start`` at ``t[0]`` (default: the first position
+  asked for), exactly (ω is linear on each interval, so s is quadratic there).
+  Since ω > 0, s(t) increases and is inverted position by position: on the
+  interval i with ω_i = ω(t_i), slope a_i = (ω_{i+1} − ω_i)/(t_{i+1} − t_i) and
+  travel S_i at t_i,
+
+  .. math::  \\omega(s) = \\sqrt{\\omega_i^2 + 2 a_i (s - S_i)}, \\qquad
+             t(s) = t_i + \\frac{2 (s - S_i)}{\\omega_i + \\omega(s)}
+
+  and ``qdot = direction·ω(s)``, ``qddot = direction·a_i`` (at a sample, the slope of
+  the interval that starts there; at the last sample, of the last interval).
+  Positions outside the travel the table covers are refused (ModelError).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import ModelError
+
+__all__ = ["Motion", "DIRECTIONS"]
+
+#: the words of a direction of rotation and its sign
+DIRECTIONS = {"ccw": 1, "cw": -1}
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Direction of rotation and speed of one crank-angle coordinate.
+
+    Parameters
+    ----------
+    coordinate : str
+        The generalized coordinate (a crank angle) it drives.
+    direction : {+1, -1} or {"ccw", "cw"}
+        +1 (``"ccw"``, the default): counter-clockwise, the angle grows; −1
+        (``"cw"``): clockwise, as in the seeds.
+    speed : float, optional
+        Constant |ω| [rad/s] (> 0).
+    t : sequence of float, optional
+        Times of a given ω(t) [s], strictly increasing, at least two.
+    omega : sequence of float, optional
+        |ω| at the times ``t`` [rad/s], each > 0.
+    start : float, optional
+        The coordinate at ``t[0]`` (or at t = 0 for a constant speed) [rad];
+        default: the first position passed to :meth:`rates`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> m = Motion("j1", "cw", speed=300 * 2 * np.pi / 60)   # 300 rpm clockwise
+    >>> qdot, qddot = m.rates(np.radians([14.679, -15.321]))
+    >>> [round(float(v), 4) for v in qdot], [float(v) for v in qddot]
+    ([-31.4159, -31.4159], [0.0, 0.0])
+    """
+
+    coordinate: str
+    direction: int = 1
+    speed: float | None = None
+    t: tuple = ()
+    omega: tuple = ()
+    start: float | None = None
+
+    def __post_init__(self):
+        d = self.direction
+        if isinstance(d, str):
+            if d not in DIRECTIONS:
+                raise ModelError(f"motion of {self.coordinate!r}: direction must be one of: "
+                                 f"{list(DIRECTIONS)}; got {d!r}")
+            object.__setattr__(self, "direction", DIRECTIONS[d])
+        elif d not in (1, -1) or isinstance(d, bool):
+            raise ModelError(f"motion of {self.coordinate!r}: direction must be +1 (ccw) or "
+                             f"-1 (cw), got {d!r}")
+        object.__setattr__(self, "t", tuple(float(x) for x in self.t))
+        object.__setattr__(self, "omega", tuple(float(x) for x in self.omega))
+        where = f"motion of {self.coordinate!r}"
+        if self.speed is not None and (self.t or self.omega):
+            raise ModelError(f"{where}: give either a constant speed or a table t, omega, not "
+                             f"both")
+        if self.speed is not None:
+            s = float(self.speed)
+            if not (math.isfinite(s) and s > 0):
+                raise ModelError(f"{where}: the speed |ω| must be a positive number [rad/s], "
+                                 f"got {self.speed!r}")
+            object.__setattr__(self, "speed", s)
+        if self.t or self.omega:
+            t, w = np.array(self.t), np.array(self.omega)
+            if t.size != w.size or t.size < 2:
+                raise ModelError(f"{where}: the table needs as many t as omega values, at "
+                                 f"least two; got {t.size} and {w.size}")
+            if not (np.all(np.isfinite(t)) and np.all(np.isfinite(w))):
+                raise ModelError(f"{where}: t and omega must be finite numbers")
+            if np.any(np.diff(t) <= 0):
+                k = int(np.flatnonzero(np.diff(t) <= 0)[0])
+                raise ModelError(f"{where}: t must increase strictly; t[{k}] = {t[k]:.6g} s, "
+                                 f"t[{k + 1}] = {t[k + 1]:.6g} s")
+            if np.any(w <= 0):
+                k = int(np.flatnonzero(w <= 0)[0])
+                raise ModelError(f"{where}: omega is the speed |ω| along the direction of "
+                                 f"rotation and must be > 0 (the crank must keep turning); "
+                                 f"omega[{k}] = {w[k]:.6g} rad/s")
+        if self.start is not None and not math.isfinite(float(self.start)):
+            raise ModelError(f"{where}: start must be a finite angle, got {self.start!r}")
+
+    # ---- description -------------------------------------------------------------
+    @property
+    def direction_name(self) -> str:
+        """``"ccw"`` or ``"cw"``."""
+        return "ccw" if self.direction > 0 else "cw"
+
+    @property
+    def has_speed(self) -> bool:
+        """True if a speed (constant or ω(t)) is given, not only a direction."""
+        return self.speed is not None or bool(self.t)
+
+    # ---- rates -------------------------------------------------------------------
+    def travel(self, q) -> np.ndarray:
+        """The angle turned along the direction of rotation from ``start`` (default:
+        the first of ``q``), ``s = direction·(q − q_start)`` [rad], shape of ``q``."""
+        q = np.asarray(q, dtype=float)
+        q0 = float(self.start) if self.start is not None else float(q.reshape(-1)[0])
+        return self.direction * (q - q0)
+
+    def continuous(self, q) -> np.ndarray:
+        """Positions ``q`` [rad] (e.g. wrapped to [0, 2π) as a seed prints them) made
+        continuous along the direction of rotation: each position is reached from the
+        one before by turning forward less than a full turn. Seed 002's list
+        14.679°, 344.679°, …, 44.679°, 188.229° turning clockwise becomes 14.679°,
+        −15.321°, …, −315.321°, −531.771° (its 13th position is reached by turning on).
+
+        Parameters
+        ----------
+        q : array_like, shape (n,)
+
+        Returns
+        -------
+        numpy.ndarray, shape (n,)
+        """
+        q = np.asarray(q, dtype=float).reshape(-1)
+        if q.size < 2:
+            return q.copy()
+        step = np.mod(self.direction * np.diff(q), 2.0 * np.pi)   # forward turn, [0, 2π)
+        return np.concatenate([q[:1], q[0] + self.direction * np.cumsum(step)])
+
+    def _table(self):
+        t, w = np.array(self.t), np.array(self.omega)
+        a = np.diff(w) / np.diff(t)                       # slope of ω on each interval
+        S = np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * np.diff(t))])
+        return t, w, a, S
+
+    def _interval(self, s):
+        t, w, a, S = self._table()
+        tol = 1e-12 * max(S[-1], 1.0)  # the ends of the travel, up to rounding
+        out = (s < -tol) | (s > S[-1] + tol)
+        if np.any(out):
+            bad = s[out]
+            raise ModelError(
+                f"motion of {self.coordinate!r}: the table ω(t) turns the crank by "
+                f"{math.degrees(S[-1]):.6g}° from its start (along {self.direction_name}); "
+                f"{bad.size} position(s) lie outside that travel (e.g. "
+                f"{math.degrees(float(bad.reshape(-1)[0])):.6g}° of travel)")
+        s = np.clip(s, 0.0, S[-1])
+        i = np.clip(np.searchsorted(S, s, side="right") - 1, 0, len(a) - 1)
+        return i, s, t, w, a, S
+
+    def rates(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """``(qdot, qddot)`` at the positions ``q`` [rad]: the coordinate's rate
+        [rad/s] and acceleration [rad/s²], each of the shape of ``q``.
+
+        Raises
+        ------
+        ModelError
+            Without a speed, or for positions outside a table's travel.
+        """
+        q = np.asarray(q, dtype=float)
+        if not self.has_speed:
+            raise ModelError(f"motion of {self.coordinate!r} gives only the direction "
+                             f"({self.direction_name}): give a speed (a constant |ω| or a "
+                             f"table ω(t)) for real-time rates")
+        if self.speed is not None:
+            return (np.full(q.shape, self.direction * self.speed), np.zeros(q.shape))
+        i, s, t, w, a, S = self._interval(self.travel(q))
+        om = np.sqrt(w[i] ** 2 + 2.0 * a[i] * (s - S[i]))
+        return self.direction * om, self.direction * a[i]
+
+    def time(self, q) -> np.ndarray:
+        """The time at which the crank reaches each position [s] (from ``start`` at
+        t = 0 for a constant speed, at ``t[0]`` for a table), shape of ``q``."""
+        s = self.travel(q)
+        if self.speed is not None:
+            return s / self.speed
+        if not self.has_speed:
+            self.rates(q)  # raises: no speed
+        i, s, t, w, a, S = self._interval(s)
+        om = np.sqrt(w[i] ** 2 + 2.0 * a[i] * (s - S[i]))
+        return t[i] + 2.0 * (s - S[i]) / (w[i] + om)
+
+    def describe(self) -> str:
+        """``"j1: cw, |ω| = 31.416 rad/s (300 rpm)"`` for reports and summaries."""
+        if self.speed is not None:
+            sp = f", |ω| = {self.speed:.6g} rad/s ({self.speed * 30 / math.pi:.6g} rpm)"
+        elif self.t:
+            sp = (f", |ω(t)| given at {len(self.t)} times, {self.t[0]:.6g}…{self.t[-1]:.6g} s "
+                  f"({min(self.omega):.6g}…{max(self.omega):.6g} rad/s)")
+        else:
+            sp = ""
+        return f"{self.coordinate}: {self.direction_name}{sp}"
