@@ -253,7 +253,7 @@ def test_flywheel_classical_approximation_converges_for_small_delta(example):
     errs = []
     for delta in (0.04, 0.01, 0.0025):
         fw = dyn.flywheel(delta=delta)
-        err = abs(fw.J_merkalov - fw.J_flywheel) / fw.J_flywheel
+        err = abs(fw.J_mertsalov - fw.J_flywheel) / fw.J_flywheel
         assert err < 0.1 * delta
         errs.append(err)
     assert errs[0] > errs[1] > errs[2]

@@ -10,7 +10,7 @@ from . import statics as _statics
 from .inputs import check_finite
 from .hydraulics import CylinderResult
 
-__all__ = ["Analysis", "analyze", "gravity_of"]
+__all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics"]
 
 
 class Analysis:
@@ -26,6 +26,15 @@ class Analysis:
         When the mechanism has machine data (:meth:`Mechanism.with_machine`).
     solved : tuple of SolvedCondition
         The design conditions a model file fixed (shown in reports).
+    dynamics : CrankDynamics or None
+        Kinetostatics with inertia of a crank machine at its ``[motion]`` speed
+        (:func:`add_dynamics`, :mod:`assur.inertia`).
+    flywheel : Flywheel or None
+        The flywheel of ``[dynamics]`` (:mod:`assur.flywheel`).
+    balancing : Balancing or None
+        The counter-masses of ``[dynamics]`` (:mod:`assur.balancing`).
+    notes : list of str
+        What the analysis left out and why (e.g. masses without a crank speed).
     """
 
     def __init__(self, kinematics, statics, cylinders, stability, solved=()):
@@ -35,6 +44,10 @@ class Analysis:
         self.stability = stability
         #: design conditions solved for the model (:class:`assur.synthesis.SolvedCondition`)
         self.solved = tuple(solved)
+        self.dynamics = None
+        self.flywheel = None
+        self.balancing = None
+        self.notes = []
 
     @property
     def mechanism(self):
@@ -89,3 +102,64 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     result = Analysis(kin, st, cyl, stab)
     check_finite(result)  # never return NaN or inf
     return result
+
+
+def add_dynamics(analysis, spec=None):
+    """Add the crank dynamics to ``analysis`` (in place; returns it): the kinetostatics
+    with inertia at the crank's speed, the reduced moment and moment of inertia, the
+    common centre of mass (:func:`assur.inertia.crank_dynamics`), the flywheel and the
+    balancing that ``spec`` asks for (seed 001 lab 3; docs/crank-dynamics.md).
+
+    They apply to a mechanism of one crank-angle coordinate with masses on its moving
+    links; the speed and direction come from its motion (``[motion]``,
+    :meth:`Mechanism.with_motion`). A mechanism without masses is left as it is; one
+    with masses but no speed gets a note saying why its inertia loads are missing.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        One design.
+    spec : DynamicsSpec, optional
+        The ``[dynamics]`` section (:attr:`assur.io.Model.dynamics`): ``delta`` (a
+        target coefficient of speed irregularity δ [-]) or ``flywheel`` (a given J_f
+        [kg·m²]), ``counter_masses`` and ``objective`` for balancing.
+
+    Raises
+    ------
+    ModelError
+        When ``spec`` asks for a flywheel or balancing the mechanism cannot have (no
+        crank coordinate, no masses, no speed, positions that are not one turn).
+    """
+    from .errors import ModelError
+    from .inertia import crank_dynamics, masses_of
+
+    kin = analysis.kinematics
+    mech = kin.mechanism
+    asks = spec is not None and (spec.delta is not None or spec.flywheel is not None
+                                 or bool(spec.counter_masses))
+    crank = kin.k == 1 and mech.coordinate_kind(kin.coordinates[0]) == "angle"
+    if not crank or not masses_of(mech):
+        if asks:
+            raise ModelError(f"{mech.name}: [dynamics] needs one crank-angle coordinate and "
+                             f"masses on the moving links ([[loads]] type = \"mass\")")
+        return analysis
+    c = kin.coordinates[0]
+    motion = mech.motion(c)
+    if motion is None or not motion.has_speed:
+        if asks:
+            raise ModelError(f"{mech.name}: [dynamics] needs the speed of the crank {c}: "
+                             f"add [motion] {c} = {{ direction = \"cw\", speed = \"300 rpm\" }}")
+        analysis.notes.append(f"{mech.name}: the links have masses but the crank {c} has no "
+                              f"speed ([motion]): inertia loads, reduced moment and flywheel "
+                              f"are not computed")
+        return analysis
+    qdot, qddot = motion.rates(kin.q(c))
+    dyn = crank_dynamics(kin, qdot, qddot)
+    analysis.dynamics = dyn
+    if spec is not None and (spec.delta is not None or spec.flywheel is not None):
+        analysis.flywheel = dyn.flywheel(delta=spec.delta, J_flywheel=spec.flywheel)
+    if spec is not None and spec.counter_masses:
+        from .balancing import balance
+        analysis.balancing = balance(kin, spec.counter_masses, spec.objective)
+    check_finite(analysis)
+    return analysis

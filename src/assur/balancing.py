@@ -54,8 +54,8 @@ class CentreOfMassPath:
         Signed area enclosed by the closed path [m²] (counter-clockwise positive).
     """
 
-    x: np.ndarray
-    y: np.ndarray
+    x: np.ndarray = field(repr=False)
+    y: np.ndarray = field(repr=False)
     mass: np.ndarray
     amplitude_x: np.ndarray = field(init=False)
     amplitude_y: np.ndarray = field(init=False)

@@ -87,8 +87,11 @@ def _output_dir(output: str) -> Path:
 def _assemble(model):
     from .errors import AssemblyError, ModelError, SingularPositionError
 
+    from .analysis import add_dynamics
+
     try:
         analysis = model.mechanism.analyze(model.range)
+        add_dynamics(analysis, model.dynamics)
     except (AssemblyError, ModelError, SingularPositionError) as e:
         _fail(f"{model.source}: {e}")
     analysis.solved = tuple(model.solved)
@@ -99,8 +102,9 @@ def _assemble(model):
 @app.command()
 def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     """Validate a model file, solve its conditions and assemble it over its range."""
-    from .report.values import solved_line
     import numpy as np
+
+    from .report.values import solved_line
 
     t0 = time.perf_counter()
     model = _load(file)

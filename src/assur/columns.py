@@ -52,6 +52,10 @@ from .errors import ModelError
 
 __all__ = ["Formula", "SignMap", "FormulaError", "formulas_of", "signs_of", "column_signs"]
 
+#: the ids of the report's tables, in order (a formula's ``table`` names one of them;
+#: the report, :mod:`assur.report.tables`, builds them)
+TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "5.1", "5.2", "D", "6.1", "IC")
+
 #: functions of one point (name → kinematics accessor)
 POINT_FUNCTIONS = ("X", "Y", "I")
 #: functions of one link

@@ -37,7 +37,7 @@ Both directions are solved exactly on the sampled turn:
 The classical approximation for small δ is ``J_f ≈ ΔE_max/(δ·ω_m²)`` with ΔE_max
 the largest swing of the work of the loads (exact when J_red is constant, less
 the mean J_red); :attr:`Flywheel.J_classical` is that value and
-:attr:`Flywheel.J_merkalov` the better one that takes the swing of
+:attr:`Flywheel.J_mertsalov` the better one that takes the swing of
 ``ΔE − ½·J_red·ω_m²`` (the energy left to the flywheel) minus the mean J_red.
 
 ΔE is integrated spectrally (the positions are one uniform turn, so the trapezoid
@@ -176,7 +176,7 @@ class Flywheel:
         The constant M_d = −mean(M_c) [N·m].
     energy_swing : float
         ΔE_max = max ΔE − min ΔE [J].
-    J_classical, J_merkalov : float
+    J_classical, J_mertsalov : float
         The approximations ΔE_max/(δω_m²) and swing(ΔE − ½J_red·ω_m²)/(δω_m²) −
         mean(J_red) [kg·m²] for the same δ.
     """
@@ -197,7 +197,7 @@ class Flywheel:
     driving_moment: float
     energy_swing: float
     J_classical: float
-    J_merkalov: float
+    J_mertsalov: float
 
     def rates(self, direction):
         """(q̇, q̈) over the positions for a crank turning counter-clockwise
@@ -318,4 +318,4 @@ def flywheel(q, J_red, M_c, omega_mean, delta=None, J_flywheel=None, dJ_red=None
         energy=full(E), reduced_inertia=J_red, reduced_inertia_derivative=full(dJ),
         reduced_moment=M_c, driving_moment=float(M_d), energy_swing=swing,
         J_classical=swing / (d * wm ** 2),
-        J_merkalov=float(Estar.max() - Estar.min()) / (d * wm ** 2) - float(Jp.mean()))
+        J_mertsalov=float(Estar.max() - Estar.min()) / (d * wm ** 2) - float(Jp.mean()))

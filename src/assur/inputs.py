@@ -403,6 +403,14 @@ def check_finite(analysis) -> None:
                              f"inputs are outside the range where it can be computed; check "
                              f"the sizes of lengths, loads, bores and efficiencies")
     items = []
+    dyn = getattr(analysis, "dynamics", None)
+    if dyn is not None:
+        bad = dyn.statics.first_nonfinite()
+        if bad is not None:
+            raise ModelError(f"{name}: the {bad[0]} with inertia is not finite (element "
+                             f"{bad[1]}): check the masses, speeds and lengths")
+        items.append(("reduced moment of inertia", lambda: dyn.reduced_inertia))
+        items.append(("reduced moment", lambda: dyn.reduced_moment))
     for name_, cyl in analysis.cylinders.items():
         items.append((f"pressure of cylinder {name_!r}", lambda c=cyl: c.pressure))
         items.append((f"force of cylinder {name_!r}", lambda c=cyl: c.force_required))

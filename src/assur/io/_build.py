@@ -703,7 +703,7 @@ class Builder:
     def extra_columns(self, mech):
         """``[[tables.formulas]]`` and ``[[tables.signs]]``: :mod:`assur.columns`."""
         from ..columns import Formula, FormulaError, SignMap
-        from ..report.tables import TABLE_IDS
+        from ..columns import TABLE_IDS
         t = self.spec.tables
         tp = ("tables",)
         out = {}

@@ -109,7 +109,12 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
     pngs, drawing_png = {}, None
     if {"png", "svg", "html"} & set(formats):
         step("figures")
-        for name, fig in _figures.figures(analysis, lang, design=design).items():
+        figs = dict(_figures.figures(analysis, lang, design=design))
+        if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
+            from . import dynamics as _dynamics
+            figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
+                                          balancing=analysis.balancing))
+        for name, fig in figs.items():
             caption = fig.axes[0].get_title() if fig.axes else name
             png = _figures.to_png_bytes(fig)
             pngs[name] = (png, caption)

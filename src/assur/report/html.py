@@ -94,7 +94,37 @@ def _summary(analysis, lang):
                        else f"минимальная доля: {100 * mc.min_share:g} %")
     solved = [solved_line(sc, mech, lang, units) for sc in getattr(analysis, "solved", ())]
     return dict(params=params, coords=coords, groups=groups, links=links, machine=machine,
-                solved=solved)
+                solved=solved, dynamics=_dynamics_lines(analysis, lang))
+
+
+def _dynamics_lines(analysis, lang):
+    """The crank dynamics in a few lines: speed, reduced moment of inertia, driving
+    moment, the common centre of mass, the flywheel and the balancing (lab 3)."""
+    dyn = getattr(analysis, "dynamics", None)
+    if dyn is None:
+        return []
+    mm = 1e3
+    w = np.abs(np.ravel(dyn.qdot))
+    c = dyn.centre
+    out = [t("dyn_speed", lang, dyn.coordinate, float(w.mean()), float(w.mean()) * 30 / np.pi),
+           t("dyn_jred", lang, float(np.min(dyn.reduced_inertia)),
+             float(np.max(dyn.reduced_inertia))),
+           t("dyn_md", lang, float(np.min(dyn.driving_moment)),
+             float(np.max(dyn.driving_moment))),
+           t("dyn_centre", lang, float(c.amplitude_x) * mm, float(c.amplitude_y) * mm,
+             float(c.area) * mm * mm, float(c.mass))]
+    fw = getattr(analysis, "flywheel", None)
+    if fw is not None:
+        out.append(t("dyn_flywheel", lang, fw.delta, fw.J_flywheel, fw.omega_min, fw.omega_max,
+                     fw.driving_moment, fw.J_classical, fw.J_mertsalov))
+    b = getattr(analysis, "balancing", None)
+    if b is not None:
+        placed = "; ".join(t("dyn_mass", lang, m.link, float(m.m), float(m.along) * mm,
+                             float(m.offset) * mm) for m in b.masses) or "—"
+        out.append(t("dyn_balance", lang, b.objective, placed,
+                     float(b.after.amplitude_x) * mm, float(b.after.amplitude_y) * mm,
+                     float(b.after.area) * mm * mm))
+    return out
 
 
 def _table_view(tab, lang):
@@ -133,8 +163,10 @@ def _figure_items(figures, lang):
 def _warnings(analysis, tables, lang):
     mech = analysis.mechanism
     groups = []
-    model_notes = [localize(n, lang) for n in mech.notes] + list(
-        getattr(analysis.kinematics, "failures", []))
+    model_notes = ([localize(n, lang) for n in mech.notes]
+                   + list(getattr(analysis.kinematics, "failures", []))
+                   + list(getattr(analysis, "model_warnings", ()))
+                   + list(getattr(analysis, "notes", ())))
     groups.append((t("model_notes", lang), model_notes))
     from ..columns import formulas_of, signs_of
     sign_notes = [localize(m.note, lang) for m in signs_of(mech) if m.note]
@@ -218,6 +250,7 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 {% endfor %}</table></div>
 {% if summary.machine %}<h3>{{ L.machine }}</h3><ul>{% for m in summary.machine %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
 {% if summary.solved %}<h3>{{ L.solved }}</h3><ul>{% for m in summary.solved %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
+{% if summary.dynamics %}<h3>{{ L.dynamics }}</h3><ul>{% for m in summary.dynamics %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
 </section>
 
 <section id="tables"><h2>{{ L.tables }}</h2>

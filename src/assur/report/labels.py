@@ -73,6 +73,31 @@ TEXT = {
                    "грузоподъёмность, запас)"},
     "t5.1": {"en": "Force analysis: joint reactions (force of link i on link j)",
              "ru": "Результаты силового анализа (реакция R_ij — сила звена i на звено j)"},
+    "t5.2": {"en": "Kinetostatics: joint reactions with the inertia loads (force of link i "
+                   "on link j)",
+             "ru": "Результаты кинетостатического анализа (реакции с учётом сил инерции, "
+                   "R_ij — сила звена i на звено j)"},
+    "tD": {"en": "Crank dynamics: reduced moment of inertia, reduced moments, driving moment, "
+                 "common centre of mass",
+           "ru": "Динамика кривошипного механизма: приведённый момент инерции, приведённые "
+                 "моменты, движущий момент, общий центр масс"},
+    "c_omega": {"en": "angular velocity of the crank {0}", "ru": "угловая скорость кривошипа {0}"},
+    "c_eps": {"en": "angular acceleration of the crank {0}",
+              "ru": "угловое ускорение кривошипа {0}"},
+    "c_Jred": {"en": "reduced moment of inertia J_red", "ru": "приведённый момент инерции J_пр"},
+    "c_dJred": {"en": "its derivative dJ_red/dφ", "ru": "его производная dJ_пр/dφ"},
+    "c_Mred": {"en": "reduced moment of all loads, inertia included",
+               "ru": "приведённый момент всех сил с силами инерции"},
+    "c_Mred_loads": {"en": "reduced moment of the applied loads and weights",
+                     "ru": "приведённый момент внешних сил и весов"},
+    "c_Mred_inertia": {"en": "reduced moment of the inertia loads",
+                       "ru": "приведённый момент сил инерции"},
+    "c_Md": {"en": "driving moment on the crank", "ru": "движущий момент на кривошипе"},
+    "c_T": {"en": "kinetic energy", "ru": "кинетическая энергия"},
+    "c_Xc": {"en": "x of the common centre of mass", "ru": "x общего центра масс"},
+    "c_Yc": {"en": "y of the common centre of mass", "ru": "y общего центра масс"},
+    "c_omega_fw": {"en": "angular velocity of the crank with the flywheel",
+                   "ru": "угловая скорость кривошипа с маховиком"},
     "t6.1": {"en": "Stability: axle reactions, shares and limits",
              "ru": "Результаты анализа на устойчивость (реакции осей, доли, пределы)"},
     "tIC": {"en": "Check of the kinematics through the instantaneous centre",
@@ -149,6 +174,30 @@ TEXT = {
     "y_m": {"en": "y", "ru": "Y"},
     "at": {"en": "{0} = {1}", "ru": "{0} = {1}"},
     "centre_of_mass": {"en": "centre of mass", "ru": "центр масс"},
+    "dynamics": {"en": "Crank dynamics (inertia, flywheel, balancing)",
+                 "ru": "Динамика (силы инерции, маховик, уравновешивание)"},
+    "dyn_speed": {"en": "crank {0}: mean |ω| = {1:.4g} rad/s ({2:.4g} rpm)",
+                  "ru": "кривошип {0}: среднее |ω| = {1:.4g} рад/с ({2:.4g} об/мин)"},
+    "dyn_jred": {"en": "reduced moment of inertia J_red = {0:.4g} … {1:.4g} kg·m²",
+                 "ru": "приведённый момент инерции J_пр = {0:.4g} … {1:.4g} кг·м²"},
+    "dyn_md": {"en": "driving moment M_d = {0:.4g} … {1:.4g} N·m (table D)",
+               "ru": "движущий момент M_д = {0:.4g} … {1:.4g} Н·м (таблица D)"},
+    "dyn_centre": {"en": "common centre of mass of {3:.4g} kg: A_x = {0:.3f} mm, A_y = {1:.3f} mm, "
+                         "enclosed area {2:.4g} mm²",
+                   "ru": "общий центр масс {3:.4g} кг: A_x = {0:.3f} мм, A_y = {1:.3f} мм, "
+                         "площадь траектории {2:.4g} мм²"},
+    "dyn_flywheel": {"en": "flywheel (energy–mass method): δ = {0:.4g}, J_f = {1:.4g} kg·m² "
+                           "(ω = {2:.4g} … {3:.4g} rad/s, constant M_d = {4:.4g} N·m; the "
+                           "approximations ΔE_max/(δω²) = {5:.4g}, Mertsalov {6:.4g} kg·m²)",
+                     "ru": "маховик (метод энергомасс): δ = {0:.4g}, J_м = {1:.4g} кг·м² "
+                           "(ω = {2:.4g} … {3:.4g} рад/с, постоянный M_д = {4:.4g} Н·м; "
+                           "приближения ΔE_max/(δω²) = {5:.4g}, по Мерцалову {6:.4g} кг·м²)"},
+    "dyn_mass": {"en": "{1:.4g} kg on link {0} at {2:.1f} mm along, {3:.1f} mm offset",
+                 "ru": "{1:.4g} кг на звене {0}: {2:.1f} мм вдоль, {3:.1f} мм в сторону"},
+    "dyn_balance": {"en": "balancing ({0}): {1}; then A_x = {2:.3f} mm, A_y = {3:.3f} mm, "
+                          "area {4:.4g} mm²",
+                    "ru": "уравновешивание ({0}): {1}; после него A_x = {2:.3f} мм, "
+                          "A_y = {3:.3f} мм, площадь {4:.4g} мм²"},
     "solved_line": {"en": "{0} = {1}: {2} ({3}residual {4})",
                     "ru": "{0} = {1}: {2} ({3}невязка {4})"},
     "singular": {"en": "{0} is singular at {1} position(s) ({2}); shown as empty there",
@@ -159,7 +208,8 @@ TEXT = {
 UNITS_RU = {"m": "м", "deg": "град", "-": "-", "N": "Н", "Pa": "Па", "%": "%",
             "rad/m": "рад/м", "rad": "рад", "kN": "кН", "MPa": "МПа", "N·m": "Н·м",
             "kg": "кг", "kg·m²": "кг·м²", "N/m": "Н/м", "m/rad": "м/рад", "m/m": "м/м",
-            "rad/rad": "рад/рад"}
+            "rad/rad": "рад/рад", "rad/s": "рад/с", "rad/s²": "рад/с²", "J": "Дж",
+            "kg·m²/rad": "кг·м²/рад"}
 
 
 def check_lang(lang: str) -> str:

@@ -83,6 +83,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..columns import TABLE_IDS
 from ..errors import SingularPositionError
 from ..loads import Weight
 from ..texts import LANGS, localize
@@ -91,8 +92,6 @@ from .labels import TEXT, check_lang
 __all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
            "TABLE_IDS"]
 
-#: the ids of the tables, in order (an extra formula joins one of them)
-TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "5.1", "6.1", "IC")
 #: id of the table of extra formulas that name no table
 FORMULAS_ID = "F"
 
@@ -472,11 +471,9 @@ def _table_4_1(v):
     return Table("4.1", _both("t4.1"), tuple(cols), tuple(notes))
 
 
-def _table_5_1(v):
-    a = v.a
-    st = a.statics
-    if not v.mech.loads:
-        return None
+def _reaction_columns(v, st):
+    """Columns R<ij>x, R<ij>y, R<ij> (and M<ij>) of every joint, and the actuator force
+    from the reactions, of the statics ``st``."""
     cols = v.coord_columns()
     named = {(i, j): name for name, (i, j) in st.named_reactions().items()}
     done = set()
@@ -501,9 +498,66 @@ def _table_5_1(v):
             continue
         unit = "N·m" if v.is_angle(c) else "N"
         cols.append(Column(f"F_{c}", unit, v.pick(f), _both("c_Frx", c)))
-    notes = [{"en": "R_ij is the force of link i on link j at their joint; the frame is link 0.",
-              "ru": "R_ij — сила звена i на звено j в их шарнире; стойка — звено 0."}]
-    return Table("5.1", _both("t5.1"), tuple(cols), tuple(notes))
+    return cols
+
+
+_REACTION_NOTE = {"en": "R_ij is the force of link i on link j at their joint; the frame is "
+                        "link 0.",
+                  "ru": "R_ij — сила звена i на звено j в их шарнире; стойка — звено 0."}
+
+
+def _table_5_1(v):
+    if not v.mech.loads:
+        return None
+    return Table("5.1", _both("t5.1"), tuple(_reaction_columns(v, v.a.statics)),
+                 (_REACTION_NOTE,))
+
+
+def _table_5_2(v):
+    """Joint reactions with the inertia loads at the crank's speed (the kinetostatics
+    of seed 001 lab 3), when the analysis has its dynamics."""
+    dyn = getattr(v.a, "dynamics", None)
+    if dyn is None:
+        return None
+    w = float(np.mean(np.abs(v.pick(dyn.qdot))))
+    note = {"en": f"with the inertia loads at the crank's speed (mean |ω| = {w:.6g} rad/s) "
+                  f"and the weights", "ru": f"с силами инерции при скорости кривошипа "
+                                            f"(среднее |ω| = {w:.6g} рад/с) и весами"}
+    return Table("5.2", _both("t5.2"), tuple(_reaction_columns(v, dyn.statics)),
+                 (_REACTION_NOTE, note))
+
+
+def _table_d(v):
+    """The crank dynamics over the positions: rates, reduced moment of inertia, reduced
+    moments, driving moment, kinetic energy, common centre of mass (and the motion
+    with the flywheel)."""
+    dyn = getattr(v.a, "dynamics", None)
+    if dyn is None:
+        return None
+    c = dyn.coordinate
+    cols = v.coord_columns()
+    cols += [Column("omega", "rad/s", v.pick(dyn.qdot), _both("c_omega", c)),
+             Column("eps", "rad/s²", v.pick(dyn.qddot), _both("c_eps", c)),
+             Column("J_red", "kg·m²", v.pick(dyn.reduced_inertia), _both("c_Jred")),
+             Column("dJ_red", "kg·m²/rad", v.pick(dyn.reduced_inertia_derivative),
+                    _both("c_dJred")),
+             Column("M_red", "N·m", v.pick(dyn.reduced_moment), _both("c_Mred")),
+             Column("M_red_loads", "N·m", v.pick(dyn.reduced_moment_without_inertia),
+                    _both("c_Mred_loads")),
+             Column("M_red_inertia", "N·m", v.pick(dyn.reduced_moment_of_inertia_loads),
+                    _both("c_Mred_inertia")),
+             Column("M_d", "N·m", v.pick(dyn.driving_moment), _both("c_Md")),
+             Column("T", "J", v.pick(dyn.kinetic_energy), _both("c_T")),
+             Column("Xc", "m", v.pick(dyn.centre.x), _both("c_Xc")),
+             Column("Yc", "m", v.pick(dyn.centre.y), _both("c_Yc"))]
+    fw = getattr(v.a, "flywheel", None)
+    if fw is not None and np.shape(fw.omega) == (v.n,):
+        cols.append(Column("omega_fw", "rad/s", v.pick(fw.omega), _both("c_omega_fw")))
+    notes = [{"en": "M_red: reduced moment on the crank of all loads (inertia included) by "
+                    "virtual work; M_d = −M_red, the moment the drive applies",
+              "ru": "M_red — приведённый к кривошипу момент всех сил (с силами инерции) по "
+                    "принципу возможных перемещений; M_d = −M_red — момент привода"}]
+    return Table("D", _both("tD"), tuple(cols), tuple(notes))
 
 
 def _table_6_1(v):
@@ -585,7 +639,8 @@ def _table_ic(v):
     return Table("IC", _both("tIC"), tuple(cols), tuple(notes))
 
 
-_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_6_1, _table_ic)
+_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_5_2, _table_d,
+             _table_6_1, _table_ic)
 
 
 def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> list:
