@@ -177,3 +177,21 @@ def test_check_prints_solved_conditions_in_the_files_units(hitch):
     assert re.fullmatch(r"L7 = 0\.752169525 m: φ6\(S = Sp\) = 90° \(hitch_003\.toml:\d+; "
                         r"residual [-0-9.e]+°\)", line), line
     assert np.isclose(model.solved[2].condition.unit.scale, np.pi / 180)
+
+
+def _bundled():
+    from pathlib import Path
+    return sorted(p.stem for p in Path(io.bundled("hitch_003")).parent.glob("*.toml"))
+
+
+@pytest.mark.parametrize("name", _bundled())
+def test_every_bundled_model_speaks_russian(name):
+    """The Russian report of a bundled model is Russian throughout: its title, notes,
+    formula labels and flags, and sign notes all carry a Russian text."""
+    from assur.columns import formulas_of, signs_of
+    mech = io.load(io.bundled(name)).mechanism
+    texts = [mech.title, *mech.notes, *(m.note for m in signs_of(mech) if m.note),
+             *(x for f in formulas_of(mech) for x in (f.label, *f.flags) if x)]
+    for t_ in texts:
+        ru = localize(t_, "ru")
+        assert ru != str(t_) and re.search("[а-яА-Я]", ru), f"{name}: {t_!r} has no Russian"

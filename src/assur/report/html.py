@@ -121,7 +121,7 @@ def _dynamics_lines(analysis, lang):
     if b is not None:
         placed = "; ".join(t("dyn_mass", lang, m.link, float(m.m), float(m.along) * mm,
                              float(m.offset) * mm) for m in b.masses) or "—"
-        out.append(t("dyn_balance", lang, b.objective, placed,
+        out.append(t("dyn_balance", lang, t(f"objective_{b.objective}", lang), placed,
                      float(b.after.amplitude_x) * mm, float(b.after.amplitude_y) * mm,
                      float(b.after.area) * mm * mm))
     return out

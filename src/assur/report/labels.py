@@ -198,6 +198,21 @@ TEXT = {
                           "area {4:.4g} mm²",
                     "ru": "уравновешивание ({0}): {1}; после него A_x = {2:.3f} мм, "
                           "A_y = {3:.3f} мм, площадь {4:.4g} мм²"},
+    "c_dist": {"en": "distance {0} = |{1}–{2}|", "ru": "расстояние {0} = |{1}–{2}|"},
+    "c_ddist": {"en": "analog d{0}/d{1} of the distance {0}",
+                "ru": "аналог d{0}/d{1} расстояния {0}"},
+    "wrapped": {"en": "angles wrapped to [0°, 360°) as the seeds print them",
+                "ru": "углы приведены к [0°, 360°), как в исходных расчётах"},
+    "rotation": {"en": "analogs along the direction of rotation of {0} ({1}): dφ/d{0} · "
+                       "sign {0}' with {0}' = {2:+d}, as the seeds write them",
+                 "ru": "аналоги по направлению вращения {0} ({1}): dφ/d{0} · sign {0}', "
+                       "{0}' = {2:+d}, как в исходных расчётах"},
+    "cw": {"en": "clockwise", "ru": "по часовой стрелке"},
+    "ccw": {"en": "counter-clockwise", "ru": "против часовой стрелки"},
+    "objective_amplitudes": {"en": "the sum of the amplitudes A_x + A_y",
+                             "ru": "сумма амплитуд A_x + A_y"},
+    "objective_max_amplitude": {"en": "the larger amplitude", "ru": "наибольшая амплитуда"},
+    "objective_area": {"en": "the area of the path", "ru": "площадь траектории"},
     "solved_line": {"en": "{0} = {1}: {2} ({3}residual {4})",
                     "ru": "{0} = {1}: {2} ({3}невязка {4})"},
     "singular": {"en": "{0} is singular at {1} position(s) ({2}); shown as empty there",

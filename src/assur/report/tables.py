@@ -107,24 +107,6 @@ def _same(text):
     return {lang: localize(text, lang) for lang in LANGS}
 
 
-#: labels of the crank-angle conventions and named distances (kept here; the lead may
-#: move them into :mod:`assur.report.labels`)
-_TEXT = {
-    "c_dist": {"en": "distance {0} = |{1}–{2}|", "ru": "расстояние {0} = |{1}–{2}|"},
-    "c_ddist": {"en": "analog d{0}/d{1} of the distance {0}",
-                "ru": "аналог d{0}/d{1} расстояния {0}"},
-    "wrapped": {"en": "angles wrapped to [0°, 360°) as the seeds print them",
-                "ru": "углы приведены к [0°, 360°), как в исходных расчётах"},
-    "rotation": {"en": "analogs along the direction of rotation of {0} ({1}): dφ/d{0} · "
-                       "sign {0}' with {0}' = {2:+d}, as the seeds write them (seed 002: "
-                       "φ1' = −1)",
-                 "ru": "аналоги по направлению вращения {0} ({1}): dφ/d{0} · sign {0}', "
-                       "{0}' = {2:+d}, как в исходных расчётах (пример 002: φ1' = −1)"},
-}
-
-
-def _mine(key, *args):
-    return {lang: txt.format(*args) for lang, txt in _TEXT[key].items()}
 
 
 #: how angle columns are shown (``tables["angles"]``)
@@ -319,13 +301,14 @@ class _View:
         """Notes of the conventions in force (wrapped angles; analogs along a rotation)."""
         notes = []
         if self.angles == "wrapped":
-            notes.append(_mine("wrapped"))
+            notes.append(_both("wrapped"))
         if analogs:
             for c in self.coords:
                 if self.analogs == "rotation" and self.is_angle(c):
                     mo = self.mech.motion(c)
                     d = mo.direction if mo is not None else 1
-                    notes.append(_mine("rotation", c, "cw" if d < 0 else "ccw", d))
+                    notes.append({lang: TEXT["rotation"][lang].format(
+                        c, TEXT["cw" if d < 0 else "ccw"][lang], d) for lang in LANGS})
         return notes
 
     def coord_label(self, c):
@@ -389,7 +372,7 @@ def _table_2_1(v):
         cols.append(Column(f"phi{link}", "deg", v.phi_values(link), _both("c_phi", link)))
     for dist in v.mech.distances:  # named distances (their angles are links above)
         cols.append(Column(dist.name, "m", v.pick(v.kin.length(dist.name)),
-                           _mine("c_dist", dist.name, dist.a, dist.b)))
+                           _both("c_dist", dist.name, dist.a, dist.b)))
     return Table("2.1", _both("t2.1"), tuple(cols), tuple(v.convention_notes()))
 
 
@@ -427,7 +410,7 @@ def _table_3_1(v):
         for dist in v.mech.distances:
             cols.append(Column(f"d{dist.name}{sfx}", "m/rad" if v.is_angle(c) else "-",
                                sign * v.pick(kin.dlength(dist.name, w)),
-                               _mine("c_ddist", dist.name, c)))
+                               _both("c_ddist", dist.name, c)))
     notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
 
