@@ -25,49 +25,17 @@ from __future__ import annotations
 import numpy as np
 
 from .figures import new_figure
-from .labels import check_lang, unit
+from .labels import check_lang, t, unit
 
 __all__ = ["figures", "centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",
            "energy_mass", "DYNAMICS_FIGURES"]
 
-_TEXT = {
-    "f_com": {"en": "Common centre of mass over a crank turn",
-              "ru": "Перемещение общего центра масс за оборот кривошипа"},
-    "before": {"en": "without counter-masses", "ru": "без противовесов"},
-    "after": {"en": "with counter-masses", "ru": "с противовесами"},
-    "amp": {"en": "A_x = {0:.2f} mm, A_y = {1:.2f} mm, area {2:.2f} mm²",
-            "ru": "A_x = {0:.2f} мм, A_y = {1:.2f} мм, площадь {2:.2f} мм²"},
-    "mean": {"en": "about its mean (x̄, ȳ) = ({0:.1f}, {1:.1f}) mm",
-             "ru": "относительно среднего (x̄, ȳ) = ({0:.1f}, {1:.1f}) мм"},
-    "f_hodo": {"en": "Reaction hodographs over a turn", "ru": "Годографы реакций за оборот"},
-    "f_mred": {"en": "Reduced moment on the crank", "ru": "Приведённый момент на кривошипе"},
-    "m_all": {"en": "all loads, inertia included", "ru": "все нагрузки с силами инерции"},
-    "m_static": {"en": "without inertia", "ru": "без сил инерции"},
-    "m_drive": {"en": "driving moment (from the reactions)",
-                "ru": "движущий момент (по реакциям)"},
-    "f_jred": {"en": "Reduced moment of inertia", "ru": "Приведённый момент инерции"},
-    "f_wit": {"en": "Energy–mass diagram and the flywheel",
-              "ru": "Диаграмма энергомасс и маховик"},
-    "wit_tan": {"en": "tangents of ω_max, ω_min", "ru": "касательные ω_max, ω_min"},
-    "fw": {"en": "they meet at (−J_f, −T0): J_f = {0:.4g} kg·m², δ = {1:.4g}",
-           "ru": "пересекаются в (−J_м, −T0): J_м = {0:.4g} кг·м², δ = {1:.4g}"},
-    "omega": {"en": "crank speed |ω|", "ru": "угловая скорость кривошипа |ω|"},
-    "angle": {"en": "crank angle {0}", "ru": "угол кривошипа {0}"},
-    "energy": {"en": "work of the loads ΔE", "ru": "работа сил ΔE"},
-    "force_x": {"en": "R_x", "ru": "R_x"},
-    "force_y": {"en": "R_y", "ru": "R_y"},
-}
-
-_UNITS_RU = {"mm": "мм", "J": "Дж", "rad/s": "рад/с", "kg·m²/rad": "кг·м²/рад"}
-
-
 def _t(key, lang, *args):
-    s = _TEXT[key][check_lang(lang)]
-    return s.format(*args) if args else s
+    return t(f"dyn_{key}", check_lang(lang), *args)
 
 
 def _u(u, lang):
-    return _UNITS_RU.get(u, unit(u, lang)) if lang == "ru" else u
+    return unit(u, lang)
 
 
 def _axes(fig, title, xlabel, ylabel):
