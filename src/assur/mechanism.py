@@ -418,7 +418,6 @@ class Mechanism:
                 if p not in known:
                     raise ModelError(f"{where}: link/distance {obj.name!r} refers "
                                      f"to unknown point {p!r} (known: {sorted(known)})")
-        self._check_symbols(known)
         self._topology = build_topology(self.name, self.coordinates, self.groups)
         self._validate_loads(known)
         lnames = [l.name for l in self.links] + [d.name for d in self.distances]
@@ -440,21 +439,6 @@ class Mechanism:
         if g is not None and not (math.isfinite(float(g)) and float(g) > 0):
             raise ModelError(f"mechanism {self.name!r}: gravity must be a positive number "
                              f"[m/s²], got {g!r}")
-
-    def _check_symbols(self, points):
-        """A coordinate must not share its table symbol with a link angle, a point
-        coordinate or a distance (``phi1`` as a coordinate and the angle of link 1
-        would be two columns of one name)."""
-        links = [l.name for l in self.links] + [l for g in self.groups for l in g.group_links()]
-        taken = {f"phi{l}": f"the angle of link {l!r}" for l in links}
-        taken.update({f"{a}{p}": f"the {a.lower()} of point {p!r}" for p in points
-                      for a in "XY"})
-        taken.update({d.name: f"the distance {d.name!r}" for d in self.distances})
-        for c in self.coordinates:
-            if c in taken:
-                raise ModelError(f"mechanism {self.name!r}: the coordinate name {c!r} is also "
-                                 f"{taken[c]} in the tables; name the coordinate otherwise "
-                                 f"(e.g. 'j1' for a crank angle φ1, 'S' for a cylinder)")
 
     def _validate_loads(self, known):
         from .loads import Couple, Cylinder, Mass, PointForce, Spring, Weight

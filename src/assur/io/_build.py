@@ -945,6 +945,8 @@ class Builder:
         mech = self.mechanism()
         from ._dynamics import build_dynamics
         self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
+        from ._lift_test import build_lift_test
+        self.lift_test = build_lift_test(self, mech)  # [lift_test]: io/_lift_test.py
         self.warnings = self.unused_parameters(mech)
         self.precheck_memory(mech)
         conds_mech, solved = self.solve(mech)
