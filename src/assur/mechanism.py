@@ -441,7 +441,7 @@ class Mechanism:
                              f"[m/s²], got {g!r}")
 
     def _validate_loads(self, known):
-        from .loads import Couple, Cylinder, Mass, PointForce, Spring, Weight
+        from .loads import Cylinder, names_in
         where = f"mechanism {self.name!r}"
 
         def ref_ok(what, ref):
@@ -463,32 +463,19 @@ class Mechanism:
                                  f"{sorted(self.topology.bodies)})")
 
         for ld in self.loads:
-            if isinstance(ld, Weight):
-                point_ok("weight", ld.point)
-                ref_ok(f"weight at {ld.point}", ld.P)
-                link_ok("weight", ld.link)
-            elif isinstance(ld, PointForce):
-                point_ok("force", ld.point)
-                ref_ok(f"force at {ld.point}: fx", ld.fx)
-                ref_ok(f"force at {ld.point}: fy", ld.fy)
-                link_ok("force", ld.link)
-            elif isinstance(ld, Couple):
-                link_ok("moment", ld.link)
-                ref_ok(f"moment on {ld.link}", ld.M)
-            elif isinstance(ld, Spring):
-                point_ok(f"spring {ld.name!r}", ld.a)
-                point_ok(f"spring {ld.name!r}", ld.b)
-                for r in (ld.rate, ld.free_length, ld.preload):
-                    ref_ok(f"spring {ld.name!r}", r)
-                for l in ld.links or ():
-                    link_ok(f"spring {ld.name!r}", l)
-            elif isinstance(ld, Mass):
-                link_ok("mass", ld.link)
-                point_ok(f"mass of link {ld.link}", ld.point)
-                ref_ok(f"mass of link {ld.link}", ld.m)
-                ref_ok(f"inertia of link {ld.link}", ld.J)
-            else:
-                raise ModelError(f"{where}: unknown load {ld!r}")
+            if not (hasattr(ld, "apply") and hasattr(ld, "quantities")
+                    and hasattr(ld, "point_fields") and hasattr(ld, "link_fields")):
+                raise ModelError(f"{where}: unknown load {ld!r} (a load declares quantities, "
+                                 f"point_fields, link_fields and apply; assur.loads)")
+            what = f"{ld.type_name} {getattr(ld, 'name', None) or ''}".rstrip()
+            for f in ld.point_fields:
+                for p in names_in(getattr(ld, f)):
+                    point_ok(what, p)
+            for f in ld.link_fields:
+                for l in names_in(getattr(ld, f)):
+                    link_ok(what, l)
+            for f in ld.quantities:
+                ref_ok(f"{what}: {f}", getattr(ld, f))
         if self.machine is not None:
             point_ok("the machine's implement", self.machine.point)
             for t in self.machine.ref_names():
