@@ -698,6 +698,19 @@ class Builder:
         for key in ("angles", "analogs"):
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
+        if t.dead_loads is not None:  # links whose loads every capacity carries
+            from ..capacity import load_link
+            for k, b in enumerate(t.dead_loads):
+                path = tp + ("dead_loads", k)
+                if b not in bodies or b == "0":
+                    moving = [x for x in bodies if x != "0"]
+                    raise self.error(path, f'unknown link "{b}": expected a moving link of the '
+                                           f'mechanism ({", ".join(moving)}), found "{b}"'
+                                           f"{S.did_you_mean(b, moving)}")
+                if not any(load_link(mech, ld) == b for ld in mech.loads):
+                    raise self.error(path, f'no load acts on link "{b}": a dead load is the '
+                                           f"weight or mass of a link ([[loads]] on it)")
+            out["dead_loads"] = list(t.dead_loads)
         return mech.with_tables(**out)
 
     def extra_columns(self, mech):

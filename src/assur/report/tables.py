@@ -350,6 +350,38 @@ class _View:
                 out.append((name, self.scalar(self.mech.value_of(ld.P))))
         return out
 
+    # chains: which coordinate moves what (:mod:`assur.chains`) ---------------------
+    def moves_point(self, c, point):
+        """True if coordinate ``c`` moves ``point``."""
+        from ..chains import point_coordinates
+        return c in point_coordinates(self.mech, point)
+
+    def moves_link(self, c, link):
+        """True if coordinate ``c`` turns ``link``."""
+        from ..chains import link_coordinates
+        return c in link_coordinates(self.mech, link)
+
+    def absent_note(self, c, points=(), links=(), what="absent_analogs", *args):
+        """The note for quantities along ``c`` left out because ``c`` does not move
+        ``points`` or turn ``links``; None when nothing is left out."""
+        if not points and not links:
+            return None
+        out = {}
+        for lang in LANGS:
+            parts = []
+            if points:
+                parts.append(f"{TEXT['absent_points'][lang]} {', '.join(points)}")
+            if links:
+                parts.append(f"{TEXT['absent_links'][lang]} {', '.join(links)}")
+            out[lang] = TEXT["absent"][lang].format(c, "; ".join(parts),
+                                                    TEXT[what][lang].format(*args))
+        return out
+
+    def at_text(self, i):
+        """'S = 1.2 m, S1 = 0.8 m' of position ``i``."""
+        return ", ".join(f"{c} = {self.coord_values(c)[i]:.6g} {self.coord_unit(c)}"
+                         for c in self.coords)
+
     def transmission_points(self):
         pts = list(self.mech.tables.get("transmissions", ()))
         if not pts:
@@ -390,8 +422,14 @@ def _table_3_1(v):
     cols = v.coord_columns()
     notes = []
     tab = v.mech.tables
+    # quantities along a coordinate that does not move a point or turn a link are
+    # undefined (0 or 0/0): left out, with one note per coordinate (assur.chains)
+    still = {c: ([p for p in tab.get("transmissions", ()) if not v.moves_point(c, p)],
+                 [l for l in kin.links if not v.moves_link(c, l)]) for c in v.coords}
     for sfx, w, c in v.wrts():
         for i, j in tab.get("ratios", ()):
+            if not (v.moves_link(c, i) and v.moves_link(c, j)):
+                continue
             vals = v.pick(kin.ratio(i, j, w, singular="mask"))
             cols.append(Column(f"U{i}{j}{sfx}", "-", vals, _both("c_U", i, j)))
             note = _singular_note(v, f"U{i}{j}{sfx}", vals)
@@ -400,17 +438,25 @@ def _table_3_1(v):
     for sfx, w, c in v.wrts():
         sign = v.rate_sign(c)
         for p in tab.get("transmissions", ()):
+            if p in still[c][0]:
+                continue
             cols.append(Column(f"I{p}{sfx}", v.transmission_unit(c),
                                sign * v.pick(kin.transmission(p, wrt=w)), _both("c_I", p, c)))
     for sfx, w, c in v.wrts():
         sign = v.rate_sign(c)
         for link in kin.links:
+            if link in still[c][1]:
+                continue
             cols.append(Column(f"dphi{link}{sfx}", v.analog_unit(c),
                                sign * v.pick(kin.dphi(link, w)), _both("c_dphi", link, c)))
         for dist in v.mech.distances:
             cols.append(Column(f"d{dist.name}{sfx}", "m/rad" if v.is_angle(c) else "-",
                                sign * v.pick(kin.dlength(dist.name, w)),
                                _both("c_ddist", dist.name, c)))
+    for c in v.coords:
+        note = v.absent_note(c, *still[c])
+        if note:
+            notes.append(note)
     notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
 
@@ -437,21 +483,52 @@ def _table_4_1(v):
     notes = []
     several = len(a.cylinders) > 1
     points = v.transmission_points()
+    extrema = []
     for name, res in a.cylinders.items():
         c = res.cylinder.coordinate
         sfx = f"_{c}" if several else ""
         cols.append(Column(f"F_{c}", "N", v.pick(res.force), _both("c_F", name)))
         cols.append(Column(f"p_{c}", "Pa", v.pick(res.pressure), _both("c_p", name)))
+        # capacity only at the points of the chain this cylinder drives (assur.chains)
+        absent = [p for p in points if not v.moves_point(c, p)]
         for p in points:
+            if p in absent:
+                continue
             g, err = _capacity(v, res, p)
             cols.append(Column(f"G{p}{sfx}", "N", g, _both("c_G", p)))
             if err:
                 notes.append(_same(err))
+            elif v.k > 1:
+                extrema.append((f"G{p}{sfx}", p, g))
             for wname, P in v.weights_at(p)[:1]:
                 if P > 0:
                     cols.append(Column(f"dG{p}{sfx}", "%", (g - P) / P * 100.0,
                                        _both("c_dG", p, wname, P)))
+        note = v.absent_note(c, absent, (), "absent_capacity", name)
+        if note:
+            notes.append(note)
+    notes += _capacity_extrema(v, extrema)
     return Table("4.1", _both("t4.1"), tuple(cols), tuple(notes))
+
+
+def _capacity_extrema(v, extrema):
+    """Notes over several coordinates (seed 001 lab 1): the minimum of each capacity
+    map and its value at the farthest reach of its point (eq. 14a), and the dead
+    loads the capacities carry (eq. 14)."""
+    from ..capacity import dead_load_links
+    notes = []
+    for sym, p, g in extrema:
+        i = int(np.argmin(g))
+        notes.append({lang: TEXT["g_min"][lang].format(sym, g[i] / 1e3, v.at_text(i))
+                      for lang in LANGS})
+        x = v.pick(v.kin.x(p))
+        j = int(np.argmax(x))
+        notes.append({lang: TEXT["g_reach"][lang].format(sym, p, x[j], g[j] / 1e3, v.at_text(j))
+                      for lang in LANGS})
+    dead = dead_load_links(v.mech)
+    if dead:
+        notes.append(_both("g_dead", ", ".join(dead)))
+    return notes
 
 
 def _reaction_columns(v, st):
@@ -560,7 +637,18 @@ def _table_6_1(v):
     cols.append(Column("G_max_no_cw", "N", v.pick(st.max_implement_weight_without_counterweights),
                        _both("c_Gmax_no_cw")))
     cols.append(Column("steerable", "-", v.pick(st.steerable).astype(int), _both("c_steerable")))
-    return Table("6.1", _both("t6.1"), tuple(cols))
+    notes = []
+    if v.k > 1:  # over several coordinates: the limits' minima (seed 001 lab 1 eqs. 16, 18)
+        from ..analysis import gravity_of
+        g = gravity_of(v.mech)
+        for sym, vals in (("G_max", st.max_implement_weight),
+                          ("G_max_no_cw", st.max_implement_weight_without_counterweights)):
+            vals = v.pick(vals)
+            i = int(np.argmin(vals))
+            if np.isfinite(vals[i]):
+                notes.append({lang: TEXT["gmax_min"][lang].format(
+                    sym, vals[i] / 1e3, vals[i] / g, g, v.at_text(i)) for lang in LANGS})
+    return Table("6.1", _both("t6.1"), tuple(cols), tuple(notes))
 
 
 def _checked_body(v):
