@@ -80,6 +80,10 @@ class Model:
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
         print them; :func:`load` with ``warn=True`` issues them as
         :class:`assur.errors.ModelWarning`.
+    paired : bool
+        True when ``[range] paired = true``: the coordinates move together, position
+        i of each with position i of the others (``range`` has shape (n, k)), not
+        over their full grid.
     """
 
     mechanism: Mechanism
@@ -89,6 +93,15 @@ class Model:
     source: Path | None = None
     dynamics: object = None
     warnings: tuple = ()
+    paired: bool = False
+
+    @property
+    def shape(self) -> tuple:
+        """The positions' arrangement: ``(n,)`` for one coordinate or paired paths,
+        ``(n1, n2, …)`` for the grid of k coordinates (first coordinate first)."""
+        if self.paired or len(self.ranges) == 1:
+            return (len(self.range),)
+        return tuple(len(a) for a in self.ranges.values())
 
     @property
     def name(self) -> str:
@@ -238,7 +251,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
-                 tuple(builder.warnings))
+                 tuple(builder.warnings), builder.paired)
 
 
 def _warn(model: Model) -> Model:

@@ -43,7 +43,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from .labels import check_lang, t, unit
-from .tables import _View
+from .tables import _View, grid_of
 
 __all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
            "transmission",
@@ -104,20 +104,6 @@ def broken(x, y, breaks):
     return xs, ys
 
 
-def grid_of(q1, q2):
-    """The full grid behind positions ``(q1, q2)``, shape (n,) each: ``(u1, u2, i1, i2)``
-    with the sorted distinct values of each coordinate and every position's indices
-    into them — or None when the positions are not a full grid (paired paths)."""
-    q1, q2 = np.asarray(q1, dtype=float), np.asarray(q2, dtype=float)
-    u1, u2 = np.unique(q1), np.unique(q2)
-    if len(u1) < 2 or len(u2) < 2 or len(u1) * len(u2) != q1.size:
-        return None
-    i1, i2 = np.searchsorted(u1, q1), np.searchsorted(u2, q2)
-    if np.unique(i2 * len(u1) + i1).size != q1.size:
-        return None
-    return u1, u2, i1, i2
-
-
 def path_abscissa(columns):
     """Index of the first coordinate that changes strictly monotonically along the
     positions (the abscissa of paired paths), or 0."""
@@ -175,7 +161,8 @@ class _Plot:
             self.x = v.coord_values(c)
             self.xlabel = f"{v.coord_label(c)[lang]} [{unit(v.coord_unit(c), lang)}]"
             if v.k > 1:
-                self.xlabel += " (" + t("paired", lang) + ")"
+                others = ", ".join(o for o in v.coords if o != c)
+                self.xlabel += "; " + t("paired_axis", lang, others)
             self.c = c
         else:
             self.x = np.arange(v.n)
@@ -367,6 +354,7 @@ def capacity(analysis, lang="en", design=None):
     fig, ax = p.axes(t("f_capacity", lang), t("y_capacity", lang), "kN")
     n = 0
     several = len(v.a.cylinders) > 1
+    loads_drawn = set()
     for name, res in v.a.cylinders.items():
         for pt in v.transmission_points():
             if not v.moves_point(res.cylinder.coordinate, pt):  # undefined: not its chain
@@ -374,6 +362,9 @@ def capacity(analysis, lang="en", design=None):
             g, _ = _capacity(v, res, pt)
             p.line(ax, g / 1e3, _math("G", pt) + (f" ({name})" if several else ""))
             n += 1
+            if pt in loads_drawn:
+                continue
+            loads_drawn.add(pt)
             for wname, P in v.weights_at(pt)[:1]:
                 ax.axhline(P / 1e3, ls="--", lw=1, color="0.3",
                            label=t("load", lang, wname, P / 1e3))

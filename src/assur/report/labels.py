@@ -266,6 +266,7 @@ TEXT = {
                      "001, лаб. 1, формула 14)"},
     "paired": {"en": "the coordinates move together, position by position", "ru":
                "обобщённые координаты изменяются совместно, положение за положением"},
+    "paired_axis": {"en": "{0} moves with it", "ru": "{0} изменяется вместе с ней"},
     "f_map": {"en": "{0}: map over {1} and {2}", "ru": "{0}: карта по {1} и {2}"},
     "gmax_min": {"en": "{0}: minimum {1:.6g} kN ({2:.6g} kg at g = {3:.6g} m/s²) at {4}",
                  "ru": "{0}: минимум {1:.6g} кН ({2:.6g} кг при g = {3:.6g} м/с²) при {4}"},

@@ -90,7 +90,7 @@ from ..texts import LANGS, localize
 from .labels import TEXT, check_lang
 
 __all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
-           "TABLE_IDS"]
+           "TABLE_IDS", "grid_of"]
 
 #: id of the table of extra formulas that name no table
 FORMULAS_ID = "F"
@@ -206,6 +206,21 @@ class Table:
         """pandas DataFrame with the ``symbol [unit]`` headers."""
         import pandas as pd
         return pd.DataFrame({c.header: c.values for c in self.columns})
+
+
+def grid_of(q1, q2):
+    """The full grid behind positions ``(q1, q2)``, shape (n,) each: ``(u1, u2, i1, i2)``
+    with the sorted distinct values of each coordinate and every position's indices
+    into them — or None when the positions are not a full grid (paired paths)."""
+    q1, q2 = np.asarray(q1, dtype=float), np.asarray(q2, dtype=float)
+    u1, u2 = np.unique(q1), np.unique(q2)
+    if len(u1) < 2 or len(u2) < 2 or len(u1) * len(u2) != q1.size:
+        return None
+    i1, i2 = np.searchsorted(u1, q1), np.searchsorted(u2, q2)
+    if np.unique(i2 * len(u1) + i1).size != q1.size:
+        return None
+    return u1, u2, i1, i2
+
 
 
 # ---- reading the analysis ---------------------------------------------------------------
@@ -405,7 +420,10 @@ def _table_2_1(v):
     for dist in v.mech.distances:  # named distances (their angles are links above)
         cols.append(Column(dist.name, "m", v.pick(v.kin.length(dist.name)),
                            _both("c_dist", dist.name, dist.a, dist.b)))
-    return Table("2.1", _both("t2.1"), tuple(cols), tuple(v.convention_notes()))
+    notes = v.convention_notes()
+    if v.k > 1 and (v.k > 2 or grid_of(*(v.coord_values(c) for c in v.coords)) is None):
+        notes.append(_both("paired"))  # not a full grid: the coordinates move together
+    return Table("2.1", _both("t2.1"), tuple(cols), tuple(notes))
 
 
 def _table_2_2(v):
