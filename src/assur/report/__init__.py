@@ -115,7 +115,8 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
                                           balancing=analysis.balancing))
         for name, fig in figs.items():
-            caption = fig.axes[0].get_title() if fig.axes else name
+            # a figure of maps (two coordinates) has its title above the panels
+            caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
             png = _figures.to_png_bytes(fig)
             pngs[name] = (png, caption)
             if "png" in formats:

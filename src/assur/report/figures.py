@@ -480,7 +480,7 @@ def hodograph(analysis, lang="en", design=None):
         if v.k == 1:
             qtxt = f"{c} = {p.x[k]:.4g} {unit(v.coord_unit(c), lang)}"
         else:
-            qtxt = v.at_text(range(len(rx))[k])
+            qtxt = v.at_text(range(len(rx))[k], lang)
         ax.plot(rx[k], ry[k], ls="none", ms=8, zorder=3, label=f"{t(key, lang)}: {qtxt}",
                 **style)
     if len(rx) > 1 and not p.is_map:  # the direction of travel, at the middle of the curve

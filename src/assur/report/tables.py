@@ -392,9 +392,10 @@ class _View:
                                                     TEXT[what][lang].format(*args))
         return out
 
-    def at_text(self, i):
-        """'S = 1.2 m, S1 = 0.8 m' of position ``i``."""
-        return ", ".join(f"{c} = {self.coord_values(c)[i]:.6g} {self.coord_unit(c)}"
+    def at_text(self, i, lang="en"):
+        """'S = 1.2 m, S1 = 0.8 m' of position ``i`` (units spelt for ``lang``)."""
+        from .labels import unit
+        return ", ".join(f"{c} = {self.coord_values(c)[i]:.6g} {unit(self.coord_unit(c), lang)}"
                          for c in self.coords)
 
     def transmission_points(self):
@@ -537,11 +538,12 @@ def _capacity_extrema(v, extrema):
     notes = []
     for sym, p, g in extrema:
         i = int(np.argmin(g))
-        notes.append({lang: TEXT["g_min"][lang].format(sym, g[i] / 1e3, v.at_text(i))
+        notes.append({lang: TEXT["g_min"][lang].format(sym, g[i] / 1e3, v.at_text(i, lang))
                       for lang in LANGS})
         x = v.pick(v.kin.x(p))
         j = int(np.argmax(x))
-        notes.append({lang: TEXT["g_reach"][lang].format(sym, p, x[j], g[j] / 1e3, v.at_text(j))
+        notes.append({lang: TEXT["g_reach"][lang].format(sym, p, x[j], g[j] / 1e3,
+                                                         v.at_text(j, lang))
                       for lang in LANGS})
     dead = dead_load_links(v.mech)
     if dead:
@@ -665,7 +667,7 @@ def _table_6_1(v):
             i = int(np.argmin(vals))
             if np.isfinite(vals[i]):
                 notes.append({lang: TEXT["gmax_min"][lang].format(
-                    sym, vals[i] / 1e3, vals[i] / g, g, v.at_text(i)) for lang in LANGS})
+                    sym, vals[i] / 1e3, vals[i] / g, g, v.at_text(i, lang)) for lang in LANGS})
     return Table("6.1", _both("t6.1"), tuple(cols), tuple(notes))
 
 
