@@ -248,3 +248,27 @@ def test_dead_loads_errors_in_the_file():
         io.loads(text.replace('dead_loads = ["3"]', 'dead_loads = ["33"]'), name="x.toml")
     with pytest.raises(io.ModelFileError, match=r"no load acts on link \"5\""):
         io.loads(text.replace('dead_loads = ["3"]', 'dead_loads = ["5"]'), name="x.toml")
+
+
+@settings(max_examples=n_examples(40), deadline=None)
+@given(s=st.floats(0.0, 1.0), s1=st.floats(0.0, 1.0),
+       L7=st.floats(0.22, 0.28), LS9=st.floats(0.3, 0.9))
+def test_analogs_against_central_differences_anywhere(s, s1, L7, LS9):
+    """At any (S, S1) inside the range and for other arm and tool dimensions, the
+    first-order analogs along each coordinate (transmission numbers, φ9') equal central
+    differences of the positions to O(h²)."""
+    base = examples.loader_lab1()
+    m = base.with_params(L7=L7, LS9=LS9)
+    lo, hi = examples.loader_lab1_range().min(axis=0), examples.loader_lab1_range().max(axis=0)
+    q = (lo + np.array([s, s1]) * (hi - lo))[None, :]
+    kin = m.solve(q)
+    h = 1e-6
+    for j, c in enumerate(("S", "S1")):
+        e = np.zeros(2)
+        e[j] = h
+        up, dn = m.solve(q + e), m.solve(q - e)
+        for p in ("S9", "09", "89"):
+            fd = (up.y(p) - dn.y(p)) / (2 * h)
+            np.testing.assert_allclose(kin.transmission(p, wrt=c), fd, rtol=1e-6, atol=1e-7)
+        fd9 = (up.phi("9") - dn.phi("9")) / (2 * h)
+        np.testing.assert_allclose(kin.dphi("9", c), fd9, rtol=1e-6, atol=1e-7)
