@@ -162,3 +162,25 @@ def test_analyze_writes_the_loader_report(tmp_path):
     html = (tmp_path / "ru" / "report.html").read_text()
     assert "карта по S и S1" in html
     assert re.search(r"S = [0-9.]+ м, S1 = [0-9.]+ м", html)  # positions in Russian units
+
+
+def test_capacity_map_table_g(grid_analysis):
+    """Table G arranges each capacity of table 4.1 as the map G(S, S1): a row per S, a
+    column per value of S1 — the same numbers."""
+    tabs = {t.id: t for t in seed_tables(grid_analysis)}
+    t41, tg = tabs["4.1"], tabs["G"]
+    S, S1 = t41["S"], t41["S1"]
+    uS, uS1 = np.unique(S), np.unique(S1)
+    np.testing.assert_array_equal(tg["S"], uS)
+    for sym in ("G09_S", "GS9_S", "GS9_S1"):
+        for val in uS1:
+            col = tg[f"{sym}@S1={val:.6g}"]
+            want = t41[sym][S1 == val][np.argsort(S[S1 == val])]
+            np.testing.assert_array_equal(col, want)
+    assert not any(s.startswith("G09_S1") for s in tg.symbols)  # S1 does not lift 09
+    assert tg.title("ru").startswith("Карты грузоподъёмности")
+
+
+def test_no_map_table_for_paired_paths(paired):
+    a = paired.mechanism.analyze(paired.range)
+    assert "G" not in [t.id for t in seed_tables(a)]

@@ -266,6 +266,14 @@ TEXT = {
                      "001, лаб. 1, формула 14)"},
     "paired": {"en": "the coordinates move together, position by position", "ru":
                "обобщённые координаты изменяются совместно, положение за положением"},
+    "tG": {"en": "Lift capacity maps G({0}, {1}) (seed 001 lab 1 eq. 14)",
+           "ru": "Карты грузоподъёмности G({0}, {1}) (источник 001, лаб. 1, формула 14)"},
+    "g_map": {"en": "rows: {0}; a column per capacity and value of {1} (G<p>_<c>@{1}=<value>: "
+                    "the capacity of the cylinder on c at point p); the same numbers as table "
+                    "4.1, arranged as the map",
+              "ru": "строки: {0}; столбец на каждую грузоподъёмность и значение {1} "
+                    "(G<p>_<c>@{1}=<значение>: грузоподъёмность гидроцилиндра по c в точке p); "
+                    "те же числа, что в таблице 4.1, в виде карты"},
     "paired_axis": {"en": "{0} moves with it", "ru": "{0} изменяется вместе с ней"},
     "f_map": {"en": "{0}: map over {1} and {2}", "ru": "{0}: карта по {1} и {2}"},
     "gmax_min": {"en": "{0}: minimum {1:.6g} kN ({2:.6g} kg at g = {3:.6g} m/s²) at {4}",

@@ -58,7 +58,11 @@ rotation, d/dφ1 · sign φ1' (its :class:`assur.motion.Motion`; the seeds turn
 clockwise and write φ1' = −1). Each table notes the convention in force.
 
 With k > 1 coordinates every analog symbol gets the suffix ``_<c>`` (``dphi3_S1``);
-with several cylinders ``G<p>`` and ``dG<p>`` get it too. Analogs with respect to
+with several cylinders ``G<p>`` and ``dG<p>`` get it too. A quantity along a
+coordinate that does not move its point or turn its link (:mod:`assur.chains`) has
+no column; the table's note says so. Over a full grid of two coordinates table
+``G`` holds each capacity of 4.1 as its map: a row per value of the first
+coordinate, a column ``G<p>_<c>@<c2>=<value>`` per value of the second. Analogs with respect to
 a crank angle are in rad/rad (unit ``-``) and transmission numbers in m/rad.
 
 Sign convention of reactions: ``R<ij>`` is the force of link i on link j (the
@@ -87,7 +91,7 @@ from ..columns import TABLE_IDS
 from ..errors import SingularPositionError
 from ..loads import Weight
 from ..texts import LANGS, localize
-from .labels import TEXT, check_lang
+from .labels import TEXT, check_lang, unit
 
 __all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
            "TABLE_IDS", "grid_of"]
@@ -394,7 +398,6 @@ class _View:
 
     def at_text(self, i, lang="en"):
         """'S = 1.2 m, S1 = 0.8 m' of position ``i`` (units spelt for ``lang``)."""
-        from .labels import unit
         return ", ".join(f"{c} = {self.coord_values(c)[i]:.6g} {unit(self.coord_unit(c), lang)}"
                          for c in self.coords)
 
@@ -530,6 +533,40 @@ def _table_4_1(v):
     return Table("4.1", _both("t4.1"), tuple(cols), tuple(notes))
 
 
+def _table_g(v):
+    """Capacity maps over a grid of two coordinates (seed 001 lab 1: G(S, S1), eq. 14):
+    one row per value of the first coordinate, one column per capacity and value of
+    the second — the map the lab draws, as numbers. None unless the positions are a
+    full grid of two coordinates and a cylinder has a capacity."""
+    a = v.a
+    if v.k != 2 or not a.cylinders:
+        return None
+    c1, c2 = v.coords
+    grid = grid_of(v.coord_values(c1), v.coord_values(c2))
+    if grid is None:
+        return None
+    u1, u2, i1, i2 = grid
+    cols = [Column(c1, v.coord_unit(c1), u1, v.coord_label(c1))]
+    for name, res in a.cylinders.items():
+        c = res.cylinder.coordinate
+        for p in v.transmission_points():
+            if not v.moves_point(c, p):
+                continue
+            g, err = _capacity(v, res, p)
+            if err:
+                continue  # singular somewhere: 4.1 says where; no map with holes
+            z = np.full((len(u1), len(u2)), np.nan)
+            z[i1, i2] = g
+            for k, val in enumerate(u2):
+                cols.append(Column(f"G{p}_{c}@{c2}={val:.6g}", "N", z[:, k],
+                                   {lang: f"{TEXT['c_G'][lang].format(p)} ({name}), "
+                                          f"{c2} = {val:.6g} {unit(v.coord_unit(c2), lang)}"
+                                    for lang in LANGS}))
+    if len(cols) == 1:
+        return None
+    return Table("G", _both("tG", c1, c2), tuple(cols), (_both("g_map", c1, c2),))
+
+
 def _capacity_extrema(v, extrema):
     """Notes over several coordinates (seed 001 lab 1): the minimum of each capacity
     map and its value at the farthest reach of its point (eq. 14a), and the dead
@@ -576,8 +613,8 @@ def _reaction_columns(v, st):
             f = st.actuator_force_from_reactions(c)
         except KeyError:
             continue
-        unit = "N·m" if v.is_angle(c) else "N"
-        cols.append(Column(f"F_{c}", unit, v.pick(f), _both("c_Frx", c)))
+        u = "N·m" if v.is_angle(c) else "N"
+        cols.append(Column(f"F_{c}", u, v.pick(f), _both("c_Frx", c)))
     return cols
 
 
@@ -730,8 +767,8 @@ def _table_ic(v):
     return Table("IC", _both("tIC"), tuple(cols), tuple(notes))
 
 
-_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_5_2, _table_d,
-             _table_6_1, _table_ic)
+_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_g, _table_5_1, _table_5_2,
+             _table_d, _table_6_1, _table_ic)
 
 
 def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> list:
