@@ -56,6 +56,8 @@ def dead_load_mechanism(mech, links=None):
     ModelError
         If a link carries no load (a misspelt link name would silently carry nothing).
     """
+    if isinstance(links, str):
+        links = (links,)
     links = dead_load_links(mech) if links is None else tuple(links)
     if not links:
         return None
