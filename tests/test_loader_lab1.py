@@ -50,6 +50,9 @@ def test_grid_of_two_coordinates(model, analysis):
     np.testing.assert_array_equal(model.range[:, 1].reshape(nS, nS1)[0], model.ranges["S1"])
     phi3 = analysis.kinematics.phi("3", degrees=True)
     assert 75.0 <= np.ptp(phi3) <= 80.0
+    # the stroke is solved (Given/Find): φ3(Smin) = −2°, φ3(Smax) = 75°
+    assert [s.condition.unknown for s in model.solved] == ["Smin", "Smax"]
+    np.testing.assert_allclose([phi3.min(), phi3.max()], [-2.0, 75.0], atol=1e-9)
     assert np.max(analysis.kinematics.closure_residual()) <= 1e-9
 
 
