@@ -27,7 +27,7 @@ def _placeholders(mech=None):
             "<l>": _alt(links), "<i><j>": _alt(links) + _alt(links),
             "<axle>": _alt([a.lower() for a in axles] + axles) if axles else "(?!)",
             "<d>": _alt([d.name for d in mech.distances]) if mech.distances else "(?!)",
-            "<formula>": None, "<name>": r"\w+"}
+            "<formula>": None, "<name>": r"\w+", "<value>": r"-?[0-9][0-9.e+-]*"}
 
 
 def _patterns(section, mech=None):

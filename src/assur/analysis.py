@@ -100,7 +100,7 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
         g = gravity_of(mech)
     kin = mech.solve(q, params=params, **solve_kw)
     st = _statics.solve(kin, qdot=qdot, qddot=qddot, g=g)
-    cyl = {c.name: CylinderResult(kin, st, c) for c in kin.mechanism.cylinders}
+    cyl = {c.name: CylinderResult(kin, st, c, g=g) for c in kin.mechanism.cylinders}
     stab = None
     machine = kin.mechanism.machine
     if machine is not None:

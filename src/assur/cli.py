@@ -93,6 +93,16 @@ def _assemble(model):
         _fail(f"{model.source}: {e}")
 
 
+def _shape_text(model) -> str:
+    """'grid S × S1: 13 × 8 = 104 positions' or 'paired paths S, S1: 9 positions'."""
+    cs = list(model.mechanism.coordinates)
+    if model.paired:
+        return f"paired paths {', '.join(cs)}: {len(model.range)} positions"
+    shape = model.shape
+    return (f"grid {' × '.join(cs)}: {' × '.join(str(n) for n in shape)} = "
+            f"{len(model.range)} positions")
+
+
 @app.command()
 def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     """Validate a model file, solve its conditions and assemble it over its range."""
@@ -114,7 +124,7 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
                                            for d in m.distances))
     rng = model.range
     for j, c in enumerate(m.coordinates):
-        col = rng if rng.ndim == 1 else rng[..., j]
+        col = rng if rng.ndim == 1 else model.ranges[c]  # its own values, not the grid
         if m.coordinate_kind(c) == "angle":
             deg = np.degrees(col)
             tab.add_row(f"range of {c}", f"{deg[0]:.6g}° … {deg[-1]:.6g}° ({col.size} "
@@ -122,6 +132,8 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
         else:
             tab.add_row(f"range of {c}", f"{col.min():.6g} … {col.max():.6g} m ({col.size} "
                                          f"positions)")
+    if len(m.coordinates) > 1:  # the grid's shape, or paired paths
+        tab.add_row("positions", _shape_text(model))
     for mo in m.motions:
         tab.add_row(f"motion of {mo.coordinate}", mo.describe())
     for s in model.solved:

@@ -30,7 +30,8 @@ import numpy as np
 from .mechanism import Mechanism
 
 __all__ = ["hitch_003", "hitch_003_range", "header_000", "header_000_fixed", "header_000_range",
-           "combine_002", "combine_002_printed", "combine_002_range", "combine_002_turn_range"]
+           "combine_002", "combine_002_printed", "combine_002_range", "combine_002_turn_range",
+           "loader_lab1", "loader_lab1_range"]
 
 #: seed 003: the exact roots of its three Find blocks (printed rounded to 4 digits:
 #: L4 = 0.6613, Sp = 0.4694, L7 = 0.7522; the printed tables used these values).
@@ -178,3 +179,21 @@ def combine_002_turn_range() -> np.ndarray:
     """A full clockwise turn from j1 = 14.679°, one position per degree (361 positions,
     ``combine_002_turn.toml``) [rad]."""
     return np.array(_model("combine_002_turn").range)
+
+
+def loader_lab1(**params) -> Mechanism:
+    """The mini-loader lift device of seed 001 lab 1 (``loader_lab1.toml``), with
+    illustrative dimensions: two coordinates, the boom cylinder S and the traverse
+    cylinder S1 (two cylinders side by side in each), the boom's own weight as a dead
+    load of the capacity (lab eq. 14) and the machine on two axles (eqs. 15–18).
+
+    The lab gives no dimensions; these are chosen so that the capacity at the
+    suspension axis 09 with the boom's weight is about 11.5 kN and the
+    steerability-limited mass at 09 about 800 kg, as the lab reports."""
+    return _mechanism("loader_lab1", params)
+
+
+def loader_lab1_range() -> np.ndarray:
+    """The grid of (S, S1) of ``loader_lab1.toml`` [m], shape (n_S·n_S1, 2), S
+    varying slowest."""
+    return np.array(_model("loader_lab1").range)

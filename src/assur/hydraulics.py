@@ -62,8 +62,10 @@ class CylinderResult:
         k·p_max·A·η_h [N].
     """
 
-    def __init__(self, kin, statics, cyl):
+    def __init__(self, kin, statics, cyl, g=None):
         self.cylinder = cyl
+        #: gravity for the masses among the dead loads [m/s²] (None: the model's)
+        self.g = g
         self.kinematics = kin
         self.statics = statics
         mech = kin.mechanism
@@ -98,17 +100,32 @@ class CylinderResult:
 
     def capacity(self, point, dead_loads=None):
         """Lift capacity at ``point``: the vertical load [N] the cylinders hold there at
-        p_max, G = (F_max·η_m − F_dead)/I(point).
+        p_max, G = (F_max·η_m − F_dead)/I(point), I = ∂Y/∂q along this cylinder's
+        coordinate q.
 
         Parameters
         ----------
         point : str
-        dead_loads : Mechanism, optional
-            A mechanism whose loads are carried besides the load at the point (e.g.
-            the model with only the boom's weight, seed 001 lab 1 eq. 14); default
-            none (seed 003 G56, GS6).
+            A point this cylinder moves (:func:`assur.capacity.lifts`).
+        dead_loads : Mechanism or sequence of str, optional
+            Loads carried besides the load at the point (seed 001 lab 1 eq. 14: the
+            boom's own weight): a mechanism whose loads they are, or the names of
+            links whose loads they are (:func:`assur.capacity.dead_load_mechanism`);
+            ``()`` for none. Default: the model's dead loads (``[tables]
+            dead_loads``), none if it declares none (seed 003 G56, GS6).
+
+        Raises
+        ------
+        ModelError
+            If this cylinder does not move ``point`` (the capacity is undefined).
+        SingularPositionError
+            If the point does not rise at some position (I = 0 there).
         """
+        from .capacity import check_lifts, dead_load_mechanism
         kin = self.kinematics
+        check_lifts(kin.mechanism, self.cylinder.coordinate, point, self.cylinder.name)
+        if dead_loads is None or not hasattr(dead_loads, "loads"):
+            dead_loads = dead_load_mechanism(kin.mechanism, dead_loads)
         I = kin.transmission(point, wrt=self.cylinder.coordinate if kin.k > 1 else None)
         bad = np.abs(I) <= 1e-12 * np.max(np.abs(I))
         if np.any(bad):
@@ -119,8 +136,10 @@ class CylinderResult:
         if dead_loads is not None:
             from .statics import virtual_work_forces
             kd = _with_loads(kin, dead_loads)
-            fdead = kin.reshape(np.broadcast_to(virtual_work_forces(kd)[self.cylinder.coordinate],
-                                             (kin.m, kin.n)))
+            from .analysis import gravity_of
+            g = gravity_of(kin.mechanism) if self.g is None else self.g
+            f = virtual_work_forces(kd, g=g)[self.cylinder.coordinate]
+            fdead = kin.reshape(np.broadcast_to(f, (kin.m, kin.n)))
         return (self.force_max * self.eta_mech - fdead) / I
 
     def reserve(self, point, P):

@@ -266,6 +266,12 @@ class Mechanism:
         from .stability import Carrying
         return self._with(machine=Carrying(machine, point, weight, refs))
 
+    def with_loads(self, loads) -> "Mechanism":
+        """The same mechanism with ``loads`` (:mod:`assur.loads` objects) in place of
+        its own, e.g. a subset of them (the dead loads of a capacity,
+        :func:`assur.capacity.dead_load_mechanism`)."""
+        return self._with(loads=tuple(loads))
+
     def with_params(self, **values) -> "Mechanism":
         """Return a copy with some parameters replaced (scalars or arrays over designs)."""
         unknown = sorted(set(values) - set(self.params))

@@ -83,6 +83,10 @@ class Model:
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
         print them; :func:`load` with ``warn=True`` issues them as
         :class:`assur.errors.ModelWarning`.
+    paired : bool
+        True when ``[range] paired = true``: the coordinates move together, position
+        i of each with position i of the others (``range`` has shape (n, k)), not
+        over their full grid.
     """
 
     mechanism: Mechanism
@@ -93,6 +97,15 @@ class Model:
     dynamics: object = None
     warnings: tuple = ()
     lift_test: object = None
+    paired: bool = False
+
+    @property
+    def shape(self) -> tuple:
+        """The positions' arrangement: ``(n,)`` for one coordinate or paired paths,
+        ``(n1, n2, …)`` for the grid of k coordinates (first coordinate first)."""
+        if self.paired or len(self.ranges) == 1:
+            return (len(self.range),)
+        return tuple(len(a) for a in self.ranges.values())
 
     @property
     def name(self) -> str:
@@ -261,7 +274,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
-                 tuple(builder.warnings), builder.lift_test)
+                 tuple(builder.warnings), builder.lift_test, builder.paired)
 
 
 def _warn(model: Model) -> Model:

@@ -142,7 +142,18 @@ class Builder:
 
     # ---- pass 0: structure ------------------------------------------------------------
     def validate(self):
-        spec, errors = S.validate(S.FileSpec, self.data)
+        data, errors = self.data, []
+        #: [range] paired = true: the coordinates move together, position by position
+        self.paired = False
+        rng = data.get("range")
+        if isinstance(rng, dict) and "paired" in rng and not isinstance(rng["paired"], dict):
+            p = rng["paired"]
+            data = dict(data, range={k: v for k, v in rng.items() if k != "paired"})
+            if not isinstance(p, bool):
+                errors.append((("range", "paired"), f"expected true or false, found {S.show(p)}"))
+            self.paired = p is True
+        spec, errs = S.validate(S.FileSpec, data)
+        errors += errs
         self.groups, self.loads = [], []
         for section, types, out in (("groups", S.group_types(), self.groups),
                                     ("loads", S.LOAD_TYPES, self.loads)):
@@ -693,6 +704,19 @@ class Builder:
         for key in ("angles", "analogs"):
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
+        if t.dead_loads is not None:  # links whose loads every capacity carries
+            from ..capacity import load_link
+            for k, b in enumerate(t.dead_loads):
+                path = tp + ("dead_loads", k)
+                if b not in bodies or b == "0":
+                    moving = [x for x in bodies if x != "0"]
+                    raise self.error(path, f'unknown link "{b}": expected a moving link of the '
+                                           f'mechanism ({", ".join(moving)}), found "{b}"'
+                                           f"{S.did_you_mean(b, moving)}")
+                if not any(load_link(mech, ld) == b for ld in mech.loads):
+                    raise self.error(path, f'no load acts on link "{b}": a dead load is the '
+                                           f"weight or mass of a link ([[loads]] on it)")
+            out["dead_loads"] = list(t.dead_loads)
         return mech.with_tables(**out)
 
     def extra_columns(self, mech):
@@ -839,7 +863,7 @@ class Builder:
         need more memory than :func:`assur.inputs.max_memory`, before allocating."""
         total = count
         for c in counts.values():
-            total *= c
+            total = max(total, c) if self.paired else total * c
         try:
             check_memory(total, bytes_per_position(mech),
                          "the range" if len(self.coords) == 1 else "the grid of the ranges")
@@ -888,7 +912,19 @@ class Builder:
                                                                if k != c})
             a.setflags(write=False)
             axes[c] = a
-        if len(self.coords) == 1:
+        if self.paired:  # paired paths: position i of every coordinate together
+            if len(self.coords) < 2:
+                raise self.error(("range", "paired"), "paired paths need two or more "
+                                                      "coordinates; this model has one")
+            sizes = {c: axes[c].size for c in self.coords}
+            if len(set(sizes.values())) > 1:
+                raise self.error(("range", "paired"),
+                                 "paired paths need the same number of positions for every "
+                                 "coordinate, found " + ", ".join(f"{c}: {n}"
+                                                                  for c, n in sizes.items()))
+            grid = np.stack([axes[c] for c in self.coords], axis=-1)
+            grid.setflags(write=False)
+        elif len(self.coords) == 1:
             grid = axes[self.coords[0]]
         else:
             mesh = np.meshgrid(*(axes[c] for c in self.coords), indexing="ij")

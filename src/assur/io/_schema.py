@@ -442,6 +442,8 @@ class TablesSpec(_Table):
     #: analogs of a crank angle: with respect to the "coordinate", or along the direction
     #: of "rotation" of its [motion] (dφ/dφ1 · sign φ1')
     analogs: typing.Literal["coordinate", "rotation"] = None
+    #: links whose loads every lift capacity carries (seed 001 lab 1 eq. 14: the boom)
+    dead_loads: list[Name] = None
 
 
 class SolveSpec(_Table):

@@ -118,7 +118,8 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             from .lift import lift_test_figure
             figs["lift_test"] = lift_test_figure(analysis, lang)
         for name, fig in figs.items():
-            caption = fig.axes[0].get_title() if fig.axes else name
+            # a figure of maps (two coordinates) has its title above the panels
+            caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
             png = _figures.to_png_bytes(fig)
             pngs[name] = (png, caption)
             if "png" in formats:

@@ -43,7 +43,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from .labels import check_lang, t, unit
-from .tables import _View
+from .tables import _View, grid_of
 
 __all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
            "transmission",
@@ -104,28 +104,81 @@ def broken(x, y, breaks):
     return xs, ys
 
 
+def path_abscissa(columns):
+    """Index of the first coordinate that changes strictly monotonically along the
+    positions (the abscissa of paired paths), or 0."""
+    for k, q in enumerate(columns):
+        d = np.diff(np.asarray(q, dtype=float))
+        if d.size and (np.all(d > 0) or np.all(d < 0)):
+            return k
+    return 0
+
+
+class _MapAxes:
+    """Collects the curves of a figure over two coordinates; :meth:`_Plot.done` draws
+    each as a map (heatmap with contours) over the grid. A horizontal reference line
+    (a load, F_max, p_max, the 20 % share) becomes a red contour at its level."""
+
+    def __init__(self, title, ylabel, yunit):
+        self.title, self.ylabel, self.yunit = title, ylabel, yunit
+        self.series, self.levels = [], []
+
+    def axhline(self, y, label=None, **kw):
+        self.levels.append((float(y), label))
+
+    def axhspan(self, *a, **kw):
+        pass
+
+    def set_ylim(self, *a, **kw):
+        pass
+
+    def get_ylim(self):
+        return (0.0, 1.0)
+
+    def legend(self, *a, **kw):
+        pass
+
+
 class _Plot:
-    """Shared abscissa and labels for one design."""
+    """Shared abscissa and labels for one design.
+
+    One coordinate: the curves against it. Two coordinates on a full grid: maps
+    (a heatmap with contours per curve, the axes in the coordinates' units). Paired
+    paths (the coordinates move together, ``[range] paired = true``): the curves
+    against the first coordinate that changes monotonically along the path."""
 
     def __init__(self, analysis, lang, design):
         self.lang = check_lang(lang)
         self.v = _View(analysis, design)
         v = self.v
-        if v.k == 1:
-            c = v.coords[0]
+        self.grid = None
+        self.c = v.coords[0]
+        if v.k == 2:
+            self.grid = grid_of(v.coord_values(v.coords[0]), v.coord_values(v.coords[1]))
+        if v.k == 1 or self.grid is None:
+            k = 0 if v.k == 1 else path_abscissa([v.coord_values(c) for c in v.coords])
+            c = v.coords[k]
             self.x = v.coord_values(c)
             self.xlabel = f"{v.coord_label(c)[lang]} [{unit(v.coord_unit(c), lang)}]"
+            if v.k > 1:
+                others = ", ".join(o for o in v.coords if o != c)
+                self.xlabel += "; " + t("paired_axis", lang, others)
             self.c = c
         else:
             self.x = np.arange(v.n)
             self.xlabel = t("position", lang)
-            self.c = v.coords[0]
         #: the positions in the order drawn (sorted by the abscissa)
         self.order = plot_order(self.x)
         self._drawn: dict = {}
 
+    @property
+    def is_map(self) -> bool:
+        return self.grid is not None
+
     def axes(self, title, ylabel, yunit, width=6.4, height=4.0):
         fig = new_figure(width, height)
+        if self.is_map:
+            return fig, _MapAxes(title, ylabel, yunit)
         ax = fig.add_subplot()
         ax.set_title(title)
         ax.set_xlabel(self.xlabel)
@@ -133,10 +186,63 @@ class _Plot:
         ax.grid(True, alpha=0.35)
         return fig, ax
 
+    def axis_label(self, c):
+        v = self.v
+        return f"{c} [{unit(v.coord_unit(c), self.lang)}]"
+
+    def surface(self, y):
+        """Values over the positions as a 2-D array (second coordinate × first)."""
+        u1, u2, i1, i2 = self.grid
+        z = np.full((len(u2), len(u1)), np.nan)
+        z[i2, i1] = np.asarray(y, dtype=float)
+        return np.ma.masked_invalid(z)
+
+    def done(self, fig, ax=None):
+        """The finished figure: a map figure draws its collected curves here."""
+        maps = getattr(fig, "_assur_maps", None) if ax is None else ax
+        if not isinstance(maps, _MapAxes):
+            return fig
+        n = len(maps.series)
+        if n == 0:
+            return None
+        ncol = min(n, 3)
+        nrow = -(-n // ncol)
+        fig.set_size_inches(4.3 * ncol, 3.5 * nrow + 0.5)
+        u1, u2, _, _ = self.grid
+        c1, c2 = self.v.coords
+        yu = unit(maps.yunit, self.lang)
+        for k, (label, y) in enumerate(maps.series):
+            ax = fig.add_subplot(nrow, ncol, k + 1)
+            z = self.surface(y)
+            mesh = ax.pcolormesh(u1, u2, z, shading="nearest", cmap="viridis")
+            fig.colorbar(mesh, ax=ax, label=yu)
+            lo, hi = float(np.min(z)), float(np.max(z))
+            if hi - lo > 1e-12 * max(abs(lo), abs(hi), 1e-300):
+                cs = ax.contour(u1, u2, z, levels=6, colors="k", linewidths=0.6)
+                ax.clabel(cs, fontsize="x-small", fmt="%.4g")
+                for level, _ in maps.levels:
+                    if lo < level < hi:
+                        ax.contour(u1, u2, z, levels=[level], colors="C3", linewidths=1.6,
+                                   linestyles="--")
+            ax.set_title(label, fontsize="small")
+            ax.set_xlabel(self.axis_label(c1))
+            ax.set_ylabel(self.axis_label(c2))
+        title = t("f_map", self.lang, maps.title, c1, c2) + f"; {maps.ylabel} [{yu}]"
+        labels = list(dict.fromkeys(lab for _, lab in maps.levels if lab))
+        if labels:
+            title += "; " + ", ".join(labels) + " (- - -)"
+        import textwrap
+        fig.suptitle("\n".join(textwrap.wrap(title, 48 * ncol)), fontsize="medium")
+        return fig
+
     def line(self, ax, y, label, angle=False, **kw):
         """Draw ``y`` over the positions sorted by the abscissa; an ``angle`` curve [°]
         in the wrapped convention is broken where it wraps; a curve equal to one
-        drawn before on these axes gets another style and the label ``this = that``."""
+        drawn before on these axes gets another style and the label ``this = that``.
+        On a map figure the curve is kept and drawn as a map by :meth:`done`."""
+        if isinstance(ax, _MapAxes):
+            ax.series.append((label, np.asarray(y, dtype=float)))
+            return
         y = np.asarray(y, dtype=float)
         drawn = self._drawn.setdefault(id(ax), [])
         same = [lab for yy, lab in drawn if yy.shape == y.shape and np.allclose(
@@ -155,6 +261,8 @@ class _Plot:
 
     @staticmethod
     def legend(fig, ax, n):
+        if isinstance(ax, _MapAxes):
+            return
         if n > 5:
             fig.legend(loc="outside right upper", fontsize="small")
         elif n > 0:
@@ -169,7 +277,7 @@ def angles(analysis, lang="en", design=None):
     for link in kin.links:
         p.line(ax, p.v.phi_values(link), _math(_PHI, link), angle=True)
     p.legend(fig, ax, len(kin.links))
-    return fig
+    return p.done(fig, ax)
 
 
 #: titles of the figures kept here (the lead may move them into :mod:`.labels`)
@@ -189,7 +297,7 @@ def distances(analysis, lang="en", design=None):
     for dist in v.mech.distances:
         p.line(ax, v.pick(v.kin.length(dist.name)), dist.name)
     p.legend(fig, ax, len(v.mech.distances))
-    return fig
+    return p.done(fig, ax)
 
 
 def analogs(analysis, lang="en", design=None):
@@ -203,11 +311,13 @@ def analogs(analysis, lang="en", design=None):
     n = 0
     for sfx, w, c in v.wrts():
         for link in kin.links:  # along the crank's rotation where the tables say so
+            if not v.moves_link(c, link):  # 0 along a coordinate that does not turn it
+                continue
             lab = _math(_PHI, link, prime=True) + (f" ({c})" if sfx else "")
             p.line(ax, v.rate_sign(c) * v.pick(kin.dphi(link, w)), lab)
             n += 1
     p.legend(fig, ax, n)
-    return fig
+    return p.done(fig, ax)
 
 
 def transmission(analysis, lang="en", design=None):
@@ -223,11 +333,13 @@ def transmission(analysis, lang="en", design=None):
     n = 0
     for sfx, w, c in v.wrts():
         for pt in pts:
+            if not v.moves_point(c, pt):  # 0 along a coordinate that does not move it
+                continue
             p.line(ax, v.rate_sign(c) * v.pick(kin.transmission(pt, wrt=w)),
                    _math("I", pt) + (f" ({c})" if sfx else ""))
             n += 1
     p.legend(fig, ax, n)
-    return fig
+    return p.done(fig, ax)
 
 
 def capacity(analysis, lang="en", design=None):
@@ -242,17 +354,23 @@ def capacity(analysis, lang="en", design=None):
     fig, ax = p.axes(t("f_capacity", lang), t("y_capacity", lang), "kN")
     n = 0
     several = len(v.a.cylinders) > 1
+    loads_drawn = set()
     for name, res in v.a.cylinders.items():
         for pt in v.transmission_points():
+            if not v.moves_point(res.cylinder.coordinate, pt):  # undefined: not its chain
+                continue
             g, _ = _capacity(v, res, pt)
             p.line(ax, g / 1e3, _math("G", pt) + (f" ({name})" if several else ""))
             n += 1
+            if pt in loads_drawn:
+                continue
+            loads_drawn.add(pt)
             for wname, P in v.weights_at(pt)[:1]:
                 ax.axhline(P / 1e3, ls="--", lw=1, color="0.3",
                            label=t("load", lang, wname, P / 1e3))
                 n += 1
     p.legend(fig, ax, n)
-    return fig
+    return p.done(fig, ax)
 
 
 def force(analysis, lang="en", design=None):
@@ -272,7 +390,7 @@ def force(analysis, lang="en", design=None):
                                                                        fmax / 1e3))
         n += 2
     p.legend(fig, ax, n)
-    return fig
+    return p.done(fig, ax)
 
 
 def pressure(analysis, lang="en", design=None):
@@ -291,7 +409,7 @@ def pressure(analysis, lang="en", design=None):
             ax.axhline(pmax / 1e6, ls="--", lw=1, color="C3", label=t("p_max", lang, pmax / 1e6))
         n += 2
     p.legend(fig, ax, n)
-    return fig
+    return p.done(fig, ax)
 
 
 def _reactions(v):
@@ -321,7 +439,7 @@ def reactions(analysis, lang="en", design=None):
                _math("R", name[1:] if name.startswith("R") else name),
                marker=markers[k % len(markers)], markersize=4, markerfacecolor="none")
     p.legend(fig, ax, len(rs))
-    return fig
+    return p.done(fig, ax)
 
 
 def hodograph(analysis, lang="en", design=None):
@@ -354,17 +472,18 @@ def hodograph(analysis, lang="en", design=None):
     ax.set_xlabel(f"$R_x$ [{unit('kN', lang)}]")
     ax.set_ylabel(f"$R_y$ [{unit('kN', lang)}]")
     ax.grid(True, alpha=0.35)
-    ax.plot(rx, ry, "-o", ms=3, color="C0", zorder=2)
+    # over a grid of two coordinates the reaction sweeps an area: points, not a path
+    ax.plot(rx, ry, "o" if p.is_map else "-o", ms=3, color="C0", zorder=2)
     c = v.coords[0]
     for k, key, style in ((0, "start", dict(marker="o", color="C2")),
                           (-1, "end", dict(marker="s", color="C3"))):
         if v.k == 1:
             qtxt = f"{c} = {p.x[k]:.4g} {unit(v.coord_unit(c), lang)}"
         else:
-            qtxt = f"{t('position', lang)} {range(len(rx))[k]}"
+            qtxt = v.at_text(range(len(rx))[k], lang)
         ax.plot(rx[k], ry[k], ls="none", ms=8, zorder=3, label=f"{t(key, lang)}: {qtxt}",
                 **style)
-    if len(rx) > 1:  # the direction of travel, at the middle of the curve
+    if len(rx) > 1 and not p.is_map:  # the direction of travel, at the middle of the curve
         m = (len(rx) - 1) // 2
         ax.annotate("", xy=(rx[m + 1], ry[m + 1]), xytext=(rx[m], ry[m]),
                     arrowprops=dict(arrowstyle="-|>", color="C0", lw=1.5), zorder=3)
@@ -392,7 +511,7 @@ def stability(analysis, lang="en", design=None):
     top = max(float(np.max(v.pick(st.steered_share))), lim)
     ax.set_ylim(0, top * 1.25 + 1)
     ax.legend(fontsize="small")
-    return fig
+    return p.done(fig, ax)
 
 
 #: name -> function, in the report's order

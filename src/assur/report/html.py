@@ -70,8 +70,17 @@ def _summary(analysis, lang):
         q = np.asarray(kin.q(c), dtype=float)
         is_angle = mech.coordinate_kind(c) == "angle"
         qq, u = (np.degrees(q), "deg") if is_angle else (q, "m")
+        # over several coordinates: each one's own values, not the grid's positions
+        n = q.shape[-1] if kin.k == 1 else np.unique(q.reshape(-1, q.shape[-1])[0]).size
         coords.append(f"{c}: {qq.min():.6g} … {qq.max():.6g} {unit(u, lang)} "
-                      f"({q.shape[-1]} {t('positions', lang)})")
+                      f"({n} {t('positions', lang)})")
+    if kin.k > 1:  # the grid's shape, or paired paths
+        shape = [np.unique(np.asarray(kin.q(c), float).reshape(-1, kin.n)[0]).size
+                 for c in kin.coordinates]
+        coords.append(f"{' × '.join(kin.coordinates)}: "
+                      + (f"{' × '.join(map(str, shape))} = " if np.prod(shape) == kin.n
+                         else t("paired", lang) + ", ")
+                      + f"{kin.n} {t('positions', lang)}")
     groups = [(g.name, _kind(g, lang), ", ".join(g.inputs()), ", ".join(g.outputs()),
                ", ".join(g.group_links())) for g in mech.groups if g.type_name != "frame"]
     links = []

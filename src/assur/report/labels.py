@@ -263,6 +263,41 @@ TEXT = {
                     "ru": "{0} = {1}: {2} ({3}невязка {4})"},
     "singular": {"en": "{0} is singular at {1} position(s) ({2}); shown as empty there",
                  "ru": "{0} не определено в {1} положениях ({2}); там оставлено пустым"},
+    # several coordinates (the loader of seed 001 lab 1): quantities along a coordinate
+    # that does not move a point or turn a link are left out, with these notes
+    "absent": {"en": "{0} does not move {1}; not shown along {0} (identically zero or 0/0): "
+                     "{2}",
+               "ru": "{0} не перемещает {1}; по {0} не приводятся (тождественно нуль или "
+                     "0/0): {2}"},
+    "absent_points": {"en": "points", "ru": "точки"},
+    "absent_links": {"en": "links", "ru": "звенья"},
+    "absent_analogs": {"en": "their analogs, ratios and transmission numbers",
+                       "ru": "их аналоги, передаточные отношения и числа"},
+    "absent_capacity": {"en": "the capacity of cylinder {0}", "ru": "грузоподъёмность "
+                                                                    "гидроцилиндра {0}"},
+    "g_min": {"en": "{0}: minimum {1:.6g} kN at {2}", "ru": "{0}: минимум {1:.6g} кН при {2}"},
+    "g_reach": {"en": "{0} at the farthest reach of {1} (X{1} = {2:.6g} m, seed 001 lab 1 "
+                      "eq. 14a): {3:.6g} kN at {4}",
+                "ru": "{0} при наибольшем вылете точки {1} (X{1} = {2:.6g} м, источник 001, "
+                      "лаб. 1, формула 14а): {3:.6g} кН при {4}"},
+    "g_dead": {"en": "the capacities carry the dead loads of the links {0} (seed 001 lab 1 "
+                     "eq. 14)",
+               "ru": "грузоподъёмность учитывает постоянные нагрузки звеньев {0} (источник "
+                     "001, лаб. 1, формула 14)"},
+    "paired": {"en": "the coordinates move together, position by position", "ru":
+               "обобщённые координаты изменяются совместно, положение за положением"},
+    "tG": {"en": "Lift capacity maps G({0}, {1}) (seed 001 lab 1 eq. 14)",
+           "ru": "Карты грузоподъёмности G({0}, {1}) (источник 001, лаб. 1, формула 14)"},
+    "g_map": {"en": "rows: {0}; a column per capacity and value of {1} (G<p>_<c>@{1}=<value>: "
+                    "the capacity of the cylinder on c at point p); the same numbers as table "
+                    "4.1, arranged as the map",
+              "ru": "строки: {0}; столбец на каждую грузоподъёмность и значение {1} "
+                    "(G<p>_<c>@{1}=<значение>: грузоподъёмность гидроцилиндра по c в точке p); "
+                    "те же числа, что в таблице 4.1, в виде карты"},
+    "paired_axis": {"en": "{0} moves with it", "ru": "{0} изменяется вместе с ней"},
+    "f_map": {"en": "{0}: map over {1} and {2}", "ru": "{0}: карта по {1} и {2}"},
+    "gmax_min": {"en": "{0}: minimum {1:.6g} kN ({2:.6g} kg at g = {3:.6g} m/s²) at {4}",
+                 "ru": "{0}: минимум {1:.6g} кН ({2:.6g} кг при g = {3:.6g} м/с²) при {4}"},
 }
 
 #: SI unit symbols -> Russian spelling

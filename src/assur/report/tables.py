@@ -58,7 +58,11 @@ rotation, d/dφ1 · sign φ1' (its :class:`assur.motion.Motion`; the seeds turn
 clockwise and write φ1' = −1). Each table notes the convention in force.
 
 With k > 1 coordinates every analog symbol gets the suffix ``_<c>`` (``dphi3_S1``);
-with several cylinders ``G<p>`` and ``dG<p>`` get it too. Analogs with respect to
+with several cylinders ``G<p>`` and ``dG<p>`` get it too. A quantity along a
+coordinate that does not move its point or turn its link (:mod:`assur.chains`) has
+no column; the table's note says so. Over a full grid of two coordinates table
+``G`` holds each capacity of 4.1 as its map: a row per value of the first
+coordinate, a column ``G<p>_<c>@<c2>=<value>`` per value of the second. Analogs with respect to
 a crank angle are in rad/rad (unit ``-``) and transmission numbers in m/rad.
 
 Sign convention of reactions: ``R<ij>`` is the force of link i on link j (the
@@ -87,10 +91,10 @@ from ..columns import TABLE_IDS
 from ..errors import SingularPositionError
 from ..loads import Weight
 from ..texts import LANGS, localize
-from .labels import TEXT, check_lang
+from .labels import TEXT, check_lang, unit
 
 __all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
-           "TABLE_IDS"]
+           "TABLE_IDS", "grid_of"]
 
 #: id of the table of extra formulas that name no table
 FORMULAS_ID = "F"
@@ -206,6 +210,21 @@ class Table:
         """pandas DataFrame with the ``symbol [unit]`` headers."""
         import pandas as pd
         return pd.DataFrame({c.header: c.values for c in self.columns})
+
+
+def grid_of(q1, q2):
+    """The full grid behind positions ``(q1, q2)``, shape (n,) each: ``(u1, u2, i1, i2)``
+    with the sorted distinct values of each coordinate and every position's indices
+    into them — or None when the positions are not a full grid (paired paths)."""
+    q1, q2 = np.asarray(q1, dtype=float), np.asarray(q2, dtype=float)
+    u1, u2 = np.unique(q1), np.unique(q2)
+    if len(u1) < 2 or len(u2) < 2 or len(u1) * len(u2) != q1.size:
+        return None
+    i1, i2 = np.searchsorted(u1, q1), np.searchsorted(u2, q2)
+    if np.unique(i2 * len(u1) + i1).size != q1.size:
+        return None
+    return u1, u2, i1, i2
+
 
 
 # ---- reading the analysis ---------------------------------------------------------------
@@ -350,6 +369,38 @@ class _View:
                 out.append((name, self.scalar(self.mech.value_of(ld.P))))
         return out
 
+    # chains: which coordinate moves what (:mod:`assur.chains`) ---------------------
+    def moves_point(self, c, point):
+        """True if coordinate ``c`` moves ``point``."""
+        from ..chains import point_coordinates
+        return c in point_coordinates(self.mech, point)
+
+    def moves_link(self, c, link):
+        """True if coordinate ``c`` turns ``link``."""
+        from ..chains import link_coordinates
+        return c in link_coordinates(self.mech, link)
+
+    def absent_note(self, c, points=(), links=(), what="absent_analogs", *args):
+        """The note for quantities along ``c`` left out because ``c`` does not move
+        ``points`` or turn ``links``; None when nothing is left out."""
+        if not points and not links:
+            return None
+        out = {}
+        for lang in LANGS:
+            parts = []
+            if points:
+                parts.append(f"{TEXT['absent_points'][lang]} {', '.join(points)}")
+            if links:
+                parts.append(f"{TEXT['absent_links'][lang]} {', '.join(links)}")
+            out[lang] = TEXT["absent"][lang].format(c, "; ".join(parts),
+                                                    TEXT[what][lang].format(*args))
+        return out
+
+    def at_text(self, i, lang="en"):
+        """'S = 1.2 m, S1 = 0.8 m' of position ``i`` (units spelt for ``lang``)."""
+        return ", ".join(f"{c} = {self.coord_values(c)[i]:.6g} {unit(self.coord_unit(c), lang)}"
+                         for c in self.coords)
+
     def transmission_points(self):
         pts = list(self.mech.tables.get("transmissions", ()))
         if not pts:
@@ -373,7 +424,10 @@ def _table_2_1(v):
     for dist in v.mech.distances:  # named distances (their angles are links above)
         cols.append(Column(dist.name, "m", v.pick(v.kin.length(dist.name)),
                            _both("c_dist", dist.name, dist.a, dist.b)))
-    return Table("2.1", _both("t2.1"), tuple(cols), tuple(v.convention_notes()))
+    notes = v.convention_notes()
+    if v.k > 1 and (v.k > 2 or grid_of(*(v.coord_values(c) for c in v.coords)) is None):
+        notes.append(_both("paired"))  # not a full grid: the coordinates move together
+    return Table("2.1", _both("t2.1"), tuple(cols), tuple(notes))
 
 
 def _table_2_2(v):
@@ -390,8 +444,14 @@ def _table_3_1(v):
     cols = v.coord_columns()
     notes = []
     tab = v.mech.tables
+    # quantities along a coordinate that does not move a point or turn a link are
+    # undefined (0 or 0/0): left out, with one note per coordinate (assur.chains)
+    still = {c: ([p for p in tab.get("transmissions", ()) if not v.moves_point(c, p)],
+                 [l for l in kin.links if not v.moves_link(c, l)]) for c in v.coords}
     for sfx, w, c in v.wrts():
         for i, j in tab.get("ratios", ()):
+            if not (v.moves_link(c, i) and v.moves_link(c, j)):
+                continue
             vals = v.pick(kin.ratio(i, j, w, singular="mask"))
             cols.append(Column(f"U{i}{j}{sfx}", "-", vals, _both("c_U", i, j)))
             note = _singular_note(v, f"U{i}{j}{sfx}", vals)
@@ -400,17 +460,25 @@ def _table_3_1(v):
     for sfx, w, c in v.wrts():
         sign = v.rate_sign(c)
         for p in tab.get("transmissions", ()):
+            if p in still[c][0]:
+                continue
             cols.append(Column(f"I{p}{sfx}", v.transmission_unit(c),
                                sign * v.pick(kin.transmission(p, wrt=w)), _both("c_I", p, c)))
     for sfx, w, c in v.wrts():
         sign = v.rate_sign(c)
         for link in kin.links:
+            if link in still[c][1]:
+                continue
             cols.append(Column(f"dphi{link}{sfx}", v.analog_unit(c),
                                sign * v.pick(kin.dphi(link, w)), _both("c_dphi", link, c)))
         for dist in v.mech.distances:
             cols.append(Column(f"d{dist.name}{sfx}", "m/rad" if v.is_angle(c) else "-",
                                sign * v.pick(kin.dlength(dist.name, w)),
                                _both("c_ddist", dist.name, c)))
+    for c in v.coords:
+        note = v.absent_note(c, *still[c])
+        if note:
+            notes.append(note)
     notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
 
@@ -437,21 +505,87 @@ def _table_4_1(v):
     notes = []
     several = len(a.cylinders) > 1
     points = v.transmission_points()
+    extrema = []
     for name, res in a.cylinders.items():
         c = res.cylinder.coordinate
         sfx = f"_{c}" if several else ""
         cols.append(Column(f"F_{c}", "N", v.pick(res.force), _both("c_F", name)))
         cols.append(Column(f"p_{c}", "Pa", v.pick(res.pressure), _both("c_p", name)))
+        # capacity only at the points of the chain this cylinder drives (assur.chains)
+        absent = [p for p in points if not v.moves_point(c, p)]
         for p in points:
+            if p in absent:
+                continue
             g, err = _capacity(v, res, p)
             cols.append(Column(f"G{p}{sfx}", "N", g, _both("c_G", p)))
             if err:
                 notes.append(_same(err))
+            elif v.k > 1:
+                extrema.append((f"G{p}{sfx}", p, g))
             for wname, P in v.weights_at(p)[:1]:
                 if P > 0:
                     cols.append(Column(f"dG{p}{sfx}", "%", (g - P) / P * 100.0,
                                        _both("c_dG", p, wname, P)))
+        note = v.absent_note(c, absent, (), "absent_capacity", name)
+        if note:
+            notes.append(note)
+    notes += _capacity_extrema(v, extrema)
     return Table("4.1", _both("t4.1"), tuple(cols), tuple(notes))
+
+
+def _table_g(v):
+    """Capacity maps over a grid of two coordinates (seed 001 lab 1: G(S, S1), eq. 14):
+    one row per value of the first coordinate, one column per capacity and value of
+    the second — the map the lab draws, as numbers. None unless the positions are a
+    full grid of two coordinates and a cylinder has a capacity."""
+    a = v.a
+    if v.k != 2 or not a.cylinders:
+        return None
+    c1, c2 = v.coords
+    grid = grid_of(v.coord_values(c1), v.coord_values(c2))
+    if grid is None:
+        return None
+    u1, u2, i1, i2 = grid
+    cols = [Column(c1, v.coord_unit(c1), u1, v.coord_label(c1))]
+    for name, res in a.cylinders.items():
+        c = res.cylinder.coordinate
+        for p in v.transmission_points():
+            if not v.moves_point(c, p):
+                continue
+            g, err = _capacity(v, res, p)
+            if err:
+                continue  # singular somewhere: 4.1 says where; no map with holes
+            z = np.full((len(u1), len(u2)), np.nan)
+            z[i1, i2] = g
+            for k, val in enumerate(u2):
+                cols.append(Column(f"G{p}_{c}@{c2}={val:.6g}", "N", z[:, k],
+                                   {lang: f"{TEXT['c_G'][lang].format(p)} ({name}), "
+                                          f"{c2} = {val:.6g} {unit(v.coord_unit(c2), lang)}"
+                                    for lang in LANGS}))
+    if len(cols) == 1:
+        return None
+    return Table("G", _both("tG", c1, c2), tuple(cols), (_both("g_map", c1, c2),))
+
+
+def _capacity_extrema(v, extrema):
+    """Notes over several coordinates (seed 001 lab 1): the minimum of each capacity
+    map and its value at the farthest reach of its point (eq. 14a), and the dead
+    loads the capacities carry (eq. 14)."""
+    from ..capacity import dead_load_links
+    notes = []
+    for sym, p, g in extrema:
+        i = int(np.argmin(g))
+        notes.append({lang: TEXT["g_min"][lang].format(sym, g[i] / 1e3, v.at_text(i, lang))
+                      for lang in LANGS})
+        x = v.pick(v.kin.x(p))
+        j = int(np.argmax(x))
+        notes.append({lang: TEXT["g_reach"][lang].format(sym, p, x[j], g[j] / 1e3,
+                                                         v.at_text(j, lang))
+                      for lang in LANGS})
+    dead = dead_load_links(v.mech)
+    if dead:
+        notes.append(_both("g_dead", ", ".join(dead)))
+    return notes
 
 
 def _reaction_columns(v, st):
@@ -479,8 +613,8 @@ def _reaction_columns(v, st):
             f = st.actuator_force_from_reactions(c)
         except KeyError:
             continue
-        unit = "N·m" if v.is_angle(c) else "N"
-        cols.append(Column(f"F_{c}", unit, v.pick(f), _both("c_Frx", c)))
+        u = "N·m" if v.is_angle(c) else "N"
+        cols.append(Column(f"F_{c}", u, v.pick(f), _both("c_Frx", c)))
     return cols
 
 
@@ -560,7 +694,18 @@ def _table_6_1(v):
     cols.append(Column("G_max_no_cw", "N", v.pick(st.max_implement_weight_without_counterweights),
                        _both("c_Gmax_no_cw")))
     cols.append(Column("steerable", "-", v.pick(st.steerable).astype(int), _both("c_steerable")))
-    return Table("6.1", _both("t6.1"), tuple(cols))
+    notes = []
+    if v.k > 1:  # over several coordinates: the limits' minima (seed 001 lab 1 eqs. 16, 18)
+        from ..analysis import gravity_of
+        g = gravity_of(v.mech)
+        for sym, vals in (("G_max", st.max_implement_weight),
+                          ("G_max_no_cw", st.max_implement_weight_without_counterweights)):
+            vals = v.pick(vals)
+            i = int(np.argmin(vals))
+            if np.isfinite(vals[i]):
+                notes.append({lang: TEXT["gmax_min"][lang].format(
+                    sym, vals[i] / 1e3, vals[i] / g, g, v.at_text(i, lang)) for lang in LANGS})
+    return Table("6.1", _both("t6.1"), tuple(cols), tuple(notes))
 
 
 def _checked_body(v):
@@ -642,8 +787,8 @@ def _table_l(v):
     return Table("L", _both("tL"), tuple(cols), tuple(notes))
 
 
-_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_5_2, _table_d,
-             _table_6_1, _table_ic, _table_l)
+_BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_g, _table_5_1, _table_5_2,
+             _table_d, _table_6_1, _table_ic, _table_l)
 
 
 def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> list:
@@ -703,8 +848,10 @@ def _unique(v, tables):
     coords = set(v.coords)
     out = []
     for t in tables:
-        lead = [c.symbol for c in t.columns[:len(v.coords)]]
-        k = len(lead) if lead == list(v.coords) else 0  # the leading coordinate columns
+        k = 0  # the leading coordinate columns keep their names
+        while (k < len(t.columns) and t.columns[k].symbol in coords
+               and t.columns[k].symbol not in {c.symbol for c in t.columns[:k]}):
+            k += 1
         seen, cols, notes = set(), [], list(t.notes)
         for i, c in enumerate(t.columns):
             sym = c.symbol

@@ -1,0 +1,202 @@
+"""Mechanisms of two generalized coordinates: the grid and paired paths of ``[range]``,
+maps over two coordinates (never against a position index), ``assur check``'s grid
+shape, and the report of the bundled loader (seed 001 lab 1)."""
+
+import csv
+import math
+import re
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from assur import io
+from assur.cli import app
+from assur.report import figures as F
+from assur.report.tables import grid_of, seed_tables
+
+runner = CliRunner()
+LOADER = io.bundled("loader_lab1")
+PAIRED = f'''extends = "{LOADER}"
+
+[model]
+name = "loader_paired"
+
+[range]
+paired = true
+S = {{ from = "Smin", to = "Smax", count = 7 }}
+S1 = {{ from = "S1max", to = "S1min", count = 7 }}
+'''
+
+
+@pytest.fixture(scope="module")
+def grid_analysis():
+    m = io.load(LOADER)
+    q = m.range
+    return m.mechanism.analyze(q)
+
+
+@pytest.fixture(scope="module")
+def paired():
+    return io.loads(PAIRED, name="paired.toml")
+
+
+def test_grid_of_recognises_a_full_grid_only():
+    u1, u2 = np.array([1.0, 2.0, 3.0]), np.array([0.5, 0.7])
+    q1, q2 = (a.ravel() for a in np.meshgrid(u1, u2, indexing="ij"))
+    got = grid_of(q1, q2)
+    np.testing.assert_array_equal(got[0], u1)
+    np.testing.assert_array_equal(got[1], u2)
+    np.testing.assert_array_equal(u1[got[2]], q1)
+    np.testing.assert_array_equal(u2[got[3]], q2)
+    assert grid_of(u1, np.array([0.5, 0.6, 0.7])) is None          # a path
+    assert grid_of(q1[:-1], q2[:-1]) is None                       # a grid with a hole
+    assert grid_of(np.r_[q1[:-1], q1[0]], np.r_[q2[:-1], q2[0]]) is None  # a repeat
+
+
+def test_paired_paths_move_together(paired):
+    """``[range] paired = true``: position i of S with position i of S1, shape (n, 2)."""
+    assert paired.paired and paired.shape == (7,)
+    np.testing.assert_allclose(paired.range[:, 0], paired.ranges["S"])
+    np.testing.assert_allclose(paired.range[:, 1], paired.ranges["S1"])
+    assert paired.ranges["S1"][0] > paired.ranges["S1"][-1]  # S1 retracts as S extends
+    a = paired.mechanism.analyze(paired.range)
+    assert a.kinematics.n == 7
+    t21 = seed_tables(a)[0]
+    assert any("move together" in n["en"] for n in t21.notes)
+
+
+@pytest.mark.parametrize("bad, match", [
+    ("paired = 1", r"range.paired: expected true or false, found 1"),
+    ('paired = true\nS = { from = "Smin", to = "Smax", count = 5 }',
+     r"range.paired: paired paths need the same number of positions for every coordinate, "
+     r"found S: 5, S1: 7"),
+])
+def test_paired_paths_errors(bad, match):
+    text = PAIRED.replace('paired = true\nS = { from = "Smin", to = "Smax", count = 7 }', bad)
+    with pytest.raises(io.ModelFileError, match=match) as e:
+        io.loads(text, name="paired.toml")
+    assert e.value.line is not None
+
+
+def test_paired_needs_two_coordinates():
+    text = io.bundled("hitch_003").read_text().replace(
+        "[range]\n", "[range]\npaired = true\n")
+    with pytest.raises(io.ModelFileError, match="paired paths need two or more coordinates"):
+        io.loads(text, name="hitch.toml", source=io.bundled("hitch_003"))
+
+
+def test_maps_have_the_coordinates_on_their_axes(grid_analysis):
+    """Every diagram over the grid (S, S1) is a set of maps: x the first coordinate,
+    y the second, in their units; no axis is a position index."""
+    figs = F.figures(grid_analysis, "en")
+    assert {"angles", "analogs", "transmission", "capacity", "force", "pressure",
+            "reactions", "stability"} <= set(figs)
+    for name, fig in figs.items():
+        if name == "hodograph":
+            continue
+        maps = [ax for ax in fig.axes if ax.get_label() != "<colorbar>"]
+        assert maps, name
+        for ax in maps:
+            assert ax.get_xlabel() == "S [m]", (name, ax.get_xlabel())
+            assert ax.get_ylabel() == "S1 [m]", (name, ax.get_ylabel())
+    for fig in figs.values():
+        for ax in fig.axes:
+            assert "position" not in ax.get_xlabel().lower()
+    # the capacity of the traverse cylinder is drawn only at the point it moves (S9)
+    titles = [ax.get_title() for ax in figs["capacity"].axes if ax.get_title()]
+    assert len([t for t in titles if "MPT" in t]) == 1 and "S9" in \
+        [t for t in titles if "MPT" in t][0]
+    # a map panel shows the values of its quantity over the grid
+    ru = F.figures(grid_analysis, "ru", names=["stability"])["stability"]
+    assert ru.axes[0].get_xlabel() == "S [м]"
+
+
+def test_paired_paths_are_drawn_against_a_coordinate(paired):
+    a = paired.mechanism.analyze(paired.range)
+    fig = F.figures(a, "en", names=["capacity"])["capacity"]
+    ax = fig.axes[0]
+    assert ax.get_xlabel().startswith("cylinder length S [m]")
+    assert "S1 moves with it" in ax.get_xlabel()
+    x = ax.get_lines()[0].get_xdata()
+    np.testing.assert_allclose(np.sort(np.asarray(x, float)), paired.ranges["S"])
+
+
+def test_check_reports_the_grid_shape():
+    r = runner.invoke(app, ["check", str(LOADER)])
+    assert r.exit_code == 0, r.output
+    m = io.load(LOADER)
+    nS, nS1 = len(m.ranges["S"]), len(m.ranges["S1"])
+    assert f"grid S × S1: {nS} × {nS1} = {nS * nS1} positions" in r.output
+    assert f"({nS} positions)" in r.output and f"({nS1} positions)" in r.output
+
+
+def test_check_reports_paired_paths(tmp_path):
+    f = tmp_path / "paired.toml"
+    f.write_text(PAIRED)
+    r = runner.invoke(app, ["check", str(f)])
+    assert r.exit_code == 0, r.output
+    assert "paired paths S, S1: 7 positions" in r.output
+
+
+@pytest.mark.slow
+def test_analyze_writes_the_loader_report(tmp_path):
+    """``assur analyze`` of the bundled loader writes its tables, maps and report in
+    both languages; no CSV holds NaN or inf."""
+    for lang, fmts in (("en", "csv,xlsx"), ("ru", "csv,html")):
+        out = tmp_path / lang
+        r = runner.invoke(app, ["analyze", str(LOADER), "-o", str(out), "--lang", lang,
+                                "--format", fmts])
+        assert r.exit_code == 0, r.output
+        assert (out / ("tables.xlsx" if lang == "en" else "report.html")).stat().st_size > 0
+        csvs = sorted(out.glob("*.csv"))
+        assert {p.name for p in csvs} >= {"table_2_1.csv", "table_3_1.csv", "table_4_1.csv",
+                                          "table_5_1.csv", "table_6_1.csv"}
+        for p in csvs:
+            with p.open() as fh:
+                rows = list(csv.reader(fh))
+            for row in rows[1:]:
+                for cell in row:
+                    v = float(cell)
+                    assert math.isfinite(v), (p.name, cell)
+    html = (tmp_path / "ru" / "report.html").read_text()
+    assert "карта по S и S1" in html
+    assert re.search(r"S = [0-9.]+ м, S1 = [0-9.]+ м", html)  # positions in Russian units
+
+
+def test_capacity_map_table_g(grid_analysis):
+    """Table G arranges each capacity of table 4.1 as the map G(S, S1): a row per S, a
+    column per value of S1 — the same numbers."""
+    tabs = {t.id: t for t in seed_tables(grid_analysis)}
+    t41, tg = tabs["4.1"], tabs["G"]
+    S, S1 = t41["S"], t41["S1"]
+    uS, uS1 = np.unique(S), np.unique(S1)
+    np.testing.assert_array_equal(tg["S"], uS)
+    for sym in ("G09_S", "GS9_S", "GS9_S1"):
+        for val in uS1:
+            col = tg[f"{sym}@S1={val:.6g}"]
+            want = t41[sym][S1 == val][np.argsort(S[S1 == val])]
+            np.testing.assert_array_equal(col, want)
+    assert not any(s.startswith("G09_S1") for s in tg.symbols)  # S1 does not lift 09
+    assert tg.title("ru").startswith("Карты грузоподъёмности")
+
+
+def test_no_map_table_for_paired_paths(paired):
+    a = paired.mechanism.analyze(paired.range)
+    assert "G" not in [t.id for t in seed_tables(a)]
+
+
+def test_chains_of_one_coordinate_machines():
+    """With one coordinate every moving point is moved by it and the frame by none —
+    nothing is left out of the seed machines' tables (hitch 003, combine 002)."""
+    from assur import examples
+    from assur.chains import link_coordinates, point_coordinates
+    for mech in (examples.hitch_003(), examples.combine_002()):
+        (c,) = mech.coordinates
+        for p in mech.points:
+            want = frozenset() if p in mech.frame_points else {c}
+            assert point_coordinates(mech, p) == want, (mech.name, p)
+        for l in mech.links:
+            assert link_coordinates(mech, l.name) == {c}
+    with pytest.raises(KeyError, match="no point 'nowhere'"):
+        point_coordinates(examples.hitch_003(), "nowhere")
