@@ -147,6 +147,11 @@ class _Fused(ReactionContextBase):
     def spring(self, load, T, L):
         pass
 
+    def rate(self, link, coordinate=None):
+        """∂φ/∂q of a link along a coordinate (the only one by default)."""
+        a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
+        return self.omega(link, a)
+
     def omega(self, body, a):
         """Angular analog ∂φ/∂q_a of a body (0 for the frame)."""
         pq = self.mech.topology.angle_points(body)
@@ -317,6 +322,8 @@ def _cylinder_rows(mech, n0):
     row values (list of arrays over designs)."""
     rows, values = {}, []
     for c in mech.cylinders:
+        if c.supply is not None or c.side == "auto" or c.coordinate is None:
+            continue  # a supply line's or an auto-side cylinder: hydraulics.py only
         v = {f: np.atleast_1d(np.asarray(mech.value_of(getattr(c, f)), float))
              for f in ("count", "eta_mech", "eta_hyd", "bore", "rod", "p_relief",
                        "dp_throttle", "dp_line")}

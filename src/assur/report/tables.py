@@ -438,11 +438,11 @@ def _table_4_1(v):
     several = len(a.cylinders) > 1
     points = v.transmission_points()
     for name, res in a.cylinders.items():
-        c = res.cylinder.coordinate
+        c = res.cylinder.length  # its coordinate, or a passive cylinder's distance
         sfx = f"_{c}" if several else ""
         cols.append(Column(f"F_{c}", "N", v.pick(res.force), _both("c_F", name)))
         cols.append(Column(f"p_{c}", "Pa", v.pick(res.pressure), _both("c_p", name)))
-        for p in points:
+        for p in points if res.supply_line is None else ():  # a line has one pressure
             g, err = _capacity(v, res, p)
             cols.append(Column(f"G{p}{sfx}", "N", g, _both("c_G", p)))
             if err:
