@@ -201,13 +201,31 @@ def test_two_cylinders_on_one_line_virtual_work_equals_reactions(base):
     assert np.allclose(c1.force + c2.force * kin.dlength("S2"), F, rtol=1e-12)
 
 
+@settings(max_examples=examples(30), deadline=None)
+@given(D=st.floats(0.04, 0.12), ratio=st.floats(0.3, 0.8), Mc=st.floats(100.0, 1e4),
+       L6=st.floats(0.17, 0.23), travel=st.sampled_from([1, -1]))
+def test_supply_line_virtual_work_equals_reactions_random(D, ratio, Mc, L6, travel):
+    """Two cylinders on one line, random bores, moment, lever 6 and direction: the
+    line's pressure by virtual work equals the one from the reactions."""
+    mech = io.load(io.bundled("steering_lab4")).mechanism
+    mech = mech.with_params(D_cyl=D, d_rod=ratio * D, Mc=Mc, L6=L6)
+    mech = mech.with_loads([type(ld)(ld.link, ld.M, travel, None, ld.name)
+                            for ld in mech.loads])
+    q = np.linspace(0.52, 0.64, 7)
+    a = mech.analyze(q)
+    p = a.cylinders["ГЦ1"].pressure
+    assert np.sign(p).tolist() == [travel] * 7  # the line pushes back on the other turn
+    assert np.allclose(supply_pressure_from_reactions(a.kinematics, "P"), p, rtol=1e-9,
+                       atol=1e-6 * np.max(np.abs(p)))
+
+
 @pytest.mark.parametrize("bore,rod", [(0.05, 0.025), (0.063, 0.032), (0.08, 0.05)])
 def test_one_cylinder_virtual_work_equals_reactions(bore, rod):
     """One cylinder on its own line: the line's pressure, by both routes, is the
     cylinder's F/(k·A·η)."""
     text = io.bundled("steering_lab4").read_text(encoding="utf-8")
     text = text[:text.index('[[cylinders]]\nname = "ГЦ2"')] + text[text.index("[tables]"):]
-    text = text.replace('bore = "63 mm"            # illustrative\nrod = "32 mm"',
+    text = text.replace('bore = "D_cyl"\nrod = "d_rod"',
                         f'bore = {bore}\nrod = {rod}\neta_hyd = 0.9\neta_mech = 0.95', 1)
     m = io.loads(text, name="one.toml")
     one = m.mechanism

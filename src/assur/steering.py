@@ -13,8 +13,11 @@ wheel (angle α) is the one nearer the centre of the turn and turns more than th
               :
               o======== axle that does not steer (at L) ========
 
-Rolling without side slip needs ctg β − ctg α = A/L (eq. 11, 16); the turning radius
-to the far kingpin... eq. 12 gives R_min = L·ctg α_max + a at the largest inner angle.
+Rolling without side slip needs ctg β − ctg α = A/L (eqs. 11, 16); the turning
+radius is R = L·ctg α + a (eq. 12), its minimum R_min at the largest inner angle.
+The functions take arrays (over positions, designs) and return arrays of their
+broadcast shape; ctg is not finite straight ahead, where the ctg forms refuse
+(:func:`outer_angle_error` is the form defined there too).
 """
 
 from __future__ import annotations
@@ -56,7 +59,7 @@ def ackermann_deviation(inner, outer, track, wheelbase):
     L = 2534 mm: ctg 34° − ctg 51° = 0.673 (the lab prints 0.538), A/L = 0.575.
 
     >>> round(float(ackermann_deviation(np.radians(51), np.radians(34), 1.456, 2.534)), 4)
-    0.0989
+    0.0982
     """
     a, b = _angles(inner, outer)
     return 1.0 / np.tan(b) - 1.0 / np.tan(a) - track / wheelbase

@@ -649,7 +649,7 @@ class Builder:
         """A resolved value as a number (a parameter name gives its value; terms add)."""
         v = self.resolved[tuple(path)]
         if isinstance(v, tuple) and v[:1] == ("terms",):
-            return sum(s * (float(self.params[r]) if isinstance(r, str) else float(r))
+            return sum(s * float(ref_value(self.params, r))
                        for s, r in v[1])
         return float(ref_value(self.params, v))
 
@@ -809,8 +809,8 @@ class Builder:
             target = self.resolved[sp + ("equals",)]
             raw = parse(s.equals)
             if isinstance(target, str):
-                shown = self.units.get(target)
-                target = self.params[target]
+                shown = self.units.get(signed_name(target) or target)
+                target = ref_value(self.params, target)
             else:
                 shown = display_unit(raw, quantities[s.quantity])
             at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
@@ -886,8 +886,7 @@ class Builder:
             rp = ("range", c)
 
             def val(path):
-                v = self.resolved[path]
-                return float(params[v]) if isinstance(v, str) else float(v)
+                return float(ref_value(params, self.resolved[path]))
 
             if "values" in r.model_fields_set:
                 a = np.array([val(rp + ("values", k)) for k in range(len(r.values))])
