@@ -195,3 +195,37 @@ def test_every_bundled_model_speaks_russian(name):
     for t_ in texts:
         ru = localize(t_, "ru")
         assert ru != str(t_) and re.search("[а-яА-Я]", ru), f"{name}: {t_!r} has no Russian"
+
+
+def test_column_names_unique_when_a_coordinate_is_named_like_a_link(tmp_path):
+    """A crank coordinate named phi1 beside the angle of its link 1: the link's column
+    becomes phi1_link (noted), every header of the CSV is unique."""
+    from assur.report import seed_tables, write_report
+    text = io.bundled("cleaning_lab3").read_text(encoding="utf-8")
+    text = re.sub(r'\bj1\b', "phi1", text)
+    model = io.loads(text, name="c.toml")
+    a = model.mechanism.analyze(model.range)
+    t21 = seed_tables(a)[0]
+    assert t21.symbols[:3] == ["phi1", "phi1_link", "phi2"]
+    np.testing.assert_allclose(t21["phi1_link"] % 360, t21["phi1"] % 360, atol=1e-9)
+    assert any("phi1_link" in n["en"] for n in t21.notes)
+    for tab in seed_tables(a):
+        assert len(set(tab.symbols)) == len(tab.symbols), tab.id
+    files = write_report(a, tmp_path, formats=("csv",))["csv"]
+    for f in files:
+        header = f.read_text(encoding="utf-8").splitlines()[0].split(",")
+        assert len(set(header)) == len(header), f.name
+
+
+def test_no_negative_zero_in_files_or_terminal(tmp_path):
+    from assur.cli import _fmt_cell
+    from assur.report.tables import Column, Table, write_csv, write_xlsx
+    tab = Table("2.1", {"en": "t", "ru": "t"}, (Column("S", "m", np.array([-0.0, 1.0])),
+                                                 Column("phi3", "deg", np.array([0.0, -0.0]))))
+    text = write_csv(tab, tmp_path / "t.csv").read_text(encoding="utf-8")
+    assert "-0.0" not in text and "0.0" in text
+    import openpyxl
+    ws = openpyxl.load_workbook(write_xlsx([tab], tmp_path / "t.xlsx")).active
+    vals = [c.value for row in ws.iter_rows(min_row=2) for c in row]
+    assert all(not (v == 0 and np.signbit(v)) for v in vals)
+    assert _fmt_cell(-0.0) == "0" and _fmt_cell(-2.0) == "-2" and _fmt_cell(-1e-9) == "-1e-09"

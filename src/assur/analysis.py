@@ -10,7 +10,7 @@ from . import statics as _statics
 from .inputs import check_finite
 from .hydraulics import cylinder_results
 
-__all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics"]
+__all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics", "add_lift_test"]
 
 
 class Analysis:
@@ -33,8 +33,12 @@ class Analysis:
         The flywheel of ``[dynamics]`` (:mod:`assur.flywheel`).
     balancing : Balancing or None
         The counter-masses of ``[dynamics]`` (:mod:`assur.balancing`).
+    lift_test : LiftTestResult or None
+        The standard lift test of a hitch (ISO 789-2; :func:`add_lift_test`).
     notes : list of str
         What the analysis left out and why (e.g. masses without a crank speed).
+    model_warnings : tuple of str
+        The model file's warnings (unused parameters), shown in the report.
     """
 
     def __init__(self, kinematics, statics, cylinders, stability, solved=()):
@@ -47,7 +51,9 @@ class Analysis:
         self.dynamics = None
         self.flywheel = None
         self.balancing = None
+        self.lift_test = None
         self.notes = []
+        self.model_warnings = ()
 
     @property
     def mechanism(self):
@@ -162,4 +168,29 @@ def add_dynamics(analysis, spec=None):
         from .balancing import balance
         analysis.balancing = balance(kin, spec.counter_masses, spec.objective)
     check_finite(analysis)
+    return analysis
+
+
+def add_lift_test(analysis, test, s_range=None):
+    """Add the standard lift test of a three-point hitch (ISO 789-2 / SAE J283,
+    :func:`assur.lift_test.lift_test`) to ``analysis`` (in place; returns it).
+
+    Parameters
+    ----------
+    analysis : Analysis
+        One design of a one-coordinate mechanism.
+    test : LiftTest or None
+        The model file's ``[lift_test]`` (:attr:`assur.io.Model.lift_test`); None
+        leaves the analysis as it is.
+    s_range : (float, float), optional
+        The cylinder's travel [m]; default: the analysis' positions' extremes.
+    """
+    if test is None:
+        return analysis
+    from .lift_test import lift_test
+    kin = analysis.kinematics
+    if s_range is None:
+        q = kin.q()
+        s_range = (float(q.min()), float(q.max()))
+    analysis.lift_test = lift_test(kin.mechanism, test, s_range)
     return analysis

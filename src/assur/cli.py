@@ -87,16 +87,10 @@ def _output_dir(output: str) -> Path:
 def _assemble(model):
     from .errors import AssemblyError, ModelError, SingularPositionError
 
-    from .analysis import add_dynamics
-
     try:
-        analysis = model.mechanism.analyze(model.range)
-        add_dynamics(analysis, model.dynamics)
+        return model.analyze()
     except (AssemblyError, ModelError, SingularPositionError) as e:
         _fail(f"{model.source}: {e}")
-    analysis.solved = tuple(model.solved)
-    analysis.model_warnings = tuple(model.warnings)  # for the report's warnings
-    return analysis
 
 
 @app.command()
@@ -287,8 +281,10 @@ def _fmt_cell(v):
     if math.isinf(v):
         return "∞" if v > 0 else "−∞"
     if 1e3 <= abs(v) < 1e10:
-        return f"{v:.0f}"  # forces, pressures: whole N, Pa as the seeds print them
-    return f"{v:.5g}"
+        out = f"{v:.0f}"  # forces, pressures: whole N, Pa as the seeds print them
+    else:
+        out = f"{v:.5g}"
+    return out.lstrip("-") if float(out) == 0 else out  # never "-0"
 
 
 @app.command()

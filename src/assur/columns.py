@@ -54,7 +54,7 @@ __all__ = ["Formula", "SignMap", "FormulaError", "formulas_of", "signs_of", "col
 
 #: the ids of the report's tables, in order (a formula's ``table`` names one of them;
 #: the report, :mod:`assur.report.tables`, builds them)
-TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "5.1", "5.2", "D", "6.1", "IC")
+TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "5.1", "5.2", "D", "6.1", "IC", "L")
 
 #: functions of one point (name → kinematics accessor)
 POINT_FUNCTIONS = ("X", "Y", "I")

@@ -22,7 +22,12 @@ Each load applies itself through :meth:`apply` to a *load context* (the contract
 ``couple(link, M)``, ``nonzero(L, what)``, ``spring(load, T, L)``, ``g`` [m/s²],
 ``rate(link, coordinate)`` → ∂φ_link/∂q (the link's angular-velocity analog along a
 coordinate, 0 for the frame), ``moving`` and, when moving, ``acceleration(point)`` →
-(a_x, a_y) and ``angular_acceleration(link)`` → ε. The same code then serves the array evaluation
+(a_x, a_y) and ``angular_acceleration(link)`` → ε. Each load type also declares its
+model-file ``type_name``, the ``quantities`` and ``flags`` of its value fields and the
+fields that name points (``point_fields``) and links (``link_fields``), and may check
+itself against the mechanism (``check(mech)`` → a problem or None): validation, the
+file schema's checks and the report derive from these, never from a list of types.
+The same code then serves the array evaluation
 (:func:`assur.statics.applied_loads`) and the generated fused kernel
 (:mod:`assur.fused`), where the values are symbols of the emitted code.
 """
@@ -35,7 +40,7 @@ from typing import ClassVar, Union
 import numpy as np
 
 __all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass", "Cylinder",
-           "LOAD_TYPES"]
+           "LOAD_TYPES", "names_in"]
 
 Ref = Union[str, float, int]
 
@@ -50,8 +55,14 @@ class Weight:
     link: str | None = None
     name: str | None = None
 
+    type_name: ClassVar = "weight"
     #: the quantity of each value field (:mod:`assur.quantities`)
     quantities: ClassVar = {"P": "force"}
+    #: what a value field must be (a file's check): "nonneg", "positive" or absent
+    flags: ClassVar = {"P": "nonneg"}
+    #: the fields that name points, and links (a name, None or a tuple of names)
+    point_fields: ClassVar = ("point",)
+    link_fields: ClassVar = ("link",)
 
     def apply(self, c):
         c.force(self.link or c.owner(self.point), self.point, 0.0, -c.value(self.P))
@@ -67,7 +78,11 @@ class PointForce:
     link: str | None = None
     name: str | None = None
 
+    type_name: ClassVar = "force"
     quantities: ClassVar = {"fx": "force", "fy": "force"}
+    flags: ClassVar = {}
+    point_fields: ClassVar = ("point",)
+    link_fields: ClassVar = ("link",)
 
     def apply(self, c):
         c.force(self.link or c.owner(self.point), self.point, c.value(self.fx),
@@ -82,7 +97,11 @@ class Couple:
     M: Ref
     name: str | None = None
 
+    type_name: ClassVar = "moment"
     quantities: ClassVar = {"M": "moment"}
+    flags: ClassVar = {}
+    point_fields: ClassVar = ()
+    link_fields: ClassVar = ("link",)
 
     def apply(self, c):
         c.couple(self.link, c.value(self.M))
@@ -120,7 +139,11 @@ class ResistingMoment:
     coordinate: str | None = None
     name: str | None = None
 
+    type_name: ClassVar = "resisting_moment"
     quantities: ClassVar = {"M": "moment"}
+    flags: ClassVar = {"M": "nonneg"}
+    point_fields: ClassVar = ()
+    link_fields: ClassVar = ("link",)
 
     def check(self, mech):
         """A problem with this load in ``mech`` (a message), or None."""
@@ -155,7 +178,11 @@ class Spring:
     preload: Ref = 0.0
     links: tuple[str, str] | None = None
 
+    type_name: ClassVar = "spring"
     quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force"}
+    flags: ClassVar = {"rate": "nonneg", "free_length": "nonneg"}
+    point_fields: ClassVar = ("a", "b")
+    link_fields: ClassVar = ("links",)
 
     def apply(self, c):
         (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
@@ -181,7 +208,11 @@ class Mass:
     point: str
     J: Ref = 0.0
 
+    type_name: ClassVar = "mass"
     quantities: ClassVar = {"m": "mass", "J": "inertia"}
+    flags: ClassVar = {"m": "positive", "J": "nonneg"}
+    point_fields: ClassVar = ("point",)
+    link_fields: ClassVar = ("link",)
 
     def apply(self, c):
         m = c.value(self.m)
@@ -261,6 +292,9 @@ class Cylinder:
                             "count": "number", "eta_mech": "number", "eta_hyd": "number",
                             "p_relief": "pressure", "dp_throttle": "pressure",
                             "dp_line": "pressure"}
+    flags: ClassVar = {"bore": "positive", "rod": "nonneg", "rod2": "nonneg", "count": "count",
+                       "eta_mech": "fraction", "eta_hyd": "fraction", "p_relief": "nonneg",
+                       "dp_throttle": "nonneg", "dp_line": "nonneg"}
 
     @property
     def length(self) -> str:
@@ -268,5 +302,14 @@ class Cylinder:
         return self.coordinate if self.coordinate is not None else self.distance
 
 
-LOAD_TYPES = {"weight": Weight, "force": PointForce, "moment": Couple, "spring": Spring,
-              "mass": Mass, "resisting_moment": ResistingMoment}
+#: the load types by their model-file ``type`` (each declares ``type_name``,
+#: ``quantities``, ``flags``, ``point_fields``, ``link_fields`` and ``apply(c)``)
+LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring, Mass,
+                                             ResistingMoment)}
+
+
+def names_in(value) -> tuple:
+    """The names a point or link field holds: none (None), one (a str) or a tuple."""
+    if value is None:
+        return ()
+    return (value,) if isinstance(value, str) else tuple(value)

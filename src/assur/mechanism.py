@@ -432,7 +432,6 @@ class Mechanism:
                 if p not in known:
                     raise ModelError(f"{where}: link/distance {obj.name!r} refers "
                                      f"to unknown point {p!r} (known: {sorted(known)})")
-        self._check_symbols(known)
         self._topology = build_topology(self.name, self.coordinates, self.groups)
         self._validate_loads(known)
         lnames = [l.name for l in self.links] + [d.name for d in self.distances]
@@ -455,23 +454,8 @@ class Mechanism:
             raise ModelError(f"mechanism {self.name!r}: gravity must be a positive number "
                              f"[m/s²], got {g!r}")
 
-    def _check_symbols(self, points):
-        """A coordinate must not share its table symbol with a link angle, a point
-        coordinate or a distance (``phi1`` as a coordinate and the angle of link 1
-        would be two columns of one name)."""
-        links = [l.name for l in self.links] + [l for g in self.groups for l in g.group_links()]
-        taken = {f"phi{l}": f"the angle of link {l!r}" for l in links}
-        taken.update({f"{a}{p}": f"the {a.lower()} of point {p!r}" for p in points
-                      for a in "XY"})
-        taken.update({d.name: f"the distance {d.name!r}" for d in self.distances})
-        for c in self.coordinates:
-            if c in taken:
-                raise ModelError(f"mechanism {self.name!r}: the coordinate name {c!r} is also "
-                                 f"{taken[c]} in the tables; name the coordinate otherwise "
-                                 f"(e.g. 'j1' for a crank angle φ1, 'S' for a cylinder)")
-
     def _validate_loads(self, known):
-        from .loads import LOAD_TYPES, Cylinder
+        from .loads import Cylinder, names_in
         where = f"mechanism {self.name!r}"
 
         def ref_ok(what, ref):
@@ -492,19 +476,21 @@ class Mechanism:
                 raise ModelError(f"{where}: {what} acts on unknown link {l!r} (links: "
                                  f"{sorted(self.topology.bodies)})")
 
-        for ld in self.loads:  # every load type by its fields (assur.loads contract)
-            if not isinstance(ld, tuple(LOAD_TYPES.values())):
-                raise ModelError(f"{where}: unknown load {ld!r}")
-            what = f"{type(ld).__name__.lower()} {getattr(ld, 'name', None) or ''}".strip()
-            for f in ("point", "a", "b"):
-                if isinstance(getattr(ld, f, None), str):
-                    point_ok(what, getattr(ld, f))
-            link_ok(what, getattr(ld, "link", None))
-            for l in getattr(ld, "links", None) or ():
-                link_ok(what, l)
+        for ld in self.loads:
+            if not (hasattr(ld, "apply") and hasattr(ld, "quantities")
+                    and hasattr(ld, "point_fields") and hasattr(ld, "link_fields")):
+                raise ModelError(f"{where}: unknown load {ld!r} (a load declares quantities, "
+                                 f"point_fields, link_fields and apply; assur.loads)")
+            what = f"{ld.type_name} {getattr(ld, 'name', None) or ''}".rstrip()
+            for f in ld.point_fields:
+                for p in names_in(getattr(ld, f)):
+                    point_ok(what, p)
+            for f in ld.link_fields:
+                for l in names_in(getattr(ld, f)):
+                    link_ok(what, l)
             for f in ld.quantities:
                 ref_ok(f"{what}: {f}", getattr(ld, f))
-            check = getattr(ld, "check", None)
+            check = getattr(ld, "check", None)  # a load's own check against the mechanism
             if check is not None:
                 problem = check(self)
                 if problem:

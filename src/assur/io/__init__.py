@@ -75,6 +75,9 @@ class Model:
     dynamics : DynamicsSpec or None
         The ``[dynamics]`` section (flywheel target, counter-masses;
         :mod:`assur.io._dynamics`, docs/crank-dynamics.md), None without one.
+    lift_test : LiftTest or None
+        The ``[lift_test]`` section (the standard lift test of a hitch, ISO 789-2;
+        :mod:`assur.lift_test`), None without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -89,10 +92,30 @@ class Model:
     source: Path | None = None
     dynamics: object = None
     warnings: tuple = ()
+    lift_test: object = None
 
     @property
     def name(self) -> str:
         return self.mechanism.name
+
+    def analyze(self):
+        """Everything the file asks for, as ``assur analyze`` computes it: the
+        :class:`~assur.analysis.Analysis` over :attr:`range` with the solved conditions
+        and the file's warnings, the crank dynamics of ``[motion]``/``[dynamics]``
+        (:func:`assur.analysis.add_dynamics`) and the lift test of ``[lift_test]``
+        (:func:`assur.analysis.add_lift_test`).
+
+        Raises
+        ------
+        AssemblyError, ModelError, SingularPositionError
+        """
+        from ..analysis import add_dynamics, add_lift_test
+        analysis = self.mechanism.analyze(self.range)
+        add_dynamics(analysis, self.dynamics)
+        add_lift_test(analysis, self.lift_test)
+        analysis.solved = tuple(self.solved)
+        analysis.model_warnings = tuple(self.warnings)  # shown among the report's warnings
+        return analysis
 
     def __repr__(self):
         src = f", source={str(self.source)!r}" if self.source else ""
@@ -238,7 +261,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
-                 tuple(builder.warnings))
+                 tuple(builder.warnings), builder.lift_test)
 
 
 def _warn(model: Model) -> Model:

@@ -30,15 +30,15 @@ from ..errors import AssemblyError, ModelError
 from ..groups import group_type
 from ..groups.base import ref_value, signed_name
 from ..inputs import bytes_per_position, check_memory, span_problem
+from ..loads import LOAD_TYPES, Cylinder
 from ..mechanism import Mechanism
 from ..stability import Machine
 from ..texts import text
 from . import _schema as S
 from ._errors import ModelFileError, key_path
 from ._lines import line_of
-from ._units import ACCELERATION, ANGLE, ANGULAR_VELOCITY, FORCE, INERTIA, LENGTH, MASS, \
-    MOMENT, NUMBER, PRESSURE, STIFFNESS, TIME, UnitError, display_unit, is_name, parse, to_si, \
-    unit_kind
+from ._units import ACCELERATION, ANGLE, ANGULAR_VELOCITY, FORCE, KINDS, LENGTH, NUMBER, TIME, \
+    UnitError, display_unit, is_name, parse, to_si, unit_kind
 
 # constraints on values beyond their kind: (test, words)
 _FLAGS = {
@@ -87,22 +87,12 @@ def _group_inputs(g, gp):
     return inputs
 
 
-_LOAD_VALUES = {
-    "weight": {"P": (FORCE, "nonneg")},
-    "force": {"fx": (FORCE, None), "fy": (FORCE, None)},
-    "moment": {"M": (MOMENT, None)},
-    "spring": {"rate": (STIFFNESS, "nonneg"), "free_length": (LENGTH, "nonneg"),
-               "preload": (FORCE, None)},
-    "mass": {"m": (MASS, "positive"), "J": (INERTIA, "nonneg")},
-    "resisting_moment": {"M": (MOMENT, "nonneg")},
-}
-_LOAD_POINTS = {"weight": ("point",), "force": ("point",), "moment": (), "spring": ("a", "b"),
-                "mass": ("point",), "resisting_moment": ()}
-_CYLINDER_VALUES = {"bore": (LENGTH, "positive"), "rod": (LENGTH, "nonneg"),
-                    "rod2": (LENGTH, "nonneg"),
-                    "count": (NUMBER, "count"), "eta_mech": (NUMBER, "fraction"),
-                    "eta_hyd": (NUMBER, "fraction"), "p_relief": (PRESSURE, "nonneg"),
-                    "dp_throttle": (PRESSURE, "nonneg"), "dp_line": (PRESSURE, "nonneg")}
+#: ``{type: {field: (kind, flag)}}`` and ``{type: point fields}`` of the load types, and
+#: the cylinder's value fields — from each type's own declarations (:mod:`assur.loads`)
+_LOAD_VALUES = {t: {f: (KINDS[q], cls.flags.get(f)) for f, q in cls.quantities.items()}
+                for t, cls in LOAD_TYPES.items()}
+_LOAD_POINTS = {t: tuple(cls.point_fields) for t, cls in LOAD_TYPES.items()}
+_CYLINDER_VALUES = {f: (KINDS[q], Cylinder.flags.get(f)) for f, q in Cylinder.quantities.items()}
 
 
 #: the kind of span (:data:`assur.inputs.SPANS`) a flag asks for
@@ -580,17 +570,20 @@ class Builder:
             lp = ("loads", i)
             for f in _LOAD_POINTS[ld.type]:
                 self.point(lp + (f,), getattr(ld, f), points)
-            if getattr(ld, "link", None) is not None:
-                body(lp + ("link",), ld.link)
-            if ld.type == "spring" and ld.links is not None:
-                for k, b in enumerate(ld.links):
-                    body(lp + ("links", k), b)
+            for f in LOAD_TYPES[ld.type].link_fields:
+                value = getattr(ld, f, None)
+                if isinstance(value, str):
+                    body(lp + (f,), value)
+                elif value is not None:
+                    for k, b in enumerate(value):
+                        body(lp + (f, k), b)
             kw = {f: getattr(ld, f) for f in ld.model_fields_set - {"type"}}
             for f in _LOAD_VALUES[ld.type]:
                 if lp + (f,) in self.resolved:
                     kw[f] = self.resolved[lp + (f,)]
-            if ld.type == "spring" and ld.links is not None:
-                kw["links"] = tuple(ld.links)
+            for f in LOAD_TYPES[ld.type].link_fields:  # a list of links is a tuple inside
+                if isinstance(kw.get(f), list):
+                    kw[f] = tuple(kw[f])
             add = getattr(mech, ld.type)
             mech = self.guarded(lp, lambda: add(**kw))
         seen = {}
@@ -970,6 +963,8 @@ class Builder:
         mech = self.mechanism()
         from ._dynamics import build_dynamics
         self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
+        from ._lift_test import build_lift_test
+        self.lift_test = build_lift_test(self, mech)  # [lift_test]: io/_lift_test.py
         self.warnings = self.unused_parameters(mech)
         self.precheck_memory(mech)
         conds_mech, solved = self.solve(mech)

@@ -479,6 +479,8 @@ class FileSpec(_Table):
     solve: list[SolveSpec] = []
     #: [dynamics]: checked by :mod:`assur.io._dynamics` (flywheel, counter-masses)
     dynamics: Optional[dict[str, Any]] = None
+    #: [lift_test]: checked by :mod:`assur.io._lift_test` (ISO 789-2 lift test)
+    lift_test: Optional[dict[str, Any]] = None
     motion: dict[str, MotionSpec] = {}
 
 

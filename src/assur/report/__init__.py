@@ -114,6 +114,9 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             from . import dynamics as _dynamics
             figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
                                           balancing=analysis.balancing))
+        if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
+            from .lift import lift_test_figure
+            figs["lift_test"] = lift_test_figure(analysis, lang)
         for name, fig in figs.items():
             caption = fig.axes[0].get_title() if fig.axes else name
             png = _figures.to_png_bytes(fig)

@@ -165,7 +165,7 @@ def _warnings(analysis, tables, lang):
     groups = []
     model_notes = ([localize(n, lang) for n in mech.notes]
                    + list(getattr(analysis.kinematics, "failures", []))
-                   + list(getattr(analysis, "model_warnings", ()))
+                   + list(analysis.model_warnings)
                    + list(getattr(analysis, "notes", ())))
     groups.append((t("model_notes", lang), model_notes))
     from ..columns import formulas_of, signs_of

@@ -239,6 +239,26 @@ TEXT = {
     "dyn_energy": {"en": "work of the loads ΔE", "ru": "работа сил ΔE"},
     "dyn_force_x": {"en": "R_x", "ru": "R_x"},
     "dyn_force_y": {"en": "R_y", "ru": "R_y"},
+    "tL": {"en": "Standard lift test (ISO 789-2 / SAE J283): force available over the lift range",
+           "ru": "Стандартное испытание грузоподъёмности (ISO 789-2 / SAE J283): усилие по "
+                 "диапазону подъёма"},
+    "c_Gtest": {"en": "vertical force available at the hitch point {0}",
+                "ru": "вертикальное усилие, развиваемое в точке навески {0}"},
+    "c_Gtest_frame": {"en": "vertical force available at the test frame's point {0}",
+                      "ru": "вертикальное усилие на раме испытаний в точке {0}"},
+    "lift_test_note": {"en": "at {0:g} % of the relief pressure: {1:.4g} MPa, cylinder force "
+                             "{2:.4g} kN; {3} heights of the hitch point evenly spaced over "
+                             "the lift range; the implement's weight is not part of the test",
+                       "ru": "при {0:g} % давления настройки предохранительного клапана: "
+                             "{1:.4g} МПа, усилие гидроцилиндров {2:.4g} кН; {3} высот точки "
+                             "навески равномерно по диапазону подъёма; вес орудия в испытание "
+                             "не входит"},
+    "lift_test_min": {"en": "minimum over the lift range at the hitch point {0}: {1:.4g} kN",
+                      "ru": "минимум по диапазону подъёма в точке навески {0}: {1:.4g} кН"},
+    "lift_test_min_frame": {"en": "minimum over the lift range on the frame ({0}): {1:.4g} kN",
+                            "ru": "минимум по диапазону подъёма на раме ({0}): {1:.4g} кН"},
+    "renamed": {"en": "{0} is also a coordinate's name: this column is {1}",
+                "ru": "{0} — также имя обобщённой координаты: этот столбец назван {1}"},
     "solved_line": {"en": "{0} = {1}: {2} ({3}residual {4})",
                     "ru": "{0} = {1}: {2} ({3}невязка {4})"},
     "singular": {"en": "{0} is singular at {1} position(s) ({2}); shown as empty there",

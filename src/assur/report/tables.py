@@ -622,8 +622,28 @@ def _table_ic(v):
     return Table("IC", _both("tIC"), tuple(cols), tuple(notes))
 
 
+def _table_l(v):
+    """The standard lift test (ISO 789-2 / SAE J283): its own rows, the test positions
+    evenly spaced over the lift range of the hitch points."""
+    lt = getattr(v.a, "lift_test", None)
+    if lt is None:
+        return None
+    h, f = lt.test.hitch, lt.test.frame
+    cols = [Column(lt.coordinate, "m", lt.s, v.coord_label(lt.coordinate)),
+            Column(f"Y{h}", "m", lt.height, _both("c_y", h)),
+            Column(f"G{h}_test", "N", lt.hitch_force, _both("c_Gtest", h))]
+    if f is not None:
+        cols.append(Column(f"G{f}_test", "N", lt.frame_force, _both("c_Gtest_frame", f)))
+    notes = [_both("lift_test_note", 100 * lt.test.pressure_share, lt.pressure / 1e6,
+                   lt.force_cylinder / 1e3, len(lt.s)),
+             _both("lift_test_min", h, lt.hitch_minimum / 1e3)]
+    if f is not None:
+        notes.append(_both("lift_test_min_frame", f, lt.frame_minimum / 1e3))
+    return Table("L", _both("tL"), tuple(cols), tuple(notes))
+
+
 _BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_5_1, _table_5_2, _table_d,
-             _table_6_1, _table_ic)
+             _table_6_1, _table_ic, _table_l)
 
 
 def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> list:
@@ -672,7 +692,35 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> 
         tables = [dataclasses.replace(t, columns=tuple(
             dataclasses.replace(c, symbol=rename.get(c.symbol, c.symbol)) for c in t.columns))
             for t in tables]
-    return _with_signs(v, tables)
+    return _unique(v, _with_signs(v, tables))
+
+
+def _unique(v, tables):
+    """Column names unique within each table: a column that takes a coordinate's name
+    (a crank coordinate ``phi1`` beside the angle of link 1) gets a suffix — ``_link``
+    for a link angle, ``_point`` for a point's coordinate, ``_2`` otherwise — and the
+    table says so."""
+    coords = set(v.coords)
+    out = []
+    for t in tables:
+        lead = [c.symbol for c in t.columns[:len(v.coords)]]
+        k = len(lead) if lead == list(v.coords) else 0  # the leading coordinate columns
+        seen, cols, notes = set(), [], list(t.notes)
+        for i, c in enumerate(t.columns):
+            sym = c.symbol
+            if i >= k and (sym in coords or sym in seen):
+                suffix = ("_link" if sym.startswith("phi") else
+                          "_point" if sym[:1] in "XY" else "_2")
+                new = sym + suffix
+                while new in seen:
+                    new += "_2"
+                notes.append(_both("renamed", sym, new))
+                c = dataclasses.replace(c, symbol=new)
+            seen.add(c.symbol)
+            cols.append(c)
+        out.append(dataclasses.replace(t, columns=tuple(cols), notes=tuple(notes))
+                   if notes != list(t.notes) else t)
+    return out
 
 
 def _with_formulas(v, tables):
@@ -742,7 +790,7 @@ def _cell(v):
         return str(int(v))
     if isinstance(v, (int, np.integer)):
         return str(int(v))
-    return repr(float(v))
+    return repr(float(v) + 0.0)  # + 0.0: never "-0.0"
 
 
 def write_csv(table, path) -> Path:
@@ -785,7 +833,7 @@ def write_xlsx(tables, path) -> Path:
                     out.append(int(x))
                 else:
                     x = float(x)
-                    out.append(x if math.isfinite(x) else None)
+                    out.append(x + 0.0 if math.isfinite(x) else None)  # no -0.0
             ws.append(out)
         ws.freeze_panes = "B2"
         for j, c in enumerate(tab.columns, start=1):
