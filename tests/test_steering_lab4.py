@@ -379,3 +379,51 @@ def test_examples_analyze_without_nan(name, tmp_path):
         df = pd.read_csv(f)
         vals = df.select_dtypes("number").to_numpy(float)
         assert np.isfinite(vals).all(), f.name
+
+
+# ---- cylinders: what a model may not say ------------------------------------------------
+def _base_text():
+    return io.bundled("steering_lab4").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("old,new,match", [
+    ('distance = "S2"\nsupply = "P"', 'distance = "S2"', "needs the supply line"),
+    ('distance = "S2"', 'distance = "S3"', 'unknown distance "S3"'),
+    ('distance = "S2"', 'coordinate = "S1"\ndistance = "S2"', "not both"),
+    ('side = "rod"', 'side = "auto"', "not \\\"auto\\\""),
+    ('name = "ГЦ2"\ndistance = "S2"', 'name = "ГЦ2"\ndistance = "S2"\nrod2 = "-d_rod"',
+     "non-negative"),
+])
+def test_cylinder_errors(old, new, match):
+    text = _base_text()
+    assert old in text
+    with pytest.raises(io.ModelFileError, match=match):
+        io.loads(text.replace(old, new, 1), name="bad.toml")
+
+
+def test_a_line_needs_one_driving_cylinder():
+    m = io.load(io.bundled("steering_lab4")).mechanism
+    with pytest.raises(ModelError, match="exactly one cylinder that drives .* found 0"):
+        m.cylinder("passive only", distance="S2", bore=0.05, supply="Q")
+    with pytest.raises(ModelError, match="two cylinder entries drive 'S1'"):
+        m.cylinder("another", "S1", bore=0.05, supply="P")
+
+
+def test_fused_outputs_name_the_line():
+    m = io.load(io.bundled("steering_lab4"))
+    with pytest.raises(ModelError, match="supply line"):
+        m.mechanism.evaluate(m.range, outputs=["p(ГЦ1)"])
+    # the forces themselves come from the fused kernel as from the arrays
+    f = m.mechanism.evaluate(m.range, outputs=["F(S1)", "Fr(S1)"])
+    a = m.mechanism.analyze(m.range)
+    assert np.allclose(f["F(S1)"], a.statics.actuator_force("S1"), rtol=1e-9)
+    assert np.allclose(f["Fr(S1)"], a.statics.actuator_force("S1"), rtol=1e-9)
+
+
+def test_share_of_a_double_rod_cylinder(modern):
+    """share(bore) of an auto-side cylinder uses the chamber of each position's sign:
+    a bigger bore, a smaller share, in the ratio of the annuli."""
+    _, a = modern
+    c = a.cylinder()
+    ratio = c.share(0.12) / c.share()
+    assert np.allclose(ratio, (0.1**2 - 0.04**2) / (0.12**2 - 0.04**2), rtol=1e-12)

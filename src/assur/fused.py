@@ -225,6 +225,11 @@ class _Fused(ReactionContextBase):
             _, fx, fy, mz = self.joints[key]
             return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
         cyl = self.cyl_rows.get(args[0])
+        if cyl is None and args[0] in {c.name for c in self.mech.cylinders}:
+            raise ModelError(f"output {fn}(…): cylinder {args[0]!r} is on a supply line or "
+                             f"picks its chamber (side = \"auto\"): its pressure and capacity "
+                             f"come from Mechanism.analyze (assur.hydraulics), not the fused "
+                             f"kernel")
         if cyl is None:
             raise ModelError(f"output {fn}(…): no cylinder {args[0]!r}; cylinders: "
                              f"{sorted(self.cyl_rows)}")

@@ -126,8 +126,14 @@ class CylinderResult:
         bores D = 80, 63, 50 mm: pass ``bore`` [m] to evaluate a candidate)."""
         if bore is None:
             return self.force_required / self.force_max
-        fmax = self.count * self.p_max * piston_area(bore, self._val(self.cylinder.rod),
-                                                     self.cylinder.side) * self.eta_hyd
+        c = self.cylinder
+        rod, rod2 = self._val(c.rod), self._val(c.rod2)
+        if c.side == "auto":
+            area = np.where(self.sign > 0, piston_area(bore, rod, "piston", rod2),
+                            piston_area(bore, rod, "rod"))
+        else:
+            area = piston_area(bore, rod, c.side, rod2)
+        fmax = self.count * self.p_max * area * self.eta_hyd
         return self.force_required / fmax
 
     def capacity(self, point, dead_loads=None):
@@ -185,7 +191,9 @@ class SupplyLine:
         p · [σ_a·k_a·A_a·η_h,a + Σ_i σ_i·k_i·A_i·η_h,i·∂L_i/∂q] = F / η_m,a
 
     F the actuator force of the loads along q by virtual work. The rod force of each
-    cylinder is then σ·p·k·A·η_h (positive pushing).
+    cylinder is then σ·p·k·A·η_h (positive pushing). A negative p means the loads
+    drive the cylinders the other way: the line of the other chambers is the one
+    pressurised (seed 001 lab 4: the other turn).
 
     Attributes
     ----------
