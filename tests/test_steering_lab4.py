@@ -427,3 +427,15 @@ def test_share_of_a_double_rod_cylinder(modern):
     c = a.cylinder()
     ratio = c.share(0.12) / c.share()
     assert np.allclose(ratio, (0.1**2 - 0.04**2) / (0.12**2 - 0.04**2), rtol=1e-12)
+
+
+def test_signed_reference_in_a_pose():
+    """A pose ``at = { S = "-Sback" }`` with Sback = −10 mm is the pose at S = 10 mm."""
+    t = io.bundled("steering_lab4_modern").read_text(encoding="utf-8")
+    a = io.loads(t.replace('at = { S = 0 }', 'at = { S = "-Sback" }')
+                 .replace('Smin = "0 mm"', 'Smin = "0 mm"\nSback = "-10 mm"'), name="a.toml")
+    b = io.loads(t.replace('at = { S = 0 }', 'at = { S = "10 mm" }'), name="b.toml")
+    pa, pb = a.mechanism.solve(a.range).phi("w3"), b.mechanism.solve(b.range).phi("w3")
+    assert np.array_equal(pa, pb)
+    assert not np.allclose(pa, io.load(io.bundled("steering_lab4_modern")).mechanism
+                           .solve(a.range).phi("w3"))

@@ -225,8 +225,9 @@ def _signed_refs(mech) -> tuple:
             continue
         for f in dataclasses.fields(item):
             v = getattr(item, f.name)
-            if signed_name(v) is not None and v not in out:
-                out.append(v)
+            for r in (v if isinstance(v, tuple) else (v,)):  # a pose: one per coordinate
+                if signed_name(r) is not None and r not in out:
+                    out.append(r)
     return tuple(out)
 
 
