@@ -174,6 +174,9 @@ def test_s2_of_s1_closes_both_loops(base):
     phi6 = np.arctan2(lab["y76"] - lab["y05"], lab["x76"] - lab["x05"])
     phi75 = math.atan2(y07 - lab["y05"], x07 - lab["x05"])
     assert np.max(np.abs(np.arccos(cos_s2) - np.abs(phi6 - phi75))) < 1e-9
+    # the same checks as the model's columns of table 2.1 (what the report shows)
+    for col in ("dX23", "dY23", "dX45", "dY45", "dphiS2"):
+        assert np.max(np.abs(a.formula(col))) < 1e-9, col
     # the right cylinder follows the left one: S1 extends, S2 shortens
     assert np.all(np.diff(kin.length("S2")) < 0)
 
