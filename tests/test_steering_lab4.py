@@ -198,6 +198,10 @@ def test_two_cylinders_on_one_line_virtual_work_equals_reactions(base):
     F = Mc * (np.abs(kin.dphi("3")) + np.abs(kin.dphi("5")))
     p_hand = F / (A1 - A2 * kin.dlength("S2"))
     assert np.allclose(c1.pressure, p_hand, rtol=1e-12)
+    # eq. 15 as the lab writes it (each lever's analog along its own cylinder,
+    # π·(2R² − r²)): the model's column p15, here from the engine's dS2/dS1
+    p15 = Mc * (np.abs(kin.dphi("3")) + np.abs(kin.dphi("5") / kin.dlength("S2"))) / (A1 + A2)
+    assert np.allclose(a.formula("p15"), p15, rtol=1e-12)
     # the rods' forces: the left pushes, the right (rod side) pulls
     assert np.all(c1.force > 0) and np.all(c2.force < 0)
     # power: p·(A1·dS1 − A2·dS2) is the work against both resisting moments
