@@ -370,6 +370,7 @@ def test_signed_reference_errors():
 
 
 # ---- the examples analyze ----------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["steering_lab4", "steering_lab4_modern"])
 def test_examples_analyze_without_nan(name, tmp_path):
     from typer.testing import CliRunner
