@@ -35,7 +35,7 @@ class Text(str):
     Examples
     --------
     >>> t = Text("closure", ru="замыкание")
-    >>> t, localize(t, "ru"), localize("plain", "ru")
+    >>> str(t), localize(t, "ru"), localize("plain", "ru")
     ('closure', 'замыкание', 'plain')
     """
 
