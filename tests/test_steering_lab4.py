@@ -253,6 +253,9 @@ def test_double_rod_cylinder(modern):
     F = a.statics.actuator_force("S")
     assert np.allclose(a.statics.actuator_force_from_reactions("S"), F, rtol=1e-9)
     assert np.allclose(F, a.formula("F_arms"), rtol=1e-12)
+    fused = S.solve(kin, method="fused")  # the two rod ends' forces add in the kernel too
+    assert np.allclose(fused.actuator_force("S"), F, rtol=1e-12)
+    assert np.allclose(fused.actuator_force_from_reactions("S"), F, rtol=1e-9)
     area = math.pi * (0.1**2 - 0.04**2) / 4
     assert np.allclose(c.area, area, rtol=1e-14)
     assert np.allclose(c.pressure, F / area, rtol=1e-12)
