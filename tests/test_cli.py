@@ -16,8 +16,9 @@ runner = CliRunner()
 def test_check_bundled_hitch_ok():
     r = runner.invoke(app, ["check", str(bundled("hitch_003"))])
     assert r.exit_code == 0, r.output
-    assert "assembles at every position" in r.output
-    assert "solved L4" in r.output and "0.661283167" in r.output
+    out = " ".join(r.output.split())  # rich wraps long lines (a long checkout path)
+    assert "assembles at every position" in out
+    assert "solved L4" in out and "0.661283167" in out
 
 
 def test_check_header_000_fails_with_the_triangle_message():

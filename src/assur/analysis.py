@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from . import statics as _statics
 from .inputs import check_finite
-from .hydraulics import CylinderResult
+from .hydraulics import cylinder_results
 
 __all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics", "add_lift_test"]
 
@@ -100,7 +100,7 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
         g = gravity_of(mech)
     kin = mech.solve(q, params=params, **solve_kw)
     st = _statics.solve(kin, qdot=qdot, qddot=qddot, g=g)
-    cyl = {c.name: CylinderResult(kin, st, c, g=g) for c in kin.mechanism.cylinders}
+    cyl = cylinder_results(kin, st, g=g)
     stab = None
     machine = kin.mechanism.machine
     if machine is not None:

@@ -15,6 +15,10 @@ numbering:
   ``combine_002.toml`` (l2 = 1.0 m; :func:`combine_002_printed`, the printed
   l2 = 0.1 m, cannot assemble); :func:`combine_002_range` the seed's 13 crank
   positions, :func:`combine_002_turn_range` a full clockwise turn.
+* :func:`steering_lab4` — steering of a power unit's steered axle, seed 001 lab 4,
+  base drive with two cylinders in one closed chain (``steering_lab4.toml``), and
+  :func:`steering_lab4_modern`, its slider-crank drive with one double-rod cylinder
+  (``steering_lab4_modern.toml``); illustrative dimensions, the lab's loads.
 
 Each ``*_range()`` gives the seed's positions of the generalized coordinate (the
 file's ``[range]``). :func:`assur.io.load` gives the whole :class:`assur.io.Model`
@@ -31,7 +35,9 @@ from .mechanism import Mechanism
 
 __all__ = ["hitch_003", "hitch_003_range", "header_000", "header_000_fixed", "header_000_range",
            "combine_002", "combine_002_printed", "combine_002_range", "combine_002_turn_range",
-           "loader_lab1", "loader_lab1_range"]
+           "loader_lab1", "loader_lab1_range",
+           "steering_lab4", "steering_lab4_modern", "steering_lab4_range",
+           "steering_lab4_modern_range"]
 
 #: seed 003: the exact roots of its three Find blocks (printed rounded to 4 digits:
 #: L4 = 0.6613, Sp = 0.4694, L7 = 0.7522; the printed tables used these values).
@@ -197,3 +203,39 @@ def loader_lab1_range() -> np.ndarray:
     """The grid of (S, S1) of ``loader_lab1.toml`` [m], shape (n_S·n_S1, 2), S
     varying slowest."""
     return np.array(_model("loader_lab1").range)
+
+
+def steering_lab4(**params) -> Mechanism:
+    """Steering of the steered axle of УЭС-2-250А, seed 001 lab 4, base drive (bundled
+    file ``steering_lab4.toml``; illustrative dimensions, the lab's A, L and eq. 17).
+
+    The cylinder–lever group (left cylinder S1 on the left wheel's lever 3), the arm
+    34 at Δφ1, the RRR dyad tie rod 4 – right arm 5, the right wheel's lever 6 at Δφ2
+    (point 76), and the passive right cylinder S2 = |07–76| (eq. 10) on the supply
+    line of S1 (piston side of S1, rod side of S2; eq. 15). Resisting moments M_c on
+    both wheels oppose a left turn (S1 extends).
+
+    Generalized coordinate ``S1``: the left cylinder's pin-to-pin length [m].
+    """
+    return _mechanism("steering_lab4", params)
+
+
+def steering_lab4_range() -> np.ndarray:
+    """The positions of ``steering_lab4.toml``: S1 from a small left turn to full lock [m]."""
+    return np.array(_model("steering_lab4").range)
+
+
+def steering_lab4_modern(**params) -> Mechanism:
+    """The modernised steering drive of seed 001 lab 4 (bundled file
+    ``steering_lab4_modern.toml``; illustrative dimensions): one double-rod cylinder
+    whose two rod ends (two slider inputs on S) drive the wheels' levers 3 and 4
+    through the links 2 and 5 (eqs. 18–25).
+
+    Generalized coordinate ``S``: the rod's travel from straight ahead [m].
+    """
+    return _mechanism("steering_lab4_modern", params)
+
+
+def steering_lab4_modern_range() -> np.ndarray:
+    """The positions of ``steering_lab4_modern.toml``: the rod's travel [m]."""
+    return np.array(_model("steering_lab4_modern").range)

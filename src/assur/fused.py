@@ -147,6 +147,11 @@ class _Fused(ReactionContextBase):
     def spring(self, load, T, L):
         pass
 
+    def rate(self, link, coordinate=None):
+        """∂φ/∂q of a link along a coordinate (the only one by default)."""
+        a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
+        return self.omega(link, a)
+
     def omega(self, body, a):
         """Angular analog ∂φ/∂q_a of a body (0 for the frame)."""
         pq = self.mech.topology.angle_points(body)
@@ -220,6 +225,11 @@ class _Fused(ReactionContextBase):
             _, fx, fy, mz = self.joints[key]
             return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
         cyl = self.cyl_rows.get(args[0])
+        if cyl is None and args[0] in {c.name for c in self.mech.cylinders}:
+            raise ModelError(f"output {fn}(…): cylinder {args[0]!r} is on a supply line or "
+                             f"picks its chamber (side = \"auto\"): its pressure and capacity "
+                             f"come from Mechanism.analyze (assur.hydraulics), not the fused "
+                             f"kernel")
         if cyl is None:
             raise ModelError(f"output {fn}(…): no cylinder {args[0]!r}; cylinders: "
                              f"{sorted(self.cyl_rows)}")
@@ -317,6 +327,8 @@ def _cylinder_rows(mech, n0):
     row values (list of arrays over designs)."""
     rows, values = {}, []
     for c in mech.cylinders:
+        if c.supply is not None or c.side == "auto" or c.coordinate is None:
+            continue  # a supply line's or an auto-side cylinder: hydraulics.py only
         v = {f: np.atleast_1d(np.asarray(mech.value_of(getattr(c, f)), float))
              for f in ("count", "eta_mech", "eta_hyd", "bore", "rod", "p_relief",
                        "dp_throttle", "dp_line")}

@@ -13,7 +13,14 @@ Formulas (SI: m, N, Pa):
   G = (F_max·η_m − F_dead)/I with I = dY/dS of the point and F_dead the actuator
   force of the loads carried besides it (seed 003: G56 = k·p·η·S_gc/I56,
   GS6 with IS6; seed 001 lab 1 eqs. 8–10, 14 with the boom's weight);
-* capacity reserve ΔG = (G − P)/P·100 % (seed 003 ΔGS65).
+* capacity reserve ΔG = (G − P)/P·100 % (seed 003 ΔGS65);
+* cylinders on one supply line (:class:`SupplyLine`) share one pressure p; by
+  virtual work with every cylinder of the line as an actuator,
+  p·Σ σ_i·k_i·A_i·η_h,i·∂L_i/∂q = F/η_m, σ = +1 for a pressurised piston side
+  (push), −1 for a rod side (pull), L_i the cylinder's length (the coordinate q
+  itself for the driving cylinder, a named distance for a passive one) — seed 001
+  lab 4 eq. 15, p_н = M_c·(φ3′ + φ5′)/(π·(2R² − r²)), with the exact analogs;
+* a double-rod cylinder pushes with π·(D² − d2²)/4 and pulls with π·(D² − d²)/4.
 """
 
 from __future__ import annotations
@@ -22,18 +29,27 @@ import math
 
 import numpy as np
 
-from .errors import SingularPositionError
+from .errors import ModelError, SingularPositionError
 
-__all__ = ["piston_area", "CylinderResult"]
+__all__ = ["piston_area", "CylinderResult", "SupplyLine", "cylinder_results",
+           "supply_pressure_from_reactions"]
 
 
-def piston_area(bore, rod=0.0, side="piston"):
-    """Pressurised area [m²] of a cylinder with bore D and rod d [m]."""
+def piston_area(bore, rod=0.0, side="piston", rod2=0.0):
+    """Pressurised area [m²] of a cylinder with bore D and rod d [m]: π·D²/4 on the
+    piston side, π·(D² − d²)/4 on the rod side; a double-rod cylinder's piston side
+    is the annulus around its second rod d2, π·(D² − d2²)/4."""
     if side not in ("piston", "rod"):
         raise ValueError("side must be one of: ['piston', 'rod']")
     bore = np.asarray(bore, float)
     if np.any(bore <= 0):
         raise ValueError(f"bore must be positive, got {bore}")
+    rod2 = np.asarray(rod2, float)
+    if side == "piston" and np.any(rod2 != 0):
+        if np.any(rod2 >= bore) or np.any(rod2 < 0):
+            raise ValueError(f"a double-rod cylinder needs 0 < rod2 < bore, got rod2 {rod2}, "
+                             f"bore {bore}")
+        return 0.25 * math.pi * (bore**2 - rod2**2)
     if side == "rod":
         rod = np.asarray(rod, float)
         if np.any(rod >= bore) or np.any(rod <= 0):
@@ -79,23 +95,47 @@ class CylinderResult:
             return v
 
         self._val = val
+        self.supply_line = None
         self.count = val(cyl.count)
         self.eta_mech = val(cyl.eta_mech)
         self.eta_hyd = val(cyl.eta_hyd)
-        self.area = piston_area(val(cyl.bore), val(cyl.rod), cyl.side)
         self.p_max = val(cyl.p_relief) - (val(cyl.dp_throttle) + val(cyl.dp_line))
+        if cyl.coordinate is None or statics is None:  # a passive cylinder: its line
+            return                                   # sets it (SupplyLine)
         self.force = statics.actuator_force(cyl.coordinate)
         self.force_required = self.force / self.eta_mech
-        self.pressure = self.force_required / (self.count * self.area * self.eta_hyd)
+        if cyl.side == "auto":  # the chamber that gives the force's sign (double rod)
+            #: +1 where the piston side is pressurised (push), −1 the rod side (pull)
+            self.sign = np.where(self.force >= 0, 1.0, -1.0)
+            self.area = np.where(self.sign > 0, self.chamber_area("piston"),
+                                 self.chamber_area("rod"))
+            self.pressure = np.abs(self.force_required) / (self.count * self.area
+                                                           * self.eta_hyd)
+        else:
+            self.sign = 1.0 if cyl.side == "piston" else -1.0
+            self.area = self.chamber_area(cyl.side)
+            self.pressure = self.force_required / (self.count * self.area * self.eta_hyd)
         self.force_max = self.count * self.p_max * self.area * self.eta_hyd
+
+    def chamber_area(self, side):
+        """Area of one chamber of one cylinder [m²]: ``"piston"`` (π·(D² − d2²)/4) or
+        ``"rod"`` (π·(D² − d²)/4)."""
+        c = self.cylinder
+        return piston_area(self._val(c.bore), self._val(c.rod), side, self._val(c.rod2))
 
     def share(self, bore=None):
         """Share of the maximum force used, F_req/F_max [-] (seed 000 Табл. 5, for the
         bores D = 80, 63, 50 mm: pass ``bore`` [m] to evaluate a candidate)."""
         if bore is None:
             return self.force_required / self.force_max
-        fmax = self.count * self.p_max * piston_area(bore, self._val(self.cylinder.rod),
-                                                     self.cylinder.side) * self.eta_hyd
+        c = self.cylinder
+        rod, rod2 = self._val(c.rod), self._val(c.rod2)
+        if c.side == "auto":
+            area = np.where(self.sign > 0, piston_area(bore, rod, "piston", rod2),
+                            piston_area(bore, rod, "rod"))
+        else:
+            area = piston_area(bore, rod, c.side, rod2)
+        fmax = self.count * self.p_max * area * self.eta_hyd
         return self.force_required / fmax
 
     def capacity(self, point, dead_loads=None):
@@ -123,6 +163,10 @@ class CylinderResult:
         """
         from .capacity import check_lifts, dead_load_mechanism
         kin = self.kinematics
+        if self.supply_line is not None:
+            raise ModelError(f"cylinder {self.cylinder.name!r} shares the supply line "
+                             f"{self.supply_line!r}: its capacity at one point is not "
+                             f"defined (the line's pressure is)")
         check_lifts(kin.mechanism, self.cylinder.coordinate, point, self.cylinder.name)
         if dead_loads is None or not hasattr(dead_loads, "loads"):
             dead_loads = dead_load_mechanism(kin.mechanism, dead_loads)
@@ -153,3 +197,130 @@ def _with_loads(kin, mech_with_loads):
     k2 = copy.copy(kin)
     k2.mechanism = mech_with_loads
     return k2
+
+
+class SupplyLine:
+    """Cylinders on one supply line: one pressure, solved by virtual work with every
+    cylinder of the line as an actuator (seed 001 lab 4 eqs. 13–15).
+
+    The line's one driving cylinder (a) drives the coordinate q; the passive ones (i)
+    have lengths L_i(q) the mechanism determines (named distances). With the chamber
+    signs σ (+1 piston side, −1 rod side), counts k, areas A and efficiencies η_h::
+
+        p · [σ_a·k_a·A_a·η_h,a + Σ_i σ_i·k_i·A_i·η_h,i·∂L_i/∂q] = F / η_m,a
+
+    F the actuator force of the loads along q by virtual work. The rod force of each
+    cylinder is then σ·p·k·A·η_h (positive pushing). A negative p means the loads
+    drive the cylinders the other way: the line of the other chambers is the one
+    pressurised (seed 001 lab 4: the other turn).
+
+    Attributes
+    ----------
+    name : str
+    coordinate : str
+    pressure : ndarray
+        The line's pressure p [Pa], shape of the kinematics.
+    members : dict of str to CylinderResult
+        Every cylinder of the line, with ``pressure`` = p, ``force`` and
+        ``force_required`` its rod force [N] and ``rate`` = ∂L/∂q [-].
+    """
+
+    def __init__(self, kin, statics, name, cylinders):
+        self.name = name
+        active = [c for c in cylinders if c.coordinate is not None]
+        if len(active) != 1:
+            raise ModelError(f"supply line {name!r}: expected exactly one cylinder that drives "
+                             f"a coordinate, found {len(active)}")
+        a = active[0]
+        self.coordinate = a.coordinate
+        wrt = a.coordinate if kin.k > 1 else None
+        self.members = {}
+        den = 0.0
+        for c in cylinders:
+            r = CylinderResult(kin, statics, c)
+            r.supply_line = name
+            r.sign = 1.0 if c.side == "piston" else -1.0
+            r.area = r.chamber_area(c.side)
+            r.rate = 1.0 if c is a else kin.dlength(c.distance, wrt=wrt)
+            r.force_max = r.count * r.p_max * r.area * r.eta_hyd
+            den = den + r.sign * r.count * r.area * r.eta_hyd * r.rate
+            self.members[c.name] = r
+        #: Σ σ·k·A·η_h·∂L/∂q [m²]: the line's effective area along q
+        self.effective_area = den * np.ones(kin.shape)
+        ra = self.members[a.name]
+        F = statics.actuator_force(a.coordinate)
+        bad = self.effective_area == 0
+        if np.any(bad):
+            raise SingularPositionError(
+                f"supply line {name!r}: the cylinders' effective area along "
+                f"{a.coordinate!r} is 0 at {int(bad.sum())} position(s): the line's pressure "
+                f"does no work there")
+        self.pressure = F / ra.eta_mech / self.effective_area
+        for r in self.members.values():
+            r.pressure = self.pressure
+            r.force_required = r.sign * self.pressure * r.count * r.area * r.eta_hyd
+            r.force = r.force_required
+
+
+def cylinder_results(kin, statics, g=None):
+    """``{name: CylinderResult}`` of every cylinder of the mechanism, in their order;
+    the cylinders of a supply line share its pressure (:class:`SupplyLine`)."""
+    mech = kin.mechanism
+    lines = {}
+    for c in mech.cylinders:
+        if c.supply is not None:
+            lines.setdefault(c.supply, []).append(c)
+    solved = {}
+    for name, cyls in lines.items():
+        solved.update(SupplyLine(kin, statics, name, cyls).members)
+    return {c.name: solved[c.name] if c.name in solved else CylinderResult(kin, statics, c, g=g)
+            for c in mech.cylinders}
+
+
+def supply_pressure_from_reactions(kin, line, g=None):
+    """The pressure of a supply line from the joint reactions [Pa] — the check of
+    :class:`SupplyLine`'s virtual work by the second route (DESIGN.md §4).
+
+    The reverse-order pass gives the driving cylinder's force F_r that holds the
+    loads, and F_u that holds the passive cylinders' pushes at a unit pressure
+    (each applied to its two pins as an axial force σ·k·A·η_h). The driving cylinder
+    supplies σ_a·k_a·A_a·η_h,a·p = F_r/η_m + p·F_u, so
+    p = (F_r/η_m)/(σ_a·k_a·A_a·η_h,a − F_u).
+
+    Parameters
+    ----------
+    kin : Kinematics
+        Of a mechanism with the cylinders of ``line``.
+    line : str
+        The supply line's name.
+    g : float, optional
+        Gravity [m/s²] (default: the mechanism's).
+    """
+    from . import statics as st
+    from .analysis import gravity_of
+    mech = kin.mechanism
+    cyls = [c for c in mech.cylinders if c.supply == line]
+    if not cyls:
+        raise KeyError(f"no supply line {line!r}; lines: "
+                       f"{sorted({c.supply for c in mech.cylinders if c.supply})}")
+    g = gravity_of(mech) if g is None else g
+    a = next(c for c in cyls if c.coordinate is not None)
+    loads_r = st.solve(kin, g=g, method="array").actuator_force_from_reactions(a.coordinate)
+    dist = {d.name: d for d in mech.distances}
+    unit = mech.with_loads()
+    for c in cyls:
+        if c is a:
+            continue
+        r = CylinderResult(kin, None, c)
+        push = (1.0 if c.side == "piston" else -1.0) * r.count * r.chamber_area(c.side) \
+            * r.eta_hyd
+        d = dist[c.distance]
+        # an axial push P of the passive cylinder: a spring of constant tension −P
+        unit = unit.spring(f"{c.name} at 1 Pa", d.a, d.b, 0.0, 0.0,
+                           float(np.asarray(-push).ravel()[0]))
+    ku = _with_loads(kin, unit)
+    unit_r = st.solve(ku, g=g, method="array").actuator_force_from_reactions(a.coordinate)
+    ra = CylinderResult(kin, None, a)
+    own = (1.0 if a.side == "piston" else -1.0) * ra.count * ra.chamber_area(a.side) \
+        * ra.eta_hyd
+    return (loads_r / ra.eta_mech) / (own - unit_r)

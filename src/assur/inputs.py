@@ -34,6 +34,7 @@ from typing import Mapping
 import numpy as np
 
 from .errors import ModelError
+from .groups.base import signed_name
 
 __all__ = ["max_memory", "fmt_bytes", "bytes_per_position", "check_memory", "coordinates_array",
            "span_problem", "check_params", "check_finite", "SPANS", "MAX_MEMORY_ENV"]
@@ -236,7 +237,8 @@ _LOAD_ROLES = {  # load attribute -> (kind, must be positive)
     "P": ("force", False), "fx": ("force", False), "fy": ("force", False),
     "M": ("moment", False), "rate": ("stiffness", False), "free_length": ("length", False),
     "preload": ("force", False), "m": ("mass", False), "J": ("inertia", False),
-    "bore": ("length", True), "rod": ("length", False), "p_relief": ("pressure", False),
+    "bore": ("length", True), "rod": ("length", False), "rod2": ("length", False),
+    "p_relief": ("pressure", False),
     "dp_throttle": ("pressure", False), "dp_line": ("pressure", False),
     "count": ("count", True), "eta_mech": ("efficiency", True),
     "eta_hyd": ("efficiency", True),
@@ -348,9 +350,11 @@ def check_params(mech, params: Mapping | None = None) -> None:
     for ref, uses in roles.items():
         for kind, pos, where, raw in uses:
             if isinstance(ref, str):
-                if ref not in arrays:
+                base = signed_name(ref)  # "-a": the span holds for −a
+                if (base or ref) not in arrays:
                     continue
-                a, label = arrays[ref], f"parameter {ref!r} (used as {where})"
+                a = -arrays[base] if base else arrays[ref]
+                label = f"parameter {ref!r} (used as {where})"
             else:
                 try:
                     a = np.atleast_1d(np.asarray(raw, dtype=float))

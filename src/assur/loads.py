@@ -20,11 +20,14 @@ a batch of designs).
 Each load applies itself through :meth:`apply` to a *load context* (the contract):
 ``value(ref)``, ``point(p)`` → (x, y), ``owner(p)``, ``force(link, point, fx, fy)``,
 ``couple(link, M)``, ``nonzero(L, what)``, ``spring(load, T, L)``, ``g`` [m/s²],
-``moving`` and, when moving, ``acceleration(point)`` → (a_x, a_y) and
-``angular_acceleration(link)`` → ε. Each load type also declares its model-file
-``type_name``, the ``quantities`` and ``flags`` of its value fields and the fields that
-name points (``point_fields``) and links (``link_fields``): validation, the file
-schema's checks and the report derive from these, never from a list of types. The same code then serves the array evaluation
+``rate(link, coordinate)`` → ∂φ_link/∂q (the link's angular-velocity analog along a
+coordinate, 0 for the frame), ``moving`` and, when moving, ``acceleration(point)`` →
+(a_x, a_y) and ``angular_acceleration(link)`` → ε. Each load type also declares its
+model-file ``type_name``, the ``quantities`` and ``flags`` of its value fields and the
+fields that name points (``point_fields``) and links (``link_fields``), and may check
+itself against the mechanism (``check(mech)`` → a problem or None): validation, the
+file schema's checks and the report derive from these, never from a list of types.
+The same code then serves the array evaluation
 (:func:`assur.statics.applied_loads`) and the generated fused kernel
 (:mod:`assur.fused`), where the values are symbols of the emitted code.
 """
@@ -36,8 +39,8 @@ from typing import ClassVar, Union
 
 import numpy as np
 
-__all__ = ["Weight", "PointForce", "Couple", "Spring", "Mass", "Cylinder", "LOAD_TYPES",
-           "names_in"]
+__all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass", "Cylinder",
+           "LOAD_TYPES", "names_in"]
 
 Ref = Union[str, float, int]
 
@@ -105,6 +108,61 @@ class Couple:
 
 
 @dataclass(frozen=True)
+class ResistingMoment:
+    """A moment of magnitude ``M`` [N·m] on ``link`` that opposes the link's turn
+    while the coordinate ``coordinate`` travels in the direction ``travel`` — the
+    resisting moment of a steered wheel (seed 001 lab 4 eq. 17: M_c turns against
+    the wheel whichever way it is steered)::
+
+        travel = +1 (q grows):  φ' > 0  →  moment −M  (clockwise)
+                                φ' < 0  →  moment +M  (counter-clockwise)
+
+    that is ``moment = −M·sign(travel·∂φ_link/∂q)``; its virtual work along the
+    travel, −M·|∂φ/∂q|, is never positive. ``travel = −1`` (q shrinks: the other
+    turn) flips it. Where the link stands still (∂φ/∂q = 0) its work is zero either way.
+
+    Parameters
+    ----------
+    link : str
+    M : float or str
+        Magnitude of the resisting moment [N·m] (≥ 0).
+    travel : {1, -1}
+        Direction of travel of the coordinate: +1 while it grows, −1 while it shrinks.
+    coordinate : str, optional
+        The coordinate whose travel is meant (default: the only one).
+    name : str, optional
+    """
+
+    link: str
+    M: Ref
+    travel: int = 1
+    coordinate: str | None = None
+    name: str | None = None
+
+    type_name: ClassVar = "resisting_moment"
+    quantities: ClassVar = {"M": "moment"}
+    flags: ClassVar = {"M": "nonneg"}
+    point_fields: ClassVar = ()
+    link_fields: ClassVar = ("link",)
+
+    def check(self, mech):
+        """A problem with this load in ``mech`` (a message), or None."""
+        if self.travel not in (1, -1):
+            return f"travel must be 1 (the coordinate grows) or -1, got {self.travel!r}"
+        if self.coordinate is None and len(mech.coordinates) > 1:
+            return (f"name the coordinate whose travel it resists, one of "
+                    f"{list(mech.coordinates)}")
+        if self.coordinate is not None and self.coordinate not in mech.coordinates:
+            return (f"coordinate {self.coordinate!r} is not a generalized coordinate "
+                    f"{list(mech.coordinates)}")
+        return None
+
+    def apply(self, c):
+        w = c.rate(self.link, self.coordinate)
+        c.couple(self.link, -np.copysign(c.value(self.M), self.travel * w))
+
+
+@dataclass(frozen=True)
 class Spring:
     """Linear spring between points ``a`` and ``b`` (links ``links`` or the owners).
 
@@ -167,17 +225,35 @@ class Mass:
 
 @dataclass(frozen=True)
 class Cylinder:
-    """Hydraulic cylinder(s) acting as the generalized coordinate ``coordinate``.
+    """Hydraulic cylinder(s) acting as the generalized coordinate ``coordinate`` — or,
+    passive, on a length the mechanism determines (``distance``).
+
+    A cylinder's force is positive when it pushes (its length grows under it)::
+
+        piston side pressurised:   base o==[ p→ |=====o rod end     push  +p·A_piston
+        rod side pressurised:      base o==[ ←p |=====o rod end     pull  −p·A_rod
 
     Parameters
     ----------
     name : str
-    coordinate : str
-        The generalized coordinate (the cylinders' pin-to-pin length) [m].
+    coordinate : str, optional
+        The generalized coordinate (the cylinders' pin-to-pin length, or a slider's
+        travel) [m]. Give it, or ``distance``.
+    distance : str, optional
+        A passive cylinder: the named distance (``[distances]``) that is its
+        pin-to-pin length [m]; it follows the mechanism (seed 001 lab 4: the right
+        cylinder S2 follows S1) and pushes with the pressure of its ``supply`` line.
+    supply : str, optional
+        The supply line: cylinders naming one line share one pressure, solved by
+        virtual work with every cylinder of the line as an actuator (seed 001 lab 4
+        eq. 15); one of them drives a coordinate, the others are passive.
     bore : float or str
         Piston diameter D [m].
     rod : float or str
-        Rod diameter d [m] (used when ``side="rod"``).
+        Rod diameter d [m] (used when the rod side is pressurised).
+    rod2 : float or str
+        A double-rod cylinder: the diameter of the second rod, on the piston side [m]
+        (seed 001 lab 4, the modernised drive); its pushing area is π·(D² − d2²)/4.
     count : int or str
         Number of identical cylinders acting in parallel, k [-] (seed 003 k_gc = 2).
     eta_mech : float or str
@@ -191,13 +267,15 @@ class Cylinder:
     dp_throttle, dp_line : float or str
         Pressure losses at the throttle and in the line [Pa]; the largest working
         pressure is p_max = p_relief − (Δp_throttle + Δp_line) (001 lab 1 eq. 1).
-    side : {"piston", "rod"}
-        Which chamber is pressurised: piston area π·D²/4 or annulus π·(D² − d²)/4.
+    side : {"piston", "rod", "auto"}
+        Which chamber is pressurised: piston area π·(D² − d2²)/4 (pushes) or annulus
+        π·(D² − d²)/4 (pulls); ``"auto"``: the one that gives the force the loads
+        need at each position (a double-rod cylinder steering either way).
     """
 
     name: str
-    coordinate: str
-    bore: Ref
+    coordinate: str | None = None
+    bore: Ref = 0.0
     rod: Ref = 0.0
     count: Ref = 1
     eta_mech: Ref = 1.0
@@ -206,18 +284,28 @@ class Cylinder:
     dp_throttle: Ref = 0.0
     dp_line: Ref = 0.0
     side: str = "piston"
+    distance: str | None = None
+    supply: str | None = None
+    rod2: Ref = 0.0
 
-    quantities: ClassVar = {"bore": "length", "rod": "length", "count": "number",
-                            "eta_mech": "number", "eta_hyd": "number", "p_relief": "pressure",
-                            "dp_throttle": "pressure", "dp_line": "pressure"}
-    flags: ClassVar = {"bore": "positive", "rod": "nonneg", "count": "count",
+    quantities: ClassVar = {"bore": "length", "rod": "length", "rod2": "length",
+                            "count": "number", "eta_mech": "number", "eta_hyd": "number",
+                            "p_relief": "pressure", "dp_throttle": "pressure",
+                            "dp_line": "pressure"}
+    flags: ClassVar = {"bore": "positive", "rod": "nonneg", "rod2": "nonneg", "count": "count",
                        "eta_mech": "fraction", "eta_hyd": "fraction", "p_relief": "nonneg",
                        "dp_throttle": "nonneg", "dp_line": "nonneg"}
+
+    @property
+    def length(self) -> str:
+        """The name of the cylinder's length: its coordinate or its distance."""
+        return self.coordinate if self.coordinate is not None else self.distance
 
 
 #: the load types by their model-file ``type`` (each declares ``type_name``,
 #: ``quantities``, ``flags``, ``point_fields``, ``link_fields`` and ``apply(c)``)
-LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring, Mass)}
+LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring, Mass,
+                                             ResistingMoment)}
 
 
 def names_in(value) -> tuple:

@@ -21,7 +21,7 @@ import numpy as np
 from . import diagnostics, inputs
 from .errors import AssemblyError, ModelError
 from .groups import Distance, Frame, Group, Link, registry
-from .groups.base import is_number
+from .groups.base import is_number, ref_value, signed_name
 from .program import compile_program, execute, trig_table
 from .topology import Topology, build_topology
 
@@ -42,7 +42,7 @@ class _Values:
             return float(ref)
         if ref in self.q:
             return self.q[ref]
-        return self.params[ref]
+        return ref_value(self.params, ref)
 
     def positions_at(self, group, qvals):
         i = self.mech.groups.index(group)
@@ -254,8 +254,17 @@ class Mechanism:
         from .loads import Mass
         return self._with(loads=self.loads + (Mass(link, m, point, J),))
 
-    def cylinder(self, name, coordinate, **kw) -> "Mechanism":
-        """Add hydraulic cylinder data for a coordinate (see :class:`assur.loads.Cylinder`)."""
+    def resisting_moment(self, link, M, travel=1, coordinate=None, name=None) -> "Mechanism":
+        """Add a moment of magnitude ``M`` [N·m] on ``link`` that opposes its turn while
+        the coordinate travels in the direction ``travel`` (±1;
+        :class:`assur.loads.ResistingMoment`)."""
+        from .loads import ResistingMoment
+        return self._with(loads=self.loads + (ResistingMoment(link, M, travel, coordinate,
+                                                              name),))
+
+    def cylinder(self, name, coordinate=None, **kw) -> "Mechanism":
+        """Add hydraulic cylinder data for a coordinate, or a passive cylinder on a named
+        distance (``distance=…``, ``supply=…``; see :class:`assur.loads.Cylinder`)."""
         from .loads import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
@@ -281,6 +290,11 @@ class Mechanism:
         p = dict(self.params)
         p.update(values)
         return self._with(params=p)
+
+    def with_loads(self, loads=()) -> "Mechanism":
+        """The same mechanism with only ``loads`` (:mod:`assur.loads` objects; none by
+        default): e.g. one load at a time, to see what each asks of the actuators."""
+        return self._with(loads=tuple(loads))
 
     def with_gravity(self, g) -> "Mechanism":
         """Return a copy whose masses weigh m·g, g [m/s²]."""
@@ -454,7 +468,7 @@ class Mechanism:
             if is_number(ref):
                 if not math.isfinite(float(ref)):
                     raise ModelError(f"{where}: {what} = {ref!r} is not finite")
-            elif not (isinstance(ref, str) and ref in self.params):
+            elif not (isinstance(ref, str) and (signed_name(ref) or ref) in self.params):
                 raise ModelError(f"{where}: {what} refers to {ref!r}, which is not a parameter "
                                  f"{sorted(self.params)}")
 
@@ -482,27 +496,61 @@ class Mechanism:
                     link_ok(what, l)
             for f in ld.quantities:
                 ref_ok(f"{what}: {f}", getattr(ld, f))
+            check = getattr(ld, "check", None)  # a load's own check against the mechanism
+            if check is not None:
+                problem = check(self)
+                if problem:
+                    raise ModelError(f"{where}: {what}: {problem}")
         if self.machine is not None:
             point_ok("the machine's implement", self.machine.point)
             for t in self.machine.ref_names():
                 ref_ok("the machine's data", t)
             ref_ok("the machine's implement weight", self.machine.weight)
         seen = set()
+        distances = {d.name for d in self.distances}
         for c in self.cylinders:
             if not isinstance(c, Cylinder):
                 raise ModelError(f"{where}: cylinders must be assur.loads.Cylinder, got {c!r}")
-            if c.coordinate not in self.coordinates:
+            if (c.coordinate is None) == (c.distance is None):
+                raise ModelError(f"{where}: cylinder {c.name!r}: give either the coordinate it "
+                                 f"drives or, for a passive cylinder, the distance that is its "
+                                 f"length (not both)")
+            if c.distance is not None:
+                if c.distance not in distances:
+                    raise ModelError(f"{where}: passive cylinder {c.name!r}: {c.distance!r} is "
+                                     f"not a named distance {sorted(distances)}")
+                if c.supply is None:
+                    raise ModelError(f"{where}: passive cylinder {c.name!r} (length "
+                                     f"{c.distance!r}) needs the supply line it shares with a "
+                                     f"cylinder that drives a coordinate (supply = …)")
+            elif c.coordinate not in self.coordinates:
                 raise ModelError(f"{where}: cylinder {c.name!r} drives {c.coordinate!r}, which is "
                                  f"not a generalized coordinate {list(self.coordinates)}")
-            if c.coordinate in seen:
+            elif c.coordinate in seen:
                 raise ModelError(f"{where}: two cylinder entries drive {c.coordinate!r}")
-            seen.add(c.coordinate)
-            if c.side not in ("piston", "rod"):
+            if c.coordinate is not None:
+                seen.add(c.coordinate)
+            if c.side not in ("piston", "rod", "auto"):
                 raise ModelError(f"{where}: cylinder {c.name!r}: side must be one of: "
-                                 f"['piston', 'rod'], got {c.side!r}")
-            for f in ("bore", "rod", "count", "eta_mech", "eta_hyd", "p_relief", "dp_throttle",
-                      "dp_line"):
+                                 f"['piston', 'rod', 'auto'], got {c.side!r}")
+            for f in ("bore", "rod", "rod2", "count", "eta_mech", "eta_hyd", "p_relief",
+                      "dp_throttle", "dp_line"):
                 ref_ok(f"cylinder {c.name!r}: {f}", getattr(c, f))
+        lines = {}
+        for c in self.cylinders:
+            if c.supply is not None:
+                lines.setdefault(c.supply, []).append(c)
+        for line, cyls in lines.items():
+            active = [c for c in cyls if c.coordinate is not None]
+            if len(active) != 1:
+                raise ModelError(f"{where}: supply line {line!r}: expected exactly one cylinder "
+                                 f"that drives a coordinate, found {len(active)} "
+                                 f"({', '.join(c.name for c in active) or 'none'}); the others "
+                                 f"are passive (distance = …)")
+            if len(cyls) > 1 and any(c.side == "auto" for c in cyls):
+                raise ModelError(f"{where}: supply line {line!r}: with several cylinders on "
+                                 f"one line, give each cylinder's pressurised side "
+                                 f"(\"piston\" or \"rod\"), not \"auto\"")
 
     def _check_ref(self, g, role, ref):
         if ref is None:
@@ -513,7 +561,7 @@ class Mechanism:
                                  f"is not finite")
             return
         if isinstance(ref, str):
-            if ref in self.params or ref in self.coordinates:
+            if (signed_name(ref) or ref) in self.params or ref in self.coordinates:
                 return
             raise ModelError(f"mechanism {self.name!r}: {g.kind} {g.name!r}: {role} refers to "
                              f"{ref!r}, which is neither a parameter {sorted(self.params)} nor a "
@@ -525,9 +573,7 @@ class Mechanism:
     def value_of(self, ref, params=None):
         """Value of a reference (number or parameter name) as a float array over designs."""
         p = self.params if params is None else params
-        if is_number(ref):
-            return np.asarray(float(ref))
-        return np.asarray(p[ref], dtype=float)
+        return np.asarray(ref_value(p, ref), dtype=float)
 
     def evaluate_positions(self, q, params=None, upto=None):
         """Point positions by the plain-numpy formulas of the groups (any dtype).

@@ -22,7 +22,7 @@ import numpy as np
 
 from .errors import ModelError
 from .groups import group_type
-from .groups.base import is_number
+from .groups.base import is_number, ref_value, signed_name
 from .kernel import emit as KE
 from .kernel import run as KR
 from .kernel.compose import load_kernel
@@ -175,7 +175,8 @@ class Program:
 
     def param_table(self, params: Mapping) -> np.ndarray:
         """Parameter table, shape (rows, m): parameters, literals, derived rows (0)."""
-        rows = [np.atleast_1d(np.asarray(params[n], dtype=float)) for n in self.param_names]
+        rows = [np.atleast_1d(np.asarray(ref_value(params, n), dtype=float))
+                for n in self.param_names]
         m = max([r.shape[0] for r in rows] + [1])
         for name, r in zip(self.param_names, rows):
             if r.shape[0] not in (1, m):
@@ -214,19 +215,35 @@ def _kernel_for(rows, measures, k, out_pts, out_sca):
 _PROGRAMS: dict = {}
 
 
+def _signed_refs(mech) -> tuple:
+    """The signed references (``"-a"``) the groups and loads of ``mech`` use: rows of
+    the parameter table after the parameters, each −(its parameter)."""
+    import dataclasses
+    out = []
+    for item in tuple(mech.groups) + tuple(mech.loads):
+        if not dataclasses.is_dataclass(item):
+            continue
+        for f in dataclasses.fields(item):
+            v = getattr(item, f.name)
+            for r in (v if isinstance(v, tuple) else (v,)):  # a pose: one per coordinate
+                if signed_name(r) is not None and r not in out:
+                    out.append(r)
+    return tuple(out)
+
+
 def compile_program(mech, outputs=None) -> Program:
     """The :class:`Program` of a mechanism and the outputs it asks for (cached per
     structure: the groups, links, distances, coordinates and parameter names)."""
     outputs = None if outputs is None else tuple(outputs)
-    key = (mech.groups, mech.links, mech.distances, mech.coordinates, tuple(mech.params),
-           outputs)
+    names = tuple(mech.params) + _signed_refs(mech)
+    key = (mech.groups, mech.links, mech.distances, mech.coordinates, names, outputs)
     try:
         prog = _PROGRAMS.get(key)
     except TypeError:  # an unhashable literal somewhere: compile without caching
         key, prog = None, None
     if prog is not None:
         return prog
-    c = CompileContext(mech.coordinates, tuple(mech.params))
+    c = CompileContext(mech.coordinates, names)
     rows = []
     for i, g in enumerate(mech.groups):
         c.current = i

@@ -75,9 +75,11 @@ def parameter_quantities(mech) -> dict:
     A parameter used as a position of a coordinate (a ``[[solve]]`` position, a
     pose's ``at``) has the coordinate's quantity (a length, or a crank angle).
     """
+    from .groups.base import signed_name
     out: dict = {}
 
     def put(ref, q):
+        ref = signed_name(ref) or ref  # "-a" is a use of a
         if isinstance(ref, str) and ref in mech.params and q and ref not in out:
             out[ref] = q
 

@@ -225,6 +225,11 @@ class _LoadCollector:
             raise ModelError(f"{what} at {int((L == 0).sum())} position(s); its direction is "
                              f"undefined there")
 
+    def rate(self, link, coordinate=None):
+        """∂φ_link/∂q of a coordinate (the only one by default), (m, n) [rad/m or rad/rad]."""
+        a = 0 if coordinate is None else self.kin.coordinates.index(coordinate)
+        return self.kin.body_rates(link)[0][a]
+
     def acceleration(self, point):
         J1 = self.kin.jacobian(point)  # (2, k, m, n)
         J2 = self.kin.hessian(point)

@@ -46,6 +46,7 @@ drives the group). An *angle reference* is a number [rad] or a parameter name.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any, ClassVar, NamedTuple, Union
 
@@ -54,7 +55,7 @@ import numpy as np
 Ref = Union[str, float, int]
 
 __all__ = ["Group", "Field", "Failure", "register", "registry", "group_type", "Ref",
-           "fmt", "is_number"]
+           "fmt", "is_number", "signed_name", "ref_value"]
 
 
 def fmt(v) -> str:
@@ -65,6 +66,34 @@ def fmt(v) -> str:
 def is_number(x) -> bool:
     """True for real numbers (not bool)."""
     return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, bool)
+
+
+_SIGNED = re.compile(r"^-\s*([A-Za-z_][A-Za-z0-9_]*)$")
+
+
+def signed_name(ref):
+    """The parameter a *signed reference* negates: ``"-Mc"`` → ``"Mc"``, else None.
+
+    A value may name a parameter with a leading minus wherever it may name one
+    (``M = "-Mc"``, a frame coordinate ``"-a"``): its value is −(the parameter's),
+    following every change of the parameter (a batch, :meth:`Mechanism.with_params`).
+    """
+    if isinstance(ref, str):
+        m = _SIGNED.match(ref.strip())
+        if m:
+            return m.group(1)
+    return None
+
+
+def ref_value(params, ref):
+    """Value of a reference in ``params``: a number, a parameter name, or a signed
+    reference ``"-name"`` (−params[name]); arrays over designs stay arrays."""
+    if is_number(ref):
+        return float(ref)
+    base = signed_name(ref)
+    if base is not None:
+        return -np.asarray(params[base], dtype=float)
+    return params[ref]
 
 
 _MISSING = object()

@@ -28,6 +28,7 @@ import numpy as np
 
 from ..errors import AssemblyError, ModelError
 from ..groups import group_type
+from ..groups.base import ref_value, signed_name
 from ..inputs import bytes_per_position, check_memory, span_problem
 from ..loads import LOAD_TYPES, Cylinder
 from ..mechanism import Mechanism
@@ -192,6 +193,18 @@ class Builder:
         """Resolve the value ``v`` at ``path`` used as ``kind``: an SI number or a
         parameter/coordinate name (whose use is recorded)."""
         path = tuple(path)
+        base = signed_name(v)
+        if base is not None and base != str(v).strip():  # "-Mc": −(the parameter Mc)
+            if flag or base not in self.params_raw:
+                why = (f"expected {_FLAGS[flag][1](kind)}" if flag else
+                       f"expected {kind.article} (e.g. {kind.example}) or a parameter name "
+                       f"with an optional leading minus")
+                raise self.error(path, f'{why}, found "{v}"' + (
+                    "" if flag else f', and "{base}" is not a parameter'
+                    f"{S.did_you_mean(base, list(self.params_raw))}"))
+            self.value(path, base, kind)
+            self.resolved[path] = "-" + base
+            return "-" + base
         try:
             p = parse(v)
         except UnitError as e:
@@ -328,8 +341,13 @@ class Builder:
                 if field in ld.model_fields_set:
                     self.value(("loads", i, field), getattr(ld, field), kind, flag)
         for i, c in enumerate(sp.cylinders):
-            self.coordinate_field(("cylinders", i, "coordinate"), c.coordinate,
-                                  self.kind_of_coordinate(c.coordinate))
+            if (c.coordinate is None) == (c.distance is None):
+                raise self.error(("cylinders", i), "expected either coordinate (the cylinder "
+                                                   "drives it) or distance (a passive "
+                                                   "cylinder's length), not both or neither")
+            if c.coordinate is not None:
+                self.coordinate_field(("cylinders", i, "coordinate"), c.coordinate,
+                                      self.kind_of_coordinate(c.coordinate))
             for field, (kind, flag) in _CYLINDER_VALUES.items():
                 if field in c.model_fields_set:
                     self.value(("cylinders", i, field), getattr(c, field), kind, flag)
@@ -588,8 +606,9 @@ class Builder:
             seen[c.name] = i
             kw = {f: self.resolved[cp + (f,)] for f in _CYLINDER_VALUES if cp + (f,) in
                   self.resolved}
-            if "side" in c.model_fields_set:
-                kw["side"] = c.side
+            for f in ("side", "distance", "supply"):
+                if f in c.model_fields_set:
+                    kw[f] = getattr(c, f)
             if c.side == "rod":  # the annulus π(D² − d²)/4 needs 0 < d < D
                 bore = self.number(cp + ("bore",))
                 rod = self.number(cp + ("rod",)) if cp + ("rod",) in self.resolved else 0.0
@@ -598,6 +617,11 @@ class Builder:
                                      f"a rod-side cylinder needs 0 < rod < bore, found rod "
                                      f"{S.show(c.rod)} = {rod:.6g} m and bore {S.show(c.bore)} = "
                                      f"{bore:.6g} m")
+            if c.distance is not None and c.distance not in sp.distances:
+                raise self.error(cp + ("distance",), f'unknown distance "{c.distance}": a '
+                                                     f"passive cylinder's length is a name of "
+                                                     f"[distances] ({', '.join(sp.distances)})"
+                                                     f"{S.did_you_mean(c.distance, list(sp.distances))}")
             mech = self.guarded(cp, lambda: mech.cylinder(c.name, c.coordinate, **kw))
         if sp.machine is not None:
             mech = self.machine(mech, points)
@@ -629,9 +653,9 @@ class Builder:
         """A resolved value as a number (a parameter name gives its value; terms add)."""
         v = self.resolved[tuple(path)]
         if isinstance(v, tuple) and v[:1] == ("terms",):
-            return sum(s * (float(self.params[r]) if isinstance(r, str) else float(r))
+            return sum(s * float(ref_value(self.params, r))
                        for s, r in v[1])
-        return float(self.params[v]) if isinstance(v, str) else float(v)
+        return float(ref_value(self.params, v))
 
     def refs(self, path):
         """The terms of a machine value as ``((sign, number or parameter name), …)``."""
@@ -802,8 +826,8 @@ class Builder:
             target = self.resolved[sp + ("equals",)]
             raw = parse(s.equals)
             if isinstance(target, str):
-                shown = self.units.get(target)
-                target = self.params[target]
+                shown = self.units.get(signed_name(target) or target)
+                target = ref_value(self.params, target)
             else:
                 shown = display_unit(raw, quantities[s.quantity])
             at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
@@ -879,8 +903,7 @@ class Builder:
             rp = ("range", c)
 
             def val(path):
-                v = self.resolved[path]
-                return float(params[v]) if isinstance(v, str) else float(v)
+                return float(ref_value(params, self.resolved[path]))
 
             if "values" in r.model_fields_set:
                 a = np.array([val(rp + ("values", k)) for k in range(len(r.values))])

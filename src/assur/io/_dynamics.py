@@ -31,6 +31,7 @@ from pydantic_core import PydanticCustomError
 
 from ..balancing import OBJECTIVES, CounterMass
 from . import _schema as S
+from ..groups.base import ref_value
 from ._units import INERTIA, LENGTH, MASS, NUMBER
 
 __all__ = ["DynamicsSpec", "build_dynamics"]
@@ -96,7 +97,7 @@ def build_dynamics(builder, mech):
 
     def value(path, v, kind, flag=None):
         si = builder.value(path, v, kind, flag)
-        return float(mech.params[si]) if isinstance(si, str) else float(si)
+        return float(ref_value(mech.params, si))
 
     delta = flywheel = None
     if spec.delta is not None:

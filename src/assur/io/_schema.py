@@ -371,22 +371,34 @@ class MassSpec(_Load):
     J: Value = 0.0
 
 
+class ResistingMomentSpec(_Load):
+    link: Name
+    M: Value
+    travel: typing.Literal[1, -1] = 1
+    coordinate: Optional[Name] = None
+    name: Optional[Name] = None
+
+
 LOAD_TYPES = {"weight": WeightSpec, "force": ForceSpec, "moment": MomentSpec,
-              "spring": SpringSpec, "mass": MassSpec}
+              "spring": SpringSpec, "mass": MassSpec,
+              "resisting_moment": ResistingMomentSpec}
 
 
 class CylinderSpec(_Table):
     name: Name
-    coordinate: Name
+    coordinate: Optional[Name] = None
+    distance: Optional[Name] = None
+    supply: Optional[Name] = None
     bore: Value
     rod: Value = 0.0
+    rod2: Value = 0.0
     count: Value = 1
     eta_mech: Value = 1.0
     eta_hyd: Value = 1.0
     p_relief: Value = 0.0
     dp_throttle: Value = 0.0
     dp_line: Value = 0.0
-    side: typing.Literal["piston", "rod"] = "piston"
+    side: typing.Literal["piston", "rod", "auto"] = "piston"
 
 
 # ---- [machine] ----------------------------------------------------------------------

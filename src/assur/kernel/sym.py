@@ -23,7 +23,8 @@ _BINARY = {np.add: "+", np.subtract: "-", np.multiply: "*", np.true_divide: "/",
 _CALLS = {np.arctan2: "math.atan2", np.sin: "math.sin",
           np.cos: "math.cos", np.tan: "math.tan", np.sqrt: "math.sqrt",
           np.arcsin: "math.asin", np.arccos: "math.acos", np.arctan: "math.atan",
-          np.exp: "math.exp", np.log: "math.log", np.absolute: "abs"}
+          np.exp: "math.exp", np.log: "math.log", np.absolute: "abs",
+          np.copysign: "math.copysign"}
 
 
 class Tracer:

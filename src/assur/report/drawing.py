@@ -5,9 +5,9 @@ The drawing is made from the model's rigid bodies (:attr:`assur.Mechanism.bodies
 * a rigid link with two points is a line between them; with three or more (a
   bell-crank, the implement with its centre of mass) a lightly filled polygon
   (their convex hull);
-* a link of variable length (a hydraulic cylinder) is a thick barrel from its
-  base and a thin rod from its other end, of fixed lengths, so the rod slides
-  out of the barrel over the stroke;
+* a link of variable length (a hydraulic cylinder, also a passive one on a named
+  distance) is a thick barrel from its base and a thin rod from its other end, of
+  fixed lengths, so the rod slides out of the barrel over the stroke;
 * frame pivots are hatched triangles; joints are open circles, other points
   (a centre of mass) dots; a weight is an arrow down labelled with its name;
 * every point is labelled with its name, every link with its name in its colour.
@@ -59,6 +59,11 @@ class _Geometry:
             self.xy[p] = np.stack([pick(kin.x(p)), pick(kin.y(p))], axis=-1)
         self.q = {c: pick(kin.q(c)) for c in kin.coordinates}
         self.bodies = {b: v for b, v in mech.bodies.items()}
+        # a passive cylinder (on a named distance) is drawn as a cylinder between its ends
+        ends = {d.name: (d.a, d.b) for d in mech.distances}
+        for c in mech.cylinders:
+            if c.coordinate is None and c.distance in ends and c.name not in self.bodies:
+                self.bodies[c.name] = {"points": list(ends[c.distance]), "variable": True}
         used = {}
         for b, v in self.bodies.items():
             for p in v["points"]:

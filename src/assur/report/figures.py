@@ -383,9 +383,12 @@ def force(analysis, lang="en", design=None):
     fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "kN")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.force) / 1e3, f"$F_{{{res.cylinder.coordinate}}}$ ({name})")
-        fmax = v.scalar(res.force_max)
-        if fmax > 0:
+        p.line(ax, v.pick(res.force) / 1e3, f"$F_{{{res.cylinder.length}}}$ ({name})")
+        fm = v.pick(res.force_max)  # over positions for a double-rod cylinder (side auto)
+        fmax = float(fm[0])
+        if np.ptp(fm) > 0:
+            p.line(ax, fm / 1e3, t("force_max", lang, float(np.max(fm)) / 1e3))
+        elif fmax > 0:
             ax.axhline(fmax / 1e3, ls="--", lw=1, color="C3", label=t("force_max", lang,
                                                                        fmax / 1e3))
         n += 2
@@ -403,7 +406,7 @@ def pressure(analysis, lang="en", design=None):
     fig, ax = p.axes(t("f_pressure", lang), t("y_pressure", lang), "MPa")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.pressure) / 1e6, f"$p_{{{res.cylinder.coordinate}}}$ ({name})")
+        p.line(ax, v.pick(res.pressure) / 1e6, f"$p_{{{res.cylinder.length}}}$ ({name})")
         pmax = v.scalar(res.p_max)
         if pmax > 0:
             ax.axhline(pmax / 1e6, ls="--", lw=1, color="C3", label=t("p_max", lang, pmax / 1e6))

@@ -507,13 +507,14 @@ def _table_4_1(v):
     points = v.transmission_points()
     extrema = []
     for name, res in a.cylinders.items():
-        c = res.cylinder.coordinate
+        c = res.cylinder.length  # its coordinate, or a passive cylinder's distance
         sfx = f"_{c}" if several else ""
         cols.append(Column(f"F_{c}", "N", v.pick(res.force), _both("c_F", name)))
         cols.append(Column(f"p_{c}", "Pa", v.pick(res.pressure), _both("c_p", name)))
-        # capacity only at the points of the chain this cylinder drives (assur.chains)
+        # capacity only at the points of the chain this cylinder drives (assur.chains);
+        # none for a cylinder on a supply line (the line has one pressure)
         absent = [p for p in points if not v.moves_point(c, p)]
-        for p in points:
+        for p in points if res.supply_line is None else ():
             if p in absent:
                 continue
             g, err = _capacity(v, res, p)
