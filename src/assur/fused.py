@@ -51,13 +51,13 @@ from .kernel import run as KR
 from .kernel.cache import load_source
 from .kernel.emit import Emitter
 from .kernel.select import branchless
-from .kernel.source import CHUNK, chunk_loop, hoisted
+from .kernel.source import BUF_ROW, CHUNK, chunk_loop, hoisted, status_out
 from .kernel.sym import Sym, Tracer, code
 from .statics import GRAVITY, ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 
-FORMAT = "6"
+FORMAT = "7"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
@@ -367,8 +367,9 @@ def _source(mech, prog, specs, reduce, g):
     body = "\n".join(body_lines)
     ind = " " * 16
     nout = len(specs)
-    post = [ind + "status[e] = st", ind + "ok_ = st < 0", ind + "j = e - e0"]
-    after = []
+    # the status is staged in a local buffer like the outputs (see assur.kernel.source)
+    post = [ind + "j = e - e0", ind + "sbuf[j] = st", ind + "ok_ = st < 0"]
+    after = [status_out(" " * 12).rstrip("\n")]
     # the element loop stages the outputs in a chunk buffer (branch-free, vectorized);
     # stored: copied out row by row; reduced: one scalar pass over the buffer per chunk
     post += [branchless(ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0") for k_ in range(nout)]
@@ -408,7 +409,8 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
     """Fused kernel: chunks c_start…c_end−1 (runs of ≤ {CHUNK} positions of one
     design); out: ({nout}, E) outputs or red: (4·{nout}, chunks) min, max, argmin,
     argmax per chunk."""
-    buf = np.empty(({nout + 1}, {CHUNK}))
+    buf = np.empty(({nout + 1}, {BUF_ROW}))
+    sbuf = np.empty({CHUNK}, dtype=np.int64)
 {chunk_loop(pre)}{body}
 ''' + "\n".join(post) + "\n" + "\n".join(after) + "\n"
     return src
