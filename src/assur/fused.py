@@ -567,7 +567,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     out = np.empty((0 if reduce else len(specs), E))
     red = np.empty((4 * len(specs) if reduce else 0, nchunks))
     status = np.empty(E, dtype=np.int64)
-    nthreads = min(KR.threads(), max(1, nchunks // 8))
+    nthreads = KR.threads_for(E, nchunks)
     per = (nchunks + nthreads - 1) // nthreads
     if nthreads <= 1:
         kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)

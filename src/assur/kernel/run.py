@@ -14,7 +14,13 @@ from concurrent.futures import ThreadPoolExecutor
 from .emit import CONTINUITY_TOL
 from .source import CHUNK
 
-__all__ = ["threads", "set_threads", "run", "check_continuity", "unwrap_rows", "pool"]
+__all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "unwrap_rows",
+           "pool", "MIN_ELEMENTS_PER_THREAD"]
+
+#: elements a thread gets at least: below, handing work to the pool costs more than
+#: it saves (a batch of 257 designs at one position, as design conditions solve,
+#: runs in the calling thread)
+MIN_ELEMENTS_PER_THREAD = 4096
 
 _threads: list = []
 _pool: list = []
@@ -51,12 +57,19 @@ def pool() -> ThreadPoolExecutor:
     return _pool[0]
 
 
+def threads_for(elements: int, chunks: int) -> int:
+    """Threads for a kernel call over ``elements`` in ``chunks`` work items: each
+    gets ≥ 8 chunks and ≥ :data:`MIN_ELEMENTS_PER_THREAD` elements (small problems
+    run in the calling thread)."""
+    return max(1, min(threads(), chunks // 8, elements // MIN_ELEMENTS_PER_THREAD))
+
+
 def run(kernel, params, trig, q, npd, check, out, gout, status):
     """Run a generated kernel over all elements, split over threads (small problems
     run in the calling thread)."""
     E = q.shape[1]
     nchunks = (E // npd) * ((npd + CHUNK - 1) // CHUNK)  # designs × runs per design
-    nthreads = min(threads(), max(1, nchunks // 8))
+    nthreads = threads_for(E, nchunks)
     if nthreads <= 1:
         kernel(params, trig, q, npd, check, out, gout, status, 0, nchunks)
         return
