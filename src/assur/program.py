@@ -25,7 +25,7 @@ from .groups import group_type
 from .groups.base import is_number
 from .kernel import emit as KE
 from .kernel import run as KR
-from .kernel.compose import load_kernel
+from .kernel.compose import is_fused, load_kernel
 
 __all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_table"]
 
@@ -350,13 +350,18 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     rows_ = prog.rows if rows is None else rows
     cont = (prog.continuity_rows if rows is None else
             [i for i, r in enumerate(rows_) if group_type(r[0]).continuity]) if k == 1 else []
-    gout = np.empty((2 * len(cont), E if check else 1))
-    KR.run(kern, ptab, trig_table(prog, ptab) if trig is None else trig, qarr, n, check, out,
-           gout, status)
+    # a fused kernel checks continuity itself (depths in ``amount``); a composed one
+    # stages the squared heights and slopes in ``gout`` for the separate pass
+    fused = is_fused(rows_, prog.measures if rows is None else ())
+    gout = amount if fused else np.empty((2 * len(cont), E if check else 1))
+    nfail = KR.run(kern, ptab, trig_table(prog, ptab) if trig is None else trig, qarr, n, check,
+                   out, gout, status)
     if check and cont:
-        codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
-                         dtype=np.int64)
-        if KR.check_continuity(gout, qarr, n, status, amount, codes):
+        if not fused:
+            codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
+                             dtype=np.int64)
+            nfail = KR.check_continuity(gout, qarr, n, status, amount, codes)
+        if nfail:
             flagged = np.flatnonzero((status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY)
                                      & (status >= 0))
             _refine_continuity(prog, ptab, qarr, n, status, flagged, rows_, depth)

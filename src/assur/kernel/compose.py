@@ -40,7 +40,7 @@ from .cache import load_source
 from .emit import CODES_PER_OP, Emitter
 from .source import CHUNK, FORMAT, emit_measure, generate, quantities
 
-__all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "load_kernel"]
+__all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "is_fused", "load_kernel"]
 
 #: structures with more groups + measures than this get a composed kernel (set to
 #: 0 to compose every structure, to a large number to fuse every one)
@@ -260,10 +260,17 @@ def _group(key):
     return mod.grp
 
 
+def is_fused(rows, measures) -> bool:
+    """True if the structure gets the fused kernel of :mod:`assur.kernel.source` (which
+    checks continuity itself), False for a composed one (whose continuity staging
+    :func:`assur.kernel.run.check_continuity` checks)."""
+    return len(rows) + len(measures) <= THRESHOLD
+
+
 def load_kernel(rows, measures, K, out_pts, out_sca):
     """The compiled kernel of a structure: fused up to :data:`THRESHOLD` groups and
-    measures, composed above."""
-    if len(rows) + len(measures) <= THRESHOLD:
+    measures, composed above (:func:`is_fused`)."""
+    if is_fused(rows, measures):
         return load_source(generate(rows, measures, K, out_pts, out_sca))
     srcs, driver = generate_composed(rows, measures, K, out_pts, out_sca)
     for s in srcs:

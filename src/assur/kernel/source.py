@@ -25,10 +25,11 @@ from __future__ import annotations
 import re
 
 from ..groups import group_type
-from .emit import FAIL_COINCIDENT, Emitter, d, dd, fail, pt
+from .emit import (CODES_PER_OP, CONTINUITY_TOL, FAIL_COINCIDENT, FAIL_CONTINUITY,
+                   Emitter, d, dd, fail, pt)
 from .select import branchless
 
-__all__ = ["generate", "hoisted", "chunk_loop", "emit_measure", "quantities", "CHUNK",
+__all__ = ["generate", "hoisted", "chunk_loop", "continuity_check", "emit_measure", "quantities", "CHUNK",
            "BUF_ROW", "FORMAT", "status_out"]
 
 #: elements per work item of the element loop
@@ -40,7 +41,7 @@ CHUNK = 256
 BUF_ROW = CHUNK + 8
 
 #: bump when the generator changes what it emits
-FORMAT = "20"
+FORMAT = "21"
 
 
 def emit_measure(E, i, kind, s_, P, Q):
@@ -99,24 +100,77 @@ def hoisted(lines):
     return body, hoist
 
 
-def status_out(indent: str) -> str:
+def status_out(indent: str, offset: str = "") -> str:
     """The copy of a chunk's staged status codes ``sbuf`` to ``status`` (after the
-    element loop), indented by ``indent``."""
-    return f"{indent}for j in range(e1 - e0):\n{indent}    status[e0 + j] = sbuf[j]\n"
+    element loop), indented by ``indent``; ``offset`` (e.g. ``" + e0 - ep"``) is the
+    column in ``sbuf`` of element e0."""
+    return (f"{indent}for j in range(e1 - e0):\n"
+            f"{indent}    status[e0 + j] = sbuf[j{offset}]\n")
 
 
-def chunk_loop(hoist: str) -> str:
+def chunk_loop(hoist: str, lead: bool = False) -> str:
     """The loop over work items (runs of ≤ CHUNK positions of one design: per-design
     values are loop-invariant, the element loop a plain counted loop), with the
-    ``hoist`` lines before each run, up to the start of an element (``st = -1``)."""
+    ``hoist`` lines before each run, up to the start of an element (``st = -1``).
+
+    The elements e0…e1−1 of a work item are written; the element loop runs from
+    ``ep``: e0, or with ``lead`` and ``check`` the element before e0 when it belongs to
+    the same design (computed again, not written: the continuity check of the interval
+    that ends at e0 needs it).
+    """
+    ep = ("e0 - 1 if check and e0 > d * npd else e0") if lead else "e0"
     return (f"    cpd = (npd + {CHUNK} - 1) // {CHUNK}\n"
             "    for c in range(c_start, c_end):\n"
             "        d = c // cpd\n"
             f"        e0 = d * npd + (c % cpd) * {CHUNK}\n"
             f"        e1 = min(d * npd + npd, e0 + {CHUNK})\n"
+            f"        ep = {ep}\n"
             "        if e1 > e0:\n"
-            f"{hoist}            for e in range(e0, e1):\n"
+            f"{hoist}            for e in range(ep, e1):\n"
             "                st = -1\n")
+
+
+def continuity_check(cont, codes, rows, indent):
+    """Lines of the continuity check of one work item, after its element loop.
+
+    For every interval between consecutive elements ``ep + j − 1``, ``ep + j`` (both
+    assembled) and every group ``cont[k]`` staged in ``buf`` rows ``rows[k]`` (squared
+    triangle height g and its slope gd): the cubic Hermite interpolant of g over the
+    interval must not dip below ``−CONTINUITY_TOL·max(g)`` (the group neither flattens
+    nor opens between the samples). A failing interval marks its right-hand element
+    with the group's status code ``codes[k]`` and the depth [m²] in ``amount``; the
+    first failing group of an interval counts, and an element so marked is not the
+    left end of a checked interval (as :func:`assur.kernel.run.check_continuity`).
+    Counts the failures in ``nfail``.
+    """
+    i0 = indent
+    lines = [f"{i0}for j in range(1, e1 - ep):",
+             f"{i0}    if sbuf[j] >= 0 or sbuf[j - 1] >= 0:",
+             f"{i0}        continue",
+             f"{i0}    h = abs(q[0, ep + j] - q[0, ep + j - 1])"]
+    for k, (code, r) in enumerate(zip(codes, rows)):
+        i1 = i0 + "    "
+        lines += [f"{i1}g0 = buf[{r}, j - 1]",
+                  f"{i1}d0 = buf[{r + 1}, j - 1]",
+                  f"{i1}g1 = buf[{r}, j]",
+                  f"{i1}d1 = buf[{r + 1}, j]",
+                  f"{i1}mn = min(g0, g1)",
+                  f"{i1}if mn - (4.0 / 27.0) * h * (abs(d0) + abs(d1)) <= 0.0:",
+                  f"{i1}    hs = q[0, ep + j] - q[0, ep + j - 1]",
+                  f"{i1}    for ii in range(1, 16):",
+                  f"{i1}        t = ii / 16.0",
+                  f"{i1}        t2 = t * t",
+                  f"{i1}        t3 = t2 * t",
+                  f"{i1}        v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0 + (t3 - 2.0 * t2 + t) * hs * d0"
+                  f" + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * hs * d1)",
+                  f"{i1}        if v < mn:",
+                  f"{i1}            mn = v",
+                  f"{i1}    if mn < -{CONTINUITY_TOL!r} * max(g0, g1):",
+                  f"{i1}        sbuf[j] = {code}",
+                  f"{i1}        amount[ep + j] = mn",
+                  f"{i1}        nfail += 1",
+                  f"{i1}        continue"]
+    return "\n".join(lines) + "\n"
 
 
 def quantities(K, out_pts, out_sca, angle_slots):
@@ -148,10 +202,11 @@ def generate(rows, measures, K, out_pts, out_sca):
         Slots of the points and measures to write.
 
     Continuity (k = 1): every group type with ``continuity`` emits the squared height
-    ``g{i}`` of its triangle and its slope ``gd{i}``; the kernel stages them so that
-    :func:`assur.kernel.run.continuity` can check, between consecutive positions,
-    that the cubic Hermite interpolant stays positive (the group neither flattens
-    nor opens between samples).
+    ``g{i}`` of its triangle and its slope ``gd{i}``; the kernel stages them and
+    checks, between consecutive positions, that the cubic Hermite interpolant stays
+    positive (the group neither flattens nor opens between samples,
+    :func:`continuity_check`; the composed kernels of large structures leave that to
+    :func:`assur.kernel.run.check_continuity`).
     """
     E = Emitter(K)
     cont = []
@@ -171,17 +226,19 @@ def generate(rows, measures, K, out_pts, out_sca):
     angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
     qs = quantities(K, out_pts, out_sca, angle_slots)
     nq = len(qs)
-    # the squared triangle heights and slopes for the continuity check (a separate
-    # pass): staged unconditionally (a conditional store would stop vectorization),
-    # copied to gout only when checking
+    # the squared triangle heights and slopes of the continuity check, staged
+    # unconditionally (a conditional store would stop vectorization) and checked
+    # after the element loop of each work item, while they are in cache
     for i in cont:
         qs += [f"g{i}", f"gd{i}"]
+    check = continuity_check(cont, [i * CODES_PER_OP + FAIL_CONTINUITY for i in cont],
+                             [nq + 2 * k for k in range(len(cont))], " " * 16) if cont else ""
     ind = "                "
     # the status is staged in a local buffer too: the element loop then stores only
     # to kernel-local memory, so LLVM vectorizes it without a run-time overlap check
     # against the caller's arrays (that check failed, and the scalar loop ran 4×
     # slower, whenever ``status`` happened to lie within a few kB of ``q``)
-    out = [ind + "j = e - e0", ind + "sbuf[j] = st"]
+    out = [ind + "j = e - ep", ind + "sbuf[j] = st"]
     # outputs go to a per-chunk buffer (one row per quantity, in L2) and are copied
     # row by row at the end of the chunk: a few long sequential streams instead of
     # one interleaved stream per quantity; failed elements get 0, never NaN
@@ -197,25 +254,25 @@ from assur.kernel.select import sel as _sel
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
+def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
     """Chunks c_start…c_end−1 of the elements. out: (NQ, E) outputs, rows in the order
-    of assur.kernel.source.quantities; gout: (2·dyads, E) squared heights and slopes
-    when ``check``. Branch-free element loop (vectorizable); releases the GIL:
-    callers run ranges in threads."""
+    of assur.kernel.source.quantities. With ``check`` (k = 1) the continuity of every
+    dyad between consecutive positions is checked here: failures get the group's
+    code in ``status`` and the depth in ``amount`` (E,); returns their number.
+    Branch-free element loop (vectorizable); releases the GIL: callers run ranges
+    in threads."""
     E = q.shape[1]
     NQ = {nq}
-    NG = {len(qs) - nq}
-    if out.shape[0] != NQ or gout.shape[0] != NG or out.shape[1] != E:
+    if out.shape[0] != NQ or out.shape[1] != E or (check and amount.shape[0] != E):
         raise ValueError("assur kernel: output arrays do not match the program")
     buf = np.empty(({max(len(qs), 1)}, {BUF_ROW}))
-    sbuf = np.empty({CHUNK}, dtype=np.int64)
+    sbuf = np.empty({CHUNK + 1}, dtype=np.int64)
+    nfail = 0
     # work items are runs of ≤ {CHUNK} positions of one design: the per-design values
     # are loop-invariant and the element loop is a plain counted loop (vectorizable)
-{chunk_loop(hoist)}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + status_out(" " * 8) + '''        for r in range(NQ):
+{chunk_loop(hoist, lead=bool(cont))}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + (
+        "            if check:\n" + check if check else "") + status_out(" " * 8, " + e0 - ep") + '''        for r in range(NQ):
             for j in range(e1 - e0):
-                out[r, e0 + j] = buf[r, j]
-        if check:
-            for r in range(NG):
-                for j in range(e1 - e0):
-                    gout[r, e0 + j] = buf[NQ + r, j]
+                out[r, e0 + j] = buf[r, j + e0 - ep]
+    return nfail
 '''
