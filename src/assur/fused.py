@@ -600,11 +600,12 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
         return Fused(outputs, units, None, res, nfail == 0, nfail, (m,))
     vals = {}
     for k_, (o, (fn, _)) in enumerate(zip(outputs, specs)):
-        v = out[k_].reshape(m, n)
+        v = out[k_]
         if fn == "phi" and n > 1:
-            v = np.unwrap(v, axis=1)
+            v = np.unwrap(v.reshape(m, n), axis=1)
         vals[o] = v.reshape(shape)
-    _check_finite(vals, "value")
+    if not np.isfinite(out).all():  # one pass; name the output only when one is not
+        _check_finite(vals, "value")
     return Fused(outputs, units, vals, None, ~failed.reshape(shape), nfail, shape)
 
 
