@@ -22,6 +22,7 @@ once per machine (:mod:`assur.kernel.cache`).
 
 from __future__ import annotations
 
+import math
 import re
 
 from ..groups import group_type
@@ -41,7 +42,43 @@ CHUNK = 256
 BUF_ROW = CHUNK + 8
 
 #: bump when the generator changes what it emits
-FORMAT = "21"
+FORMAT = "22"
+
+
+#: Cephes atan (S. L. Moshier, atan.c): atan(x) = x + x·z·P(z)/Q(z), z = x², for
+#: |x| ≤ 0.66; above, atan(x) = π/4 + atan((x − 1)/(x + 1)); MOREBITS is π/2 − fl(π/2)
+_ATAN_P = (-8.750608600031904122785e-1, -1.615753718733365076637e1,
+           -7.500855792314704667340e1, -1.228866684490136173410e2,
+           -6.485021904942025371773e1)
+_ATAN_Q = (2.485846490142306297962e1, 1.650270098316988542046e2,
+           4.328810604912902668951e2, 4.853903996359136964868e2,
+           1.945506571482613964425e2)
+_MOREBITS = 6.123233995736765886130e-17
+_PI_LO = 1.2246467991473532e-16  # π − fl(π)
+
+
+def emit_atan2(E, out, y, x, t):
+    """``out = atan2(y, x)`` [rad] as branch-free code (selects, no libm call), so the
+    element loop stays vectorized: within 2 ulp of :func:`numpy.arctan2` (signed zeros
+    as numpy); ``t`` prefixes the temporaries."""
+    p0, p1, p2, p3, p4 = (repr(v) for v in _ATAN_P)
+    q0, q1, q2, q3, q4 = (repr(v) for v in _ATAN_Q)
+    E(f"{t}ax = abs({x})")
+    E(f"{t}ay = abs({y})")
+    E(f"{t}mx = max({t}ax, {t}ay)")
+    E(f"{t}r = min({t}ax, {t}ay) / {t}mx if {t}mx > 0.0 else 0.0")  # in [0, 1]
+    E(f"{t}big = {t}r > 0.66")
+    E(f"{t}u = ({t}r - 1.0) / ({t}r + 1.0) if {t}big else {t}r")
+    E(f"{t}z = {t}u * {t}u")
+    E(f"{t}pz = (((({p0} * {t}z + {p1}) * {t}z + {p2}) * {t}z + {p3}) * {t}z + {p4})")
+    E(f"{t}qz = ((((({t}z + {q0}) * {t}z + {q1}) * {t}z + {q2}) * {t}z + {q3}) * {t}z"
+      f" + {q4})")
+    E(f"{t}at = {t}u * ({t}z * {t}pz / {t}qz) + {t}u")
+    E(f"{t}at = {math.pi / 4!r} + ({t}at + {0.5 * _MOREBITS!r}) if {t}big else {t}at")
+    E(f"{t}at = ({math.pi / 2!r} - {t}at) + {_MOREBITS!r} if {t}ay > {t}ax else {t}at")
+    E(f"{t}at = ({math.pi!r} - {t}at) + {_PI_LO!r} if math.copysign(1.0, {x}) < 0.0 "
+      f"else {t}at")
+    E(f"{out} = math.copysign({t}at, {y})")
 
 
 def emit_measure(E, i, kind, s_, P, Q):
@@ -60,11 +97,7 @@ def emit_measure(E, i, kind, s_, P, Q):
         E(f"{t}dx_{a} = {d(qx, a)} - {d(px, a)}")
         E(f"{t}dy_{a} = {d(qy, a)} - {d(py, a)}")
     if kind == "angle":
-        # the angle itself is atan2(dy, dx), taken after the kernel by numpy's
-        # vectorized arctan2 (an order of magnitude faster than a scalar libm call):
-        # the kernel outputs dy as the value and dx in an extra row
-        E(f"{s} = {t}dy")
-        E(f"{s}_dx = {t}dx")
+        emit_atan2(E, s, f"{t}dy", f"{t}dx", t)
         for a in range(K):
             E(f"{t}c_{a} = {t}dx * {t}dy_{a} - {t}dy * {t}dx_{a}")
             E(f"{d(s, a)} = {t}c_{a} * {t}ir2")
@@ -173,9 +206,9 @@ def continuity_check(cont, codes, rows, indent):
     return "\n".join(lines) + "\n"
 
 
-def quantities(K, out_pts, out_sca, angle_slots):
+def quantities(K, out_pts, out_sca):
     """Names of the output rows, in order: point values, first, second analogs, then
-    the measures likewise, then the dx of every output angle."""
+    the measures likewise."""
     qs = [v for s_ in out_pts for v in (f"x{s_}", f"y{s_}")]
     qs += [d(v, a) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)]
     qs += [dd(v, a, b) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)
@@ -183,7 +216,6 @@ def quantities(K, out_pts, out_sca, angle_slots):
     qs += [f"s{s_}" for s_ in out_sca]
     qs += [d(f"s{s_}", a) for s_ in out_sca for a in range(K)]
     qs += [dd(f"s{s_}", a, b) for s_ in out_sca for a in range(K) for b in range(K)]
-    qs += [f"s{s_}_dx" for s_ in out_sca if s_ in angle_slots]
     return qs
 
 
@@ -223,8 +255,7 @@ def generate(rows, measures, K, out_pts, out_sca):
     # per-design values are loaded once per run of positions of a design, before the
     # element loop (so the loop reads only q and can be vectorized)
     body, hoist = hoisted(E.lines)
-    angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
-    qs = quantities(K, out_pts, out_sca, angle_slots)
+    qs = quantities(K, out_pts, out_sca)
     nq = len(qs)
     # the squared triangle heights and slopes of the continuity check, staged
     # unconditionally (a conditional store would stop vectorization) and checked
@@ -251,6 +282,8 @@ import math
 import numpy as np
 from numba import njit
 from assur.kernel.select import sel as _sel
+
+CHECKS_CONTINUITY = True  # see assur.kernel.compose.checks_continuity
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
