@@ -11,7 +11,6 @@ from __future__ import annotations
 import re
 
 import numpy as np
-import pytest
 
 from assur import Mechanism, examples, statics
 from assur import program as P

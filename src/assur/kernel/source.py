@@ -30,8 +30,8 @@ from .emit import (CODES_PER_OP, CONTINUITY_TOL, FAIL_COINCIDENT, FAIL_CONTINUIT
                    Emitter, d, dd, fail, pt)
 from .select import branchless
 
-__all__ = ["generate", "hoisted", "chunk_loop", "continuity_check", "emit_measure", "quantities", "CHUNK",
-           "BUF_ROW", "FORMAT", "status_out"]
+__all__ = ["generate", "hoisted", "chunk_loop", "continuity_check", "emit_atan2", "emit_measure",
+           "quantities", "status_out", "CHUNK", "BUF_ROW", "FORMAT"]
 
 #: elements per work item of the element loop
 CHUNK = 256
@@ -181,7 +181,7 @@ def continuity_check(cont, codes, rows, indent):
              f"{i0}    if sbuf[j] >= 0 or sbuf[j - 1] >= 0:",
              f"{i0}        continue",
              f"{i0}    h = abs(q[0, ep + j] - q[0, ep + j - 1])"]
-    for k, (code, r) in enumerate(zip(codes, rows)):
+    for code, r in zip(codes, rows):
         i1 = i0 + "    "
         lines += [f"{i1}g0 = buf[{r}, j - 1]",
                   f"{i1}d0 = buf[{r + 1}, j - 1]",
@@ -194,7 +194,8 @@ def continuity_check(cont, codes, rows, indent):
                   f"{i1}        t = ii / 16.0",
                   f"{i1}        t2 = t * t",
                   f"{i1}        t3 = t2 * t",
-                  f"{i1}        v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0 + (t3 - 2.0 * t2 + t) * hs * d0"
+                  f"{i1}        v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0"
+                  f" + (t3 - 2.0 * t2 + t) * hs * d0"
                   f" + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * hs * d1)",
                   f"{i1}        if v < mn:",
                   f"{i1}            mn = v",
@@ -304,7 +305,8 @@ def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
     # work items are runs of ≤ {CHUNK} positions of one design: the per-design values
     # are loop-invariant and the element loop is a plain counted loop (vectorizable)
 {chunk_loop(hoist, lead=bool(cont))}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + (
-        "            if check:\n" + check if check else "") + status_out(" " * 8, " + e0 - ep") + '''        for r in range(NQ):
+        "            if check:\n" + check if check else "") + status_out(" " * 8, " + e0 - ep") + \
+        '''        for r in range(NQ):
             for j in range(e1 - e0):
                 out[r, e0 + j] = buf[r, j + e0 - ep]
     return nfail
