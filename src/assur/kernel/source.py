@@ -42,7 +42,7 @@ CHUNK = 256
 BUF_ROW = CHUNK + 8
 
 #: bump when the generator changes what it emits
-FORMAT = "22"
+FORMAT = "23"
 
 
 #: Cephes atan (S. L. Moshier, atan.c): atan(x) = x + x·z·P(z)/Q(z), z = x², for
@@ -163,47 +163,50 @@ def chunk_loop(hoist: str, lead: bool = False) -> str:
             "                st = -1\n")
 
 
-def continuity_check(cont, codes, rows, indent):
+def continuity_check(indent):
     """Lines of the continuity check of one work item, after its element loop.
 
     For every interval between consecutive elements ``ep + j − 1``, ``ep + j`` (both
-    assembled) and every group ``cont[k]`` staged in ``buf`` rows ``rows[k]`` (squared
-    triangle height g and its slope gd): the cubic Hermite interpolant of g over the
-    interval must not dip below ``−CONTINUITY_TOL·max(g)`` (the group neither flattens
-    nor opens between the samples). A failing interval marks its right-hand element
-    with the group's status code ``codes[k]`` and the depth [m²] in ``amount``; the
-    first failing group of an interval counts, and an element so marked is not the
-    left end of a checked interval (as :func:`assur.kernel.run.check_continuity`).
-    Counts the failures in ``nfail``.
+    assembled) and every group ``k`` staged in ``buf`` rows ``_CROWS[k]``,
+    ``_CROWS[k] + 1`` (squared triangle height g and its slope gd): the cubic Hermite
+    interpolant of g over the interval must not dip below ``−CONTINUITY_TOL·max(g)``
+    (the group neither flattens nor opens between the samples). A failing interval
+    marks its right-hand element with the group's status code ``_CCODES[k]`` and the
+    depth [m²] in ``amount``; the first failing group of an interval counts, and an
+    element so marked is not the left end of a checked interval (as
+    :func:`assur.kernel.run.check_continuity`). Counts the failures in ``nfail``.
+    A loop over the groups (their rows and codes are constant arrays of the module):
+    the code, and numba's compile time, do not grow with the number of groups.
     """
     i0 = indent
     lines = [f"{i0}for j in range(1, e1 - ep):",
              f"{i0}    if sbuf[j] >= 0 or sbuf[j - 1] >= 0:",
              f"{i0}        continue",
-             f"{i0}    h = abs(q[0, ep + j] - q[0, ep + j - 1])"]
-    for code, r in zip(codes, rows):
-        i1 = i0 + "    "
-        lines += [f"{i1}g0 = buf[{r}, j - 1]",
-                  f"{i1}d0 = buf[{r + 1}, j - 1]",
-                  f"{i1}g1 = buf[{r}, j]",
-                  f"{i1}d1 = buf[{r + 1}, j]",
-                  f"{i1}mn = min(g0, g1)",
-                  f"{i1}if mn - (4.0 / 27.0) * h * (abs(d0) + abs(d1)) <= 0.0:",
-                  f"{i1}    hs = q[0, ep + j] - q[0, ep + j - 1]",
-                  f"{i1}    for ii in range(1, 16):",
-                  f"{i1}        t = ii / 16.0",
-                  f"{i1}        t2 = t * t",
-                  f"{i1}        t3 = t2 * t",
-                  f"{i1}        v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0"
-                  f" + (t3 - 2.0 * t2 + t) * hs * d0"
-                  f" + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * hs * d1)",
-                  f"{i1}        if v < mn:",
-                  f"{i1}            mn = v",
-                  f"{i1}    if mn < -{CONTINUITY_TOL!r} * max(g0, g1):",
-                  f"{i1}        sbuf[j] = {code}",
-                  f"{i1}        amount[ep + j] = mn",
-                  f"{i1}        nfail += 1",
-                  f"{i1}        continue"]
+             f"{i0}    hs = q[0, ep + j] - q[0, ep + j - 1]",
+             f"{i0}    h = abs(hs)",
+             f"{i0}    for k in range(_CROWS.shape[0]):",
+             f"{i0}        r = _CROWS[k]",
+             f"{i0}        g0 = buf[r, j - 1]",
+             f"{i0}        d0 = buf[r + 1, j - 1]",
+             f"{i0}        g1 = buf[r, j]",
+             f"{i0}        d1 = buf[r + 1, j]",
+             f"{i0}        mn = min(g0, g1)",
+             f"{i0}        if mn - (4.0 / 27.0) * h * (abs(d0) + abs(d1)) > 0.0:",
+             f"{i0}            continue",
+             f"{i0}        for ii in range(1, 16):",
+             f"{i0}            t = ii / 16.0",
+             f"{i0}            t2 = t * t",
+             f"{i0}            t3 = t2 * t",
+             f"{i0}            v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0",
+             f"{i0}                 + (t3 - 2.0 * t2 + t) * hs * d0",
+             f"{i0}                 + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * hs * d1)",
+             f"{i0}            if v < mn:",
+             f"{i0}                mn = v",
+             f"{i0}        if mn < -{CONTINUITY_TOL!r} * max(g0, g1):",
+             f"{i0}            sbuf[j] = _CCODES[k]",
+             f"{i0}            amount[ep + j] = mn",
+             f"{i0}            nfail += 1",
+             f"{i0}            break"]
     return "\n".join(lines) + "\n"
 
 
@@ -263,8 +266,9 @@ def generate(rows, measures, K, out_pts, out_sca):
     # after the element loop of each work item, while they are in cache
     for i in cont:
         qs += [f"g{i}", f"gd{i}"]
-    check = continuity_check(cont, [i * CODES_PER_OP + FAIL_CONTINUITY for i in cont],
-                             [nq + 2 * k for k in range(len(cont))], " " * 16) if cont else ""
+    check = continuity_check(" " * 16) if cont else ""
+    crows = ", ".join(str(nq + 2 * k) for k in range(len(cont)))
+    ccodes = ", ".join(str(i * CODES_PER_OP + FAIL_CONTINUITY) for i in cont)
     ind = "                "
     # the status is staged in a local buffer too: the element loop then stores only
     # to kernel-local memory, so LLVM vectorizes it without a run-time overlap check
@@ -285,6 +289,9 @@ from numba import njit
 from assur.kernel.select import sel as _sel
 
 CHECKS_CONTINUITY = True  # see assur.kernel.compose.checks_continuity
+# buf rows of the squared heights of the groups checked for continuity, their codes
+_CROWS = np.array([{crows}], dtype=np.int64)
+_CCODES = np.array([{ccodes}], dtype=np.int64)
 
 
 @njit(cache=True, error_model="numpy", nogil=True)
