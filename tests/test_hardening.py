@@ -270,19 +270,23 @@ def test_false_continuity_error_near_a_dead_point(monkeypatch):
          .frame("O", 0.0, 0.0).frame("B", 0.0, 3.0)
          .crank("crank", pivot="O", out="A", radius=1.0, q="q", links=("1",))
          .dyad("II", a="A", b="B", out="C", ra="ra", rb="rb", branch=1, links=("2", "3")))
-    real = KR.check_continuity
-    calls = []
+    from assur.kernel import emit as KE
 
-    def spurious(gout, q, npd, status, amount, codes):
-        """The real check, plus a false flag on the first interval of a 2-point range."""
-        nfail = real(gout, q, npd, status, amount, codes)
-        if q.shape[1] == 2 and not calls:
+    real = KR.run
+    calls = []
+    code = 3 * KE.CODES_PER_OP + KE.FAIL_CONTINUITY  # the dyad, group 3
+
+    def spurious(kernel, params, trig, q, npd, check, out, amount, status):
+        """The kernel (which checks continuity itself), plus a false flag on the first
+        interval of a 2-point range."""
+        nfail = real(kernel, params, trig, q, npd, check, out, amount, status)
+        if check and q.shape[1] == 2 and not calls:
             calls.append(1)
-            status[1], amount[1] = codes[0], -19.8
+            status[1], amount[1] = code, -19.8
             nfail += 1
         return nfail
 
-    monkeypatch.setattr(KR, "check_continuity", spurious)
+    monkeypatch.setattr(KR, "run", spurious)
     r = m.solve([0.0, 0.1])            # flagged, refined, cleared: the dyad stays open
     assert calls and r.ok.all()
     assert abs(float(r.x("C")[1])) > 0  # the outputs of the cleared element are kept

@@ -51,13 +51,13 @@ from .kernel import run as KR
 from .kernel.cache import load_source
 from .kernel.emit import Emitter
 from .kernel.select import branchless
-from .kernel.source import CHUNK, chunk_loop, hoisted
+from .kernel.source import BUF_ROW, CHUNK, chunk_loop, hoisted, status_out
 from .kernel.sym import Sym, Tracer, code
 from .statics import GRAVITY, ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
 
-FORMAT = "6"
+FORMAT = "7"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
@@ -379,8 +379,9 @@ def _source(mech, prog, specs, reduce, g):
     body = "\n".join(body_lines)
     ind = " " * 16
     nout = len(specs)
-    post = [ind + "status[e] = st", ind + "ok_ = st < 0", ind + "j = e - e0"]
-    after = []
+    # the status is staged in a local buffer like the outputs (see assur.kernel.source)
+    post = [ind + "j = e - e0", ind + "sbuf[j] = st", ind + "ok_ = st < 0"]
+    after = [status_out(" " * 12).rstrip("\n")]
     # the element loop stages the outputs in a chunk buffer (branch-free, vectorized);
     # stored: copied out row by row; reduced: one scalar pass over the buffer per chunk
     post += [branchless(ind + f"buf[{k_}, j] = o{k_} if ok_ else 0.0") for k_ in range(nout)]
@@ -420,7 +421,8 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
     """Fused kernel: chunks c_start…c_end−1 (runs of ≤ {CHUNK} positions of one
     design); out: ({nout}, E) outputs or red: (4·{nout}, chunks) min, max, argmin,
     argmax per chunk."""
-    buf = np.empty(({nout + 1}, {CHUNK}))
+    buf = np.empty(({nout + 1}, {BUF_ROW}))
+    sbuf = np.empty({CHUNK}, dtype=np.int64)
 {chunk_loop(pre)}{body}
 ''' + "\n".join(post) + "\n" + "\n".join(after) + "\n"
     return src
@@ -577,7 +579,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     out = np.empty((0 if reduce else len(specs), E))
     red = np.empty((4 * len(specs) if reduce else 0, nchunks))
     status = np.empty(E, dtype=np.int64)
-    nthreads = min(KR.threads(), max(1, nchunks // 8))
+    nthreads = KR.threads_for(E, nchunks)
     per = (nchunks + nthreads - 1) // nthreads
     if nthreads <= 1:
         kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
@@ -610,11 +612,12 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
         return Fused(outputs, units, None, res, nfail == 0, nfail, (m,))
     vals = {}
     for k_, (o, (fn, _)) in enumerate(zip(outputs, specs)):
-        v = out[k_].reshape(m, n)
+        v = out[k_]
         if fn == "phi" and n > 1:
-            v = np.unwrap(v, axis=1)
+            v = np.unwrap(v.reshape(m, n), axis=1)
         vals[o] = v.reshape(shape)
-    _check_finite(vals, "value")
+    if not np.isfinite(out).all():  # one pass; name the output only when one is not
+        _check_finite(vals, "value")
     return Fused(outputs, units, vals, None, ~failed.reshape(shape), nfail, shape)
 
 

@@ -25,7 +25,7 @@ from .groups import group_type
 from .groups.base import is_number, ref_value, signed_name
 from .kernel import emit as KE
 from .kernel import run as KR
-from .kernel.compose import load_kernel
+from .kernel.compose import checks_continuity, load_kernel
 
 __all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_table"]
 
@@ -354,7 +354,7 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), ())
     npo, nso = len(names_p), len(names_s)
     ang = [i for i, s in enumerate(names_s) if prog.kinds[s] == "angle"]
-    sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k, len(ang))
+    sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k)
     out = np.empty((sum(sizes), E))
     parts, r0 = [], 0
     for size in sizes:
@@ -367,35 +367,33 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     rows_ = prog.rows if rows is None else rows
     cont = (prog.continuity_rows if rows is None else
             [i for i, r in enumerate(rows_) if group_type(r[0]).continuity]) if k == 1 else []
-    gout = np.empty((2 * len(cont), E if check else 1))
-    KR.run(kern, ptab, trig_table(prog, ptab) if trig is None else trig, qarr, n, check, out,
-           gout, status)
+    # a fused kernel checks continuity itself (depths in ``amount``); a composed one
+    # stages the squared heights and slopes in ``gout`` for the separate pass
+    fused = checks_continuity(kern)
+    gout = amount if fused else np.empty((2 * len(cont), E if check else 1))
+    nfail = KR.run(kern, ptab, trig_table(prog, ptab) if trig is None else trig, qarr, n, check,
+                   out, gout, status)
     if check and cont:
-        codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
-                         dtype=np.int64)
-        if KR.check_continuity(gout, qarr, n, status, amount, codes):
+        if not fused:
+            codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],
+                             dtype=np.int64)
+            nfail = KR.check_continuity(gout, qarr, n, status, amount, codes)
+        if nfail:
             flagged = np.flatnonzero((status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY)
                                      & (status >= 0))
             _refine_continuity(prog, ptab, qarr, n, status, flagged, rows_, depth)
             out[:, (status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY) & (status >= 0)] = 0.0
 
-    def angle(row, i):
-        """angle = atan2(dy, dx) (the kernel left dy in sv[i]), then continuous along
-        the positions of each design when they are a range (both release the GIL)."""
-        np.arctan2(sv[i], parts[6][row], out=sv[i])
-        if check and n > 1:
-            KR.unwrap_rows(sv, np.array([i], dtype=np.int64), n)
-
-    if E >= 65536 and len(ang) > 1:
-        for f in [KR.pool().submit(angle, row, i) for row, i in enumerate(ang)]:
-            f.result()
-    elif ang and ang == list(range(ang[0], ang[0] + len(ang))) and not (check and n > 1):
-        # contiguous angle rows of a small problem: one ufunc call for all of them
-        rows_a = sv[ang[0]:ang[0] + len(ang)]
-        np.arctan2(rows_a, parts[6], out=rows_a)
-    else:
-        for row, i in enumerate(ang):
-            angle(row, i)
+    if check and n > 1 and ang:
+        # the kernel's angles are principal values (atan2); continuous along the
+        # positions of each design when they are a range (releases the GIL)
+        rows_a = np.array(ang, dtype=np.int64)
+        if E >= 65536 and len(ang) > 1:
+            for f in [KR.pool().submit(KR.unwrap_rows, sv, rows_a[h::2].copy(), n)
+                      for h in range(2)]:
+                f.result()
+        else:
+            KR.unwrap_rows(sv, rows_a, n)
     return dict(pv=parts[0].reshape(npo, 2, E), pd=parts[1].reshape(npo, 2, k, E),
                 pdd=parts[2].reshape(npo, 2, k, k, E), sv=sv, sd=parts[4].reshape(nso, k, E),
                 sdd=parts[5].reshape(nso, k, k, E), status=status, amount=amount,

@@ -54,13 +54,16 @@ class Statics:
         ``tables["signs"]``).
     """
 
-    def __init__(self, kin, forces_vw, joints, actuator_rx, residual, flags):
+    def __init__(self, kin, forces_vw, joints, actuator_rx, residual, flags, finite=False):
         self.kinematics = kin
         self._vw = forces_vw
         self._joints = joints  # {(i, j): (point, fx, fy, mz)}
         self._act_rx = actuator_rx
         self._residual = residual
         self.flags = list(flags)
+        # True when every array was checked finite where it was computed (the fused
+        # kernel's outputs): first_nonfinite need not look again
+        self._finite = finite
 
     @property
     def joints(self):
@@ -131,6 +134,8 @@ class Statics:
     def first_nonfinite(self):
         """``(what, element)`` of the first reaction or actuator force that is NaN or
         infinite, or None."""
+        if self._finite:
+            return None
         items = [(f"reaction R{i},{j}", (fx, fy, mz))
                  for (i, j), (_, fx, fy, mz) in self._joints.items()]
         items += [(f"actuator force along {c!r}", (v,)) for c, v in self._vw.items()]
@@ -305,6 +310,24 @@ def _rate_block(rate, kin, i0, i1):
 #: designs × positions from which statics.solve uses the fused kernel by default
 FUSED_MIN = 4096
 
+#: calls of the array pass on smaller static problems of one mechanism (the same
+#: object: structure, loads and values), after which the fused kernel takes over for
+#: it (a loop over single positions pays its compilation once; a mechanism analysed a
+#: few times, as the tests' random ones, never does)
+FUSED_AFTER = 3
+
+
+def _use_fused(kin) -> bool:
+    """The default method for static loads: fused on large problems and on mechanisms
+    analysed repeatedly (:data:`FUSED_MIN`, :data:`FUSED_AFTER`)."""
+    if not kin.has_all_points():
+        return False
+    if kin.m * kin.n >= FUSED_MIN:
+        return True
+    calls = kin.mechanism.memo(("statics: small calls",), lambda: [0])
+    calls[0] += 1
+    return calls[0] > FUSED_AFTER
+
 
 def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
     """Actuator forces (both routes), joint reactions and equilibrium residuals.
@@ -326,9 +349,11 @@ def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
         ``"array"``: the reverse-order pass over arrays of positions (group by group,
         numpy); ``"fused"``: the same group code traced into one compiled loop
         (:mod:`assur.fused`, static loads only). Default: fused for static loads on at
-        least :data:`FUSED_MIN` elements when the kinematics hold every point (the
-        kernel is compiled once per structure and loads, then cached on disk), the
-        array pass otherwise; the tests hold the two equal to 1e-9.
+        least :data:`FUSED_MIN` elements, or once the mechanism has been analysed more
+        than :data:`FUSED_AFTER` times (one position at a time, as dynamics does),
+        when the kinematics hold every point (the kernel is compiled once per structure
+        and loads, then cached on disk); the array pass otherwise.
+        The tests hold the two equal to 1e-9.
 
     Returns
     -------
@@ -337,7 +362,7 @@ def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
     if method not in (None, "fused", "array"):
         raise ValueError("method must be one of: [None, 'fused', 'array']")
     if method == "fused" or (method is None and qdot is None and qddot is None
-                             and kin.m * kin.n >= FUSED_MIN and kin.has_all_points()):
+                             and _use_fused(kin)):
         return _solve_fused(kin, g)
     if kin.n <= BLOCK:
         return _solve(kin, qdot, qddot, g)
@@ -425,7 +450,8 @@ def _solve_fused(kin, g):
     def residual():
         return _residual(kin, _applied(kin, None, None, g), joints)
 
-    return Statics(kin, vw, joints, act, residual, [])
+    # fused.evaluate has checked every output finite (failed elements are 0)
+    return Statics(kin, vw, joints, act, residual, [], finite=True)
 
 
 class ReactionContextBase:

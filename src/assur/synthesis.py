@@ -21,11 +21,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .errors import AssemblyError, ModelError
 
-__all__ = ["DesignError", "Condition", "SolvedCondition", "solve_conditions", "SCAN_POINTS"]
+__all__ = ["DesignError", "Condition", "SolvedCondition", "solve_conditions", "condition_residual",
+           "SCAN_POINTS"]
 
 #: grid of the bracket used to find sign changes (and to detect several roots)
 SCAN_POINTS = 257
@@ -123,8 +123,24 @@ def _depends(mech, cond, unknowns):
     return {u for u in unknowns if u in used}
 
 
-def _evaluate(mech, cond, values):
-    """Residual quantity − target for the unknown at each of ``values`` (a batch)."""
+def condition_residual(mech, cond, values):
+    """Residual quantity − target [m or rad] of a condition for the unknown at each
+    of ``values`` (a batch of designs), and whether each assembles there.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    cond : Condition
+    values : array_like, shape (m,)
+        Values of ``cond.unknown`` [SI].
+
+    Returns
+    -------
+    residual : ndarray, shape (m,)
+        ``quantity(at) − target``; angles compared modulo 2π [m or rad].
+    ok : ndarray of bool, shape (m,)
+        False where the mechanism does not assemble (its residual is meaningless).
+    """
     params = {cond.unknown: np.asarray(values, float)}
     m = mech.with_params(**params)
     q = []
@@ -214,7 +230,7 @@ def solve_conditions(mech, conditions, xtol=1e-13):
 def _solve_one(mech, c, xtol):
     lo, hi = float(c.bracket[0]), float(c.bracket[1])
     grid = np.linspace(lo, hi, SCAN_POINTS)
-    r, ok = _evaluate(mech, c, grid)
+    r, ok = condition_residual(mech, c, grid)
     notes = []
     if not ok.any():
         raise DesignError(f"condition {c.describe()}: the mechanism does not assemble anywhere "
@@ -247,11 +263,13 @@ def _solve_one(mech, c, xtol):
 
     def f(x):
         count[0] += 1
-        rv, okv = _evaluate(mech, c, np.array([x]))
+        rv, okv = condition_residual(mech, c, np.array([x]))
         if not okv[0]:
             raise AssemblyError(f"condition {c.describe()}: the mechanism does not assemble at "
                                 f"{c.unknown} = {x:.9g}")
         return float(rv[0])
+
+    from scipy.optimize import brentq  # imported here: a cached solve does not need it
 
     x = a if a == b else brentq(f, a, b, xtol=xtol, rtol=4 * np.finfo(float).eps)
     res = f(x)

@@ -870,11 +870,12 @@ class Builder:
 
     def solve(self, mech):
         from ..synthesis import DesignError, solve_conditions
+        from . import _solve_cache
         conds = self.conditions(mech)
         if not conds:
             return mech, []
-        try:
-            return solve_conditions(mech, conds)
+        try:  # roots cached per file (verified by their residuals before use)
+            return _solve_cache.solve(self.data, mech, conds, solve_conditions)
         except (DesignError, AssemblyError, ModelError) as e:
             msg = str(e)
             i = next((k for k, c in enumerate(conds) if f"({c.source})" in msg), 0)

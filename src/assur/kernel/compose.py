@@ -40,7 +40,8 @@ from .cache import load_source
 from .emit import CODES_PER_OP, Emitter
 from .source import CHUNK, FORMAT, emit_measure, generate, quantities
 
-__all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "load_kernel"]
+__all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "is_fused",
+           "checks_continuity", "load_kernel"]
 
 #: structures with more groups + measures than this get a composed kernel (set to
 #: 0 to compose every structure, to a large number to fuse every one)
@@ -178,8 +179,7 @@ def generate_composed(rows, measures, K, out_pts, out_sca):
                 raise ValueError(f"assur compose: {nm} is read before it is computed")
         loc = [state.setdefault(nm, len(state)) for nm in names]
         calls.append((keys[src], loc, prows, trows, sb))
-    angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
-    qs = quantities(K, out_pts, out_sca, angle_slots)
+    qs = quantities(K, out_pts, out_sca)
     qrow = [state[v] for v in qs]
     grow = [state[f"g{s}{i}"] for i in cont for s in ("", "d")]
     hashes = [hashlib.sha1(s.encode()).hexdigest()[:20] for s in srcs]
@@ -260,10 +260,23 @@ def _group(key):
     return mod.grp
 
 
+def is_fused(rows, measures) -> bool:
+    """True if the structure gets the fused kernel of :mod:`assur.kernel.source`, False
+    for a composed one."""
+    return len(rows) + len(measures) <= THRESHOLD
+
+
+def checks_continuity(kernel) -> bool:
+    """True for a kernel that checks continuity itself (a fused kernel: its 7th
+    argument is the depth array ``amount``), False for one that stages the squared
+    heights in ``gout`` for :func:`assur.kernel.run.check_continuity` (composed)."""
+    return bool(kernel.py_func.__globals__.get("CHECKS_CONTINUITY", False))
+
+
 def load_kernel(rows, measures, K, out_pts, out_sca):
     """The compiled kernel of a structure: fused up to :data:`THRESHOLD` groups and
-    measures, composed above."""
-    if len(rows) + len(measures) <= THRESHOLD:
+    measures, composed above (:func:`is_fused`)."""
+    if is_fused(rows, measures):
         return load_source(generate(rows, measures, K, out_pts, out_sca))
     srcs, driver = generate_composed(rows, measures, K, out_pts, out_sca)
     for s in srcs:

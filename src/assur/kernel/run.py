@@ -14,7 +14,13 @@ from concurrent.futures import ThreadPoolExecutor
 from .emit import CONTINUITY_TOL
 from .source import CHUNK
 
-__all__ = ["threads", "set_threads", "run", "check_continuity", "unwrap_rows", "pool"]
+__all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "unwrap_rows",
+           "pool", "MIN_ELEMENTS_PER_THREAD"]
+
+#: elements a thread gets at least: below, handing work to the pool costs more than
+#: it saves (a batch of 257 designs at one position, as design conditions solve,
+#: runs in the calling thread)
+MIN_ELEMENTS_PER_THREAD = 4096
 
 _threads: list = []
 _pool: list = []
@@ -51,20 +57,28 @@ def pool() -> ThreadPoolExecutor:
     return _pool[0]
 
 
+def threads_for(elements: int, chunks: int) -> int:
+    """Threads for a kernel call over ``elements`` in ``chunks`` work items: each
+    gets ≥ 8 chunks and ≥ :data:`MIN_ELEMENTS_PER_THREAD` elements (small problems
+    run in the calling thread)."""
+    if elements < 2 * MIN_ELEMENTS_PER_THREAD or chunks < 16:
+        return 1  # without asking the OS for the CPUs (a few µs: one position is ~15 µs)
+    return max(1, min(threads(), chunks // 8, elements // MIN_ELEMENTS_PER_THREAD))
+
+
 def run(kernel, params, trig, q, npd, check, out, gout, status):
     """Run a generated kernel over all elements, split over threads (small problems
-    run in the calling thread)."""
+    run in the calling thread). Returns the sum of what the kernel returns for its
+    ranges (the continuity failures of a fused kernel; 0 for a composed one)."""
     E = q.shape[1]
     nchunks = (E // npd) * ((npd + CHUNK - 1) // CHUNK)  # designs × runs per design
-    nthreads = min(threads(), max(1, nchunks // 8))
+    nthreads = threads_for(E, nchunks)
     if nthreads <= 1:
-        kernel(params, trig, q, npd, check, out, gout, status, 0, nchunks)
-        return
+        return kernel(params, trig, q, npd, check, out, gout, status, 0, nchunks) or 0
     per = (nchunks + nthreads - 1) // nthreads
     futs = [pool().submit(kernel, params, trig, q, npd, check, out, gout, status, i * per,
                           min(nchunks, (i + 1) * per)) for i in range(nthreads)]
-    for f in futs:
-        f.result()
+    return sum(f.result() or 0 for f in futs)
 
 
 def check_continuity(gout, q, npd, status, amount, codes):

@@ -22,20 +22,63 @@ once per machine (:mod:`assur.kernel.cache`).
 
 from __future__ import annotations
 
+import math
 import re
 
 from ..groups import group_type
-from .emit import FAIL_COINCIDENT, Emitter, d, dd, fail, pt
+from .emit import (CODES_PER_OP, CONTINUITY_TOL, FAIL_COINCIDENT, FAIL_CONTINUITY,
+                   Emitter, d, dd, fail, pt)
 from .select import branchless
 
-__all__ = ["generate", "hoisted", "chunk_loop", "emit_measure", "quantities", "CHUNK",
-           "FORMAT"]
+__all__ = ["generate", "hoisted", "chunk_loop", "continuity_check", "emit_atan2", "emit_measure",
+           "quantities", "status_out", "CHUNK", "BUF_ROW", "FORMAT"]
 
 #: elements per work item of the element loop
 CHUNK = 256
 
+#: row length of a kernel's chunk buffer: CHUNK plus one cache line, so that the rows
+#: written at one position fall into different L1 sets (a stride of 2048 bytes put
+#: them all into two sets of the 12-way L1)
+BUF_ROW = CHUNK + 8
+
 #: bump when the generator changes what it emits
-FORMAT = "19"
+FORMAT = "23"
+
+
+#: Cephes atan (S. L. Moshier, atan.c): atan(x) = x + x·z·P(z)/Q(z), z = x², for
+#: |x| ≤ 0.66; above, atan(x) = π/4 + atan((x − 1)/(x + 1)); MOREBITS is π/2 − fl(π/2)
+_ATAN_P = (-8.750608600031904122785e-1, -1.615753718733365076637e1,
+           -7.500855792314704667340e1, -1.228866684490136173410e2,
+           -6.485021904942025371773e1)
+_ATAN_Q = (2.485846490142306297962e1, 1.650270098316988542046e2,
+           4.328810604912902668951e2, 4.853903996359136964868e2,
+           1.945506571482613964425e2)
+_MOREBITS = 6.123233995736765886130e-17
+_PI_LO = 1.2246467991473532e-16  # π − fl(π)
+
+
+def emit_atan2(E, out, y, x, t):
+    """``out = atan2(y, x)`` [rad] as branch-free code (selects, no libm call), so the
+    element loop stays vectorized: within 2 ulp of :func:`numpy.arctan2` (signed zeros
+    as numpy); ``t`` prefixes the temporaries."""
+    p0, p1, p2, p3, p4 = (repr(v) for v in _ATAN_P)
+    q0, q1, q2, q3, q4 = (repr(v) for v in _ATAN_Q)
+    E(f"{t}ax = abs({x})")
+    E(f"{t}ay = abs({y})")
+    E(f"{t}mx = max({t}ax, {t}ay)")
+    E(f"{t}r = min({t}ax, {t}ay) / {t}mx if {t}mx > 0.0 else 0.0")  # in [0, 1]
+    E(f"{t}big = {t}r > 0.66")
+    E(f"{t}u = ({t}r - 1.0) / ({t}r + 1.0) if {t}big else {t}r")
+    E(f"{t}z = {t}u * {t}u")
+    E(f"{t}pz = (((({p0} * {t}z + {p1}) * {t}z + {p2}) * {t}z + {p3}) * {t}z + {p4})")
+    E(f"{t}qz = ((((({t}z + {q0}) * {t}z + {q1}) * {t}z + {q2}) * {t}z + {q3}) * {t}z"
+      f" + {q4})")
+    E(f"{t}at = {t}u * ({t}z * {t}pz / {t}qz) + {t}u")
+    E(f"{t}at = {math.pi / 4!r} + ({t}at + {0.5 * _MOREBITS!r}) if {t}big else {t}at")
+    E(f"{t}at = ({math.pi / 2!r} - {t}at) + {_MOREBITS!r} if {t}ay > {t}ax else {t}at")
+    E(f"{t}at = ({math.pi!r} - {t}at) + {_PI_LO!r} if math.copysign(1.0, {x}) < 0.0 "
+      f"else {t}at")
+    E(f"{out} = math.copysign({t}at, {y})")
 
 
 def emit_measure(E, i, kind, s_, P, Q):
@@ -54,11 +97,7 @@ def emit_measure(E, i, kind, s_, P, Q):
         E(f"{t}dx_{a} = {d(qx, a)} - {d(px, a)}")
         E(f"{t}dy_{a} = {d(qy, a)} - {d(py, a)}")
     if kind == "angle":
-        # the angle itself is atan2(dy, dx), taken after the kernel by numpy's
-        # vectorized arctan2 (an order of magnitude faster than a scalar libm call):
-        # the kernel outputs dy as the value and dx in an extra row
-        E(f"{s} = {t}dy")
-        E(f"{s}_dx = {t}dx")
+        emit_atan2(E, s, f"{t}dy", f"{t}dx", t)
         for a in range(K):
             E(f"{t}c_{a} = {t}dx * {t}dy_{a} - {t}dy * {t}dx_{a}")
             E(f"{d(s, a)} = {t}c_{a} * {t}ir2")
@@ -94,23 +133,86 @@ def hoisted(lines):
     return body, hoist
 
 
-def chunk_loop(hoist: str) -> str:
+def status_out(indent: str, offset: str = "") -> str:
+    """The copy of a chunk's staged status codes ``sbuf`` to ``status`` (after the
+    element loop), indented by ``indent``; ``offset`` (e.g. ``" + e0 - ep"``) is the
+    column in ``sbuf`` of element e0."""
+    return (f"{indent}for j in range(e1 - e0):\n"
+            f"{indent}    status[e0 + j] = sbuf[j{offset}]\n")
+
+
+def chunk_loop(hoist: str, lead: bool = False) -> str:
     """The loop over work items (runs of ≤ CHUNK positions of one design: per-design
     values are loop-invariant, the element loop a plain counted loop), with the
-    ``hoist`` lines before each run, up to the start of an element (``st = -1``)."""
+    ``hoist`` lines before each run, up to the start of an element (``st = -1``).
+
+    The elements e0…e1−1 of a work item are written; the element loop runs from
+    ``ep``: e0, or with ``lead`` and ``check`` the element before e0 when it belongs to
+    the same design (computed again, not written: the continuity check of the interval
+    that ends at e0 needs it).
+    """
+    ep = ("e0 - 1 if check and e0 > d * npd else e0") if lead else "e0"
     return (f"    cpd = (npd + {CHUNK} - 1) // {CHUNK}\n"
             "    for c in range(c_start, c_end):\n"
             "        d = c // cpd\n"
             f"        e0 = d * npd + (c % cpd) * {CHUNK}\n"
             f"        e1 = min(d * npd + npd, e0 + {CHUNK})\n"
+            f"        ep = {ep}\n"
             "        if e1 > e0:\n"
-            f"{hoist}            for e in range(e0, e1):\n"
+            f"{hoist}            for e in range(ep, e1):\n"
             "                st = -1\n")
 
 
-def quantities(K, out_pts, out_sca, angle_slots):
+def continuity_check(indent):
+    """Lines of the continuity check of one work item, after its element loop.
+
+    For every interval between consecutive elements ``ep + j − 1``, ``ep + j`` (both
+    assembled) and every group ``k`` staged in ``buf`` rows ``_CROWS[k]``,
+    ``_CROWS[k] + 1`` (squared triangle height g and its slope gd): the cubic Hermite
+    interpolant of g over the interval must not dip below ``−CONTINUITY_TOL·max(g)``
+    (the group neither flattens nor opens between the samples). A failing interval
+    marks its right-hand element with the group's status code ``_CCODES[k]`` and the
+    depth [m²] in ``amount``; the first failing group of an interval counts, and an
+    element so marked is not the left end of a checked interval (as
+    :func:`assur.kernel.run.check_continuity`). Counts the failures in ``nfail``.
+    A loop over the groups (their rows and codes are constant arrays of the module):
+    the code, and numba's compile time, do not grow with the number of groups.
+    """
+    i0 = indent
+    lines = [f"{i0}for j in range(1, e1 - ep):",
+             f"{i0}    if sbuf[j] >= 0 or sbuf[j - 1] >= 0:",
+             f"{i0}        continue",
+             f"{i0}    hs = q[0, ep + j] - q[0, ep + j - 1]",
+             f"{i0}    h = abs(hs)",
+             f"{i0}    for k in range(_CROWS.shape[0]):",
+             f"{i0}        r = _CROWS[k]",
+             f"{i0}        g0 = buf[r, j - 1]",
+             f"{i0}        d0 = buf[r + 1, j - 1]",
+             f"{i0}        g1 = buf[r, j]",
+             f"{i0}        d1 = buf[r + 1, j]",
+             f"{i0}        mn = min(g0, g1)",
+             f"{i0}        if mn - (4.0 / 27.0) * h * (abs(d0) + abs(d1)) > 0.0:",
+             f"{i0}            continue",
+             f"{i0}        for ii in range(1, 16):",
+             f"{i0}            t = ii / 16.0",
+             f"{i0}            t2 = t * t",
+             f"{i0}            t3 = t2 * t",
+             f"{i0}            v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0",
+             f"{i0}                 + (t3 - 2.0 * t2 + t) * hs * d0",
+             f"{i0}                 + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * hs * d1)",
+             f"{i0}            if v < mn:",
+             f"{i0}                mn = v",
+             f"{i0}        if mn < -{CONTINUITY_TOL!r} * max(g0, g1):",
+             f"{i0}            sbuf[j] = _CCODES[k]",
+             f"{i0}            amount[ep + j] = mn",
+             f"{i0}            nfail += 1",
+             f"{i0}            break"]
+    return "\n".join(lines) + "\n"
+
+
+def quantities(K, out_pts, out_sca):
     """Names of the output rows, in order: point values, first, second analogs, then
-    the measures likewise, then the dx of every output angle."""
+    the measures likewise."""
     qs = [v for s_ in out_pts for v in (f"x{s_}", f"y{s_}")]
     qs += [d(v, a) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)]
     qs += [dd(v, a, b) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)
@@ -118,7 +220,6 @@ def quantities(K, out_pts, out_sca, angle_slots):
     qs += [f"s{s_}" for s_ in out_sca]
     qs += [d(f"s{s_}", a) for s_ in out_sca for a in range(K)]
     qs += [dd(f"s{s_}", a, b) for s_ in out_sca for a in range(K) for b in range(K)]
-    qs += [f"s{s_}_dx" for s_ in out_sca if s_ in angle_slots]
     return qs
 
 
@@ -137,10 +238,11 @@ def generate(rows, measures, K, out_pts, out_sca):
         Slots of the points and measures to write.
 
     Continuity (k = 1): every group type with ``continuity`` emits the squared height
-    ``g{i}`` of its triangle and its slope ``gd{i}``; the kernel stages them so that
-    :func:`assur.kernel.run.continuity` can check, between consecutive positions,
-    that the cubic Hermite interpolant stays positive (the group neither flattens
-    nor opens between samples).
+    ``g{i}`` of its triangle and its slope ``gd{i}``; the kernel stages them and
+    checks, between consecutive positions, that the cubic Hermite interpolant stays
+    positive (the group neither flattens nor opens between samples,
+    :func:`continuity_check`; the composed kernels of large structures leave that to
+    :func:`assur.kernel.run.check_continuity`).
     """
     E = Emitter(K)
     cont = []
@@ -157,22 +259,27 @@ def generate(rows, measures, K, out_pts, out_sca):
     # per-design values are loaded once per run of positions of a design, before the
     # element loop (so the loop reads only q and can be vectorized)
     body, hoist = hoisted(E.lines)
-    angle_slots = {s_ for kind, s_, _, _ in measures if kind == "angle"}
-    qs = quantities(K, out_pts, out_sca, angle_slots)
+    qs = quantities(K, out_pts, out_sca)
     nq = len(qs)
-    # the squared triangle heights and slopes for the continuity check (a separate
-    # pass): staged unconditionally (a conditional store would stop vectorization),
-    # copied to gout only when checking
+    # the squared triangle heights and slopes of the continuity check, staged
+    # unconditionally (a conditional store would stop vectorization) and checked
+    # after the element loop of each work item, while they are in cache
     for i in cont:
         qs += [f"g{i}", f"gd{i}"]
+    check = continuity_check(" " * 16) if cont else ""
+    crows = ", ".join(str(nq + 2 * k) for k in range(len(cont)))
+    ccodes = ", ".join(str(i * CODES_PER_OP + FAIL_CONTINUITY) for i in cont)
     ind = "                "
-    out = [ind + "status[e] = st"]
+    # the status is staged in a local buffer too: the element loop then stores only
+    # to kernel-local memory, so LLVM vectorizes it without a run-time overlap check
+    # against the caller's arrays (that check failed, and the scalar loop ran 4×
+    # slower, whenever ``status`` happened to lie within a few kB of ``q``)
+    out = [ind + "j = e - ep", ind + "sbuf[j] = st"]
     # outputs go to a per-chunk buffer (one row per quantity, in L2) and are copied
     # row by row at the end of the chunk: a few long sequential streams instead of
     # one interleaved stream per quantity; failed elements get 0, never NaN
     if qs:
         out.append(ind + "ok_ = st < 0")
-        out.append(ind + "j = e - e0")
         out += [branchless(ind + f"buf[{qi}, j] = {v} if ok_ else 0.0")
                 for qi, v in enumerate(qs)]
     return f'''"""Generated by assur.kernel.source (format {FORMAT}); do not edit."""
@@ -181,26 +288,33 @@ import numpy as np
 from numba import njit
 from assur.kernel.select import sel as _sel
 
+CHECKS_CONTINUITY = True  # see assur.kernel.compose.checks_continuity
+# buf rows of the squared heights of the groups checked for continuity, their codes
+_CROWS = np.array([{crows}], dtype=np.int64)
+_CCODES = np.array([{ccodes}], dtype=np.int64)
+
 
 @njit(cache=True, error_model="numpy", nogil=True)
-def kernel(params, trig, q, npd, check, out, gout, status, c_start, c_end):
+def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
     """Chunks c_start…c_end−1 of the elements. out: (NQ, E) outputs, rows in the order
-    of assur.kernel.source.quantities; gout: (2·dyads, E) squared heights and slopes
-    when ``check``. Branch-free element loop (vectorizable); releases the GIL:
-    callers run ranges in threads."""
+    of assur.kernel.source.quantities. With ``check`` (k = 1) the continuity of every
+    dyad between consecutive positions is checked here: failures get the group's
+    code in ``status`` and the depth in ``amount`` (E,); returns their number.
+    Branch-free element loop (vectorizable); releases the GIL: callers run ranges
+    in threads."""
     E = q.shape[1]
     NQ = {nq}
-    NG = {len(qs) - nq}
-    if out.shape[0] != NQ or gout.shape[0] != NG or out.shape[1] != E:
+    if out.shape[0] != NQ or out.shape[1] != E or (check and amount.shape[0] != E):
         raise ValueError("assur kernel: output arrays do not match the program")
-    buf = np.empty(({max(len(qs), 1)}, {CHUNK}))
+    buf = np.empty(({max(len(qs), 1)}, {BUF_ROW}))
+    sbuf = np.empty({CHUNK + 1}, dtype=np.int64)
+    nfail = 0
     # work items are runs of ≤ {CHUNK} positions of one design: the per-design values
     # are loop-invariant and the element loop is a plain counted loop (vectorizable)
-{chunk_loop(hoist)}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + '''        for r in range(NQ):
+{chunk_loop(hoist, lead=bool(cont))}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + (
+        "            if check:\n" + check if check else "") + status_out(" " * 8, " + e0 - ep") + \
+        '''        for r in range(NQ):
             for j in range(e1 - e0):
-                out[r, e0 + j] = buf[r, j]
-        if check:
-            for r in range(NG):
-                for j in range(e1 - e0):
-                    gout[r, e0 + j] = buf[NQ + r, j]
+                out[r, e0 + j] = buf[r, j + e0 - ep]
+    return nfail
 '''
