@@ -3,7 +3,8 @@
 Sign conventions
 ----------------
 * Forces are vectors in the mechanism's x–y frame [N]; a *weight* ``P`` at a point
-  is the force ``(0, −P)``.
+  is the force ``P·u`` along the direction of gravity ``u`` — ``(0, −P)`` by default
+  (``[model] gravity``, :meth:`Mechanism.with_gravity`).
 * Moments are counter-clockwise positive [N·m].
 * A spring between points ``a`` and ``b`` pulls them together with its tension
   ``T = preload + rate·(|ab| − free_length)`` [N] (a negative T pushes them apart)::
@@ -20,6 +21,8 @@ a batch of designs).
 Each load applies itself through :meth:`apply` to a *load context* (the contract):
 ``value(ref)``, ``point(p)`` → (x, y), ``owner(p)``, ``force(link, point, fx, fy)``,
 ``couple(link, M)``, ``nonzero(L, what)``, ``spring(load, T, L)``, ``g`` [m/s²],
+``gravity_unit`` (the direction of gravity, a unit vector ``(u_x, u_y)``, default
+``(0, −1)``: :func:`assur.statics.gravity_unit`),
 ``moving`` and, when moving, ``acceleration(point)`` → (a_x, a_y) and
 ``angular_acceleration(link)`` → ε. The same code then serves the array evaluation
 (:func:`assur.statics.applied_loads`) and the generated fused kernel
@@ -38,6 +41,13 @@ __all__ = ["Weight", "PointForce", "Couple", "Spring", "Mass", "Cylinder", "LOAD
 Ref = Union[str, float, int]
 
 
+def _along_gravity(c, P):
+    """The force of magnitude P along the context's direction of gravity: (fx, fy),
+    an exact zero for a zero component (so the default weight is (0, −P))."""
+    ux, uy = c.gravity_unit
+    return (0.0 if ux == 0 else P * ux), (0.0 if uy == 0 else P * uy)
+
+
 @dataclass(frozen=True)
 class Weight:
     """Weight ``P`` [N] acting downward at ``point``, carried by ``link`` (by default
@@ -52,7 +62,8 @@ class Weight:
     quantities: ClassVar = {"P": "force"}
 
     def apply(self, c):
-        c.force(self.link or c.owner(self.point), self.point, 0.0, -c.value(self.P))
+        P = c.value(self.P)
+        c.force(self.link or c.owner(self.point), self.point, *_along_gravity(c, P))
 
 
 @dataclass(frozen=True)
@@ -132,7 +143,7 @@ class Mass:
 
     def apply(self, c):
         m = c.value(self.m)
-        c.force(self.link, self.point, 0.0, -m * c.g)
+        c.force(self.link, self.point, *_along_gravity(c, m * c.g))
         if c.moving:
             acc_x, acc_y = c.acceleration(self.point)
             c.force(self.link, self.point, -m * acc_x, -m * acc_y)

@@ -87,7 +87,7 @@ class Mechanism:
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
                  machine=None, gravity: float | None = None, units: Mapping | None = None,
-                 motions: Iterable = (),
+                 motions: Iterable = (), gravity_direction: float | None = None,
                  _params_checked: bool = False):
         self.name = name
         self.title = title or name
@@ -115,6 +115,9 @@ class Mechanism:
         #: acceleration of gravity for the masses' weights [m/s²] (None: the default
         #: :data:`assur.statics.GRAVITY`)
         self.gravity = gravity
+        #: direction of gravity from +x [rad] (None: straight down, −π/2); see
+        #: :func:`assur.statics.gravity_unit`
+        self.gravity_direction = gravity_direction
         #: direction of rotation and speed of crank coordinates (:class:`assur.motion.Motion`)
         self.motions = tuple(motions)
         #: programs and prepared tables of this (immutable) mechanism
@@ -126,7 +129,7 @@ class Mechanism:
     # ---- building (each returns a new mechanism) -------------------------------
     #: attributes a copy may change without validating the structure again
     _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity", "units",
-                            "motions"})
+                            "motions", "gravity_direction"})
 
     def _with(self, **kw):
         if kw and set(kw) <= self._DATA_ONLY and ("params" not in kw
@@ -143,7 +146,7 @@ class Mechanism:
             if "params" in kw:
                 new._check_params({n: v for n, v in kw["params"].items()
                                    if v is not self.params[n]})
-            if "gravity" in kw:
+            if "gravity" in kw or "gravity_direction" in kw:
                 new._check_gravity()
             if "motions" in kw:
                 new._check_motions()
@@ -153,6 +156,7 @@ class Mechanism:
                  distances=self.distances, tables=self.tables, notes=self.notes,
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
                  gravity=self.gravity, units=self.units, motions=self.motions,
+                 gravity_direction=self.gravity_direction,
                  _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)
@@ -276,9 +280,27 @@ class Mechanism:
         p.update(values)
         return self._with(params=p)
 
-    def with_gravity(self, g) -> "Mechanism":
-        """Return a copy whose masses weigh m·g, g [m/s²]."""
-        return self._with(gravity=float(g))
+    def with_gravity(self, g, direction=None) -> "Mechanism":
+        """Return a copy whose masses weigh m·g along ``direction``.
+
+        Parameters
+        ----------
+        g : float or "none"
+            The acceleration of gravity [m/s²] ≥ 0; ``"none"`` (or 0) for a mechanism
+            drawn in a horizontal plane (seed 001 lab 5's spout, lab 4's steering):
+            its masses then have inertia but no weight, and a ``weight`` load is
+            refused.
+        direction : float, optional
+            Direction of gravity from +x, counter-clockwise [rad]; default −π/2
+            (straight down, −y). Weights (``weight`` loads, masses) act along it.
+        """
+        if isinstance(g, str):
+            if g != "none":
+                raise ModelError(f"mechanism {self.name!r}: gravity must be a number [m/s²] "
+                                 f"or \"none\", got {g!r}")
+            g = 0.0
+        return self._with(gravity=float(g),
+                          gravity_direction=None if direction is None else float(direction))
 
     def with_units(self, **units) -> "Mechanism":
         """Return a copy that shows parameters in the given units
@@ -436,10 +458,21 @@ class Mechanism:
                                  f"number or a 1-D array over designs, got {v!r}")
 
     def _check_gravity(self):
+        from .loads import Weight
         g = self.gravity
-        if g is not None and not (math.isfinite(float(g)) and float(g) > 0):
-            raise ModelError(f"mechanism {self.name!r}: gravity must be a positive number "
-                             f"[m/s²], got {g!r}")
+        if g is not None and not (math.isfinite(float(g)) and float(g) >= 0):
+            raise ModelError(f"mechanism {self.name!r}: gravity must be a number ≥ 0 [m/s²] "
+                             f"(0: none), got {g!r}")
+        d = self.gravity_direction
+        if d is not None and not math.isfinite(float(d)):
+            raise ModelError(f"mechanism {self.name!r}: the direction of gravity must be a "
+                             f"finite angle, got {d!r}")
+        if g is not None and float(g) == 0:
+            w = [ld for ld in self.loads if isinstance(ld, Weight)]
+            if w:
+                raise ModelError(f"mechanism {self.name!r} has no gravity (a mechanism in a "
+                                 f"horizontal plane) but a weight load at point "
+                                 f"{w[0].point!r}: give the load as a force, or give gravity")
 
     def _check_symbols(self, points):
         """A coordinate must not share its table symbol with a link angle, a point

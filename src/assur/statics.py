@@ -30,13 +30,46 @@ import numpy as np
 
 from .errors import ModelError
 
-__all__ = ["Statics", "GRAVITY", "applied_loads", "virtual_work_forces", "solve",
+__all__ = ["Statics", "GRAVITY", "gravity_unit", "applied_loads", "virtual_work_forces",
+           "solve",
            "ReactionContextBase", "ReactionContext"]
 
 #: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
 #: value engineering worksheets use (all the seeds do). A model may set its own
 #: (``[model] gravity = "9.80665 m/s^2"``), a call its own (``analyze(..., g=…)``).
 GRAVITY = 9.81
+
+
+def gravity_unit(mech) -> tuple[float, float]:
+    """The unit vector of gravity of a mechanism, ``(u_x, u_y)`` [-].
+
+    ``[model] gravity = { value = "9.81 m/s^2", direction = -90 }`` (the default
+    direction: straight down)::
+
+            y
+            ^
+            |        a weight m·g acts along u = (cos d, sin d);
+            +---> x  d = −90° (default): u = (0, −1)
+            |
+            v u
+
+    Components within 1e-15 of zero are zero, so that −90° gives exactly (0, −1)
+    and the default weights are those of ``(0, −m·g)``.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        Its :attr:`~assur.Mechanism.gravity_direction` [rad] (None: −π/2).
+
+    Returns
+    -------
+    tuple of float
+    """
+    d = getattr(mech, "gravity_direction", None)
+    if d is None:
+        return 0.0, -1.0
+    ux, uy = np.cos(float(d)), np.sin(float(d))
+    return (0.0 if abs(ux) < 1e-15 else float(ux)), (0.0 if abs(uy) < 1e-15 else float(uy))
 
 
 class Statics:
@@ -201,6 +234,7 @@ class _LoadCollector:
         self.mech = kin.mechanism
         self.value = _values(kin)
         self.g = g
+        self.gravity_unit = gravity_unit(kin.mechanism)
         self.moving = qd is not None
         self.qd, self.qdd = qd, qdd
         self.forces, self.couples, self.springs = [], [], []

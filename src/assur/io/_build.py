@@ -31,6 +31,7 @@ from ..groups import group_type
 from ..inputs import bytes_per_position, check_memory, span_problem
 from ..mechanism import Mechanism
 from ..stability import Machine
+from ..statics import GRAVITY
 from ..texts import text
 from . import _schema as S
 from ._errors import ModelFileError, key_path
@@ -294,7 +295,15 @@ class Builder:
                                        f"cannot refer to another")
             self.params_raw[name] = p
         if self._uses_gravity:
-            self.value(("model", "gravity"), sp.model.gravity, ACCELERATION, "positive")
+            gv = sp.model.gravity
+            if isinstance(gv, dict):
+                if "value" in gv:
+                    self.value(("model", "gravity", "value"), gv["value"], ACCELERATION,
+                               "positive")
+                if "direction" in gv:
+                    self.value(("model", "gravity", "direction"), gv["direction"], ANGLE)
+            elif gv != "none":
+                self.value(("model", "gravity"), gv, ACCELERATION, "positive")
         # the kind of each coordinate, from the input groups that it drives
         for i, g in enumerate(self.groups):
             for f in _fields(g, "coordinate"):
@@ -600,8 +609,15 @@ class Builder:
             mech = self.extra_columns(mech)
         mech = self.motions(mech)
         if self._uses_gravity:
-            g = self.number(("model", "gravity"))
-            mech = self.guarded(("model", "gravity"), lambda: mech.with_gravity(g))
+            gv, gp = self.spec.model.gravity, ("model", "gravity")
+            if gv == "none":
+                g, d = "none", None
+            elif isinstance(gv, dict):
+                g = self.number(gp + ("value",)) if "value" in gv else GRAVITY
+                d = self.number(gp + ("direction",)) if "direction" in gv else None
+            else:
+                g, d = self.number(gp), None
+            mech = self.guarded(gp, lambda: mech.with_gravity(g, d))
         return mech
 
     def terms(self, path, v, kind):

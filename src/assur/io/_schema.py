@@ -152,12 +152,26 @@ class _Table(BaseModel):
 
 
 # ---- [model], [range] ---------------------------------------------------------------
+def _gravity(v):
+    """``[model] gravity``: a value, ``"none"``, or ``{ value, direction }``."""
+    if v == "none":
+        return v
+    if isinstance(v, dict):
+        extra = sorted(set(v) - {"value", "direction"})
+        if extra or not v:
+            raise PydanticCustomError(
+                "gravity", 'expected { value = "9.81 m/s^2", direction = -90 } (keys value, '
+                           'direction), found the key(s) {keys}', {"keys": ", ".join(extra)})
+        return {k: _value(x) for k, x in v.items()}
+    return _value(v)
+
+
 class ModelSection(_Table):
     name: Name
     title: Optional[Text] = None
     coordinates: Annotated[list[Name], Field(min_length=1)]
     notes: list[Text] = []
-    gravity: Value = None
+    gravity: Annotated[Any, AfterValidator(_gravity)] = None
 
 
 class RangeSpec(_Table):
