@@ -59,7 +59,7 @@ TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "5.1", "5.2", "D", "6.1", "IC")
 #: functions of one point (name → kinematics accessor)
 POINT_FUNCTIONS = ("X", "Y", "I")
 #: functions of one link
-LINK_FUNCTIONS = ("phi", "dphi")
+LINK_FUNCTIONS = ("phi", "dphi", "ddphi")
 #: arithmetic functions and their arity
 MATH_FUNCTIONS = {"sqrt": (np.sqrt, 1), "sin": (np.sin, 1), "cos": (np.cos, 1),
                   "tan": (np.tan, 1), "asin": (np.arcsin, 1), "acos": (np.arccos, 1),
@@ -69,7 +69,7 @@ CONSTANTS = {"pi": math.pi}
 #: longest expression accepted [characters]
 MAX_LENGTH = 1000
 
-_BARE_REF = re.compile(r"\b(X|Y|I|phi|dphi)\(\s*([0-9A-Za-z_]+)\s*\)")
+_BARE_REF = re.compile(r"\b(X|Y|I|phi|dphi|ddphi)\(\s*([0-9A-Za-z_]+)\s*\)")
 _BINOPS = {ast.Add: np.add, ast.Sub: np.subtract, ast.Mult: np.multiply,
            ast.Div: np.divide, ast.Pow: np.power}
 _UNARY = {ast.USub: np.negative, ast.UAdd: np.positive}
@@ -308,6 +308,8 @@ class Formula:
                 return kin.phi(_ref(node.args[0], "link"))
             if f == "dphi":
                 return kin.dphi(_ref(node.args[0], "link"))
+            if f == "ddphi":
+                return kin.ddphi(_ref(node.args[0], "link"))
             return MATH_FUNCTIONS[f][0](*(walk(a) for a in node.args))
 
         # floating-point exceptions become errors (never silenced into NaN/inf)

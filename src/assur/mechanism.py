@@ -313,9 +313,16 @@ class Mechanism:
         """Return a copy whose crank coordinate ``coordinate`` turns in ``direction``
         (``"ccw"``/+1, ``"cw"``/−1) at a constant ``speed`` |ω| [rad/s], or at a given
         |ω(t)|: ``t`` [s], ``omega`` [rad/s] (see :class:`assur.motion.Motion`);
-        replaces an earlier motion of that coordinate."""
+        replaces an earlier motion of that coordinate. For a length coordinate (a
+        cylinder's rod) ``direction`` is ``"extend"``/+1 or ``"retract"``/−1, ``speed``
+        |Ṡ| [m/s] and ``omega`` the table |Ṡ(t)| [m/s]; :func:`assur.analysis.analyze`
+        then includes the inertia loads at that motion."""
         from .motion import Motion
-        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start)
+        if coordinate not in self.coordinates:
+            raise ModelError(f"mechanism {self.name!r}: a motion is given for {coordinate!r}, "
+                             f"which is not a generalized coordinate {list(self.coordinates)}")
+        kind = "angle" if self.coordinate_kind(coordinate) == "angle" else "length"
+        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start, kind)
         return self._with(motions=tuple(x for x in self.motions if x.coordinate != coordinate)
                           + (mo,))
 
@@ -341,10 +348,9 @@ class Mechanism:
                 raise ModelError(f"mechanism {self.name!r}: a motion is given for "
                                  f"{mo.coordinate!r}, which is not a generalized coordinate "
                                  f"{list(self.coordinates)}")
-            if self.coordinate_kind(mo.coordinate) != "angle":
+            if (self.coordinate_kind(mo.coordinate) == "angle") != (mo.kind == "angle"):
                 raise ModelError(f"mechanism {self.name!r}: the motion of {mo.coordinate!r} "
-                                 f"(a direction of rotation and a speed) needs a crank angle; "
-                                 f"{mo.coordinate!r} is a "
+                                 f"is for a {mo.kind} coordinate; {mo.coordinate!r} is a "
                                  f"{self.coordinate_kind(mo.coordinate)} coordinate")
             if mo.coordinate in seen:
                 raise ModelError(f"mechanism {self.name!r}: two motions of {mo.coordinate!r}")

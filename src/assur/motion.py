@@ -49,10 +49,12 @@ import numpy as np
 
 from .errors import ModelError
 
-__all__ = ["Motion", "DIRECTIONS"]
+__all__ = ["Motion", "DIRECTIONS", "ROD_DIRECTIONS", "rod_rates"]
 
 #: the words of a direction of rotation and its sign
 DIRECTIONS = {"ccw": 1, "cw": -1}
+#: the words of a rod's direction of travel (a length coordinate) and its sign
+ROD_DIRECTIONS = {"extend": 1, "retract": -1}
 
 
 @dataclass(frozen=True)
@@ -75,6 +77,11 @@ class Motion:
     start : float, optional
         The coordinate at ``t[0]`` (or at t = 0 for a constant speed) [rad];
         default: the first position passed to :meth:`rates`.
+    kind : {"angle", "length"}
+        The coordinate's kind: a crank angle (speeds in rad/s), or a length — a
+        cylinder's rod (issue 10): direction ``"extend"`` (+1, S grows) or
+        ``"retract"`` (−1), speed |Ṡ| [m/s], a table of |Ṡ(t)| [m/s] in ``omega``,
+        ``start`` [m]; the same formulas hold with s the rod's travel [m].
 
     Examples
     --------
@@ -91,14 +98,19 @@ class Motion:
     t: tuple = ()
     omega: tuple = ()
     start: float | None = None
+    kind: str = "angle"
 
     def __post_init__(self):
         d = self.direction
+        if self.kind not in ("angle", "length"):
+            raise ModelError(f"motion of {self.coordinate!r}: kind must be one of: "
+                             f"['angle', 'length']; got {self.kind!r}")
+        words = DIRECTIONS if self.kind == "angle" else ROD_DIRECTIONS
         if isinstance(d, str):
-            if d not in DIRECTIONS:
-                raise ModelError(f"motion of {self.coordinate!r}: direction must be one of: "
-                                 f"{list(DIRECTIONS)}; got {d!r}")
-            object.__setattr__(self, "direction", DIRECTIONS[d])
+            if d not in words:
+                raise ModelError(f"motion of {self.coordinate!r} (a {self.kind} coordinate): "
+                                 f"direction must be one of: {list(words)}; got {d!r}")
+            object.__setattr__(self, "direction", words[d])
         elif d not in (1, -1) or isinstance(d, bool):
             raise ModelError(f"motion of {self.coordinate!r}: direction must be +1 (ccw) or "
                              f"-1 (cw), got {d!r}")
@@ -136,7 +148,9 @@ class Motion:
     # ---- description -------------------------------------------------------------
     @property
     def direction_name(self) -> str:
-        """``"ccw"`` or ``"cw"``."""
+        """``"ccw"`` or ``"cw"`` (a crank); ``"extend"`` or ``"retract"`` (a rod)."""
+        if self.kind == "length":
+            return "extend" if self.direction > 0 else "retract"
         return "ccw" if self.direction > 0 else "cw"
 
     @property
@@ -183,6 +197,13 @@ class Motion:
         t, w, a, S = self._table()
         tol = 1e-12 * max(S[-1], 1.0)  # the ends of the travel, up to rounding
         out = (s < -tol) | (s > S[-1] + tol)
+        if np.any(out) and self.kind == "length":
+            bad = s[out]
+            raise ModelError(
+                f"motion of {self.coordinate!r}: the table v(t) moves the rod by "
+                f"{S[-1]:.6g} m from its start ({self.direction_name}); {bad.size} "
+                f"position(s) lie outside that travel (e.g. {float(bad.reshape(-1)[0]):.6g} m "
+                f"of travel)")
         if np.any(out):
             bad = s[out]
             raise ModelError(
@@ -227,7 +248,17 @@ class Motion:
         return t[i] + 2.0 * (s - S[i]) / (w[i] + om)
 
     def describe(self) -> str:
-        """``"j1: cw, |ω| = 31.416 rad/s (300 rpm)"`` for reports and summaries."""
+        """``"j1: cw, |ω| = 31.416 rad/s (300 rpm)"`` for reports and summaries
+        (``"S: extend, |v| = 0.05 m/s"`` for a rod)."""
+        if self.kind == "length":
+            if self.speed is not None:
+                sp = f", |v| = {self.speed:.6g} m/s"
+            elif self.t:
+                sp = (f", |v(t)| given at {len(self.t)} times, {self.t[0]:.6g}…{self.t[-1]:.6g} s "
+                      f"({min(self.omega):.6g}…{max(self.omega):.6g} m/s)")
+            else:
+                sp = ""
+            return f"{self.coordinate}: {self.direction_name}{sp}"
         if self.speed is not None:
             sp = f", |ω| = {self.speed:.6g} rad/s ({self.speed * 30 / math.pi:.6g} rpm)"
         elif self.t:
@@ -236,3 +267,33 @@ class Motion:
         else:
             sp = ""
         return f"{self.coordinate}: {self.direction_name}{sp}"
+
+
+def rod_rates(kin):
+    """Rates of the coordinates from the motions of the mechanism's rods (length
+    coordinates with a speed, ``[motion] S = { direction = "extend", speed = … }``).
+
+    Parameters
+    ----------
+    kin : Kinematics
+
+    Returns
+    -------
+    (qdot, qddot) or None
+        Arrays of the kinematics' shape (k = 1) or of shape (..., k) [m/s, m/s²]
+        (0 for the coordinates without such a motion); None when no rod has a
+        speed. Crank motions are left to :func:`assur.analysis.add_dynamics`.
+    """
+    mech = kin.mechanism
+    rods = [mo for mo in mech.motions if mo.kind == "length" and mo.has_speed]
+    if not rods:
+        return None
+    qd = np.zeros(kin.shape + (kin.k,))
+    qdd = np.zeros(kin.shape + (kin.k,))
+    for mo in rods:
+        j = kin.coordinates.index(mo.coordinate)
+        a, b = mo.rates(kin.q(mo.coordinate))
+        qd[..., j], qdd[..., j] = a, b
+    if kin.k == 1:
+        return qd[..., 0], qdd[..., 0]
+    return qd, qdd

@@ -39,6 +39,7 @@ from ._lines import line_of
 from ._units import ACCELERATION, ANGLE, ANGULAR_VELOCITY, FORCE, INERTIA, LENGTH, MASS, \
     MOMENT, NUMBER, PRESSURE, STIFFNESS, TIME, UnitError, display_unit, is_name, parse, to_si, \
     unit_kind
+from ._units import VELOCITY
 
 # constraints on values beyond their kind: (test, words)
 _FLAGS = {
@@ -384,41 +385,55 @@ class Builder:
             self.value(("solve", i, "equals"), s.equals, quantities[s.quantity])
 
     def motion_uses(self):
-        """``[motion]``: one entry per crank coordinate — direction, speed (a value or a
-        table ω(t)), start (an angle)."""
+        """``[motion]``: one entry per coordinate — direction, speed (a value or a
+        table in time), start. A crank angle: ``"ccw"``/``"cw"``, an angular velocity;
+        a length (a cylinder's rod): ``"extend"``/``"retract"``, a velocity."""
         for c, ms in self.spec.motion.items():
             mp = ("motion", c)
             if c not in self.coords:
                 raise self.error(mp, f'unknown coordinate "{c}": expected one of the '
                                      f'coordinates ({", ".join(self.coords)})'
                                      f"{S.did_you_mean(c, self.coords)}")
-            if self.kind_of_coordinate(c) is not ANGLE:
-                raise self.error(mp, f'the coordinate "{c}" is not a crank angle (it is '
-                                     f"{self.kind_of_coordinate(c).article}): a direction of "
-                                     f"rotation and a speed belong to a crank's coordinate")
+            kind = self.kind_of_coordinate(c)
+            crank = kind is ANGLE
+            words = ("ccw", "cw") if crank else ("extend", "retract")
+            if ms.direction is not None and ms.direction not in words:
+                raise self.error(mp + ("direction",),
+                                 f'expected "{words[0]}" or "{words[1]}" for '
+                                 f'{"a crank angle" if crank else "a length"} coordinate, '
+                                 f'found "{ms.direction}"')
+            speed_kind = ANGULAR_VELOCITY if crank else VELOCITY
             if isinstance(ms.speed, dict):
+                w = "omega" if "omega" in ms.speed else "v"
+                if w != ("omega" if crank else "v"):
+                    raise self.error(mp + ("speed", w),
+                                     f'a speed table of {"a crank" if crank else "a rod"} '
+                                     f'gives {"omega" if crank else "v"} = [...], found {w}')
                 for k, v in enumerate(ms.speed["t"]):
                     self.value(mp + ("speed", "t", k), v, TIME)
-                for k, v in enumerate(ms.speed["omega"]):
-                    self.value(mp + ("speed", "omega", k), v, ANGULAR_VELOCITY, "positive")
+                for k, v in enumerate(ms.speed[w]):
+                    self.value(mp + ("speed", w, k), v, speed_kind, "positive")
             elif ms.speed is not None:
-                self.value(mp + ("speed",), ms.speed, ANGULAR_VELOCITY, "positive")
+                self.value(mp + ("speed",), ms.speed, speed_kind, "positive")
             if ms.start is not None:
-                self.value(mp + ("start",), ms.start, ANGLE)
+                self.value(mp + ("start",), ms.start, kind)
 
     def motions(self, mech):
         for c, ms in self.spec.motion.items():
             mp = ("motion", c)
             kw = {}
             if isinstance(ms.speed, dict):
+                w = "omega" if "omega" in ms.speed else "v"
                 kw["t"] = [self.number(mp + ("speed", "t", k)) for k in range(len(ms.speed["t"]))]
-                kw["omega"] = [self.number(mp + ("speed", "omega", k))
-                               for k in range(len(ms.speed["omega"]))]
+                kw["omega"] = [self.number(mp + ("speed", w, k))
+                               for k in range(len(ms.speed[w]))]
             elif ms.speed is not None:
                 kw["speed"] = self.number(mp + ("speed",))
             if ms.start is not None:
                 kw["start"] = self.number(mp + ("start",))
-            mech = self.guarded(mp, lambda: mech.with_motion(c, ms.direction, **kw))
+            direction = ms.direction or ("ccw" if self.kind_of_coordinate(c) is ANGLE
+                                         else "extend")
+            mech = self.guarded(mp, lambda: mech.with_motion(c, direction, **kw))
         return mech
 
     # ---- pass 2: parameters ---------------------------------------------------------------

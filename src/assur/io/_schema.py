@@ -202,26 +202,34 @@ class RangeSpec(_Table):
 
 
 def _speed(v):
-    """A crank speed: a value (``"300 rpm"``), or a table ``{ t = [...], omega = [...] }``."""
+    """A speed: a value (``"300 rpm"``, ``"0.05 m/s"``), or a table in time
+    ``{ t = [...], omega = [...] }`` (a crank) or ``{ t = [...], v = [...] }`` (a rod)."""
     if isinstance(v, dict):
-        unknown = [k for k in v if k not in ("t", "omega")]
+        unknown = [k for k in v if k not in ("t", "omega", "v")]
         if unknown:
-            raise PydanticCustomError("speed", 'unknown key "{k}" in a speed table ω(t) '
-                                               "(allowed: t, omega)", {"k": unknown[0]})
-        for k in ("t", "omega"):
+            raise PydanticCustomError("speed", 'unknown key "{k}" in a speed table '
+                                               "(allowed: t, and omega for a crank or v for a "
+                                               "rod)", {"k": unknown[0]})
+        keys = [k for k in ("omega", "v") if k in v]
+        if len(keys) != 1:
+            raise PydanticCustomError("speed", "a speed table needs t = [...] and one of "
+                                               "omega = [...] (a crank) or v = [...] (a rod)")
+        w = keys[0]
+        for k in ("t", w):
             if not isinstance(v.get(k), list) or len(v[k]) < 2:
                 raise PydanticCustomError("speed", "a speed table needs t = [...] and "
-                                                   "omega = [...], at least two values each")
-        if len(v["t"]) != len(v["omega"]):
-            raise PydanticCustomError("speed", "t and omega need as many values ({a} and {b})",
-                                      {"a": len(v["t"]), "b": len(v["omega"])})
-        return {"t": [_value(x) for x in v["t"]], "omega": [_value(x) for x in v["omega"]]}
+                                                   "{w} = [...], at least two values each",
+                                          {"w": w})
+        if len(v["t"]) != len(v[w]):
+            raise PydanticCustomError("speed", "t and {w} need as many values ({a} and {b})",
+                                      {"w": w, "a": len(v["t"]), "b": len(v[w])})
+        return {"t": [_value(x) for x in v["t"]], w: [_value(x) for x in v[w]]}
     return _value(v)
 
 
 class MotionSpec(_Table):
-    """``[motion]`` of one crank coordinate: direction and speed (:mod:`assur.motion`)."""
-    direction: typing.Literal["ccw", "cw"] = "ccw"
+    """``[motion]`` of one coordinate: direction and speed (:mod:`assur.motion`)."""
+    direction: typing.Literal["ccw", "cw", "extend", "retract"] = None
     speed: Annotated[Any, AfterValidator(_speed)] = None
     start: Value = None
 
