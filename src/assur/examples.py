@@ -178,3 +178,18 @@ def combine_002_turn_range() -> np.ndarray:
     """A full clockwise turn from j1 = 14.679°, one position per degree (361 positions,
     ``combine_002_turn.toml``) [rad]."""
     return np.array(_model("combine_002_turn").range)
+
+
+def spout_lab5(**params) -> Mechanism:
+    """Silage-spout rotation mechanism of a forage harvester, seed
+    ``001_4447446e88a18ffc.txt`` lab 5 (bundled file ``spout_lab5.toml``): the
+    cylinder turns the arc lever 3 about 03; its arm 34 drives the arc lever 4 and the
+    spout's base radius 5 about the spout axis 05. Dimensions fitted to the lab's
+    table 5.1 by :func:`assur.fitting.fit_parameters`; in a horizontal plane (no
+    gravity), with an illustrative rod motion and spout inertia."""
+    return _mechanism("spout_lab5", params)
+
+
+def spout_lab5_range() -> np.ndarray:
+    """S = 0.35 … 0.51 m by 0.01 m [m] (table 5.1 prints every other one)."""
+    return _model("spout_lab5").range
