@@ -99,10 +99,12 @@ class Couple:
 
 @dataclass(frozen=True)
 class Spring:
-    """Linear spring between points ``a`` and ``b`` (links ``links`` or the owners).
+    """Linear spring(s) between points ``a`` and ``b`` (links ``links`` or the owners).
 
-    Tension ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate`` [N/m],
-    ``free_length`` [m], ``preload`` [N].
+    Tension of one spring ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate``
+    [N/m], ``free_length`` [m], ``preload`` [N]. ``count`` identical springs act in
+    parallel (seed 001 lab 2 eq. 4: k springs): the points are pulled together by
+    ``count·T``.
     """
 
     name: str
@@ -112,20 +114,33 @@ class Spring:
     free_length: Ref
     preload: Ref = 0.0
     links: tuple[str, str] | None = None
+    count: Ref = 1
 
-    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force"}
+    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force",
+                            "count": "number"}
+
+    def tension(self, c, L):
+        """Tension of one spring [N] at the length ``L`` [m] (context values)."""
+        return c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
 
     def apply(self, c):
         (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
         dx, dy = bx - ax, by - ay
         L = np.hypot(dx, dy)
         c.nonzero(L, f"spring {self.name!r}: its ends {self.a!r} and {self.b!r} coincide")
-        T = c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
+        T = self.tension(c, L)
+        n = c.value(self.count)
+        F = T if is_one(n) else n * T
         ux, uy = dx / L, dy / L
         la, lb = self.links or (c.owner(self.a), c.owner(self.b))
-        c.force(la, self.a, T * ux, T * uy)
-        c.force(lb, self.b, -T * ux, -T * uy)
+        c.force(la, self.a, F * ux, F * uy)
+        c.force(lb, self.b, -F * ux, -F * uy)
         c.spring(self, T, L)
+
+
+def is_one(v) -> bool:
+    """True for the plain number 1 (a count that changes nothing)."""
+    return isinstance(v, (int, float, np.floating, np.integer)) and float(v) == 1.0
 
 
 @dataclass(frozen=True)

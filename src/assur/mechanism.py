@@ -245,13 +245,15 @@ class Mechanism:
         from .loads import Couple
         return self._with(loads=self.loads + (Couple(link, M, name),))
 
-    def spring(self, name, a, b, rate, free_length, preload=0.0, links=None) -> "Mechanism":
-        """Add a spring between points ``a`` and ``b`` (rate [N/m], free length [m],
-        preload [N]); tension pulls the points together."""
+    def spring(self, name, a, b, rate, free_length, preload=0.0, links=None,
+               count=1) -> "Mechanism":
+        """Add ``count`` identical springs between points ``a`` and ``b`` (rate [N/m],
+        free length [m], preload [N] of one spring); tension pulls the points
+        together."""
         from .loads import Spring
         links = tuple(links) if links else None
         return self._with(loads=self.loads + (Spring(name, a, b, rate, free_length, preload,
-                                                     links),))
+                                                     links, count),))
 
     def mass(self, link, m, point, J=0.0) -> "Mechanism":
         """Give ``link`` a mass ``m`` [kg] at ``point`` and inertia ``J`` [kg·m²]."""

@@ -31,7 +31,7 @@ import numpy as np
 from .errors import ModelError
 
 __all__ = ["Statics", "GRAVITY", "gravity_unit", "applied_loads", "virtual_work_forces",
-           "solve",
+           "spring_states", "solve",
            "ReactionContextBase", "ReactionContext"]
 
 #: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
@@ -296,6 +296,34 @@ def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
     for ld in kin.mechanism.loads:
         ld.apply(c)
     return c.forces, c.couples, c.springs
+
+
+def spring_states(kin):
+    """Length, tension and force of every spring of the mechanism over the positions.
+
+    Returns
+    -------
+    dict of str to (L, T, F)
+        By spring name: its length |ab| [m], the tension of one spring
+        ``T = preload + rate·(L − free_length)`` [N], and the force of all ``count``
+        springs, ``F = count·T`` [N]; arrays of the kinematics' shape (a parameter
+        over designs broadcasts).
+    """
+    from .loads import Spring
+
+    c = _LoadCollector(kin, 0.0)
+    out = {}
+    for ld in kin.mechanism.loads:
+        if not isinstance(ld, Spring):
+            continue
+        (ax, ay), (bx, by) = c.point(ld.a), c.point(ld.b)
+        L = np.hypot(bx - ax, by - ay)
+        T = ld.tension(c, L)
+        shape = (kin.m, kin.n)
+        L, T = np.broadcast_to(L, shape), np.broadcast_to(T, shape)
+        out[ld.name] = (kin.reshape(L), kin.reshape(T),
+                        kin.reshape(np.broadcast_to(c.value(ld.count) * T, shape)))
+    return out
 
 
 def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):

@@ -93,7 +93,7 @@ _LOAD_VALUES = {
     "force": {"fx": (FORCE, None), "fy": (FORCE, None)},
     "moment": {"M": (MOMENT, None)},
     "spring": {"rate": (STIFFNESS, "nonneg"), "free_length": (LENGTH, "nonneg"),
-               "preload": (FORCE, None)},
+               "preload": (FORCE, None), "count": (NUMBER, "count")},
     "mass": {"m": (MASS, "positive"), "J": (INERTIA, "nonneg")},
 }
 _LOAD_POINTS = {"weight": ("point",), "force": ("point",), "moment": (), "spring": ("a", "b"),
@@ -726,7 +726,7 @@ class Builder:
             out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
         if t.symbols is not None:
             out["symbols"] = dict(t.symbols)
-        for key in ("angles", "analogs"):
+        for key in ("angles", "analogs", "second_order"):
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
         return mech.with_tables(**out)

@@ -18,8 +18,8 @@ import difflib
 import typing
 from typing import Annotated, Any, Optional
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StrictInt, StrictStr, \
-    ValidationError, create_model, model_validator
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StrictBool, StrictInt, \
+    StrictStr, ValidationError, create_model, model_validator
 from pydantic_core import PydanticCustomError
 
 
@@ -384,6 +384,7 @@ class SpringSpec(_Load):
     free_length: Value
     preload: Value = 0.0
     links: Optional[tuple[Name, Name]] = None
+    count: Value = 1
 
 
 class MassSpec(_Load):
@@ -464,6 +465,8 @@ class TablesSpec(_Table):
     #: analogs of a crank angle: with respect to the "coordinate", or along the direction
     #: of "rotation" of its [motion] (dφ/dφ1 · sign φ1')
     analogs: typing.Literal["coordinate", "rotation"] = None
+    #: second-order analogs (ddphi, dd<distance>, dU) in table 3.1
+    second_order: StrictBool = None
 
 
 class SolveSpec(_Table):
