@@ -165,3 +165,14 @@ def test_a_rod_speed_table_gives_the_acceleration_term():
     eps5 = kin.ddphi("5") * qd**2 + kin.dphi("5") * qdd
     F = 60.0 * eps5 * kin.dphi("5")
     np.testing.assert_allclose(a.statics.actuator_force("S"), F, rtol=1e-9, atol=1e-9)
+
+
+def test_the_csv_files_hold_no_nan_or_inf(tmp_path):
+    from assur.report import write_report
+    a = examples.spout_lab5().analyze(examples.spout_lab5_range())
+    write_report(a, tmp_path, formats=("csv",))
+    csvs = sorted(tmp_path.glob("*.csv"))
+    assert {"table_3_1.csv", "table_4_1.csv", "table_5_1.csv"} <= {f.name for f in csvs}
+    for f in csvs:
+        text = f.read_text(encoding="utf-8").lower()
+        assert "nan" not in text and "inf" not in text, f.name
