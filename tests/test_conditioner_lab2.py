@@ -66,7 +66,7 @@ def test_I_is_dY_dlambda_by_finite_differences(model):
 def test_eq_5_read_along_Y_gives_about_one_and_is_flagged(analysis):
     t31 = table(analysis, "3.1")
     np.testing.assert_allclose(t31["I_Y"], 1.0, atol=0.01)
-    assert np.all(np.abs(t31["I"] - 1.0) > 0.3)
+    assert np.all(np.abs(t31["I"] - t31["I_Y"]) > 0.1)   # the two readings differ
     assert any("eq. (5)" in n["en"] for n in t31.notes)
 
 
