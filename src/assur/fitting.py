@@ -23,7 +23,8 @@ Method
    (one tolerance): residuals within the printed precision count quadratically, a
    misprinted value only linearly, so one wrong digit cannot drag the fit; after the
    fit every value with ``|r| > outlier`` (default 20 tolerances) is returned as an
-   outlier, to be flagged, never silently dropped.
+   outlier, to be flagged, never silently dropped; the fit is then refined once
+   without the outliers, which removes what pull the robust loss left them.
 
 A design that fails to assemble at a tabulated position gets the residual
 :data:`FAIL_RESIDUAL` everywhere (the trust region then shrinks back).
@@ -242,6 +243,16 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
         if best is None or sol.cost < best.cost:
             best = sol
     r = _residuals(mech, names, best.x[None, :], targets, q)[0][0]
+    keep = np.abs(r) <= outlier
+    if not keep.all() and keep.any():
+        # refine without the outliers: the robust loss limits their pull, this removes it
+        def kept(x):
+            return _residuals(mech, names, x[None, :], targets, q)[0][0][keep]
+
+        sol = least_squares(kept, best.x, bounds=(lo, hi), loss=loss, f_scale=1.0, x_scale="jac",
+                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
+        best = sol
+        r = _residuals(mech, names, best.x[None, :], targets, q)[0][0]
     residuals, outliers, positions, j = {}, [], {}, 0
     for t in targets:
         rt = r[j:j + len(t.values)]
