@@ -176,3 +176,59 @@ def test_the_csv_files_hold_no_nan_or_inf(tmp_path):
     for f in csvs:
         text = f.read_text(encoding="utf-8").lower()
         assert "nan" not in text and "inf" not in text, f.name
+
+
+def test_a_law_of_motion_S_t_gives_the_rates_and_the_inertia():
+    # S(t) = 0.35 + 0.01·t² m (a cubic spline reproduces a quadratic exactly):
+    # Ṡ = 0.02·t, S̈ = 0.02 at t = √((S − 0.35)/0.01)
+    text = io.bundled("spout_lab5").read_text(encoding="utf-8")
+    t = [0.0, 1.0, 2.0, 3.0, 4.0]
+    law = ("law = { t = [" + ", ".join(f'"{x} s"' for x in t) + "], q = ["
+           + ", ".join(f'"{0.35 + 0.01 * x * x:.4f} m"' for x in t) + "] }")
+    m = io.loads(text.replace('direction = "extend", speed = "0.04 m/s"', law),
+                 name="spout.toml")
+    a = m.mechanism.analyze(m.range)
+    kin = a.kinematics
+    s = kin.q()
+    tt = np.sqrt((s - 0.35) / 0.01)
+    qd, qdd = a.rates
+    np.testing.assert_allclose(qd, 0.02 * tt, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(qdd, 0.02, rtol=1e-9)
+    np.testing.assert_allclose(m.mechanism.motion("S").time(s), tt, rtol=1e-9, atol=1e-9)
+    F = 60.0 * (kin.ddphi("5") * qd**2 + kin.dphi("5") * qdd) * kin.dphi("5")
+    np.testing.assert_allclose(a.statics.actuator_force("S"), F, rtol=1e-9, atol=1e-9)
+
+
+@pytest.mark.parametrize("law,key,message", [
+    ('law = { t = ["0 s", "1 s", "2 s"], q = ["0.35 m", "0.45 m", "0.40 m"] }', "motion.S",
+     "monotonic"),
+    ('law = { t = ["0 s", "1 s"], q = ["0.35 m", "0.45 m"] }, speed = "1 m/s"',
+     "motion.S.law", "no speed"),
+    ('law = { t = ["0 s", "1 s", "2 s"], q = ["0.35 m", "0.4 m"] }', "motion.S.law",
+     "as many"),
+    ('law = { t = ["0 s", "1 s"], q = ["0.35 m", "35 deg"] }', "motion.S.law.q[1]",
+     "expected a length"),
+])
+def test_a_bad_law_is_located(law, key, message):
+    text = io.bundled("spout_lab5").read_text(encoding="utf-8")
+    with pytest.raises(ModelFileError) as exc:
+        io.loads(text.replace('direction = "extend", speed = "0.04 m/s"', law),
+                 name="spout.toml")
+    assert exc.value.key_path == key and message in str(exc.value), str(exc.value)
+
+
+def test_a_law_beyond_the_range_is_refused():
+    from assur.errors import ModelError
+    m = examples.spout_lab5().with_motion("S", law_t=(0, 1), law_q=(0.36, 0.5))
+    with pytest.raises(ModelError, match="outside"):
+        m.analyze(examples.spout_lab5_range())
+
+
+def test_a_spline_that_turns_back_is_refused():
+    from assur.errors import ModelError
+    from assur.motion import Motion
+    # monotonic samples whose not-a-knot spline overshoots between them
+    with pytest.raises(ModelError, match="turns back"):
+        Motion("S", kind="length", law_t=(0, 1, 2, 3, 4), law_q=(0.0, 0.001, 0.002, 0.9, 1.0))
+    with pytest.raises(ModelError, match="against the direction"):
+        Motion("S", "retract", kind="length", law_t=(0, 1), law_q=(0.3, 0.4))

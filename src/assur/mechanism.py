@@ -310,21 +310,24 @@ class Mechanism:
         u = dict(self.units)
         u.update(units)
         return self._with(units=u)
-    def with_motion(self, coordinate, direction="ccw", speed=None, *, t=(), omega=(),
-                    start=None) -> "Mechanism":
+    def with_motion(self, coordinate, direction=None, speed=None, *, t=(), omega=(),
+                    start=None, law_t=(), law_q=()) -> "Mechanism":
         """Return a copy whose crank coordinate ``coordinate`` turns in ``direction``
         (``"ccw"``/+1, ``"cw"``/−1) at a constant ``speed`` |ω| [rad/s], or at a given
         |ω(t)|: ``t`` [s], ``omega`` [rad/s] (see :class:`assur.motion.Motion`);
         replaces an earlier motion of that coordinate. For a length coordinate (a
         cylinder's rod) ``direction`` is ``"extend"``/+1 or ``"retract"``/−1, ``speed``
-        |Ṡ| [m/s] and ``omega`` the table |Ṡ(t)| [m/s]; :func:`assur.analysis.analyze`
-        then includes the inertia loads at that motion."""
+        |Ṡ| [m/s] and ``omega`` the table |Ṡ(t)| [m/s]; or a law of motion q(t) at the
+        times ``law_t`` [s], ``law_q`` [m or rad]; :func:`assur.analysis.analyze` then
+        includes the inertia loads of a rod's motion. ``direction`` defaults to
+        counter-clockwise / extending, or the law's."""
         from .motion import Motion
         if coordinate not in self.coordinates:
             raise ModelError(f"mechanism {self.name!r}: a motion is given for {coordinate!r}, "
                              f"which is not a generalized coordinate {list(self.coordinates)}")
         kind = "angle" if self.coordinate_kind(coordinate) == "angle" else "length"
-        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start, kind)
+        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start, kind,
+                    tuple(law_t), tuple(law_q))
         return self._with(motions=tuple(x for x in self.motions if x.coordinate != coordinate)
                           + (mo,))
 

@@ -417,6 +417,14 @@ class Builder:
                 self.value(mp + ("speed",), ms.speed, speed_kind, "positive")
             if ms.start is not None:
                 self.value(mp + ("start",), ms.start, kind)
+            if ms.law is not None:
+                if ms.speed is not None or ms.start is not None:
+                    raise self.error(mp + ("law",), "a law of motion gives the motion whole: "
+                                                    "give no speed or start with it")
+                for k, v in enumerate(ms.law["t"]):
+                    self.value(mp + ("law", "t", k), v, TIME)
+                for k, v in enumerate(ms.law["q"]):
+                    self.value(mp + ("law", "q", k), v, kind)
 
     def motions(self, mech):
         for c, ms in self.spec.motion.items():
@@ -431,7 +439,13 @@ class Builder:
                 kw["speed"] = self.number(mp + ("speed",))
             if ms.start is not None:
                 kw["start"] = self.number(mp + ("start",))
-            direction = ms.direction or ("ccw" if self.kind_of_coordinate(c) is ANGLE
+            if ms.law is not None:
+                kw["law_t"] = [self.number(mp + ("law", "t", k))
+                               for k in range(len(ms.law["t"]))]
+                kw["law_q"] = [self.number(mp + ("law", "q", k))
+                               for k in range(len(ms.law["q"]))]
+            direction = ms.direction or (None if ms.law is not None else
+                                         "ccw" if self.kind_of_coordinate(c) is ANGLE
                                          else "extend")
             mech = self.guarded(mp, lambda: mech.with_motion(c, direction, **kw))
         return mech

@@ -227,11 +227,28 @@ def _speed(v):
     return _value(v)
 
 
+def _law(v):
+    """A law of motion ``{ t = [...], q = [...] }`` (:mod:`assur.motion`)."""
+    if not isinstance(v, dict) or set(v) != {"t", "q"}:
+        raise PydanticCustomError("law", "expected a law of motion { t = [...], q = [...] }: "
+                                         "times and the coordinate's values")
+    for k in ("t", "q"):
+        if not isinstance(v[k], list) or len(v[k]) < 2:
+            raise PydanticCustomError("law", "a law of motion needs t = [...] and q = [...], "
+                                             "at least two values each")
+    if len(v["t"]) != len(v["q"]):
+        raise PydanticCustomError("law", "t and q need as many values ({a} and {b})",
+                                  {"a": len(v["t"]), "b": len(v["q"])})
+    return {k: [_value(x) for x in v[k]] for k in ("t", "q")}
+
+
 class MotionSpec(_Table):
-    """``[motion]`` of one coordinate: direction and speed (:mod:`assur.motion`)."""
+    """``[motion]`` of one coordinate: direction and speed, or a law of motion q(t)
+    (:mod:`assur.motion`)."""
     direction: typing.Literal["ccw", "cw", "extend", "retract"] = None
     speed: Annotated[Any, AfterValidator(_speed)] = None
     start: Value = None
+    law: Annotated[Any, AfterValidator(_law)] = None
 
 
 # ---- [[groups]] ---------------------------------------------------------------------
