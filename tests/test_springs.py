@@ -85,3 +85,15 @@ def test_second_order_must_be_true_or_false():
     with pytest.raises(ModelFileError) as exc:
         lift(extra='second_order = "yes"')
     assert exc.value.key_path == "tables.second_order"
+
+
+@pytest.mark.parametrize("count", ["", "count = 3"])
+def test_the_fused_kernel_counts_the_springs_too(count):
+    from assur import statics
+    m = lift(count)
+    kin = m.mechanism.solve(m.range)
+    fa = statics.solve(kin, method="array")
+    ff = statics.solve(kin, method="fused")
+    np.testing.assert_allclose(ff.actuator_force("S"), fa.actuator_force("S"), rtol=1e-12)
+    np.testing.assert_allclose(ff.reaction("0", "5"), fa.reaction("0", "5"), rtol=1e-12,
+                               atol=1e-9)
