@@ -27,7 +27,8 @@ Method
    without the outliers, which removes what pull the robust loss left them.
 
 A design that fails to assemble at a tabulated position gets the residual
-:data:`FAIL_RESIDUAL` everywhere (the trust region then shrinks back).
+:data:`FAIL_RESIDUAL` everywhere (the trust region then shrinks back), and a
+refinement that ends at such a design is discarded.
 """
 
 from __future__ import annotations
@@ -36,15 +37,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.optimize import least_squares
-from scipy.stats import qmc
 
 from .columns import Formula, FormulaError
 from .errors import AssemblyError, ModelError
 
 __all__ = ["Target", "FitResult", "fit_parameters", "FAIL_RESIDUAL"]
 
-#: residual [tolerances] of every value of a design that cannot assemble
-FAIL_RESIDUAL = 1e4
+#: residual [tolerances] of every value of a design that cannot assemble: far above
+#: what any assembling design can miss by (an angle off by 360° at 0.0005° is 7e5)
+FAIL_RESIDUAL = 1e12
 
 
 @dataclass(frozen=True)
@@ -64,8 +65,9 @@ class Target:
         The printed values, in ``unit``.
     scale : float
         SI value of one ``unit`` (π/180 for degrees). Default 1.
-    tolerance : float
-        Half a unit of the last printed digit, in ``unit`` (0.0005 for 3 decimals).
+    tolerance : float or array_like, shape (n,)
+        Half a unit of the last printed digit, in ``unit`` (0.0005 for 3 decimals);
+        one per value when the values are printed to different precisions.
     period : float, optional
         A period of the quantity in ``unit`` (360 for an angle in degrees): the
         residual is then taken modulo the period.
@@ -76,7 +78,7 @@ class Target:
     positions: tuple
     values: tuple
     scale: float = 1.0
-    tolerance: float = 0.0005
+    tolerance: float | tuple = 0.0005
     period: float | None = None
     _formula: Formula = field(default=None, init=False, repr=False, compare=False)
 
@@ -88,8 +90,11 @@ class Target:
                              f"give one value per position")
         if not (np.isfinite(q).all() and np.isfinite(v).all()):
             raise ModelError(f"target {self.name!r}: positions and values must be finite")
-        if not (self.tolerance > 0 and self.scale > 0):
+        tol = np.broadcast_to(np.asarray(self.tolerance, dtype=float), v.shape)
+        if not (np.all(tol > 0) and np.all(np.isfinite(tol)) and self.scale > 0):
             raise ModelError(f"target {self.name!r}: tolerance and scale must be positive")
+        object.__setattr__(self, "tolerance", tuple(tol) if np.ndim(self.tolerance)
+                           else float(self.tolerance))
         object.__setattr__(self, "positions", tuple(q))
         object.__setattr__(self, "values", tuple(v))
         object.__setattr__(self, "_formula", Formula(self.name, self.expr))
@@ -99,7 +104,7 @@ class Target:
         d = self._formula.evaluate(kin) / self.scale - np.asarray(self.values)
         if self.period is not None:
             d = (d + 0.5 * self.period) % self.period - 0.5 * self.period
-        return d / self.tolerance
+        return d / np.asarray(self.tolerance)
 
 
 @dataclass
@@ -224,6 +229,8 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
     if not np.all(hi > lo):
         raise ModelError(f"fit_parameters: every bound needs low < high: {dict(bounds)}")
     q = np.unique(np.concatenate([np.asarray(t.positions) for t in targets]))
+    from scipy.stats import qmc
+
     sob = qmc.Sobol(len(names), scramble=True, seed=seed).random(screen)
     cand = lo + sob * (hi - lo)
     r0, ok = _residuals(mech, names, cand, targets, q)
@@ -236,12 +243,21 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
     if start is not None:
         x0s.insert(0, np.clip([float(start.get(n, mech.params[n])) for n in names], lo, hi))
     best = None
+
+    def assembles(x):
+        return bool(_residuals(mech, names, x[None, :], targets, q)[1][0])
+
     for x0 in x0s:
         sol = least_squares(lambda x: _residuals(mech, names, x[None, :], targets, q)[0][0],
                             x0, bounds=(lo, hi), loss=loss, f_scale=1.0, x_scale="jac",
                             xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
+        if not assembles(sol.x):   # never return a design that cannot assemble
+            continue
         if best is None or sol.cost < best.cost:
             best = sol
+    if best is None:
+        raise ModelError(f"fit_parameters: no refinement of {len(x0s)} start(s) ended at a "
+                         f"design that assembles at every tabulated position")
     r = _residuals(mech, names, best.x[None, :], targets, q)[0][0]
     keep = np.abs(r) <= outlier
     if not keep.all() and keep.any():
@@ -249,9 +265,10 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
         def kept(x):
             return _residuals(mech, names, x[None, :], targets, q)[0][0][keep]
 
-        sol = least_squares(kept, best.x, bounds=(lo, hi), loss=loss, f_scale=1.0, x_scale="jac",
-                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
-        best = sol
+        sol = least_squares(kept, best.x, bounds=(lo, hi), loss=loss, f_scale=1.0,
+                            x_scale="jac", xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
+        if assembles(sol.x):
+            best = sol
         r = _residuals(mech, names, best.x[None, :], targets, q)[0][0]
     residuals, outliers, positions, j = {}, [], {}, 0
     for t in targets:
@@ -259,8 +276,9 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
         j += len(t.values)
         residuals[t.name] = rt
         positions[t.name] = t.positions
-        for p, v, e in zip(t.positions, t.values, rt):
+        tol = np.broadcast_to(np.asarray(t.tolerance), rt.shape)
+        for p, v, e, tl in zip(t.positions, t.values, rt, tol):
             if abs(e) > outlier:
-                outliers.append((t.name, p, v, v + e * t.tolerance))
+                outliers.append((t.name, p, v, v + e * float(tl)))
     return FitResult({n: float(v) for n, v in zip(names, best.x)}, residuals, outliers,
                      float(best.cost), len(x0s), positions)
