@@ -276,7 +276,8 @@ def test_motion_in_the_python_builder_and_real_time_velocities():
     v = kin.velocity("B", qd)
     np.testing.assert_allclose(v[:, 0], kin.dx("B") * -2.0)
     assert m.with_params(r=0.11).motion() == m.motion()      # data, kept by copies
-    with pytest.raises(ModelError, match="needs a crank angle"):
+    # a length coordinate moves by extending or retracting, not turning (issue 10)
+    with pytest.raises(ModelError, match=r"direction must be one of: \['extend', 'retract'\]"):
         (Mechanism("s", ("S",)).frame("O", 0, 0)
          .slider_input("in", origin="O", out="A", s="S").with_motion("S", "cw", 1.0))
 

@@ -23,10 +23,12 @@ def _placeholders(mech=None):
         return {"<name>": r"\w+", "<formula>": None}
     links = [l.name for l in mech.links] + list(mech.bodies)
     axles = list(mech.machine.machine.axles) if mech.machine is not None else []
+    springs = [ld.name for ld in mech.loads if type(ld).__name__ == "Spring"]
     return {"<c>": _alt(mech.coordinates), "<p>": _alt(mech.points + mech.frame_points),
             "<l>": _alt(links), "<i><j>": _alt(links) + _alt(links),
             "<axle>": _alt([a.lower() for a in axles] + axles) if axles else "(?!)",
             "<d>": _alt([d.name for d in mech.distances]) if mech.distances else "(?!)",
+            "<s>": _alt(springs) if springs else "(?!)",
             "<formula>": None, "<name>": r"\w+", "<value>": r"-?[0-9][0-9.e+-]*"}
 
 

@@ -54,6 +54,8 @@ class Analysis:
         self.lift_test = None
         self.notes = []
         self.model_warnings = ()
+        #: the coordinate rates (q̇, q̈) of the statics (a rod's [motion]), or None
+        self.rates = None
 
     @property
     def mechanism(self):
@@ -99,6 +101,15 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     if g is None:
         g = gravity_of(mech)
     kin = mech.solve(q, params=params, **solve_kw)
+    notes = []
+    if qdot is None and qddot is None:
+        from .motion import rod_rates
+        rates = rod_rates(kin)   # the rods' [motion]: inertia loads without Python
+        if rates is not None:
+            qdot, qddot = rates
+            notes.append(f"{mech.name}: inertia loads at the rod motion of [motion] ("
+                         + "; ".join(mo.describe() for mo in mech.motions
+                                     if mo.kind == "length" and mo.has_speed) + ")")
     st = _statics.solve(kin, qdot=qdot, qddot=qddot, g=g)
     cyl = cylinder_results(kin, st, g=g)
     stab = None
@@ -106,6 +117,9 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     if machine is not None:
         stab = machine.evaluate(kin)
     result = Analysis(kin, st, cyl, stab)
+    result.notes.extend(notes)
+    #: the coordinate rates the statics used (q̇, q̈), or None: static
+    result.rates = None if qdot is None and qddot is None else (qdot, qddot)
     check_finite(result)  # never return NaN or inf
     return result
 

@@ -1,4 +1,5 @@
-"""Command-line interface: ``assur check``, ``assur analyze``, ``assur demo``.
+"""Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
+``assur fit``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -297,6 +298,58 @@ def _fmt_cell(v):
     else:
         out = f"{v:.5g}"
     return out.lstrip("-") if float(out) == 0 else out  # never "-0"
+
+
+@app.command()
+def fit(file: Path = typer.Argument(..., help="Model file (TOML)."),
+        table: Path = typer.Argument(..., help="The printed table (CSV): the coordinate, "
+                                               "then columns 'expression [unit]'."),
+        param: list[str] = typer.Option(..., "--fit", help="A parameter to fit and its "
+                                        "bounds in SI: NAME=LOW:HIGH (repeat)."),
+        screen: int = typer.Option(4096, "--screen", help="Designs screened."),
+        starts: int = typer.Option(8, "--starts", help="Least-squares refinements."),
+        outlier: float = typer.Option(20.0, "--outlier", help="Residual [tolerances] "
+                                      "beyond which a value is an outlier.")):
+    """Fit parameters of a model to a printed table (assur.fitting): robust least
+    squares at the precision each value is printed with; outliers are listed."""
+    from .errors import ModelError
+    from .fitting import fit_parameters
+    from .io import read_targets
+
+    model = _load(file)
+    mech = model.mechanism
+    bounds = {}
+    for p in param:
+        name, _, rng = p.partition("=")
+        lo, _, hi = rng.partition(":")
+        try:
+            bounds[name.strip()] = (float(lo), float(hi))
+        except ValueError:
+            _fail(f"--fit {p}: expected NAME=LOW:HIGH (numbers in SI), e.g. L4=0.5:0.8")
+    try:
+        targets = read_targets(table, mech)
+        res = fit_parameters(mech, bounds, targets, screen=screen, starts=starts,
+                             outlier=outlier)
+    except (ModelError, OSError) as e:
+        _fail(str(e))
+    rt = Table(title="fitted parameters", header_style="bold", title_justify="left")
+    for h in ("parameter", "value [SI]", "bounds [SI]", "in the file's unit"):
+        rt.add_column(h, justify="right")
+    for n, v in res.params.items():
+        u = mech.units.get(n)
+        shown = f"{v / u.scale:.7g} {u.text}" if u is not None else ""
+        rt.add_row(n, f"{v:.9g}", f"{bounds[n][0]:.6g} … {bounds[n][1]:.6g}", shown)
+    console.print(rt)
+    console.print(Text(f"largest residual besides the outliers: {res.max_residual():.3g} "
+                       f"half-units of the last printed digit"))
+    if res.outliers:
+        ot = Table(title="outliers (printed values the fit does not follow)",
+                   header_style="bold", title_justify="left")
+        for h in ("column", mech.coordinates[0], "printed", "fitted"):
+            ot.add_column(h, justify="right")
+        for name, q, printed, fitted in res.outliers:
+            ot.add_row(name, f"{q:.6g}", f"{printed:.6g}", f"{fitted:.6g}")
+        console.print(ot)
 
 
 @app.command()

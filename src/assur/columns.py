@@ -28,7 +28,8 @@ the formula is made), so nothing in a file is ever executed:
   ``pi``;
 * ``X(p)``, ``Y(p)`` — coordinates of point ``p`` [m]; ``I(p)`` — its transmission
   number dY/dq [-] (one coordinate); ``phi(l)`` — angle of link ``l`` [rad];
-  ``dphi(l)`` — its analog dφ/dq. The point or link is written bare
+  ``dphi(l)``, ``ddphi(l)`` — its first and second analogs; ``dist(d)`` — a named
+  distance [m], ``ddist(d)`` — its analog dd/dq. The point or link is written bare
   (``X(S6)``, ``X(05)``, ``phi(5)``) or as a string (``X("05")``);
 * ``sqrt``, ``sin``, ``cos``, ``tan``, ``asin``, ``acos``, ``atan``, ``atan2``,
   ``hypot``, ``abs``, ``exp``, ``log`` of expressions.
@@ -59,7 +60,9 @@ TABLE_IDS = ("2.1", "2.2", "3.1", "4.1", "G", "5.1", "5.2", "D", "6.1", "IC", "L
 #: functions of one point (name → kinematics accessor)
 POINT_FUNCTIONS = ("X", "Y", "I")
 #: functions of one link
-LINK_FUNCTIONS = ("phi", "dphi")
+LINK_FUNCTIONS = ("phi", "dphi", "ddphi")
+#: functions of one named distance ([distances]): its length and its analog d/dq
+DISTANCE_FUNCTIONS = ("dist", "ddist")
 #: arithmetic functions and their arity
 MATH_FUNCTIONS = {"sqrt": (np.sqrt, 1), "sin": (np.sin, 1), "cos": (np.cos, 1),
                   "tan": (np.tan, 1), "asin": (np.arcsin, 1), "acos": (np.arccos, 1),
@@ -69,7 +72,7 @@ CONSTANTS = {"pi": math.pi}
 #: longest expression accepted [characters]
 MAX_LENGTH = 1000
 
-_BARE_REF = re.compile(r"\b(X|Y|I|phi|dphi)\(\s*([0-9A-Za-z_]+)\s*\)")
+_BARE_REF = re.compile(r"\b(X|Y|I|phi|dphi|ddphi|dist|ddist)\(\s*([0-9A-Za-z_]+)\s*\)")
 _BINOPS = {ast.Add: np.add, ast.Sub: np.subtract, ast.Mult: np.multiply,
            ast.Div: np.divide, ast.Pow: np.power}
 _UNARY = {ast.USub: np.negative, ast.UAdd: np.positive}
@@ -92,10 +95,12 @@ def _ref(node, what):
                        f"{ast.unparse(node)!r}")
 
 
-def _check(node, names, points, links):
+def _check(node, names, points, links, distances=None):
     """Refuse every node outside the accepted grammar; collect the names used."""
+    if distances is None:
+        distances = set()
     if isinstance(node, ast.Expression):
-        return _check(node.body, names, points, links)
+        return _check(node.body, names, points, links, distances)
     if isinstance(node, ast.Constant):
         if type(node.value) not in (int, float):
             raise FormulaError(f"expected a number, found {ast.unparse(node)}")
@@ -104,14 +109,20 @@ def _check(node, names, points, links):
         names.add(node.id)
         return
     if isinstance(node, ast.BinOp) and type(node.op) in _BINOPS:
-        _check(node.left, names, points, links)
-        _check(node.right, names, points, links)
+        _check(node.left, names, points, links, distances)
+        _check(node.right, names, points, links, distances)
         return
     if isinstance(node, ast.UnaryOp) and type(node.op) in _UNARY:
-        _check(node.operand, names, points, links)
+        _check(node.operand, names, points, links, distances)
         return
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and not node.keywords:
         f = node.func.id
+        if f in DISTANCE_FUNCTIONS:
+            if len(node.args) != 1:
+                raise FormulaError(f"{f}() takes one distance, found {len(node.args)} "
+                                   f"arguments")
+            distances.add(_ref(node.args[0], "distance"))
+            return
         if f in POINT_FUNCTIONS or f in LINK_FUNCTIONS:
             if len(node.args) != 1:
                 raise FormulaError(f"{f}() takes one {'point' if f in POINT_FUNCTIONS else 'link'}"
@@ -127,9 +138,10 @@ def _check(node, names, points, links):
                 raise FormulaError(f"{f}() takes {n} argument{'s' if n > 1 else ''}, found "
                                    f"{len(node.args)}")
             for a in node.args:
-                _check(a, names, points, links)
+                _check(a, names, points, links, distances)
             return
-        known = ", ".join(list(POINT_FUNCTIONS) + list(LINK_FUNCTIONS) + list(MATH_FUNCTIONS))
+        known = ", ".join(list(POINT_FUNCTIONS) + list(LINK_FUNCTIONS)
+                          + list(DISTANCE_FUNCTIONS) + list(MATH_FUNCTIONS))
         raise FormulaError(f"unknown function {f}(); the functions are: {known}")
     what = type(node).__name__
     raise FormulaError(f"only numbers, names, + - * / **, parentheses and the listed functions "
@@ -137,7 +149,7 @@ def _check(node, names, points, links):
 
 
 def parse(expr: str):
-    """Parse and check ``expr``: ``(tree, names, points, links)``.
+    """Parse and check ``expr``: ``(tree, names, points, links, distances)``.
 
     Raises
     ------
@@ -158,12 +170,13 @@ def parse(expr: str):
         raise FormulaError(f"cannot read the expression {expr.strip()!r}: {e.msg}") from None
     except (RecursionError, MemoryError, ValueError):
         raise FormulaError("cannot read the expression: it is nested too deeply") from None
-    names, points, links = set(), set(), set()
+    names, points, links, distances = set(), set(), set(), set()
     try:
-        _check(tree, names, points, links)
+        _check(tree, names, points, links, distances)
     except RecursionError:
         raise FormulaError("cannot read the expression: it is nested too deeply") from None
-    return tree, frozenset(names - set(CONSTANTS)), frozenset(points), frozenset(links)
+    return (tree, frozenset(names - set(CONSTANTS)), frozenset(points), frozenset(links),
+            frozenset(distances))
 
 
 @dataclass(frozen=True)
@@ -227,8 +240,13 @@ class Formula:
 
     @property
     def links(self) -> frozenset:
-        """Links named by ``phi``, ``dphi``."""
+        """Links named by ``phi``, ``dphi``, ``ddphi``."""
         return self._parsed[3]
+
+    @property
+    def distances(self) -> frozenset:
+        """Named distances of ``dist``, ``ddist``."""
+        return self._parsed[4]
 
     def check(self, mechanism):
         """Refuse names, points and links that ``mechanism`` does not have.
@@ -252,6 +270,11 @@ class Formula:
             if l not in links:
                 raise FormulaError(f"unknown link {l!r} in {self.expr!r}: expected one of the "
                                    f"named links ({', '.join(links)})")
+        dists = [d.name for d in mechanism.distances]
+        for d in sorted(self.distances):
+            if d not in dists:
+                raise FormulaError(f"unknown distance {d!r} in {self.expr!r}: expected one of "
+                                   f"the named distances ({', '.join(dists) or 'none'})")
 
     def evaluate(self, kin) -> np.ndarray:
         """The formula over the positions (and designs) of ``kin`` [SI].
@@ -308,6 +331,12 @@ class Formula:
                 return kin.phi(_ref(node.args[0], "link"))
             if f == "dphi":
                 return kin.dphi(_ref(node.args[0], "link"))
+            if f == "ddphi":
+                return kin.ddphi(_ref(node.args[0], "link"))
+            if f == "dist":
+                return kin.length(_ref(node.args[0], "distance"))
+            if f == "ddist":
+                return kin.dlength(_ref(node.args[0], "distance"))
             return MATH_FUNCTIONS[f][0](*(walk(a) for a in node.args))
 
         # floating-point exceptions become errors (never silenced into NaN/inf)

@@ -239,3 +239,40 @@ def steering_lab4_modern(**params) -> Mechanism:
 def steering_lab4_modern_range() -> np.ndarray:
     """The positions of ``steering_lab4_modern.toml``: the rod's travel [m]."""
     return np.array(_model("steering_lab4_modern").range)
+
+
+def spout_lab5(**params) -> Mechanism:
+    """Silage-spout rotation mechanism of a forage harvester, seed
+    ``001_4447446e88a18ffc.txt`` lab 5 (bundled file ``spout_lab5.toml``): the
+    cylinder turns the arc lever 3 about 03; its arm 34 drives the arc lever 4 and the
+    spout's base radius 5 about the spout axis 05. Dimensions fitted to the lab's
+    table 5.1 by :func:`assur.fitting.fit_parameters`; in a horizontal plane (no
+    gravity), with an illustrative rod motion and spout inertia."""
+    return _mechanism("spout_lab5", params)
+
+
+def spout_lab5_range() -> np.ndarray:
+    """S = 0.35 … 0.51 m by 0.01 m [m] (table 5.1 prints every other one)."""
+    return _model("spout_lab5").range
+
+
+def conditioner_lab2(**params) -> Mechanism:
+    """Pressing device of a mower-conditioner's rollers, seed
+    ``001_4447446e88a18ffc.txt`` lab 2, the four-bar (bundled file
+    ``conditioner_lab2.toml``, illustrative): k springs pull the upper roller's rocker;
+    the coordinate Y is the distance between the rollers' centres
+    (:mod:`assur.conditioner`)."""
+    return _mechanism("conditioner_lab2", params)
+
+
+def conditioner_lab2_sixbar(**params) -> Mechanism:
+    """The same device as a six-bar (lab 2 fig. 2.2; ``conditioner_lab2_sixbar.toml``
+    extends ``conditioner_lab2.toml``): the springs act on a lever that drives the
+    rocker through a link; its lever geometry fitted (:mod:`assur.fitting`) so that
+    p_c stays at 20 kN/m over Y (illustrative)."""
+    return _mechanism("conditioner_lab2_sixbar", params)
+
+
+def conditioner_lab2_range() -> np.ndarray:
+    """Y = 205 … 240 mm by 5 mm [m]: gaps of 5 … 40 mm between rollers of 200 mm."""
+    return _model("conditioner_lab2").range

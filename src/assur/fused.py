@@ -92,6 +92,8 @@ class _Fused(ReactionContextBase):
         self.prog, self.t = prog, tracer
         self.literal_rows = literal_rows
         self.g = self.value(_G)
+        from .statics import gravity_unit
+        self.gravity_unit = gravity_unit(mech)
         self.moving = False
         self.k = len(mech.coordinates)
         self.vw = [0.0] * self.k

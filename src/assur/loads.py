@@ -3,7 +3,8 @@
 Sign conventions
 ----------------
 * Forces are vectors in the mechanism's x–y frame [N]; a *weight* ``P`` at a point
-  is the force ``(0, −P)``.
+  is the force ``P·u`` along the direction of gravity ``u`` — ``(0, −P)`` by default
+  (``[model] gravity``, :meth:`Mechanism.with_gravity`).
 * Moments are counter-clockwise positive [N·m].
 * A spring between points ``a`` and ``b`` pulls them together with its tension
   ``T = preload + rate·(|ab| − free_length)`` [N] (a negative T pushes them apart)::
@@ -20,8 +21,9 @@ a batch of designs).
 Each load applies itself through :meth:`apply` to a *load context* (the contract):
 ``value(ref)``, ``point(p)`` → (x, y), ``owner(p)``, ``force(link, point, fx, fy)``,
 ``couple(link, M)``, ``nonzero(L, what)``, ``spring(load, T, L)``, ``g`` [m/s²],
-``rate(link, coordinate)`` → ∂φ_link/∂q (the link's angular-velocity analog along a
-coordinate, 0 for the frame), ``moving`` and, when moving, ``acceleration(point)`` →
+``gravity_unit`` (the direction of gravity, a unit vector ``(u_x, u_y)``, default
+``(0, −1)``: :func:`assur.statics.gravity_unit`), ``rate(link, coordinate)`` →
+∂φ_link/∂q (the link's angular-velocity analog along a coordinate, 0 for the frame), ``moving`` and, when moving, ``acceleration(point)`` →
 (a_x, a_y) and ``angular_acceleration(link)`` → ε. Each load type also declares its
 model-file ``type_name``, the ``quantities`` and ``flags`` of its value fields and the
 fields that name points (``point_fields``) and links (``link_fields``), and may check
@@ -45,6 +47,13 @@ __all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass"
 Ref = Union[str, float, int]
 
 
+def _along_gravity(c, P):
+    """The force of magnitude P along the context's direction of gravity: (fx, fy),
+    an exact zero for a zero component (so the default weight is (0, −P))."""
+    ux, uy = c.gravity_unit
+    return (0.0 if ux == 0 else P * ux), (0.0 if uy == 0 else P * uy)
+
+
 @dataclass(frozen=True)
 class Weight:
     """Weight ``P`` [N] acting downward at ``point``, carried by ``link`` (by default
@@ -65,7 +74,8 @@ class Weight:
     link_fields: ClassVar = ("link",)
 
     def apply(self, c):
-        c.force(self.link or c.owner(self.point), self.point, 0.0, -c.value(self.P))
+        P = c.value(self.P)
+        c.force(self.link or c.owner(self.point), self.point, *_along_gravity(c, P))
 
 
 @dataclass(frozen=True)
@@ -164,10 +174,12 @@ class ResistingMoment:
 
 @dataclass(frozen=True)
 class Spring:
-    """Linear spring between points ``a`` and ``b`` (links ``links`` or the owners).
+    """Linear spring(s) between points ``a`` and ``b`` (links ``links`` or the owners).
 
-    Tension ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate`` [N/m],
-    ``free_length`` [m], ``preload`` [N].
+    Tension of one spring ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate``
+    [N/m], ``free_length`` [m], ``preload`` [N]. ``count`` identical springs act in
+    parallel (seed 001 lab 2 eq. 4: k springs): the points are pulled together by
+    ``count·T``.
     """
 
     name: str
@@ -177,24 +189,37 @@ class Spring:
     free_length: Ref
     preload: Ref = 0.0
     links: tuple[str, str] | None = None
+    count: Ref = 1
 
     type_name: ClassVar = "spring"
-    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force"}
-    flags: ClassVar = {"rate": "nonneg", "free_length": "nonneg"}
+    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force",
+                            "count": "number"}
+    flags: ClassVar = {"rate": "nonneg", "free_length": "nonneg", "count": "count"}
     point_fields: ClassVar = ("a", "b")
     link_fields: ClassVar = ("links",)
+
+    def tension(self, c, L):
+        """Tension of one spring [N] at the length ``L`` [m] (context values)."""
+        return c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
 
     def apply(self, c):
         (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
         dx, dy = bx - ax, by - ay
         L = np.hypot(dx, dy)
         c.nonzero(L, f"spring {self.name!r}: its ends {self.a!r} and {self.b!r} coincide")
-        T = c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
+        T = self.tension(c, L)
+        n = c.value(self.count)
+        F = T if is_one(n) else n * T
         ux, uy = dx / L, dy / L
         la, lb = self.links or (c.owner(self.a), c.owner(self.b))
-        c.force(la, self.a, T * ux, T * uy)
-        c.force(lb, self.b, -T * ux, -T * uy)
+        c.force(la, self.a, F * ux, F * uy)
+        c.force(lb, self.b, -F * ux, -F * uy)
         c.spring(self, T, L)
+
+
+def is_one(v) -> bool:
+    """True for the plain number 1 (a count that changes nothing)."""
+    return isinstance(v, (int, float, np.floating, np.integer)) and float(v) == 1.0
 
 
 @dataclass(frozen=True)
@@ -216,7 +241,7 @@ class Mass:
 
     def apply(self, c):
         m = c.value(self.m)
-        c.force(self.link, self.point, 0.0, -m * c.g)
+        c.force(self.link, self.point, *_along_gravity(c, m * c.g))
         if c.moving:
             acc_x, acc_y = c.acceleration(self.point)
             c.force(self.link, self.point, -m * acc_x, -m * acc_y)

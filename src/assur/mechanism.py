@@ -87,7 +87,7 @@ class Mechanism:
                  distances: Iterable[Distance] = (), tables: Mapping | None = None,
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
                  machine=None, gravity: float | None = None, units: Mapping | None = None,
-                 motions: Iterable = (),
+                 motions: Iterable = (), gravity_direction: float | None = None,
                  _params_checked: bool = False):
         self.name = name
         self.title = title or name
@@ -115,6 +115,9 @@ class Mechanism:
         #: acceleration of gravity for the masses' weights [m/s²] (None: the default
         #: :data:`assur.statics.GRAVITY`)
         self.gravity = gravity
+        #: direction of gravity from +x [rad] (None: straight down, −π/2); see
+        #: :func:`assur.statics.gravity_unit`
+        self.gravity_direction = gravity_direction
         #: direction of rotation and speed of crank coordinates (:class:`assur.motion.Motion`)
         self.motions = tuple(motions)
         #: programs and prepared tables of this (immutable) mechanism
@@ -126,7 +129,7 @@ class Mechanism:
     # ---- building (each returns a new mechanism) -------------------------------
     #: attributes a copy may change without validating the structure again
     _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity", "units",
-                            "motions"})
+                            "motions", "gravity_direction"})
 
     def _with(self, **kw):
         if kw and set(kw) <= self._DATA_ONLY and ("params" not in kw
@@ -143,7 +146,7 @@ class Mechanism:
             if "params" in kw:
                 new._check_params({n: v for n, v in kw["params"].items()
                                    if v is not self.params[n]})
-            if "gravity" in kw:
+            if "gravity" in kw or "gravity_direction" in kw:
                 new._check_gravity()
             if "motions" in kw:
                 new._check_motions()
@@ -153,6 +156,7 @@ class Mechanism:
                  distances=self.distances, tables=self.tables, notes=self.notes,
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
                  gravity=self.gravity, units=self.units, motions=self.motions,
+                 gravity_direction=self.gravity_direction,
                  _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)
@@ -241,13 +245,15 @@ class Mechanism:
         from .loads import Couple
         return self._with(loads=self.loads + (Couple(link, M, name),))
 
-    def spring(self, name, a, b, rate, free_length, preload=0.0, links=None) -> "Mechanism":
-        """Add a spring between points ``a`` and ``b`` (rate [N/m], free length [m],
-        preload [N]); tension pulls the points together."""
+    def spring(self, name, a, b, rate, free_length, preload=0.0, links=None,
+               count=1) -> "Mechanism":
+        """Add ``count`` identical springs between points ``a`` and ``b`` (rate [N/m],
+        free length [m], preload [N] of one spring); tension pulls the points
+        together."""
         from .loads import Spring
         links = tuple(links) if links else None
         return self._with(loads=self.loads + (Spring(name, a, b, rate, free_length, preload,
-                                                     links),))
+                                                     links, count),))
 
     def mass(self, link, m, point, J=0.0) -> "Mechanism":
         """Give ``link`` a mass ``m`` [kg] at ``point`` and inertia ``J`` [kg·m²]."""
@@ -275,10 +281,11 @@ class Mechanism:
         from .stability import Carrying
         return self._with(machine=Carrying(machine, point, weight, refs))
 
-    def with_loads(self, loads) -> "Mechanism":
-        """The same mechanism with ``loads`` (:mod:`assur.loads` objects) in place of
-        its own, e.g. a subset of them (the dead loads of a capacity,
-        :func:`assur.capacity.dead_load_mechanism`)."""
+    def with_loads(self, loads=()) -> "Mechanism":
+        """The same mechanism with ``loads`` (:mod:`assur.loads` objects; none by
+        default) in place of its own, e.g. a subset of them (the dead loads of a
+        capacity, :func:`assur.capacity.dead_load_mechanism`; one load at a time, to
+        see what each asks of the actuators)."""
         return self._with(loads=tuple(loads))
 
     def with_params(self, **values) -> "Mechanism":
@@ -291,14 +298,27 @@ class Mechanism:
         p.update(values)
         return self._with(params=p)
 
-    def with_loads(self, loads=()) -> "Mechanism":
-        """The same mechanism with only ``loads`` (:mod:`assur.loads` objects; none by
-        default): e.g. one load at a time, to see what each asks of the actuators."""
-        return self._with(loads=tuple(loads))
+    def with_gravity(self, g, direction=None) -> "Mechanism":
+        """Return a copy whose masses weigh m·g along ``direction``.
 
-    def with_gravity(self, g) -> "Mechanism":
-        """Return a copy whose masses weigh m·g, g [m/s²]."""
-        return self._with(gravity=float(g))
+        Parameters
+        ----------
+        g : float or "none"
+            The acceleration of gravity [m/s²] ≥ 0; ``"none"`` (or 0) for a mechanism
+            drawn in a horizontal plane (seed 001 lab 5's spout, lab 4's steering):
+            its masses then have inertia but no weight, and a ``weight`` load is
+            refused.
+        direction : float, optional
+            Direction of gravity from +x, counter-clockwise [rad]; default −π/2
+            (straight down, −y). Weights (``weight`` loads, masses) act along it.
+        """
+        if isinstance(g, str):
+            if g != "none":
+                raise ModelError(f"mechanism {self.name!r}: gravity must be a number [m/s²] "
+                                 f"or \"none\", got {g!r}")
+            g = 0.0
+        return self._with(gravity=float(g),
+                          gravity_direction=None if direction is None else float(direction))
 
     def with_units(self, **units) -> "Mechanism":
         """Return a copy that shows parameters in the given units
@@ -306,14 +326,24 @@ class Mechanism:
         u = dict(self.units)
         u.update(units)
         return self._with(units=u)
-    def with_motion(self, coordinate, direction="ccw", speed=None, *, t=(), omega=(),
-                    start=None) -> "Mechanism":
+    def with_motion(self, coordinate, direction=None, speed=None, *, t=(), omega=(),
+                    start=None, law_t=(), law_q=()) -> "Mechanism":
         """Return a copy whose crank coordinate ``coordinate`` turns in ``direction``
         (``"ccw"``/+1, ``"cw"``/−1) at a constant ``speed`` |ω| [rad/s], or at a given
         |ω(t)|: ``t`` [s], ``omega`` [rad/s] (see :class:`assur.motion.Motion`);
-        replaces an earlier motion of that coordinate."""
+        replaces an earlier motion of that coordinate. For a length coordinate (a
+        cylinder's rod) ``direction`` is ``"extend"``/+1 or ``"retract"``/−1, ``speed``
+        |Ṡ| [m/s] and ``omega`` the table |Ṡ(t)| [m/s]; or a law of motion q(t) at the
+        times ``law_t`` [s], ``law_q`` [m or rad]; :func:`assur.analysis.analyze` then
+        includes the inertia loads of a rod's motion. ``direction`` defaults to
+        counter-clockwise / extending, or the law's."""
         from .motion import Motion
-        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start)
+        if coordinate not in self.coordinates:
+            raise ModelError(f"mechanism {self.name!r}: a motion is given for {coordinate!r}, "
+                             f"which is not a generalized coordinate {list(self.coordinates)}")
+        kind = "angle" if self.coordinate_kind(coordinate) == "angle" else "length"
+        mo = Motion(coordinate, direction, speed, tuple(t), tuple(omega), start, kind,
+                    tuple(law_t), tuple(law_q))
         return self._with(motions=tuple(x for x in self.motions if x.coordinate != coordinate)
                           + (mo,))
 
@@ -339,10 +369,9 @@ class Mechanism:
                 raise ModelError(f"mechanism {self.name!r}: a motion is given for "
                                  f"{mo.coordinate!r}, which is not a generalized coordinate "
                                  f"{list(self.coordinates)}")
-            if self.coordinate_kind(mo.coordinate) != "angle":
+            if (self.coordinate_kind(mo.coordinate) == "angle") != (mo.kind == "angle"):
                 raise ModelError(f"mechanism {self.name!r}: the motion of {mo.coordinate!r} "
-                                 f"(a direction of rotation and a speed) needs a crank angle; "
-                                 f"{mo.coordinate!r} is a "
+                                 f"is for a {mo.kind} coordinate; {mo.coordinate!r} is a "
                                  f"{self.coordinate_kind(mo.coordinate)} coordinate")
             if mo.coordinate in seen:
                 raise ModelError(f"mechanism {self.name!r}: two motions of {mo.coordinate!r}")
@@ -455,10 +484,21 @@ class Mechanism:
                                  f"number or a 1-D array over designs, got {v!r}")
 
     def _check_gravity(self):
+        from .loads import Weight
         g = self.gravity
-        if g is not None and not (math.isfinite(float(g)) and float(g) > 0):
-            raise ModelError(f"mechanism {self.name!r}: gravity must be a positive number "
-                             f"[m/s²], got {g!r}")
+        if g is not None and not (math.isfinite(float(g)) and float(g) >= 0):
+            raise ModelError(f"mechanism {self.name!r}: gravity must be a number ≥ 0 [m/s²] "
+                             f"(0: none), got {g!r}")
+        d = self.gravity_direction
+        if d is not None and not math.isfinite(float(d)):
+            raise ModelError(f"mechanism {self.name!r}: the direction of gravity must be a "
+                             f"finite angle, got {d!r}")
+        if g is not None and float(g) == 0:
+            w = [ld for ld in self.loads if isinstance(ld, Weight)]
+            if w:
+                raise ModelError(f"mechanism {self.name!r} has no gravity (a mechanism in a "
+                                 f"horizontal plane) but a weight load at point "
+                                 f"{w[0].point!r}: give the load as a force, or give gravity")
 
     def _validate_loads(self, known):
         from .loads import Cylinder, names_in

@@ -38,6 +38,15 @@ Speed
   and ``qdot = direction·ω(s)``, ``qddot = direction·a_i`` (at a sample, the slope of
   the interval that starts there; at the last sample, of the last interval).
   Positions outside the travel the table covers are refused (ModelError).
+* a law of motion q(t): samples ``law_t`` [s] (increasing) and ``law_q`` (the
+  coordinate, strictly monotonic: a rod's S(t), seed 001 lab 5 "закон движения
+  поршня"), interpolated by a cubic spline (C², not-a-knot,
+  :class:`scipy.interpolate.CubicSpline`), whose derivative must keep its sign on
+  the whole table (checked exactly, from the roots of the derivative). A position
+  q is reached at the time t(q) solving spline(t) = q (bisection on the knot
+  interval, to 1e-15 of the table's duration); ``qdot = spline'(t)``,
+  ``qddot = spline''(t)`` — exact for the interpolant. The direction follows the
+  table (q_N > q_0: +1).
 """
 
 from __future__ import annotations
@@ -49,10 +58,12 @@ import numpy as np
 
 from .errors import ModelError
 
-__all__ = ["Motion", "DIRECTIONS"]
+__all__ = ["Motion", "DIRECTIONS", "ROD_DIRECTIONS", "rod_rates"]
 
 #: the words of a direction of rotation and its sign
 DIRECTIONS = {"ccw": 1, "cw": -1}
+#: the words of a rod's direction of travel (a length coordinate) and its sign
+ROD_DIRECTIONS = {"extend": 1, "retract": -1}
 
 
 @dataclass(frozen=True)
@@ -63,9 +74,9 @@ class Motion:
     ----------
     coordinate : str
         The generalized coordinate (a crank angle) it drives.
-    direction : {+1, -1} or {"ccw", "cw"}
+    direction : {+1, -1} or {"ccw", "cw"} or {"extend", "retract"}, optional
         +1 (``"ccw"``, the default): counter-clockwise, the angle grows; −1
-        (``"cw"``): clockwise, as in the seeds.
+        (``"cw"``): clockwise, as in the seeds. With a law q(t), its own.
     speed : float, optional
         Constant |ω| [rad/s] (> 0).
     t : sequence of float, optional
@@ -75,6 +86,14 @@ class Motion:
     start : float, optional
         The coordinate at ``t[0]`` (or at t = 0 for a constant speed) [rad];
         default: the first position passed to :meth:`rates`.
+    law_t, law_q : sequence of float, optional
+        A law of motion q(t): times [s] and positions [m or rad] (module notes);
+        then no speed, table or start, and the direction follows the law.
+    kind : {"angle", "length"}
+        The coordinate's kind: a crank angle (speeds in rad/s), or a length — a
+        cylinder's rod (issue 10): direction ``"extend"`` (+1, S grows) or
+        ``"retract"`` (−1), speed |Ṡ| [m/s], a table of |Ṡ(t)| [m/s] in ``omega``,
+        ``start`` [m]; the same formulas hold with s the rod's travel [m].
 
     Examples
     --------
@@ -86,19 +105,30 @@ class Motion:
     """
 
     coordinate: str
-    direction: int = 1
+    direction: int | str | None = None
     speed: float | None = None
     t: tuple = ()
     omega: tuple = ()
     start: float | None = None
+    kind: str = "angle"
+    law_t: tuple = ()
+    law_q: tuple = ()
 
     def __post_init__(self):
+        self._check_law()
         d = self.direction
+        if d is None:
+            d = 1 if not self.law_q else int(np.sign(self.law_q[-1] - self.law_q[0]))
+            object.__setattr__(self, "direction", d)
+        if self.kind not in ("angle", "length"):
+            raise ModelError(f"motion of {self.coordinate!r}: kind must be one of: "
+                             f"['angle', 'length']; got {self.kind!r}")
+        words = DIRECTIONS if self.kind == "angle" else ROD_DIRECTIONS
         if isinstance(d, str):
-            if d not in DIRECTIONS:
-                raise ModelError(f"motion of {self.coordinate!r}: direction must be one of: "
-                                 f"{list(DIRECTIONS)}; got {d!r}")
-            object.__setattr__(self, "direction", DIRECTIONS[d])
+            if d not in words:
+                raise ModelError(f"motion of {self.coordinate!r} (a {self.kind} coordinate): "
+                                 f"direction must be one of: {list(words)}; got {d!r}")
+            object.__setattr__(self, "direction", words[d])
         elif d not in (1, -1) or isinstance(d, bool):
             raise ModelError(f"motion of {self.coordinate!r}: direction must be +1 (ccw) or "
                              f"-1 (cw), got {d!r}")
@@ -130,19 +160,87 @@ class Motion:
                 raise ModelError(f"{where}: omega is the speed |ω| along the direction of "
                                  f"rotation and must be > 0 (the crank must keep turning); "
                                  f"omega[{k}] = {w[k]:.6g} rad/s")
+        if self.law_q:
+            sign = int(np.sign(self.law_q[-1] - self.law_q[0]))
+            if self.direction != sign:
+                raise ModelError(f"{where}: the law q(t) goes {'up' if sign > 0 else 'down'} "
+                                 f"from {self.law_q[0]:.6g} to {self.law_q[-1]:.6g}, against "
+                                 f"the direction {self.direction_name}")
         if self.start is not None and not math.isfinite(float(self.start)):
             raise ModelError(f"{where}: start must be a finite angle, got {self.start!r}")
 
     # ---- description -------------------------------------------------------------
     @property
     def direction_name(self) -> str:
-        """``"ccw"`` or ``"cw"``."""
+        """``"ccw"`` or ``"cw"`` (a crank); ``"extend"`` or ``"retract"`` (a rod)."""
+        if self.kind == "length":
+            return "extend" if self.direction > 0 else "retract"
         return "ccw" if self.direction > 0 else "cw"
 
     @property
     def has_speed(self) -> bool:
-        """True if a speed (constant or ω(t)) is given, not only a direction."""
-        return self.speed is not None or bool(self.t)
+        """True if a speed (constant, ω(t)) or a law q(t) is given, not only a
+        direction."""
+        return self.speed is not None or bool(self.t) or bool(self.law_t)
+
+    # ---- a law of motion q(t) ----------------------------------------------------
+    def _check_law(self):
+        where = f"motion of {self.coordinate!r}"
+        object.__setattr__(self, "law_t", tuple(float(x) for x in self.law_t))
+        object.__setattr__(self, "law_q", tuple(float(x) for x in self.law_q))
+        if not (self.law_t or self.law_q):
+            return
+        if self.speed is not None or self.t or self.omega or self.start is not None:
+            raise ModelError(f"{where}: a law q(t) gives the motion whole: give no speed, "
+                             f"speed table or start with it")
+        t, q = np.array(self.law_t), np.array(self.law_q)
+        if t.size != q.size or t.size < 2:
+            raise ModelError(f"{where}: the law q(t) needs as many t as q values, at least "
+                             f"two; got {t.size} and {q.size}")
+        if not (np.isfinite(t).all() and np.isfinite(q).all()):
+            raise ModelError(f"{where}: the law's t and q must be finite numbers")
+        if np.any(np.diff(t) <= 0):
+            k = int(np.flatnonzero(np.diff(t) <= 0)[0])
+            raise ModelError(f"{where}: the law's t must increase strictly; t[{k}] = "
+                             f"{t[k]:.6g} s, t[{k + 1}] = {t[k + 1]:.6g} s")
+        dq = np.diff(q)
+        if not (np.all(dq > 0) or np.all(dq < 0)):
+            raise ModelError(f"{where}: the law's q must be strictly monotonic (the "
+                             f"coordinate moves one way), got {list(self.law_q)}")
+        sp = self._spline()
+        roots = sp.derivative().roots(extrapolate=False)
+        eps = 1e-9 * (t[-1] - t[0])   # a rate of zero at an end (from rest) is fine
+        inner = roots[(roots > t[0] + eps) & (roots < t[-1] - eps)]
+        if inner.size:
+            raise ModelError(f"{where}: the cubic spline through the law q(t) turns back at "
+                             f"t = {inner[0]:.6g} s (its rate changes sign); give more or "
+                             f"smoother samples")
+
+    def _spline(self):
+        from scipy.interpolate import CubicSpline
+        return CubicSpline(np.array(self.law_t), np.array(self.law_q))
+
+    def _law_time(self, q):
+        """t(q) of the law, vectorized bisection on each position's knot interval."""
+        t, qs = np.array(self.law_t), np.array(self.law_q)
+        sp = self._spline()
+        d = self.direction
+        lo_q, hi_q = min(qs[0], qs[-1]), max(qs[0], qs[-1])
+        tol = 1e-12 * max(abs(hi_q - lo_q), 1e-300)
+        out = (q < lo_q - tol) | (q > hi_q + tol)
+        if np.any(out):
+            bad = q[out]
+            raise ModelError(f"motion of {self.coordinate!r}: the law q(t) covers "
+                             f"{qs[0]:.6g} … {qs[-1]:.6g}; {bad.size} position(s) lie outside "
+                             f"it (e.g. {float(bad.reshape(-1)[0]):.6g})")
+        qq = np.clip(q, lo_q, hi_q)
+        i = np.clip(np.searchsorted(d * qs, d * qq, side="right") - 1, 0, len(t) - 2)
+        a, b = t[i], t[i + 1]
+        for _ in range(64):   # halves the interval to below 1e-15 of the table's length
+            m = 0.5 * (a + b)
+            below = d * (sp(m) - qq) < 0
+            a, b = np.where(below, m, a), np.where(below, b, m)
+        return 0.5 * (a + b), sp
 
     # ---- rates -------------------------------------------------------------------
     def travel(self, q) -> np.ndarray:
@@ -183,6 +281,13 @@ class Motion:
         t, w, a, S = self._table()
         tol = 1e-12 * max(S[-1], 1.0)  # the ends of the travel, up to rounding
         out = (s < -tol) | (s > S[-1] + tol)
+        if np.any(out) and self.kind == "length":
+            bad = s[out]
+            raise ModelError(
+                f"motion of {self.coordinate!r}: the table v(t) moves the rod by "
+                f"{S[-1]:.6g} m from its start ({self.direction_name}); {bad.size} "
+                f"position(s) lie outside that travel (e.g. {float(bad.reshape(-1)[0]):.6g} m "
+                f"of travel)")
         if np.any(out):
             bad = s[out]
             raise ModelError(
@@ -204,6 +309,9 @@ class Motion:
             Without a speed, or for positions outside a table's travel.
         """
         q = np.asarray(q, dtype=float)
+        if self.law_t:
+            tq, sp = self._law_time(q)
+            return sp(tq, 1), sp(tq, 2)
         if not self.has_speed:
             raise ModelError(f"motion of {self.coordinate!r} gives only the direction "
                              f"({self.direction_name}): give a speed (a constant |ω| or a "
@@ -217,6 +325,8 @@ class Motion:
     def time(self, q) -> np.ndarray:
         """The time at which the crank reaches each position [s] (from ``start`` at
         t = 0 for a constant speed, at ``t[0]`` for a table), shape of ``q``."""
+        if self.law_t:
+            return self._law_time(np.asarray(q, dtype=float))[0]
         s = self.travel(q)
         if self.speed is not None:
             return s / self.speed
@@ -227,7 +337,22 @@ class Motion:
         return t[i] + 2.0 * (s - S[i]) / (w[i] + om)
 
     def describe(self) -> str:
-        """``"j1: cw, |ω| = 31.416 rad/s (300 rpm)"`` for reports and summaries."""
+        """``"j1: cw, |ω| = 31.416 rad/s (300 rpm)"`` for reports and summaries
+        (``"S: extend, |v| = 0.05 m/s"`` for a rod)."""
+        if self.law_t:
+            unit = "m" if self.kind == "length" else "rad"
+            return (f"{self.coordinate}: {self.direction_name}, law q(t) given at "
+                    f"{len(self.law_t)} times, {self.law_t[0]:.6g}…{self.law_t[-1]:.6g} s "
+                    f"({self.law_q[0]:.6g}…{self.law_q[-1]:.6g} {unit})")
+        if self.kind == "length":
+            if self.speed is not None:
+                sp = f", |v| = {self.speed:.6g} m/s"
+            elif self.t:
+                sp = (f", |v(t)| given at {len(self.t)} times, {self.t[0]:.6g}…{self.t[-1]:.6g} s "
+                      f"({min(self.omega):.6g}…{max(self.omega):.6g} m/s)")
+            else:
+                sp = ""
+            return f"{self.coordinate}: {self.direction_name}{sp}"
         if self.speed is not None:
             sp = f", |ω| = {self.speed:.6g} rad/s ({self.speed * 30 / math.pi:.6g} rpm)"
         elif self.t:
@@ -236,3 +361,33 @@ class Motion:
         else:
             sp = ""
         return f"{self.coordinate}: {self.direction_name}{sp}"
+
+
+def rod_rates(kin):
+    """Rates of the coordinates from the motions of the mechanism's rods (length
+    coordinates with a speed, ``[motion] S = { direction = "extend", speed = … }``).
+
+    Parameters
+    ----------
+    kin : Kinematics
+
+    Returns
+    -------
+    (qdot, qddot) or None
+        Arrays of the kinematics' shape (k = 1) or of shape (..., k) [m/s, m/s²]
+        (0 for the coordinates without such a motion); None when no rod has a
+        speed. Crank motions are left to :func:`assur.analysis.add_dynamics`.
+    """
+    mech = kin.mechanism
+    rods = [mo for mo in mech.motions if mo.kind == "length" and mo.has_speed]
+    if not rods:
+        return None
+    qd = np.zeros(kin.shape + (kin.k,))
+    qdd = np.zeros(kin.shape + (kin.k,))
+    for mo in rods:
+        j = kin.coordinates.index(mo.coordinate)
+        a, b = mo.rates(kin.q(mo.coordinate))
+        qd[..., j], qdd[..., j] = a, b
+    if kin.k == 1:
+        return qd[..., 0], qdd[..., 0]
+    return qd, qdd

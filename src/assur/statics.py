@@ -30,13 +30,46 @@ import numpy as np
 
 from .errors import ModelError
 
-__all__ = ["Statics", "GRAVITY", "applied_loads", "virtual_work_forces", "solve",
+__all__ = ["Statics", "GRAVITY", "gravity_unit", "applied_loads", "virtual_work_forces",
+           "spring_states", "solve",
            "ReactionContextBase", "ReactionContext"]
 
 #: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
 #: value engineering worksheets use (all the seeds do). A model may set its own
 #: (``[model] gravity = "9.80665 m/s^2"``), a call its own (``analyze(..., g=…)``).
 GRAVITY = 9.81
+
+
+def gravity_unit(mech) -> tuple[float, float]:
+    """The unit vector of gravity of a mechanism, ``(u_x, u_y)`` [-].
+
+    ``[model] gravity = { value = "9.81 m/s^2", direction = -90 }`` (the default
+    direction: straight down)::
+
+            y
+            ^
+            |        a weight m·g acts along u = (cos d, sin d);
+            +---> x  d = −90° (default): u = (0, −1)
+            |
+            v u
+
+    Components within 1e-15 of zero are zero, so that −90° gives exactly (0, −1)
+    and the default weights are those of ``(0, −m·g)``.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        Its :attr:`~assur.Mechanism.gravity_direction` [rad] (None: −π/2).
+
+    Returns
+    -------
+    tuple of float
+    """
+    d = getattr(mech, "gravity_direction", None)
+    if d is None:
+        return 0.0, -1.0
+    ux, uy = np.cos(float(d)), np.sin(float(d))
+    return (0.0 if abs(ux) < 1e-15 else float(ux)), (0.0 if abs(uy) < 1e-15 else float(uy))
 
 
 class Statics:
@@ -206,6 +239,7 @@ class _LoadCollector:
         self.mech = kin.mechanism
         self.value = _values(kin)
         self.g = g
+        self.gravity_unit = gravity_unit(kin.mechanism)
         self.moving = qd is not None
         self.qd, self.qdd = qd, qdd
         self.forces, self.couples, self.springs = [], [], []
@@ -272,6 +306,34 @@ def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
     for ld in kin.mechanism.loads:
         ld.apply(c)
     return c.forces, c.couples, c.springs
+
+
+def spring_states(kin):
+    """Length, tension and force of every spring of the mechanism over the positions.
+
+    Returns
+    -------
+    dict of str to (L, T, F)
+        By spring name: its length |ab| [m], the tension of one spring
+        ``T = preload + rate·(L − free_length)`` [N], and the force of all ``count``
+        springs, ``F = count·T`` [N]; arrays of the kinematics' shape (a parameter
+        over designs broadcasts).
+    """
+    from .loads import Spring
+
+    c = _LoadCollector(kin, 0.0)
+    out = {}
+    for ld in kin.mechanism.loads:
+        if not isinstance(ld, Spring):
+            continue
+        (ax, ay), (bx, by) = c.point(ld.a), c.point(ld.b)
+        L = np.hypot(bx - ax, by - ay)
+        T = ld.tension(c, L)
+        shape = (kin.m, kin.n)
+        L, T = np.broadcast_to(L, shape), np.broadcast_to(T, shape)
+        out[ld.name] = (kin.reshape(L), kin.reshape(T),
+                        kin.reshape(np.broadcast_to(c.value(ld.count) * T, shape)))
+    return out
 
 
 def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):

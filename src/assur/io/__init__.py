@@ -51,7 +51,8 @@ from ._schema import schema_table
 
 ModelFileError.__module__ = __name__  # shown as assur.io.ModelFileError
 
-__all__ = ["Model", "ModelFileError", "load", "loads", "bundled", "key_path", "schema_table"]
+__all__ = ["Model", "ModelFileError", "load", "loads", "bundled", "key_path", "schema_table",
+           "read_targets"]
 
 
 @dataclass(frozen=True)
@@ -390,3 +391,10 @@ def bundled(name: str) -> Path:
         hint = f'; did you mean "{close[0]}"?' if close else ""
         raise ValueError(f"no bundled model {name!r}{hint} (bundled: {', '.join(names)})")
     return Path(str(resources.files("assur.models") / f"{stem}.toml"))
+
+
+def read_targets(path, mechanism):
+    """A printed table (CSV, ``quantity [unit]`` headers) as targets of
+    :func:`assur.fitting.fit_parameters`; see :mod:`assur.io._fit_table`."""
+    from ._fit_table import read_targets as read
+    return read(path, mechanism)

@@ -33,12 +33,13 @@ from ..inputs import bytes_per_position, check_memory, span_problem
 from ..loads import LOAD_TYPES, Cylinder
 from ..mechanism import Mechanism
 from ..stability import Machine
+from ..statics import GRAVITY
 from ..texts import text
 from . import _schema as S
 from ._errors import ModelFileError, key_path
 from ._lines import line_of
 from ._units import ACCELERATION, ANGLE, ANGULAR_VELOCITY, FORCE, KINDS, LENGTH, NUMBER, TIME, \
-    UnitError, display_unit, is_name, parse, to_si, unit_kind
+    VELOCITY, UnitError, display_unit, is_name, parse, to_si, unit_kind
 
 # constraints on values beyond their kind: (test, words)
 _FLAGS = {
@@ -310,7 +311,15 @@ class Builder:
                                        f"cannot refer to another")
             self.params_raw[name] = p
         if self._uses_gravity:
-            self.value(("model", "gravity"), sp.model.gravity, ACCELERATION, "positive")
+            gv = sp.model.gravity
+            if isinstance(gv, dict):
+                if "value" in gv:
+                    self.value(("model", "gravity", "value"), gv["value"], ACCELERATION,
+                               "positive")
+                if "direction" in gv:
+                    self.value(("model", "gravity", "direction"), gv["direction"], ANGLE)
+            elif gv != "none":
+                self.value(("model", "gravity"), gv, ACCELERATION, "positive")
         # the kind of each coordinate, from the input groups that it drives
         for i, g in enumerate(self.groups):
             for f in _fields(g, "coordinate"):
@@ -396,41 +405,69 @@ class Builder:
             self.value(("solve", i, "equals"), s.equals, quantities[s.quantity])
 
     def motion_uses(self):
-        """``[motion]``: one entry per crank coordinate — direction, speed (a value or a
-        table ω(t)), start (an angle)."""
+        """``[motion]``: one entry per coordinate — direction, speed (a value or a
+        table in time), start. A crank angle: ``"ccw"``/``"cw"``, an angular velocity;
+        a length (a cylinder's rod): ``"extend"``/``"retract"``, a velocity."""
         for c, ms in self.spec.motion.items():
             mp = ("motion", c)
             if c not in self.coords:
                 raise self.error(mp, f'unknown coordinate "{c}": expected one of the '
                                      f'coordinates ({", ".join(self.coords)})'
                                      f"{S.did_you_mean(c, self.coords)}")
-            if self.kind_of_coordinate(c) is not ANGLE:
-                raise self.error(mp, f'the coordinate "{c}" is not a crank angle (it is '
-                                     f"{self.kind_of_coordinate(c).article}): a direction of "
-                                     f"rotation and a speed belong to a crank's coordinate")
+            kind = self.kind_of_coordinate(c)
+            crank = kind is ANGLE
+            words = ("ccw", "cw") if crank else ("extend", "retract")
+            if ms.direction is not None and ms.direction not in words:
+                raise self.error(mp + ("direction",),
+                                 f'expected "{words[0]}" or "{words[1]}" for '
+                                 f'{"a crank angle" if crank else "a length"} coordinate, '
+                                 f'found "{ms.direction}"')
+            speed_kind = ANGULAR_VELOCITY if crank else VELOCITY
             if isinstance(ms.speed, dict):
+                w = "omega" if "omega" in ms.speed else "v"
+                if w != ("omega" if crank else "v"):
+                    raise self.error(mp + ("speed", w),
+                                     f'a speed table of {"a crank" if crank else "a rod"} '
+                                     f'gives {"omega" if crank else "v"} = [...], found {w}')
                 for k, v in enumerate(ms.speed["t"]):
                     self.value(mp + ("speed", "t", k), v, TIME)
-                for k, v in enumerate(ms.speed["omega"]):
-                    self.value(mp + ("speed", "omega", k), v, ANGULAR_VELOCITY, "positive")
+                for k, v in enumerate(ms.speed[w]):
+                    self.value(mp + ("speed", w, k), v, speed_kind, "positive")
             elif ms.speed is not None:
-                self.value(mp + ("speed",), ms.speed, ANGULAR_VELOCITY, "positive")
+                self.value(mp + ("speed",), ms.speed, speed_kind, "positive")
             if ms.start is not None:
-                self.value(mp + ("start",), ms.start, ANGLE)
+                self.value(mp + ("start",), ms.start, kind)
+            if ms.law is not None:
+                if ms.speed is not None or ms.start is not None:
+                    raise self.error(mp + ("law",), "a law of motion gives the motion whole: "
+                                                    "give no speed or start with it")
+                for k, v in enumerate(ms.law["t"]):
+                    self.value(mp + ("law", "t", k), v, TIME)
+                for k, v in enumerate(ms.law["q"]):
+                    self.value(mp + ("law", "q", k), v, kind)
 
     def motions(self, mech):
         for c, ms in self.spec.motion.items():
             mp = ("motion", c)
             kw = {}
             if isinstance(ms.speed, dict):
+                w = "omega" if "omega" in ms.speed else "v"
                 kw["t"] = [self.number(mp + ("speed", "t", k)) for k in range(len(ms.speed["t"]))]
-                kw["omega"] = [self.number(mp + ("speed", "omega", k))
-                               for k in range(len(ms.speed["omega"]))]
+                kw["omega"] = [self.number(mp + ("speed", w, k))
+                               for k in range(len(ms.speed[w]))]
             elif ms.speed is not None:
                 kw["speed"] = self.number(mp + ("speed",))
             if ms.start is not None:
                 kw["start"] = self.number(mp + ("start",))
-            mech = self.guarded(mp, lambda: mech.with_motion(c, ms.direction, **kw))
+            if ms.law is not None:
+                kw["law_t"] = [self.number(mp + ("law", "t", k))
+                               for k in range(len(ms.law["t"]))]
+                kw["law_q"] = [self.number(mp + ("law", "q", k))
+                               for k in range(len(ms.law["q"]))]
+            direction = ms.direction or (None if ms.law is not None else
+                                         "ccw" if self.kind_of_coordinate(c) is ANGLE
+                                         else "extend")
+            mech = self.guarded(mp, lambda: mech.with_motion(c, direction, **kw))
         return mech
 
     # ---- pass 2: parameters ---------------------------------------------------------------
@@ -630,8 +667,15 @@ class Builder:
             mech = self.extra_columns(mech)
         mech = self.motions(mech)
         if self._uses_gravity:
-            g = self.number(("model", "gravity"))
-            mech = self.guarded(("model", "gravity"), lambda: mech.with_gravity(g))
+            gv, gp = self.spec.model.gravity, ("model", "gravity")
+            if gv == "none":
+                g, d = "none", None
+            elif isinstance(gv, dict):
+                g = self.number(gp + ("value",)) if "value" in gv else GRAVITY
+                d = self.number(gp + ("direction",)) if "direction" in gv else None
+            else:
+                g, d = self.number(gp), None
+            mech = self.guarded(gp, lambda: mech.with_gravity(g, d))
         return mech
 
     def terms(self, path, v, kind):
@@ -725,7 +769,7 @@ class Builder:
             out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
         if t.symbols is not None:
             out["symbols"] = dict(t.symbols)
-        for key in ("angles", "analogs"):
+        for key in ("angles", "analogs", "second_order"):
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
         if t.dead_loads is not None:  # links whose loads every capacity carries

@@ -18,8 +18,8 @@ import difflib
 import typing
 from typing import Annotated, Any, Optional
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StrictInt, StrictStr, \
-    ValidationError, create_model, model_validator
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, StrictBool, StrictInt, \
+    StrictStr, ValidationError, create_model, model_validator
 from pydantic_core import PydanticCustomError
 
 
@@ -152,12 +152,26 @@ class _Table(BaseModel):
 
 
 # ---- [model], [range] ---------------------------------------------------------------
+def _gravity(v):
+    """``[model] gravity``: a value, ``"none"``, or ``{ value, direction }``."""
+    if v == "none":
+        return v
+    if isinstance(v, dict):
+        extra = sorted(set(v) - {"value", "direction"})
+        if extra or not v:
+            raise PydanticCustomError(
+                "gravity", 'expected { value = "9.81 m/s^2", direction = -90 } (keys value, '
+                           'direction), found the key(s) {keys}', {"keys": ", ".join(extra)})
+        return {k: _value(x) for k, x in v.items()}
+    return _value(v)
+
+
 class ModelSection(_Table):
     name: Name
     title: Optional[Text] = None
     coordinates: Annotated[list[Name], Field(min_length=1)]
     notes: list[Text] = []
-    gravity: Value = None
+    gravity: Annotated[Any, AfterValidator(_gravity)] = None
 
 
 class RangeSpec(_Table):
@@ -188,28 +202,53 @@ class RangeSpec(_Table):
 
 
 def _speed(v):
-    """A crank speed: a value (``"300 rpm"``), or a table ``{ t = [...], omega = [...] }``."""
+    """A speed: a value (``"300 rpm"``, ``"0.05 m/s"``), or a table in time
+    ``{ t = [...], omega = [...] }`` (a crank) or ``{ t = [...], v = [...] }`` (a rod)."""
     if isinstance(v, dict):
-        unknown = [k for k in v if k not in ("t", "omega")]
+        unknown = [k for k in v if k not in ("t", "omega", "v")]
         if unknown:
-            raise PydanticCustomError("speed", 'unknown key "{k}" in a speed table ω(t) '
-                                               "(allowed: t, omega)", {"k": unknown[0]})
-        for k in ("t", "omega"):
+            raise PydanticCustomError("speed", 'unknown key "{k}" in a speed table '
+                                               "(allowed: t, and omega for a crank or v for a "
+                                               "rod)", {"k": unknown[0]})
+        keys = [k for k in ("omega", "v") if k in v]
+        if len(keys) != 1:
+            raise PydanticCustomError("speed", "a speed table needs t = [...] and one of "
+                                               "omega = [...] (a crank) or v = [...] (a rod)")
+        w = keys[0]
+        for k in ("t", w):
             if not isinstance(v.get(k), list) or len(v[k]) < 2:
                 raise PydanticCustomError("speed", "a speed table needs t = [...] and "
-                                                   "omega = [...], at least two values each")
-        if len(v["t"]) != len(v["omega"]):
-            raise PydanticCustomError("speed", "t and omega need as many values ({a} and {b})",
-                                      {"a": len(v["t"]), "b": len(v["omega"])})
-        return {"t": [_value(x) for x in v["t"]], "omega": [_value(x) for x in v["omega"]]}
+                                                   "{w} = [...], at least two values each",
+                                          {"w": w})
+        if len(v["t"]) != len(v[w]):
+            raise PydanticCustomError("speed", "t and {w} need as many values ({a} and {b})",
+                                      {"w": w, "a": len(v["t"]), "b": len(v[w])})
+        return {"t": [_value(x) for x in v["t"]], w: [_value(x) for x in v[w]]}
     return _value(v)
 
 
+def _law(v):
+    """A law of motion ``{ t = [...], q = [...] }`` (:mod:`assur.motion`)."""
+    if not isinstance(v, dict) or set(v) != {"t", "q"}:
+        raise PydanticCustomError("law", "expected a law of motion { t = [...], q = [...] }: "
+                                         "times and the coordinate's values")
+    for k in ("t", "q"):
+        if not isinstance(v[k], list) or len(v[k]) < 2:
+            raise PydanticCustomError("law", "a law of motion needs t = [...] and q = [...], "
+                                             "at least two values each")
+    if len(v["t"]) != len(v["q"]):
+        raise PydanticCustomError("law", "t and q need as many values ({a} and {b})",
+                                  {"a": len(v["t"]), "b": len(v["q"])})
+    return {k: [_value(x) for x in v[k]] for k in ("t", "q")}
+
+
 class MotionSpec(_Table):
-    """``[motion]`` of one crank coordinate: direction and speed (:mod:`assur.motion`)."""
-    direction: typing.Literal["ccw", "cw"] = "ccw"
+    """``[motion]`` of one coordinate: direction and speed, or a law of motion q(t)
+    (:mod:`assur.motion`)."""
+    direction: typing.Literal["ccw", "cw", "extend", "retract"] = None
     speed: Annotated[Any, AfterValidator(_speed)] = None
     start: Value = None
+    law: Annotated[Any, AfterValidator(_law)] = None
 
 
 # ---- [[groups]] ---------------------------------------------------------------------
@@ -362,6 +401,7 @@ class SpringSpec(_Load):
     free_length: Value
     preload: Value = 0.0
     links: Optional[tuple[Name, Name]] = None
+    count: Value = 1
 
 
 class MassSpec(_Load):
@@ -456,6 +496,8 @@ class TablesSpec(_Table):
     analogs: typing.Literal["coordinate", "rotation"] = None
     #: links whose loads every lift capacity carries (seed 001 lab 1 eq. 14: the boom)
     dead_loads: list[Name] = None
+    #: second-order analogs (ddphi, dd<distance>, dU) in table 3.1
+    second_order: StrictBool = None
 
 
 class SolveSpec(_Table):

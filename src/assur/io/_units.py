@@ -59,6 +59,9 @@ ANGULAR_VELOCITY = Kind("angular velocity", "an angular velocity", "rad/s", '"30
 TIME = Kind("time", "a time", "s", '"0.5 s"')
 KINDS[ANGULAR_VELOCITY.name] = ANGULAR_VELOCITY
 KINDS[TIME.name] = TIME
+#: the speed of a cylinder's rod ([motion] of a length coordinate)
+VELOCITY = Kind("velocity", "a velocity", "m/s", '"0.05 m/s"')
+KINDS[VELOCITY.name] = VELOCITY
 
 
 @lru_cache(maxsize=1)

@@ -475,12 +475,38 @@ def _table_3_1(v):
             cols.append(Column(f"d{dist.name}{sfx}", "m/rad" if v.is_angle(c) else "-",
                                sign * v.pick(kin.dlength(dist.name, w)),
                                _both("c_ddist", dist.name, c)))
+    cols += _second_order_columns(v)
     for c in v.coords:
         note = v.absent_note(c, *still[c])
         if note:
             notes.append(note)
     notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
+
+
+def _second_order_columns(v):
+    """Second-order analogs, when the model asks (``[tables] second_order = true``):
+    ``ddphi<l>`` = d²φ_l/dq² of every link, ``dd<d>`` of every named distance and
+    ``dU<i><j>`` = dU_ij/dq of every tabulated ratio (with k > 1 coordinates, the
+    diagonal ∂²/∂q_c² with the suffix ``_<c>``)."""
+    if not v.mech.tables.get("second_order"):
+        return []
+    kin, cols = v.kin, []
+    for sfx, w, c in v.wrts():
+        # along the rotation the sign squares away: d²φ/ds² = d²φ/dφ1²
+        for link in kin.links:
+            cols.append(Column(f"ddphi{link}{sfx}", "-" if v.is_angle(c) else "rad/m²",
+                               v.pick(kin.ddphi(link, w)), _both("c_ddphi", link, c)))
+        for dist in v.mech.distances:
+            cols.append(Column(f"dd{dist.name}{sfx}", "m/rad²" if v.is_angle(c) else "1/m",
+                               v.pick(kin.ddlength(dist.name, w)),
+                               _both("c_dddist", dist.name, c)))
+        sign = v.rate_sign(c)
+        for i, j in v.mech.tables.get("ratios", ()):
+            vals = v.pick(kin.dratio(i, j, w, singular="mask"))
+            cols.append(Column(f"dU{i}{j}{sfx}", "-" if v.is_angle(c) else "1/m",
+                               sign * vals, _both("c_dU", i, j, c)))
+    return cols
 
 
 def _capacity(v, res, point):
@@ -627,8 +653,20 @@ _REACTION_NOTE = {"en": "R_ij is the force of link i on link j at their joint; t
 def _table_5_1(v):
     if not v.mech.loads:
         return None
-    return Table("5.1", _both("t5.1"), tuple(_reaction_columns(v, v.a.statics)),
-                 (_REACTION_NOTE,))
+    cols = _reaction_columns(v, v.a.statics) + _spring_columns(v)
+    return Table("5.1", _both("t5.1"), tuple(cols), (_REACTION_NOTE,))
+
+
+def _spring_columns(v):
+    """The springs' lengths and forces (:func:`assur.statics.spring_states`):
+    ``L_<s>`` [m], ``T_<s>`` (one spring) and ``F_<s>`` (all ``count`` springs) [N]."""
+    from ..statics import spring_states
+    cols = []
+    for name, (L, T, F) in spring_states(v.kin).items():
+        cols.append(Column(f"L_{name}", "m", v.pick(L), _both("c_Lspring", name)))
+        cols.append(Column(f"T_{name}", "N", v.pick(T), _both("c_Tspring", name)))
+        cols.append(Column(f"F_{name}", "N", v.pick(F), _both("c_Fspring", name)))
+    return cols
 
 
 def _table_5_2(v):

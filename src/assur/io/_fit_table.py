@@ -1,0 +1,120 @@
+"""A printed table read as fitting targets (:mod:`assur.fitting`, ``assur fit``).
+
+The CSV's first row is the header: the coordinate, then one column per quantity,
+each ``expression [unit]`` — the expression as in ``[[tables.formulas]]``
+(``phi(5)``, ``dphi(3)``, ``dphi(5)/dphi(3)``), the unit the values are printed in
+(``deg``, ``1/m``, ``-``, ``mm``; pint spelling). Each value keeps the precision it
+is printed with: its tolerance is half a unit of its last digit (``21.199`` →
+0.0005, ``40`` → 0.5). A decimal comma is read as a point. A column of link angles
+``phi(l)`` in degrees is compared modulo 360°. Empty cells are skipped.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ModelError
+from ._units import _base_factor
+
+__all__ = ["read_targets"]
+
+_HEADER = re.compile(r"^\s*(.+?)\s*\[\s*(.*?)\s*\]\s*$")
+
+
+def _scale(unit, where):
+    """SI value of one ``unit``."""
+    if unit in ("", "-"):
+        return 1.0
+    try:
+        f = _base_factor(unit)
+    except Exception:  # pint raises several types for an unreadable unit
+        f = None
+    if f is None or not math.isfinite(f) or f <= 0:
+        raise ModelError(f"{where}: cannot read the unit {unit!r}")
+    return f
+
+
+def _tolerance(cell):
+    """Half a unit of the last printed digit of ``cell`` (a number as printed)."""
+    text = cell.strip().lower()
+    mant = text.split("e")[0]
+    decimals = len(mant.split(".")[1]) if "." in mant else 0
+    exp = int(text.split("e")[1]) if "e" in text else 0
+    return 0.5 * 10.0 ** (exp - decimals)
+
+
+def read_targets(path, mechanism):
+    """Targets of :func:`assur.fitting.fit_parameters` from a CSV table as printed.
+
+    Parameters
+    ----------
+    path : str or Path
+    mechanism : Mechanism
+        One coordinate, named by the first column.
+
+    Returns
+    -------
+    list of Target
+
+    Raises
+    ------
+    ModelError
+        Naming the file, the row or column and what is wrong.
+    """
+    path = Path(path)
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = [r for r in csv.reader(f) if any(c.strip() for c in r)]
+    if len(rows) < 2:
+        raise ModelError(f"{path}: expected a header and at least one row")
+    head = []
+    for j, cell in enumerate(rows[0]):
+        m = _HEADER.match(cell)
+        if not m:
+            raise ModelError(f"{path}: column {j + 1}: expected a header 'quantity [unit]', "
+                             f"found {cell!r}")
+        head.append((m.group(1), m.group(2), _scale(m.group(2), f"{path}: column {j + 1}")))
+    coord, _, qscale = head[0]
+    if coord not in mechanism.coordinates or len(mechanism.coordinates) != 1:
+        raise ModelError(f"{path}: the first column must be the coordinate "
+                         f"{list(mechanism.coordinates)}, found {coord!r}")
+
+    def number(i, j, cell):
+        try:
+            v = float(cell.strip().replace(",", "."))
+        except ValueError:
+            raise ModelError(f"{path}: row {i + 1}, column {j + 1}: expected a number, found "
+                             f"{cell!r}") from None
+        if not math.isfinite(v):
+            raise ModelError(f"{path}: row {i + 1}, column {j + 1}: not finite: {cell!r}")
+        return v
+
+    from ..fitting import Target
+
+    targets = []
+    for j, (expr, unit, scale) in enumerate(head[1:], start=1):
+        q, v, tol = [], [], []
+        for i, r in enumerate(rows[1:], start=1):
+            if j >= len(r) or not r[j].strip():
+                continue
+            q.append(number(i, 0, r[0]) * qscale)
+            v.append(number(i, j, r[j]))
+            tol.append(_tolerance(r[j].replace(",", ".")))
+        if not v:
+            continue
+        period = 360.0 if unit == "deg" and expr.replace(" ", "").startswith("phi(") else None
+        try:
+            targets.append(Target(expr, expr, np.array(q), np.array(v), scale=scale,
+                                  tolerance=np.array(tol), period=period))
+        except ModelError as e:
+            raise ModelError(f"{path}: column {j + 1}: {e}") from None
+    for t in targets:
+        try:
+            t._formula.check(mechanism)
+        except ModelError as e:
+            raise ModelError(f"{path}: column {t.name!r}: {e}") from None
+    return targets
