@@ -58,7 +58,7 @@ class EquationsOfMotion:
         Generalized mass matrix M(q) [kg for lengths, kg·m² for angles].
     mass_matrix_derivative : ndarray, shape (..., k, k, k)
         ``[..., i, j, l] = ∂M_ij/∂q_l``.
-    generalized_forces : ndarray, shape (..., k)
+    generalized_forces : ndarray, shape ``shape`` (k = 1) or ``shape + (k,)``
         Q(q) of the mechanism's loads (weights of the masses included), positive
         along the coordinates [N or N·m]; the actuators hold the mechanism still
         with F = −Q.
@@ -96,7 +96,7 @@ class EquationsOfMotion:
         o = kin.reshape
         self.mass_matrix = o(M)
         self.mass_matrix_derivative = o(dM)
-        self.generalized_forces = o(Q)
+        self.generalized_forces = self._out(Q)
 
     # ---- rates -------------------------------------------------------------------------
     def _qd(self, qdot, what="qdot"):
