@@ -3,5 +3,7 @@
 (:mod:`assur.dynamics.simulate`, components in :mod:`assur.drive`)."""
 
 from .eom import EquationsOfMotion, equations_of_motion
+from .simulate import SimulationResult, simulate, simulate_model
 
-__all__ = ["EquationsOfMotion", "equations_of_motion"]
+__all__ = ["EquationsOfMotion", "equations_of_motion", "SimulationResult", "simulate",
+           "simulate_model"]

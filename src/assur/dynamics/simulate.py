@@ -52,7 +52,7 @@ import numpy as np
 from ..errors import ModelError
 from .eom import equations_of_motion
 
-__all__ = ["ReducedTable", "SimulationResult", "simulate", "METHODS"]
+__all__ = ["ReducedTable", "SimulationResult", "simulate", "simulate_model", "METHODS"]
 
 #: stiff-capable methods of solve_ivp the simulation accepts
 METHODS = ("Radau", "BDF", "LSODA")
@@ -466,3 +466,29 @@ def _pushes_into_stop(mach, y, top, d):
     """True when the force on the rods pushes the piston into its stop."""
     F = mach.A * d["p"] + d["Q"]
     return F >= 0 if top else F <= 0
+
+
+def simulate_model(model, **options):
+    """:func:`simulate` of a loaded model file: its mechanism, its ``[[drive]]``
+    circuit and its ``[simulation]`` section (duration, p0, method, outputs);
+    ``options`` override them (``t_end``, ``p0``, ``method``, ``t_eval``, …).
+
+    Raises
+    ------
+    ModelError
+        The model has no ``[[drive]]`` or no duration.
+    """
+    if model.drive is None:
+        raise ModelError(f"model {model.name!r} has no hydraulic drive: add [[drive]] entries "
+                         f"(docs/simulation.md)")
+    sim = model.simulation
+    if sim is not None:
+        options.setdefault("t_end", sim.duration)
+        options.setdefault("p0", sim.p0)
+        options.setdefault("method", sim.method)
+        options.setdefault("t_eval", np.linspace(0.0, options["t_end"], sim.outputs))
+    if "t_end" not in options:
+        raise ModelError(f"model {model.name!r}: give the duration ([simulation] duration, "
+                         f"or t_end=…)")
+    t_end = options.pop("t_end")
+    return simulate(model.mechanism, model.drive, t_end, **options)

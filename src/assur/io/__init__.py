@@ -78,6 +78,11 @@ class Model:
     lift_test : LiftTest or None
         The ``[lift_test]`` section (the standard lift test of a hitch, ISO 789-2;
         :mod:`assur.lift_test`), None without one.
+    drive : Circuit or None
+        The ``[[drive]]`` components as an :class:`assur.drive.Circuit`
+        (:mod:`assur.io._drive`, docs/simulation.md), None without them.
+    simulation : SimulationSpec or None
+        The ``[simulation]`` section, None without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -93,6 +98,8 @@ class Model:
     dynamics: object = None
     warnings: tuple = ()
     lift_test: object = None
+    drive: object = None
+    simulation: object = None
 
     @property
     def name(self) -> str:
@@ -261,7 +268,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
-                 tuple(builder.warnings), builder.lift_test)
+                 tuple(builder.warnings), builder.lift_test, builder.drive, builder.simulation)
 
 
 def _warn(model: Model) -> Model:
