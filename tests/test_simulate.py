@@ -157,3 +157,35 @@ def test_malformed_drive_entries_name_the_line():
     bad = text.replace('type = "gear_pump"', 'type = "gear_pmp"')
     with pytest.raises(ModelFileError, match="gear_pump"):
         io.loads(bad, "adapter.toml")
+
+
+def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    from assur.report.simulation import FIGURES
+    r = CliRunner().invoke(app, ["simulate", str(io.bundled("adapter_lab6")), "-o",
+                                 str(tmp_path), "--lang", "ru"])
+    assert r.exit_code == 0, r.output
+    assert "reached t_end" in r.output
+    for name in FIGURES:
+        assert (tmp_path / f"sim_{name}.png").stat().st_size > 0
+    df = pd.read_csv(tmp_path / "simulation.csv")
+    assert len(df) == 2251 and "p1 [MPa]" in df.columns
+    text = (tmp_path / "simulation.csv").read_text()
+    assert "-0.0," not in text and "nan" not in text.lower()
+    page = (tmp_path / "simulation.html").read_text(encoding="utf-8")
+    assert "Подъём секции косилки-плющилки" in page and "невязка баланса" in page
+    summary = (tmp_path / "simulation_summary.csv").read_text(encoding="utf-8")
+    assert "открытие предохранительного клапана" in summary
+
+
+def test_cli_simulate_without_a_drive_fails_with_one_message(tmp_path):
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    r = CliRunner().invoke(app, ["simulate", str(io.bundled("hitch_003")), "-o",
+                                 str(tmp_path)])
+    assert r.exit_code == 1
+    assert "no hydraulic drive" in r.output and "Traceback" not in r.output
