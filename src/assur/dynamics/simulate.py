@@ -64,8 +64,8 @@ CONTACT = 1e-9
 #: phase changes (lift-off, impact) after which a simulation is stopped as chattering
 MAX_SWITCHES = 100
 
-#: state vector: S, Ṡ, p1, then the energy integrals
-_STATES = ("S", "Sdot", "p1", "W_pump", "W_relief", "W_line", "W_lump", "W_loads")
+#: the state vector: S, Ṡ, p1, then the energy integrals W_pump, W_relief, W_line,
+#: the lumped-volume term and W_loads (module docstring)
 
 
 class ReducedTable:
@@ -353,6 +353,11 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
     table = ReducedTable.from_mechanism(mechanism, s_min, s_max, nodes, g)
     mach = _Machine(table, circuit, s_min)
     t_eval = np.linspace(0.0, t_end, 2001) if t_eval is None else np.asarray(t_eval, float)
+    if t_eval.ndim != 1 or not t_eval.size or not np.all(np.diff(t_eval) > 0) \
+            or t_eval[0] < 0 or t_eval[-1] > t_end:
+        raise ValueError(f"t_eval must be increasing times within [0, {t_end}] s")
+    if not (np.isfinite(p0) and p0 >= 0):
+        raise ValueError(f"p0 must be a finite pressure ≥ 0 [Pa], got {p0!r}")
     max_step = t_end / 200 if max_step is None else max_step
     stroke = s_max - s_min
     W_scale = mach.Qp * max(abs(p0), 1e6) * t_end
@@ -367,7 +372,7 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
     rv = circuit.relief
     events_log = {"lift-off": [], "end of stroke": [], "relief opens": []}
     W_impact = 0.0
-    chunks, phases = [], []
+    chunks = []
     t = 0.0
     status, message = 0, "reached t_end"
     nfev = njev = nlu = 0
@@ -414,7 +419,6 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
         sel = t_eval[(t_eval >= t) & ((t_eval < t1) | ((t_eval <= t1) & (t1 >= t_end)))]
         if sel.size:
             chunks.append((sol.sol(sel), moving))
-            phases.append((t, t1, "moving" if moving else "rest"))
         for name, te in zip(names, sol.t_events):
             events_log[name] += [float(x) for x in te if x > t or t == 0.0]
         if sol.status < 0:
