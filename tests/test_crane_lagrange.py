@@ -1,0 +1,129 @@
+"""Seed 004 (004_4ff0af19c30e8a3a.txt): the boom + stick of a forestry manipulator,
+its Lagrange equations (37)–(38) against the engine's general equations of motion
+(:mod:`assur.dynamics.eom`).
+
+The arm as the engine sees it: the boom O–O1 (length l_c) is a crank about the frame
+pivot O turned by its absolute angle φ_c, the stick O1–D (l_p) a crank about O1 turned
+by its absolute angle φ_p; masses: the boom m_c at the middle of O–O1 with
+J = J_c − m_c·l_c²/4 about it (J_c about O, eq. 21), the stick m_p at K, the middle
+of O1–D, with J_pk, the load m at D. The paper's coordinates are φ1, φ2 with
+φ_c = φ1 + δ and φ_p = φ1 + φ2 + δ − α_p (eqs. 1, 2): a constant linear map
+q' = T·q + c, so the paper's generalized forces are Tᵀ times the engine's.
+
+The paper's left sides are taken with BRIEF.md's corrections (a Lagrange derivation
+from T of eq. (36) gives them): in (37) the term C·(2φ̈1 + φ̈2)·φ̈2·sin(α_p − φ2) is
+C·(2φ̇1 + φ̇2)·φ̇2·sin(α_p − φ2), and in (38) −C·φ̈1²·sin(α_p − φ2) is
+−C·φ̇1²·sin(α_p − φ2), C = (0.5·m_p + m)·l_c·l_p. The corrected equations equal the
+engine to 1e-9 at random states; the equations as printed do not.
+
+Data: table 1, ЛВ-184А (m, m_p, m_c, l_p, δ, α_p, J_c, J_pk); l_c is not printed:
+J_c = m_c·l_c²/3 gives 3.335 m (BRIEF.md). The cylinders' lever arms (F1·b1·sin β1,
+F2·…) are not modelled here: the comparison is of the generalized drive forces Q1, Q2
+the cylinders must supply.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from assur import Mechanism
+from assur.dynamics import equations_of_motion
+
+G = 9.81
+# table 1, ЛВ-184А
+m, mp, mc = 884.0, 122.0, 311.0
+lp = 2.818
+delta = math.radians(11.61)
+alpha_p = math.radians(95.44)
+Jc, Jpk = 1153.0, 81.0
+lc = math.sqrt(3 * Jc / mc)  # 3.335 m (not printed; from eq. 21)
+
+
+def build():
+    from assur.groups import Crank, RigidPoint
+    mech = Mechanism("ЛВ-184А arm", coordinates=("pc", "pp"))
+    mech = mech.frame("O", 0.0, 0.0)
+    mech = mech.add(Crank(name="boom", pivot="O", out="O1", radius=lc, q="pc", links=("1",)))
+    mech = mech.add(Crank(name="stick", pivot="O1", out="D", radius=lp, q="pp", links=("2",)))
+    mech = mech.add(RigidPoint(name="C", origin="O", toward="O1", out="C", length=lc / 2,
+                               angle=0.0, links=("1",)))
+    mech = mech.add(RigidPoint(name="K", origin="O1", toward="D", out="K", length=lp / 2,
+                               angle=0.0, links=("2",)))
+    mech = mech.mass("1", mc, "C", Jc - mc * lc ** 2 / 4)
+    mech = mech.mass("2", mp, "K", Jpk)
+    mech = mech.mass("2", m, "D", 0.0)
+    return mech
+
+
+T = np.array([[1.0, 0.0], [1.0, 1.0]])  # d(φc, φp)/d(φ1, φ2)
+
+
+def engine_forces(q, qd, qdd):
+    """Generalized drive forces (Q1, Q2) [N·m] the cylinders must supply, shape (n, 2),
+    from the engine: Tᵀ·F' with F' = M'·q̈' + h' − Q' in (φc, φp)."""
+    qc = q @ T.T + np.array([delta, delta - alpha_p])
+    eom = equations_of_motion(build().solve(qc), g=G)
+    F = eom.actuator_forces(qd @ T.T, qdd @ T.T)
+    return F @ T
+
+
+def paper_forces(q, qd, qdd, corrected=True):
+    """Q1 = F1·b1·sin β1 and Q2 = F2·b2·sin β2·sin(φ2 − φ3)/sin(φ1p − φ3) from eqs.
+    (37), (38): left side + the weights' terms of the right side."""
+    p1, p2 = q[:, 0], q[:, 1]
+    w1, w2 = qd[:, 0], qd[:, 1]
+    e1, e2 = qdd[:, 0], qdd[:, 1]
+    C = (0.5 * mp + m) * lc * lp
+    c, s = np.cos(alpha_p - p2), np.sin(alpha_p - p2)
+    if corrected:
+        # d/dt ∂T/∂φ̇1 − ∂T/∂φ1 from T of eq. (36): the cross term of (36) is
+        # C·φ̇1(φ̇1 + φ̇2)·cos(α_p − φ2), whose time derivative brings +C·(2φ̇1 + φ̇2)·φ̇2·sin
+        v1 = C * (2 * w1 + w2) * w2 * s
+        v2 = -C * w1 ** 2 * s
+    else:  # as printed: φ̈ where φ̇ is meant
+        v1 = C * (2 * e1 + e2) * e2 * s
+        v2 = -C * e1 ** 2 * s
+    lhs1 = (Jc * e1 + Jpk * (e1 + e2) + (mp + m) * lc ** 2 * e1
+            + (0.25 * mp + m) * lp ** 2 * (e1 + e2) + C * (2 * e1 + e2) * c + v1)
+    lhs2 = (Jpk * (e1 + e2) + (0.25 * mp + m) * lp ** 2 * (e1 + e2) + C * e1 * c + v2)
+    phc, php = p1 + delta, p2 + p1 + delta - alpha_p
+    grav1 = (0.5 * mc * G * lc * np.cos(phc) + mp * G * (lc * np.cos(phc) + 0.5 * lp * np.cos(php))
+             + m * G * (lc * np.cos(phc) + lp * np.cos(php)))
+    grav2 = G * lp * (m + 0.5 * mp) * np.cos(php)
+    return np.stack([lhs1 + grav1, lhs2 + grav2], -1)
+
+
+def random_states(n=400, seed=11):
+    rng = np.random.default_rng(seed)
+    q = np.stack([rng.uniform(math.radians(-31.61), math.radians(60.9), n),
+                  rng.uniform(math.radians(53), math.radians(146), n)], -1)
+    return q, rng.uniform(-1.0, 1.0, (n, 2)), rng.uniform(-3.0, 3.0, (n, 2))
+
+
+def test_engine_equals_the_corrected_lagrange_equations():
+    q, qd, qdd = random_states()
+    got = engine_forces(q, qd, qdd)
+    ref = paper_forces(q, qd, qdd)
+    scale = np.abs(ref).max(axis=0)
+    err = np.abs(got - ref).max(axis=0) / scale
+    assert (err < 1e-9).all(), err
+
+
+def test_the_printed_equations_disagree():
+    """φ̈ where φ̇ is meant (eqs. 37, 38 as printed): off by far more than rounding."""
+    q, qd, qdd = random_states(seed=5)
+    got = engine_forces(q, qd, qdd)
+    printed = paper_forces(q, qd, qdd, corrected=False)
+    scale = np.abs(got).max(axis=0)
+    assert (np.abs(got - printed).max(axis=0) / scale > 1e-3).all()
+
+
+def test_static_forces_are_the_weights_moments():
+    """At rest the drive forces are the weights' moments of eqs. (6), (11)."""
+    q, _, _ = random_states(50, seed=3)
+    z = np.zeros_like(q)
+    np.testing.assert_allclose(engine_forces(q, z, z), paper_forces(q, z, z), rtol=1e-12,
+                               atol=1e-9)
