@@ -127,3 +127,59 @@ def test_static_forces_are_the_weights_moments():
     z = np.zeros_like(q)
     np.testing.assert_allclose(engine_forces(q, z, z), paper_forces(q, z, z), rtol=1e-12,
                                atol=1e-9)
+
+
+# ---- the boom's lift mechanism, eqs. (45)–(50) and (7) --------------------------------
+# table 1, ЛВ-184А: O the boom's pivot, A the cylinder's base (|OA| = a1), B its pin on
+# the boom (|OB| = b1); γ1 + Φ1 is the angle AOB (eq. 47)
+a1, b1 = 1.347, 0.447
+gamma1 = math.radians(76.25)
+S01, Smax1 = 1.075, 1.705
+V1 = 0.085  # the divider's speed of the boom's rod (eq. 65) [m/s]
+
+
+def boom():
+    """Cylinder–lever group: A at −γ1 from +x, so that φ(OB) = Φ1."""
+    from assur.groups import CylinderLever
+    mech = Mechanism("ЛВ-184А boom lift", coordinates=("S",))
+    mech = mech.frame("O", 0.0, 0.0).frame("A", a1 * math.cos(-gamma1), a1 * math.sin(-gamma1))
+    mech = mech.add(CylinderLever(name="boom lift", base="A", pivot="O", out="B", lever=b1,
+                                  s="S", branch=-1, links=("3", "1")))
+    return mech.link("1", "O", "B")
+
+
+def test_boom_kinematics_equal_eqs_47_to_50():
+    """At the ten steps of the cycle (eq. 45, "divide the time into 10 parts") with a
+    constant rod speed V1: Φ1 (eq. 47), Φ̇1 = φ'·V1 (eq. 48), Φ̈1 = φ''·V1² (eq. 49),
+    β1 (eq. 50) and sin β1 (eq. 7) from the engine's exact analogs, to 1e-12."""
+    t1 = (Smax1 - S01) / V1  # (45)
+    t = np.linspace(0.0, t1, 11)
+    S = S01 + V1 * t
+    kin = boom().solve(S)
+    phi, w, e = kin.phi("1"), kin.dphi("1") * V1, kin.ddphi("1") * V1 ** 2
+    Phi10 = math.acos((a1 ** 2 + b1 ** 2 - S01 ** 2) / (2 * a1 * b1)) - gamma1
+    Phi1 = np.arccos(np.cos(gamma1 + Phi10) - V1 * t / (a1 * b1) * (S01 + V1 * t / 2)) - gamma1
+    np.testing.assert_allclose(phi, Phi1, rtol=0, atol=1e-12)  # (47)
+    sg, cg = np.sin(gamma1 + Phi1), np.cos(gamma1 + Phi1)
+    dPhi1 = V1 * (S01 + V1 * t) / (a1 * b1 * sg)  # (48)
+    np.testing.assert_allclose(w, dPhi1, rtol=1e-12)
+    ddPhi1 = (V1 ** 2 * sg - V1 * (S01 + V1 * t) * cg * dPhi1) / (a1 * b1 * sg ** 2)  # (49)
+    np.testing.assert_allclose(e, ddPhi1, rtol=1e-10, atol=1e-12 * np.abs(ddPhi1).max())
+    # β1 of eq. (50) is the angle at the pin B, opposite OA = a1 (the paper names it
+    # ∠OAB; its formulas (7), (50) are those of ∠OBA): b1·sin β1 is the arm of F1 about O
+    beta1 = np.arccos((b1 ** 2 + S ** 2 - a1 ** 2) / (2 * b1 * S))
+    sin_beta1 = a1 * sg / S  # (7)
+    np.testing.assert_allclose(np.sin(beta1), sin_beta1, rtol=1e-12)
+    # virtual work: the rod force F1 balances Q1 when F1·dS = Q1·dΦ1, i.e. dS/dΦ1 = b1·sin β1
+    np.testing.assert_allclose(1.0 / kin.dphi("1"), b1 * sin_beta1, rtol=1e-12)
+
+
+def test_table1_stops_of_the_boom():
+    """The table's Φ10 = −31.61° and Φ1max = 60.9° against the closed stroke S01 and the
+    open one Smax1 with the table's a1, b1, γ1: −31.73° and 61.60° (the table's angles
+    are ~0.1° and ~0.7° off — its lengths are rounded to mm; noted, not matched)."""
+    kin = boom().solve(np.array([S01, Smax1]))
+    phi = np.degrees(kin.phi("1"))
+    assert phi[0] == pytest.approx(-31.73, abs=0.005)
+    assert phi[1] == pytest.approx(61.60, abs=0.005)
+    assert abs(phi[0] - (-31.61)) < 0.2 and abs(phi[1] - 60.9) < 0.8
