@@ -183,3 +183,51 @@ def test_table1_stops_of_the_boom():
     assert phi[0] == pytest.approx(-31.73, abs=0.005)
     assert phi[1] == pytest.approx(61.60, abs=0.005)
     assert abs(phi[0] - (-31.61)) < 0.2 and abs(phi[1] - 60.9) < 0.8
+
+
+# ---- an independent derivation with sympy.physics.mechanics -------------------------
+def sympy_forces():
+    """(q, q̇, q̈) → (Q1, Q2) by sympy.physics.mechanics' LagrangesMethod: the boom a
+    rigid body about O, the stick a rigid body with its centre K, the load a particle
+    at D, gravity −g·N.y; positions from eqs. (1), (2), (34), (35)."""
+    sm = pytest.importorskip("sympy")
+    me = pytest.importorskip("sympy.physics.mechanics")
+    q1, q2 = me.dynamicsymbols("q1 q2")
+    u1, u2 = me.dynamicsymbols("q1 q2", 1)
+    N = me.ReferenceFrame("N")
+    B = N.orientnew("B", "Axis", [q1 + delta, N.z])  # boom: φc = φ1 + δ
+    P = N.orientnew("P", "Axis", [q1 + q2 + delta - alpha_p, N.z])  # stick: φp
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    C = O.locatenew("C", lc / 2 * B.x)
+    O1 = O.locatenew("O1", lc * B.x)
+    K = O1.locatenew("K", lp / 2 * P.x)
+    D = O1.locatenew("D", lp * P.x)
+    C.v2pt_theory(O, N, B)
+    O1.v2pt_theory(O, N, B)
+    K.v2pt_theory(O1, N, P)
+    D.v2pt_theory(O1, N, P)
+    boom_body = me.RigidBody("boom", C, B, mc, (me.inertia(B, 0, 0, Jc - mc * lc ** 2 / 4), C))
+    stick = me.RigidBody("stick", K, P, mp, (me.inertia(P, 0, 0, Jpk), K))
+    load = me.Particle("load", D, m)
+    for body in (boom_body, stick, load):
+        body.potential_energy = body.mass * G * body.masscenter.pos_from(O).dot(N.y)
+    L = me.Lagrangian(N, boom_body, stick, load)
+    lm = me.LagrangesMethod(L, [q1, q2])
+    lm.form_lagranges_equations()
+    a1s, a2s = sm.symbols("a1 a2")
+    acc = {q1.diff(): u1, q2.diff(): u2}
+    acc2 = {u1.diff(): a1s, u2.diff(): a2s}
+    expr = lm.eom.subs(acc2).subs(acc)  # = d/dt ∂L/∂q̇ − ∂L/∂q = Q_drive
+    x = sm.symbols("x1 x2 w1 w2")
+    expr = expr.subs({u1: x[2], u2: x[3]}).subs({q1: x[0], q2: x[1]})
+    return sm.lambdify([*x, a1s, a2s], [expr[0], expr[1]], "numpy")
+
+
+def test_engine_equals_a_sympy_lagrange_derivation():
+    f = sympy_forces()
+    q, qd, qdd = random_states(200, seed=7)
+    got = engine_forces(q, qd, qdd)
+    ref = np.stack(f(q[:, 0], q[:, 1], qd[:, 0], qd[:, 1], qdd[:, 0], qdd[:, 1]), -1)
+    err = np.abs(got - ref).max(axis=0) / np.abs(ref).max(axis=0)
+    assert (err < 1e-9).all(), err
