@@ -171,6 +171,10 @@ def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
     assert "reached t_end" in r.output
     for name in FIGURES:
         assert (tmp_path / f"sim_{name}.png").stat().st_size > 0
+    from PIL import Image
+    with Image.open(tmp_path / "simulation.gif") as gif:  # 0.1 s a frame over 4.5 s
+        # (equal frames at rest on a stop are merged by the GIF writer)
+        assert 20 < gif.n_frames <= 46
     df = pd.read_csv(tmp_path / "simulation.csv")
     assert len(df) == 2251 and "p1 [MPa]" in df.columns
     text = (tmp_path / "simulation.csv").read_text()

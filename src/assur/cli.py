@@ -310,7 +310,7 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
                                             help="Simulated time in s (default: the "
                                                  "file's [simulation] duration).")):
     """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6): time
-    series (CSV), figures (PNG) and an HTML report."""
+    series (CSV), figures (PNG), the mechanism's motion (GIF) and an HTML report."""
     from .dynamics import simulate_model
     from .errors import AssemblyError, ModelError
     from .report.simulation import write_simulation_report
@@ -326,7 +326,7 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
         _fail(f"{file}: {e}")
     try:
         files = write_simulation_report(result, out, localize(model.mechanism.title, lang),
-                                        lang)
+                                        lang, mechanism=model.mechanism)
     except OSError as e:
         _fail(f"{output}: cannot write the report: {e.strerror or e}")
     if not result.success:

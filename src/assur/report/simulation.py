@@ -118,9 +118,13 @@ def _png(fig):
     return buf.getvalue()
 
 
-def write_simulation_report(result, outdir, title="", lang="en", formats=("csv", "png", "html")):
+def write_simulation_report(result, outdir, title="", lang="en",
+                            formats=("csv", "png", "html", "gif"), mechanism=None,
+                            frame_step=0.1):
     """Write ``simulation.csv``, ``simulation_summary.csv``, the figures
-    (``sim_<name>.png``) and ``simulation.html`` (self-contained) into ``outdir``.
+    (``sim_<name>.png``), ``simulation.html`` (self-contained) and, given the
+    ``mechanism``, ``simulation.gif``: its drawing at S(t) every ``frame_step``
+    seconds, played in real time (:func:`assur.report.drawing.render_frames`).
 
     Returns
     -------
@@ -147,6 +151,16 @@ def write_simulation_report(result, outdir, title="", lang="en", formats=("csv",
             p = out / f"sim_{name}.png"
             p.write_bytes(data)
             files.append(p)
+    gif_uri = None
+    if "gif" in formats and mechanism is not None:
+        from .drawing import render_frames, write_gif
+        ts = np.arange(0.0, result.t[-1] + 1e-9, frame_step)
+        frames = render_frames(mechanism.analyze(np.interp(ts, result.t, result.q)), frames=0,
+                               lang=lang)
+        p = write_gif(frames, out / "simulation.gif", duration=int(round(frame_step * 1e3)),
+                      bounce=False)
+        files.append(p)
+        gif_uri = "data:image/gif;base64," + base64.b64encode(p.read_bytes()).decode("ascii")
     if "html" in formats:
         esc = html.escape
         parts = [f"<!doctype html><html lang='{lang}'><head><meta charset='utf-8'>"
@@ -158,6 +172,8 @@ def write_simulation_report(result, outdir, title="", lang="en", formats=("csv",
         for label, value, u in summary(result, lang):
             parts.append(f"<tr><td>{esc(label)}</td><td>{esc(value)}</td><td>{esc(u)}</td></tr>")
         parts.append("</table>")
+        if gif_uri:
+            parts.append(f"<figure><img alt='motion' src='{gif_uri}'></figure>")
         for name, data in pngs.items():
             uri = "data:image/png;base64," + base64.b64encode(data).decode("ascii")
             parts.append(f"<figure><img alt='{esc(name)}' src='{uri}'></figure>")
