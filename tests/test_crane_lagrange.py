@@ -231,3 +231,83 @@ def test_engine_equals_a_sympy_lagrange_derivation():
     ref = np.stack(f(q[:, 0], q[:, 1], qd[:, 0], qd[:, 1], qdd[:, 0], qdd[:, 1]), -1)
     err = np.abs(got - ref).max(axis=0) / np.abs(ref).max(axis=0)
     assert (err < 1e-9).all(), err
+
+
+# ---- the stick's drive, eqs. (13)–(18) and (51)–(59) ---------------------------------
+# table 1, ЛВ-184А, in the boom's frame (x1 along the boom): a2 turns about P0, the
+# stick (its arm b2) about O1 = P0 + d2∠γ2, the coupler c2 joins their ends E and G;
+# the cylinder (length S2) runs from P0 + l3∠(180° − α) to E, so that
+# S2² = a2² + l3² + 2·a2·l3·cos(α + φ1p), which is what eq. (51) differentiates.
+a2_, b2_, c2_, d2_, l3_ = 0.565, 0.211, 0.593, 0.139, 1.841
+alpha_, gamma2_ = math.radians(7.02), math.radians(-30.25)
+V2 = 0.13  # the divider's speed of the stick's rod (eq. 66) [m/s]
+
+
+def stick_drive():
+    from assur.groups import CylinderLever, Dyad
+    mech = Mechanism("ЛВ-184А stick drive", coordinates=("S2",))
+    mech = (mech.frame("P0", 0.0, 0.0)
+            .frame("O1", d2_ * math.cos(gamma2_), d2_ * math.sin(gamma2_))
+            .frame("Bc", l3_ * math.cos(math.pi - alpha_), l3_ * math.sin(math.pi - alpha_)))
+    mech = mech.add(CylinderLever(name="stick drive", base="Bc", pivot="P0", out="E",
+                                  lever=a2_, s="S2", branch=1, links=("cyl", "a2")))
+    mech = mech.add(Dyad(name="four-bar", a="E", b="O1", out="G", ra=c2_, rb=b2_, branch=1,
+                         links=("c2", "b2")))
+    return mech.link("a2", "P0", "E").link("c2", "E", "G").link("b2", "O1", "G")
+
+
+def test_stick_drive_equals_eqs_51_to_59():
+    """The cycle between the table's angles φ1p0 = 53° and φ1pmax = 146° (the printed
+    S_max2 = 2.365 m does not give 53°: S2(53°) = 2.179 m, BRIEF.md), the rod retracting
+    at V2, ten steps: φ1p (51), φ̇1p (52), φ̈1p (53), e2 (15), φe2 (54), φ2 (13, 14),
+    φ3 (17, 18), i41, i31, i41' (55–57), φ̇2 (58), φ̈2 (59) — all from the engine's
+    exact analogs (Ṡ2 = −V2), to 1e-9."""
+    def S_of(phi1p):
+        return math.sqrt(a2_ ** 2 + l3_ ** 2 + 2 * a2_ * l3_ * math.cos(alpha_ + phi1p))
+    S0 = S_of(math.radians(53.0))
+    S1 = S_of(math.radians(146.0))
+    assert S0 == pytest.approx(2.179, abs=5e-4) and S1 == pytest.approx(1.365, abs=5e-3)
+    t = np.linspace(0.0, (S0 - S1) / V2, 11)
+    S = S0 - V2 * t
+    kin = stick_drive().solve(S)
+    c0 = math.cos(alpha_ + math.radians(53.0))
+    p1p = np.arccos(c0 - V2 * t / (a2_ * l3_) * (S0 - V2 * t / 2)) - alpha_  # (51)
+    np.testing.assert_allclose(kin.phi("a2"), p1p, atol=1e-12)
+    sa, ca = np.sin(alpha_ + p1p), np.cos(alpha_ + p1p)
+    w1p = V2 * (S0 - V2 * t) / (a2_ * l3_ * sa)  # (52)
+    e1p = -(V2 ** 2 * sa + V2 * (S0 - V2 * t) * ca * w1p) / (a2_ * l3_ * sa ** 2)  # (53)
+    np.testing.assert_allclose(kin.dphi("a2") * -V2, w1p, rtol=1e-12)
+    np.testing.assert_allclose(kin.ddphi("a2") * V2 ** 2, e1p, rtol=1e-9,
+                               atol=1e-12 * np.abs(e1p).max())
+    e2 = np.sqrt(a2_ ** 2 + d2_ ** 2 - 2 * a2_ * d2_ * np.cos(p1p - gamma2_))  # (15)
+    pe2 = -np.arccos((d2_ * math.cos(gamma2_) - a2_ * np.cos(p1p)) / e2)  # (54)
+    p2 = np.arccos((c2_ ** 2 - b2_ ** 2 - e2 ** 2) / (2 * b2_ * e2)) + pe2  # (13), (14)
+    p3 = np.arccos((c2_ ** 2 + e2 ** 2 - b2_ ** 2) / (2 * c2_ * e2)) + pe2  # (17), (18)
+    np.testing.assert_allclose(kin.phi("b2"), p2, atol=1e-12)
+    np.testing.assert_allclose(kin.phi("c2"), p3, atol=1e-12)
+    i41 = a2_ * np.sin(p1p - p3) / (b2_ * np.sin(p2 - p3))  # (55)
+    i31 = -a2_ * np.sin(p1p - p2) / (c2_ * np.sin(p3 - p2))  # (56)
+    di41 = (a2_ * np.cos(p1p - p3) + i31 ** 2 * c2_
+            - i41 ** 2 * b2_ * np.cos(p2 - p3)) / (b2_ * np.sin(p2 - p3))  # (57)
+    np.testing.assert_allclose(kin.ratio("b2", "a2"), i41, rtol=1e-12)
+    np.testing.assert_allclose(kin.ratio("c2", "a2"), i31, rtol=1e-12)
+    w2 = w1p * i41  # (58)
+    e2dd = w1p ** 2 * di41 + e1p * i41  # (59)
+    np.testing.assert_allclose(kin.dphi("b2") * -V2, w2, rtol=1e-12)
+    np.testing.assert_allclose(kin.ddphi("b2") * V2 ** 2, e2dd, rtol=1e-9,
+                               atol=1e-9 * np.abs(e2dd).max())
+
+
+def test_eq16_puts_phi_e2_in_the_wrong_quadrant():
+    """Eq. (16) (arcsin) and eq. (54) (−arccos) disagree for φ1p < 77.7° (BRIEF.md): at
+    the cycle's start φ1p = 53° the engine agrees with (54)."""
+    p1p = math.radians(53.0)
+    e2 = math.sqrt(a2_ ** 2 + d2_ ** 2 - 2 * a2_ * d2_ * math.cos(p1p - gamma2_))
+    pe16 = math.asin((d2_ * math.sin(gamma2_) - a2_ * math.sin(p1p)) / e2)
+    pe54 = -math.acos((d2_ * math.cos(gamma2_) - a2_ * math.cos(p1p)) / e2)
+    kin = stick_drive().solve(np.array([math.sqrt(a2_ ** 2 + l3_ ** 2 + 2 * a2_ * l3_
+                                                  * math.cos(alpha_ + p1p))]))
+    E, O1 = kin.point("E")[0], kin.point("O1")[0]
+    engine = math.atan2(O1[1] - E[1], O1[0] - E[0])
+    assert engine == pytest.approx(pe54, abs=1e-9)
+    assert abs(pe16 - pe54) > 0.5
