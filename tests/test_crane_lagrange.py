@@ -1,6 +1,7 @@
 """Seed 004 (004_4ff0af19c30e8a3a.txt): the boom + stick of a forestry manipulator,
 its Lagrange equations (37)–(38) against the engine's general equations of motion
-(:mod:`assur.dynamics.eom`).
+(:mod:`assur.dynamics.eom`), its kinematics (45)–(59) against the engine's analogs,
+and the cylinder forces F1(t), F2(t) of the whole crane on its two cylinder lengths.
 
 The arm as the engine sees it: the boom O–O1 (length l_c) is a crank about the frame
 pivot O turned by its absolute angle φ_c, the stick O1–D (l_p) a crank about O1 turned
@@ -311,3 +312,84 @@ def test_eq16_puts_phi_e2_in_the_wrong_quadrant():
     engine = math.atan2(O1[1] - E[1], O1[0] - E[0])
     assert engine == pytest.approx(pe54, abs=1e-9)
     assert abs(pe16 - pe54) > 0.5
+
+
+# ---- the whole crane on its two cylinder lengths: F1(t), F2(t) -----------------------
+def crane():
+    """ЛВ-184А boom + stick as one engine model on (S1, S2): the boom lift
+    (cylinder–lever about O), the stick's drive on the boom (the cylinder an RRR dyad's
+    side of length S2 from Bc to E, the four-bar E–G–O1), the stick on its arm b2
+    turned by −α_p, and the masses of eqs. (20)–(23)."""
+    from assur.groups import CylinderLever, Dyad, RigidPoint
+    mech = Mechanism("ЛВ-184А boom and stick", coordinates=("S1", "S2"))
+    mech = mech.frame("O", 0.0, 0.0).frame("A", a1 * math.cos(-gamma1), a1 * math.sin(-gamma1))
+    mech = mech.add(CylinderLever(name="boom lift", base="A", pivot="O", out="B", lever=b1,
+                                  s="S1", branch=-1, links=("3", "1")))
+
+    def rigid(out, origin, toward, length, angle, link):
+        return RigidPoint(name=out, origin=origin, toward=toward, out=out, length=length,
+                          angle=angle, links=(link,))
+    mech = mech.add(rigid("O1", "O", "B", lc, delta, "1"), rigid("C", "O", "B", lc / 2, delta, "1"),
+                    rigid("P0", "O1", "O", d2_, gamma2_, "1"),
+                    rigid("Bc", "P0", "O1", l3_, math.pi - alpha_ - gamma2_, "1"))
+    mech = mech.add(Dyad(name="stick cylinder", a="Bc", b="P0", out="E", ra="S2", rb=a2_,
+                         branch=1, links=("4", "a2")))
+    mech = mech.add(Dyad(name="four-bar", a="E", b="O1", out="G", ra=c2_, rb=b2_, branch=1,
+                         links=("c2", "2")))
+    mech = mech.add(rigid("D", "O1", "G", lp, -alpha_p, "2"), rigid("K", "O1", "G", lp / 2,
+                                                                      -alpha_p, "2"))
+    mech = mech.mass("1", mc, "C", Jc - mc * lc ** 2 / 4)
+    mech = mech.mass("2", mp, "K", Jpk)
+    mech = mech.mass("2", m, "D", 0.0)
+    return mech.link("a2", "P0", "E").link("b2", "O1", "G")
+
+
+def paper_cycle(t, V1_, V2_, S20):
+    """The paper's kinematics (eqs. 47–59) and forces F1, F2 of the corrected eqs.
+    (37), (38) at times t: the rods at constant V1 (S1 = S01 + V1·t) and V2 (S2 = S20
+    − V2·t); F = Q·dφ/dS with dΦ1/dS1 = 1/(b1·sin β1) (eqs. 7, 48) and dφ2/dS2 =
+    −i41·S2/(a2·l3·sin(α + φ1p)) (eqs. 52, 55, 58)."""
+    S1, S2 = S01 + V1_ * t, S20 - V2_ * t
+    c10 = (a1 ** 2 + b1 ** 2 - S01 ** 2) / (2 * a1 * b1)
+    P1 = np.arccos(c10 - V1_ * t / (a1 * b1) * (S01 + V1_ * t / 2)) - gamma1  # (47)
+    s1, k1 = np.sin(gamma1 + P1), np.cos(gamma1 + P1)
+    w1 = V1_ * S1 / (a1 * b1 * s1)  # (48)
+    e1 = (V1_ ** 2 * s1 - V1_ * S1 * k1 * w1) / (a1 * b1 * s1 ** 2)  # (49)
+    c20 = (S20 ** 2 - a2_ ** 2 - l3_ ** 2) / (2 * a2_ * l3_)
+    p1p = np.arccos(c20 - V2_ * t / (a2_ * l3_) * (S20 - V2_ * t / 2)) - alpha_  # (51)
+    sa, ca = np.sin(alpha_ + p1p), np.cos(alpha_ + p1p)
+    w1p = V2_ * S2 / (a2_ * l3_ * sa)  # (52)
+    e1p = -(V2_ ** 2 * sa + V2_ * S2 * ca * w1p) / (a2_ * l3_ * sa ** 2)  # (53)
+    e2 = np.sqrt(a2_ ** 2 + d2_ ** 2 - 2 * a2_ * d2_ * np.cos(p1p - gamma2_))
+    pe2 = -np.arccos((d2_ * math.cos(gamma2_) - a2_ * np.cos(p1p)) / e2)  # (54)
+    p2 = np.arccos((c2_ ** 2 - b2_ ** 2 - e2 ** 2) / (2 * b2_ * e2)) + pe2
+    p3 = np.arccos((c2_ ** 2 + e2 ** 2 - b2_ ** 2) / (2 * c2_ * e2)) + pe2
+    i41 = a2_ * np.sin(p1p - p3) / (b2_ * np.sin(p2 - p3))
+    i31 = -a2_ * np.sin(p1p - p2) / (c2_ * np.sin(p3 - p2))
+    di41 = (a2_ * np.cos(p1p - p3) + i31 ** 2 * c2_
+            - i41 ** 2 * b2_ * np.cos(p2 - p3)) / (b2_ * np.sin(p2 - p3))
+    w2, e2dd = w1p * i41, w1p ** 2 * di41 + e1p * i41  # (58), (59)
+    Q = paper_forces(np.stack([P1, p2], -1), np.stack([w1, w2], -1), np.stack([e1, e2dd], -1))
+    sin_beta1 = a1 * s1 / S1  # (7)
+    F1 = Q[:, 0] / (b1 * sin_beta1)
+    F2 = Q[:, 1] * (-i41 * S2 / (a2_ * l3_ * sa))
+    return np.stack([S1, S2], -1), np.stack([F1, F2], -1)
+
+
+@pytest.mark.parametrize("V1_, V2_", [(0.085, 0.13), (0.17, 0.0), (0.0, 0.26)])
+def test_cylinder_forces_of_the_engine_equal_the_corrected_paper(V1_, V2_):
+    """F1(t), F2(t) of a cycle with constant rod speeds (combined motion at the flow
+    divider's speeds, and each link alone at the separate speeds, eqs. 65–68) from the
+    engine's equations of motion on (S1, S2) — F = h(q, q̇) − Q(q), q̈ = 0 — equal the
+    paper's corrected eqs. (37), (38) with its kinematics (45)–(59), to 1e-9."""
+    S20 = math.sqrt(a2_ ** 2 + l3_ ** 2 + 2 * a2_ * l3_ * math.cos(alpha_ + math.radians(53)))
+    S2end = math.sqrt(a2_ ** 2 + l3_ ** 2 + 2 * a2_ * l3_ * math.cos(alpha_ + math.radians(146)))
+    T = min((Smax1 - S01) / V1_ if V1_ else np.inf, (S20 - S2end) / V2_ if V2_ else np.inf)
+    t = np.linspace(0.0, T, 41)
+    q, F_paper = paper_cycle(t, V1_, V2_, S20)
+    eom = equations_of_motion(crane().solve(q), g=G)
+    F = eom.actuator_forces(np.broadcast_to([V1_, -V2_], q.shape),
+                            np.zeros_like(q))
+    scale = np.abs(F_paper).max(axis=0)
+    err = np.abs(F - F_paper).max(axis=0) / scale
+    assert (err < 1e-9).all(), err
