@@ -75,6 +75,8 @@ class Circuit:
 
     @property
     def lines(self):
+        """The components in series between the pump and the cylinder whose pressure
+        losses make up a1, a2, a3: the lines and the directional valve."""
         return tuple(c for c in self.components if c.role in ("line", "valve"))
 
     @property
