@@ -27,6 +27,7 @@ test-fast: $(STAMP)
 
 bench: $(STAMP)
 	$(PY) benchmarks/run.py
+	$(PY) benchmarks/simulate.py
 
 clean:
 	rm -rf $(VENV) assur-demo .pytest_cache .hypothesis build dist src/*.egg-info

@@ -1,5 +1,5 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
-``assur fit``, ``assur demo``.
+``assur fit``, ``assur simulate``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -362,6 +362,45 @@ def demo(output: str = typer.Option("assur-demo", "-o", "--output"),
     model = _load(bundled("hitch_003"))
     _, files = _run_report(model, output, lang, FORMATS)
     _summary(files, output)
+
+
+@app.command()
+def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[drive]] and "
+                                                   "[simulation]."),
+             output: str = typer.Option("assur-simulation", "-o", "--output",
+                                        help="Output directory."),
+             lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
+             duration: float = typer.Option(0.0, "--duration",
+                                            help="Simulated time in s (default: the "
+                                                 "file's [simulation] duration).")):
+    """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6): time
+    series (CSV), figures (PNG), the mechanism's motion (GIF) and an HTML report."""
+    from .dynamics import simulate_model
+    from .errors import AssemblyError, ModelError
+    from .report.simulation import write_simulation_report
+    from .texts import localize
+
+    _check_lang(lang)
+    model = _load(file)
+    out = _output_dir(output)
+    options = {"t_end": duration} if duration > 0 else {}
+    try:
+        result = simulate_model(model, **options)
+    except (ModelError, AssemblyError, ValueError) as e:
+        _fail(f"{file}: {e}")
+    try:
+        files = write_simulation_report(result, out, localize(model.mechanism.title, lang),
+                                        lang, mechanism=model.mechanism)
+    except OSError as e:
+        _fail(f"{output}: cannot write the report: {e.strerror or e}")
+    if not result.success:
+        _fail(f"{file}: {result.message}")
+    _ok(f"{result.message}; {result.nfev} right-hand-side evaluations; "
+        f"energy residual {result.energy['residual']:.3g} J of {result.energy['pump']:.6g} J")
+    by_format = {}
+    for f in files:
+        by_format.setdefault(f.suffix.lstrip("."), []).append(f)
+    _summary(by_format, output)
 
 
 def main(argv=None):  # pragma: no cover - console entry

@@ -79,6 +79,11 @@ class Model:
     lift_test : LiftTest or None
         The ``[lift_test]`` section (the standard lift test of a hitch, ISO 789-2;
         :mod:`assur.lift_test`), None without one.
+    drive : Circuit or None
+        The ``[[drive]]`` components as an :class:`assur.drive.Circuit`
+        (:mod:`assur.io._drive`, docs/simulation.md), None without them.
+    simulation : SimulationSpec or None
+        The ``[simulation]`` section, None without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -99,6 +104,8 @@ class Model:
     warnings: tuple = ()
     lift_test: object = None
     paired: bool = False
+    drive: object = None
+    simulation: object = None
 
     @property
     def shape(self) -> tuple:
@@ -275,7 +282,8 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     mech, grid, axes, solved = builder.build()
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
-                 tuple(builder.warnings), builder.lift_test, builder.paired)
+                 tuple(builder.warnings), builder.lift_test, builder.paired, builder.drive,
+                 builder.simulation)
 
 
 def _warn(model: Model) -> Model:

@@ -1,0 +1,79 @@
+"""The contract of a hydraulic component and the registry of component types.
+
+A component is an immutable description (a frozen dataclass) of one element of the
+open hydraulic circuit of seed 001 lab 6 (fig. 6.1: pump 1, relief valve 2,
+directional valve 3, lines 4, cylinder 5; the oil of the lines and the cylinder
+lumped in one node, fig. 6.2). Each one
+
+* has ``type_name`` — the model file's ``type`` (``[[drive]]`` entries);
+* has ``role`` — its place in the circuit: ``"pump"``, ``"relief"``, ``"valve"``,
+  ``"line"``, ``"volume"``, ``"cylinder"`` or ``"divider"``;
+* has ``quantities`` — ``{field: kind}`` of its value fields (the units the file
+  may give them in, :mod:`assur.io._drive`);
+* states its equation and the unit of every field in its docstring, SI inside;
+* checks its values on construction (:meth:`check`), raising
+  :class:`assur.errors.ModelError` that names the component, the field and value.
+
+The role's methods (``flow``, ``relief_flow``, ``loss_coefficients``, …) are what
+:class:`assur.drive.Circuit` calls; nothing else looks inside a component.
+Adding a component type is one new module registering itself here and imported
+in :mod:`assur.drive`.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import ModelError
+
+__all__ = ["register", "registry", "component_type", "ROLES", "positive", "nonneg"]
+
+#: the places a component can take in the circuit
+ROLES = ("pump", "relief", "valve", "line", "volume", "cylinder", "divider")
+
+_REGISTRY: dict[str, type] = {}
+
+
+def register(cls):
+    """Class decorator: register a component type under ``cls.type_name``."""
+    name = cls.type_name
+    if cls.role not in ROLES:
+        raise ValueError(f"component {name!r}: role must be one of: {list(ROLES)}")
+    if name in _REGISTRY and _REGISTRY[name] is not cls:
+        raise ValueError(f"component type {name!r} is registered twice")
+    _REGISTRY[name] = cls
+    return cls
+
+
+def registry() -> dict[str, type]:
+    """The registered component types by model-file ``type`` name (a copy)."""
+    return dict(_REGISTRY)
+
+
+def component_type(name: str) -> type:
+    """The component type of a ``type`` name; a ValueError lists the valid ones."""
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise ValueError(f"component type must be one of: {sorted(_REGISTRY)}, "
+                         f"got {name!r}") from None
+
+
+def _check(obj, field, ok, rule):
+    v = getattr(obj, field)
+    if not (isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+            and ok(v)):
+        raise ModelError(f"{obj.type_name} {getattr(obj, 'name', None) or ''}: "
+                         f"{field} = {v!r} must be a finite number {rule}".replace("  ", " "))
+
+
+def positive(obj, *fields):
+    """Raise ModelError unless every field of ``obj`` is a finite number > 0."""
+    for f in fields:
+        _check(obj, f, lambda x: x > 0, "> 0")
+
+
+def nonneg(obj, *fields):
+    """Raise ModelError unless every field of ``obj`` is a finite number ≥ 0."""
+    for f in fields:
+        _check(obj, f, lambda x: x >= 0, "≥ 0")

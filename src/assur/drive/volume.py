@@ -1,0 +1,52 @@
+"""The lumped oil volume at the cylinder (seed 001 lab 6, node Y2 of fig. 6.2)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+from .base import positive, register
+
+__all__ = ["OilVolume", "BULK_MODULUS"]
+
+#: effective bulk modulus of the oil with undissolved air (up to 6 %) and the
+#: compliance of hoses, adiabatic, 1–20 MPa (lab 6, "to 1 %") [Pa]
+BULK_MODULUS = 2.0e8
+
+
+@register
+@dataclass(frozen=True)
+class OilVolume:
+    """All the oil of the pressure line lumped at the cylinder, compressible.
+
+    Lab 6 eqs. (1)–(2): the pump's flow moves the piston and compresses the oil,
+
+    ``Q = A·Ṡ + ṗ1·V(S)/E_pr``,  ``V(S) = V0 + A·(S − S0)``,
+
+    V0 the volume at the start of the stroke S0 [m³], A the pistons' area, E_pr
+    the effective bulk modulus [Pa] (lab 6: 2.0e8 Pa, taken constant).
+
+    Parameters
+    ----------
+    volume : float
+        V0 [m³]: lines, valve and the cylinder's dead volume at S0.
+    bulk_modulus : float
+        E_pr [Pa] (default :data:`BULK_MODULUS`).
+    name : str, optional
+    """
+
+    volume: float
+    bulk_modulus: float = BULK_MODULUS
+    name: str | None = None
+
+    type_name: ClassVar[str] = "oil_volume"
+    role: ClassVar[str] = "volume"
+    quantities: ClassVar = {"volume": "volume", "bulk_modulus": "pressure"}
+
+    def __post_init__(self):
+        positive(self, "volume", "bulk_modulus")
+
+    def volume_at(self, area, stroke):
+        """V = V0 + A·(S − S0) [m³] for the pistons' area ``area`` [m²] and the stroke
+        from the start ``stroke`` = S − S0 [m]."""
+        return self.volume + area * stroke

@@ -1,0 +1,152 @@
+"""Work cycles of a machine driven by cylinders at constant rod speeds, and the
+cylinder forces along them (seed 004: combined vs separate motion of a forestry
+manipulator's boom and stick, eqs. 45, 60–62).
+
+A cycle moves every coordinate q_j (a cylinder length) from ``start[j]`` to
+``end[j]`` in segments; within a segment the rods move at constant speeds, so
+q̈ = 0 and the forces the cylinders must supply are (:mod:`assur.dynamics.eom`)
+
+    F(q, q̇) = h(q, q̇) − Q(q)          (static part F_s = −Q, dynamic part F_d = h)
+
+— the paper's assumption (rigid hydraulics, constant V1, V2: "possible with two
+circuits"); the jumps of speed at the segments' ends are not resolved.
+
+Scenarios (cycle time T_c, strokes ΔS_j = |end_j − start_j|):
+
+=====================  ====================================================  =========
+scenario               speeds                                                eq.
+=====================  ====================================================  =========
+``combined_equal``     V1 = V2 = min_j ΔS_j/T_c, both from the start; the    (60)
+                       longer stroke ends later
+``combined_ideal``     V_j = ΔS_j/T_c: both start and end together           (61)
+``separate_second``    V = ΣΔS_j/T_c, the second coordinate (the stick)      (62) a
+                       first, then the first (the boom)
+``separate_first``     V = ΣΔS_j/T_c, the first coordinate first             (62) b
+=====================  ====================================================  =========
+
+With constant speeds every dynamic term scales as 1/T_c² (h is quadratic in q̇),
+so F_d·T_c² and any ratio of dynamic parts do not depend on T_c (BRIEF.md).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .eom import equations_of_motion
+
+__all__ = ["SCENARIOS", "Cycle", "cycle", "cycle_forces", "sweep"]
+
+SCENARIOS = ("combined_equal", "combined_ideal", "separate_second", "separate_first")
+
+
+@dataclass(frozen=True)
+class Cycle:
+    """Positions and rates of a cycle sampled in time.
+
+    Attributes
+    ----------
+    scenario : str
+    period : float
+        The cycle time T_c [s] the speeds were set from.
+    t : ndarray, shape (n,)
+        Times [s] (the last one is when every coordinate has arrived).
+    q, qdot : ndarray, shape (n, k)
+        Coordinates [m] and rod speeds [m/s] (signed: towards ``end``).
+    segment : ndarray of int, shape (n,)
+    """
+
+    scenario: str
+    period: float
+    t: np.ndarray
+    q: np.ndarray
+    qdot: np.ndarray
+    segment: np.ndarray
+
+
+def cycle(start, end, period, scenario, samples=41) -> Cycle:
+    """The cycle of two coordinates from ``start`` to ``end`` [m] for a cycle time
+    ``period`` [s] in ``scenario`` (:data:`SCENARIOS`), ``samples`` times per
+    segment (its ends included).
+
+    Raises
+    ------
+    ValueError
+        An unknown scenario, a period ≤ 0, or not two coordinates with a stroke each.
+    """
+    if scenario not in SCENARIOS:
+        raise ValueError(f"scenario must be one of: {list(SCENARIOS)}, got {scenario!r}")
+    if not (np.isfinite(period) and period > 0):
+        raise ValueError(f"period must be a time > 0 [s], got {period!r}")
+    a, b = np.asarray(start, float), np.asarray(end, float)
+    if a.shape != (2,) or b.shape != (2,) or np.any(a == b):
+        raise ValueError("a cycle moves two coordinates, each by a non-zero stroke")
+    stroke = np.abs(b - a)
+    sense = np.sign(b - a)
+    if scenario == "combined_equal":
+        V = np.full(2, stroke.min() / period)
+        first = stroke / V
+        segs = [(first.min(), V * sense), (first.max() - first.min(),
+                                           np.where(first > first.min(), V, 0.0) * sense)]
+    elif scenario == "combined_ideal":
+        segs = [(period, stroke / period * sense)]
+    else:
+        V = stroke.sum() / period
+        order = (1, 0) if scenario == "separate_second" else (0, 1)
+        segs = []
+        for j in order:
+            v = np.zeros(2)
+            v[j] = V * sense[j]
+            segs.append((stroke[j] / V, v))
+    t0, q0 = 0.0, a.copy()
+    ts, qs, vs, ss = [], [], [], []
+    for i, (dur, v) in enumerate(segs):
+        if dur <= 0:
+            continue
+        tt = np.linspace(0.0, dur, samples)
+        ts.append(t0 + tt)
+        qs.append(q0 + tt[:, None] * v)
+        vs.append(np.broadcast_to(v, (samples, 2)))
+        ss.append(np.full(samples, i))
+        t0 += dur
+        q0 = q0 + dur * v
+    q = np.concatenate(qs)
+    # arrive exactly (no rounding past a stop)
+    q = np.where(sense > 0, np.minimum(q, b), np.maximum(q, b))
+    return Cycle(scenario, float(period), np.concatenate(ts), q, np.concatenate(vs),
+                 np.concatenate(ss))
+
+
+def cycle_forces(mechanism, cycles, g=None):
+    """Cylinder forces along cycles: ``[(F, F_static), …]`` with arrays of shape
+    (n, k) [N] (F = h − Q, F_static = −Q), for all the cycles' positions solved at
+    once."""
+    q = np.concatenate([c.q for c in cycles])
+    qd = np.concatenate([c.qdot for c in cycles])
+    eom = equations_of_motion(mechanism.solve(q), g=g)
+    F = eom.actuator_forces(qd, np.zeros_like(qd))
+    Fs = -eom.generalized_forces
+    out, i = [], 0
+    for c in cycles:
+        n = c.t.size
+        out.append((F[i:i + n], Fs[i:i + n]))
+        i += n
+    return out
+
+
+def sweep(mechanism, start, end, periods=range(4, 21), scenarios=SCENARIOS, g=None,
+          samples=41):
+    """Largest |F_j| and |F_d,j| of every scenario and cycle time (seed 004: T_c from
+    4 to 20 s by 1 s), a pandas DataFrame with columns ``scenario``, ``T`` [s],
+    ``F1_max``, ``F2_max``, ``Fd1_max``, ``Fd2_max`` [N] and ``duration`` [s] (when the
+    last rod arrives)."""
+    import pandas as pd
+    cycles = [cycle(start, end, float(T), s, samples) for s in scenarios for T in periods]
+    rows = []
+    for c, (F, Fs) in zip(cycles, cycle_forces(mechanism, cycles, g)):
+        Fd = F - Fs
+        rows.append(dict(scenario=c.scenario, T=c.period, F1_max=np.abs(F[:, 0]).max(),
+                         F2_max=np.abs(F[:, 1]).max(), Fd1_max=np.abs(Fd[:, 0]).max(),
+                         Fd2_max=np.abs(Fd[:, 1]).max(), duration=c.t[-1]))
+    return pd.DataFrame(rows)

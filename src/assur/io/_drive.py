@@ -1,0 +1,179 @@
+"""The ``[[drive]]`` entries and the ``[simulation]`` section of a model file: the
+hydraulic circuit driving the mechanism and the simulation of its motion in time
+(:mod:`assur.drive`, :mod:`assur.dynamics.simulate`, docs/simulation.md).
+
+```toml
+[[drive]]
+type = "gear_pump"                 # one entry per component, by type (assur.drive.registry)
+displacement = "32 cm^3"           # НШ-32
+speed = "1800 rpm"
+eta_volumetric = 0.9
+
+[[drive]]
+type = "cylinder"
+coordinate = "S"
+bore = "125 mm"
+rod = "50 mm"
+s_min = "Smin"
+s_max = "Smax"
+
+[simulation]
+duration = "4.5 s"
+p0 = "0 MPa"                       # pressure in the line at t = 0
+method = "Radau"                   # Radau | BDF | LSODA
+outputs = 2001                     # output times, evenly spaced
+```
+
+Kept apart from the rest of the schema: :mod:`assur.io._schema` only admits the
+entries, :mod:`assur.io._build` calls :func:`build_drive` once the mechanism is
+built, and the results are :attr:`assur.io.Model.drive` (an
+:class:`assur.drive.Circuit`) and :attr:`assur.io.Model.simulation`. Values take
+units (or are parameter names), and every error names the file, line and key.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import typing
+from dataclasses import dataclass
+
+from pydantic import BaseModel, ConfigDict, Field, StrictInt
+
+from .. import drive as _drive
+from ..dynamics.simulate import METHODS
+from ..errors import ModelError
+from . import _schema as S
+from ._units import ANGULAR_VELOCITY, LENGTH, NUMBER, PRESSURE, TIME, Kind
+
+__all__ = ["SimulationSpec", "build_drive", "KINDS"]
+
+VOLUME = Kind("volume", "a volume", "m**3", '"32 cm^3"')
+FLOW = Kind("flow", "a flow", "m**3/s", '"80 l/min"')
+DENSITY = Kind("density", "a density", "kg/m**3", '"870 kg/m^3"')
+VISCOSITY = Kind("kinematic viscosity", "a kinematic viscosity", "m**2/s", '"46 mm^2/s"')
+INERTANCE = Kind("inertance", "an inertia coefficient", "Pa*s**2/m", '"2.6e5 Pa*s^2/m"')
+RESISTANCE = Kind("resistance", "a laminar loss coefficient", "Pa*s/m", '"1.5e6 Pa*s/m"')
+TURBULENT = Kind("turbulent resistance", "a turbulent loss coefficient", "Pa*s**2/m**2",
+                 '"3.5e7 Pa*s^2/m^2"')
+
+#: the unit kind of each quantity a component declares (``quantities``)
+KINDS = {k.name: k for k in (VOLUME, FLOW, DENSITY, VISCOSITY, INERTANCE, RESISTANCE,
+                             TURBULENT, LENGTH, PRESSURE, NUMBER, ANGULAR_VELOCITY)}
+
+
+class SimulationSection(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=False)
+
+    duration: S.Value
+    p0: S.Value = 0.0
+    method: typing.Literal[METHODS] = "Radau"
+    outputs: StrictInt = Field(2001, ge=2, le=1_000_000)
+
+
+@dataclass(frozen=True)
+class SimulationSpec:
+    """The ``[simulation]`` section in SI.
+
+    Attributes
+    ----------
+    duration : float
+        t_end [s].
+    p0 : float
+        Pressure in the line at t = 0 [Pa].
+    method : str
+        solve_ivp method (:data:`assur.dynamics.simulate.METHODS`).
+    outputs : int
+        Number of evenly spaced output times.
+    """
+
+    duration: float
+    p0: float
+    method: str
+    outputs: int
+
+
+def build_drive(builder, mech):
+    """``(circuit, simulation)`` of the file ``builder`` reads: an
+    :class:`assur.drive.Circuit` (None without ``[[drive]]`` entries) and a
+    :class:`SimulationSpec` (None without a ``[simulation]`` table)."""
+    raw = builder.data.get("drive")
+    sim = builder.data.get("simulation")
+    circuit = None
+    if raw is not None:
+        if not isinstance(raw, list):
+            raise builder.error(("drive",), "expected a list of components ([[drive]] "
+                                            "entries)")
+        types = _drive.registry()
+        comps = []
+        for i, entry in enumerate(raw):
+            comps.append(_component(builder, mech, types, entry, ("drive", i)))
+        try:
+            circuit = _drive.Circuit(tuple(comps))
+        except ModelError as e:
+            raise builder.error(("drive",), str(e)) from None
+    spec = None
+    if sim is not None:
+        if circuit is None:
+            raise builder.error(("simulation",), "a [simulation] needs the circuit: add "
+                                                 "[[drive]] entries")
+        sec, errors = S.validate(SimulationSection, sim, ("simulation",))
+        if errors:
+            path, problem = errors[0]
+            raise builder.error(path, problem)
+        dur = _si(builder, mech, ("simulation", "duration"), sec.duration, TIME, "positive")
+        p0 = _si(builder, mech, ("simulation", "p0"), sec.p0, PRESSURE, "nonneg")
+        spec = SimulationSpec(dur, p0, sec.method, sec.outputs)
+    return circuit, spec
+
+
+def _si(builder, mech, path, v, kind, flag=None):
+    si = builder.value(path, v, kind, flag)
+    return float(mech.params[si]) if isinstance(si, str) else float(si)
+
+
+def _component(builder, mech, types, entry, at):
+    if not isinstance(entry, dict):
+        raise builder.error(at, "expected a table (a [[drive]] entry)")
+    options = ", ".join(types)
+    t = entry.get("type")
+    if t is None:
+        raise builder.error(at, f'missing required key "type" (one of: {options})')
+    if t not in types:
+        raise builder.error(at + ("type",), f'unknown component type "{t}"'
+                                            f'{S.did_you_mean(str(t), types)} (one of: '
+                                            f'{options})')
+    cls = types[t]
+    fields = {f.name: f for f in dataclasses.fields(cls)}
+    kw = {}
+    for key, v in entry.items():
+        if key == "type":
+            continue
+        path = at + (key,)
+        if key not in fields:
+            raise builder.error(path, f'unknown key "{key}" of a {t}'
+                                      f'{S.did_you_mean(key, fields)} (keys: '
+                                      f'{", ".join(fields)})')
+        q = cls.quantities.get(key)
+        if q is not None:
+            kw[key] = _si(builder, mech, path, v, KINDS[q])
+        elif key == "coordinate":
+            if v not in mech.coordinates:
+                raise builder.error(path, f'expected a generalized coordinate (one of: '
+                                          f'{", ".join(mech.coordinates)}), found {S.show(v)}')
+            kw[key] = v
+        elif key == "shares":
+            if not isinstance(v, list):
+                raise builder.error(path, f"expected a list of numbers, found {S.show(v)}")
+            kw[key] = tuple(_si(builder, mech, path + (j,), x, NUMBER) for j, x in enumerate(v))
+        else:
+            if not isinstance(v, str):
+                raise builder.error(path, f"expected a string, found {S.show(v)}")
+            kw[key] = v
+    missing = [f.name for f in fields.values()
+               if f.default is dataclasses.MISSING and f.name not in kw]
+    if missing:
+        raise builder.error(at, f'missing required key "{missing[0]}" of a {t}')
+    try:
+        return cls(**kw)
+    except ModelError as e:
+        raise builder.error(at, str(e)) from None

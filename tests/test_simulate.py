@@ -1,0 +1,195 @@
+"""The lab-6 lift (seed 001 lab 6, examples/adapter_lab6.toml): hydraulic drive +
+mechanism simulated in time (:mod:`assur.dynamics.simulate`, :mod:`assur.drive`).
+
+What is checked, and against what:
+
+* the lab's data: Q = q·n·η0 = 32 cm³ · 1800/60 · 0.9 and the steady rod speed Q/A
+  with A = π·0.125²/4 (lab 6, task 1), and the simulated rod speed against it;
+* lab 6 eq. (6): the reduced mass m(S) = m6·I_v² + J6·φ6'² with I_v = φ6'·L_S6,
+  from the link's angular analog (not through the equations of motion);
+* the start-up: a pressure overshoot and an oscillating speed (lab 6: "the rise of
+  the piston speed … is pronouncedly oscillatory");
+* the energy balance W_pump = losses + mechanism + stored to 1e-3 (every method);
+* the work against gravity equals m6·g·ΔY_S6 from the engine's positions;
+* closed forms: the lift-off time of a closed volume filled at a constant flow
+  (t = p_lift·V0/(E·Q)), and the relief valve's end pressure p_set + Δp_reg.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from assur import io
+from assur.drive import Circuit, LineLosses, registry
+from assur.dynamics import simulate, simulate_model
+from assur.dynamics.simulate import METHODS, ReducedTable
+from assur.errors import ModelError
+from assur.io import ModelFileError
+
+#: lab 6 task 1: НШ-32 at 1800 rpm, η0 = 0.9; piston 0.125 m
+Q_LAB = 32e-6 * 1800 / 60 * 0.9
+A_LAB = math.pi * 0.125 ** 2 / 4
+V_LAB = Q_LAB / A_LAB  # 0.0704 m/s
+
+
+@pytest.fixture(scope="module")
+def model():
+    return io.load(io.bundled("adapter_lab6"), warn=True)
+
+
+@pytest.fixture(scope="module")
+def result(model):
+    return simulate_model(model)
+
+
+def test_the_lab_data_give_the_steady_speed(model, result):
+    assert model.drive.pump_flow() == pytest.approx(Q_LAB, rel=1e-12)
+    assert result.steady_speed == pytest.approx(V_LAB, rel=1e-12)
+    assert round(V_LAB, 4) == 0.0704
+
+
+def test_the_simulated_rod_speed_is_the_pumps_flow_over_the_area(model, result):
+    """From lift-off to the end of the stroke the rod moves at Q/A on average within
+    1 % (the oscillation goes on: lab 6 "most of the lift at a variable speed"); with
+    a heavily damped line it settles at Q/A within 5e-3 (what is left is the oil the
+    slowly rising pressure compresses)."""
+    t_off, t_end = result.events["lift-off"][0], result.events["end of stroke"][0]
+    assert 0.25 / (t_end - t_off) == pytest.approx(V_LAB, rel=1e-2)
+    damped = Circuit(tuple(LineLosses(a2=1e8) if c.role == "line" else c
+                           for c in model.drive.components))
+    r = simulate(model.mechanism, damped, 3.0)
+    late = (r.t > 2.0) & (r.t < 3.0)
+    assert np.abs(r.qdot[late] / V_LAB - 1).max() < 5e-3
+    # what is left is the compression flow V·ṗ/E of the rising pressure
+    assert np.abs(r.qdot[late] / V_LAB - 1).max() <= 1.05 * np.abs(
+        r.flows["compression"][late]).max() / Q_LAB + 1e-6
+
+
+def test_the_start_up_overshoots(result):
+    """Pressure overshoot and speed oscillation at the start of the lift."""
+    moving = result.phase == "moving"
+    p_load = np.median(result.load[moving]) / A_LAB  # the pressure that holds the load
+    assert result.p1[moving].max() > 1.3 * p_load
+    assert result.qdot.max() > 1.3 * V_LAB
+    late = moving & (result.t > result.events["lift-off"][0] + 0.5)
+    assert result.qdot[late].min() < 0.8 * V_LAB
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_energy_balance(model, method):
+    r = simulate_model(model, method=method)
+    assert r.status == 0, r.message
+    e = r.energy
+    assert abs(e["residual"]) <= 1e-3 * e["pump"], e
+    assert e["relief"] > 0 and e["impact"] > 0 and e["line"] > 0
+
+
+def test_work_against_gravity_is_the_rise_of_the_centre_of_mass(model, result):
+    kin = model.mechanism.solve(np.array([0.55, 0.80]))
+    rise = float(np.diff(kin.y("S6"))[0])
+    m6 = float(model.mechanism.params["m6"])
+    assert result.energy["loads"] == pytest.approx(m6 * 9.81 * rise, rel=1e-6)
+
+
+def test_reduced_mass_is_lab6_eq6(model):
+    """m(S) = m6·I_v² + J6·φ6'², I_v = φ6'·L_S6 (lab 6 eq. 6), and m'(S) =
+    2·(m6·I_v·I_v' + J6·φ6'·φ6'') (the lab's m'(S)), from the lever's analogs."""
+    S = np.linspace(0.55, 0.80, 51)
+    tab = ReducedTable.from_mechanism(model.mechanism, 0.55, 0.80, 51)
+    kin = model.mechanism.solve(S)
+    p = model.mechanism.params
+    w1, w2 = kin.dphi("3"), kin.ddphi("3")
+    L, m6, J6 = float(p["LS6"]), float(p["m6"]), float(p["J6"])
+    Iv, dIv = w1 * L, w2 * L
+    np.testing.assert_allclose(tab.m, m6 * Iv ** 2 + J6 * w1 ** 2, rtol=1e-12)
+    np.testing.assert_allclose(tab.dm, 2 * (m6 * Iv * dIv + J6 * w1 * w2), rtol=1e-10)
+    # and the interpolant's derivative is m' between the nodes too
+    mid = 0.5 * (S[:-1] + S[1:])
+    m, dm, _ = tab(mid)
+    kin_mid = model.mechanism.solve(mid)
+    w1, w2 = kin_mid.dphi("3"), kin_mid.ddphi("3")
+    np.testing.assert_allclose(dm, 2 * (m6 * L * L + J6) * w1 * w2, rtol=1e-4)
+
+
+def test_lift_off_time_and_relief_pressure_in_closed_form(model, result):
+    d = model.drive
+    E, V0, Qp = d.volume.bulk_modulus, d.volume.volume, d.pump_flow()
+    p_lift = result.load[0] / d.area
+    assert result.events["lift-off"][0] == pytest.approx(p_lift * V0 / (E * Qp), rel=1e-6)
+    rv = d.relief
+    assert result.events["relief opens"] and result.events["relief opens"][0] > \
+        result.events["end of stroke"][0]
+    assert result.p1[-1] == pytest.approx(rv.setting + rv.regulation_range, rel=1e-3)
+
+
+def test_result_table(result):
+    df = result.to_frame()
+    assert {"t", "S", "dS", "ddS", "p1", "p2", "dp1", "F", "Q_relief"} <= set(df.columns)
+    assert np.isfinite(df.to_numpy(dtype=float)).all()
+    assert len(df) == 2251
+
+
+def test_bad_inputs(model):
+    with pytest.raises(ValueError, match="method must be one of"):
+        simulate(model.mechanism, model.drive, 1.0, method="RK45")
+    with pytest.raises(ValueError, match="t_end"):
+        simulate(model.mechanism, model.drive, -1.0)
+    with pytest.raises(ModelError, match="role 'pump'"):
+        Circuit(tuple(c for c in model.drive.components if c.role != "pump"))
+    with pytest.raises(ModelError, match="eta_volumetric"):
+        registry()["gear_pump"](32e-6, 188.5, 1.5)
+    with pytest.raises(ModelError, match="s_min"):
+        dataclasses.replace(model.drive.cylinder, s_min=0.9)
+
+
+def test_malformed_drive_entries_name_the_line():
+    text = io.bundled("adapter_lab6").read_text()
+    bad = text.replace('displacement = "32 cm^3"', 'displacment = "32 cm^3"')
+    with pytest.raises(ModelFileError, match=r"drive\[0\]\.displacment.*did you mean"):
+        io.loads(bad, "adapter.toml")
+    bad = text.replace('displacement = "32 cm^3"', 'displacement = "32 MPa"')
+    with pytest.raises(ModelFileError, match=r":\d+: drive\[0\]\.displacement"):
+        io.loads(bad, "adapter.toml")
+    bad = text.replace('type = "gear_pump"', 'type = "gear_pmp"')
+    with pytest.raises(ModelFileError, match="gear_pump"):
+        io.loads(bad, "adapter.toml")
+
+
+def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    from assur.report.simulation import FIGURES
+    r = CliRunner().invoke(app, ["simulate", str(io.bundled("adapter_lab6")), "-o",
+                                 str(tmp_path), "--lang", "ru"])
+    assert r.exit_code == 0, r.output
+    assert "reached t_end" in r.output
+    for name in FIGURES:
+        assert (tmp_path / f"sim_{name}.png").stat().st_size > 0
+    from PIL import Image
+    with Image.open(tmp_path / "simulation.gif") as gif:  # 0.1 s a frame over 4.5 s
+        # (equal frames at rest on a stop are merged by the GIF writer)
+        assert 20 < gif.n_frames <= 46
+    df = pd.read_csv(tmp_path / "simulation.csv")
+    assert len(df) == 2251 and "p1 [MPa]" in df.columns
+    text = (tmp_path / "simulation.csv").read_text()
+    assert "-0.0," not in text and "nan" not in text.lower()
+    page = (tmp_path / "simulation.html").read_text(encoding="utf-8")
+    assert "Подъём секции косилки-плющилки" in page and "невязка баланса" in page
+    summary = (tmp_path / "simulation_summary.csv").read_text(encoding="utf-8")
+    assert "открытие предохранительного клапана" in summary
+
+
+def test_cli_simulate_without_a_drive_fails_with_one_message(tmp_path):
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    r = CliRunner().invoke(app, ["simulate", str(io.bundled("hitch_003")), "-o",
+                                 str(tmp_path)])
+    assert r.exit_code == 1
+    assert "no hydraulic drive" in r.output and "Traceback" not in r.output
