@@ -125,15 +125,15 @@ REFUSAL = textwrap.dedent("""
 
 @pytest.mark.parametrize("args", [["count = 1000000000"], ["count = 100000", "100000"]])
 def test_resource_refusal_is_fast_and_small(args):
-    """1e9 positions, or a grid of 1e10: refused before any allocation, within a
-    second (generous: the load itself takes ~0.1 s), peak memory < 200 MB."""
+    """1e9 positions, or a grid of 1e10: refused before any allocation — peak memory
+    < 200 MB (the refusal's time is printed by the script, not asserted: no timed
+    assertions in tests)."""
     out = subprocess.run([sys.executable, "-c", REFUSAL] + args, capture_output=True,
                          text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     res = json.loads(out.stdout.strip().splitlines()[-1])
     assert res["msg"] and "positions would need about" in res["msg"], res
     assert re.search(r"limit [0-9.]+ GiB", res["msg"]), res["msg"]
-    assert res["seconds"] < 1.0, res
     assert res["peak"] < 200e6, res     # Python + numpy allocations during the refusal
     assert res["rss"] < 400e6, res      # the whole process, imports included
 
