@@ -435,11 +435,8 @@ def crank_dynamics(source, qdot, qddot=None, g=None, q=None):
     True
     """
     from .analysis import gravity_of
-    kin = getattr(source, "kinematics", source)
-    if hasattr(kin, "solve") and not hasattr(kin, "jacobian"):
-        if q is None:
-            raise ValueError("crank_dynamics(mechanism, …) needs the crank angles q [rad]")
-        kin = kin.solve(q)
+    from .kinematics import kinematics_of
+    kin = kinematics_of(source, q, "crank_dynamics")
     if g is None:
         g = gravity_of(kin.mechanism)
     return CrankDynamics(kin, qdot, qddot, g)

@@ -549,3 +549,15 @@ class Kinematics:
     def __repr__(self):
         return (f"Kinematics({self.mechanism.name!r}, shape={self.shape}, "
                 f"points={len(self._pidx)}, links={len(self.links)})")
+
+
+def kinematics_of(source, q=None, who="this function"):
+    """The :class:`Kinematics` of ``source``: an Analysis (its kinematics), a
+    Kinematics (itself) or a Mechanism, solved at the coordinates ``q`` (required
+    then; a ValueError naming ``who`` otherwise)."""
+    kin = getattr(source, "kinematics", source)
+    if hasattr(kin, "solve") and not hasattr(kin, "jacobian"):
+        if q is None:
+            raise ValueError(f"{who}(mechanism, …) needs the coordinates q")
+        kin = kin.solve(q)
+    return kin

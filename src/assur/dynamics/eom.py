@@ -216,11 +216,8 @@ def equations_of_motion(source, q=None, g=None):
     True
     """
     from ..analysis import gravity_of
-    kin = getattr(source, "kinematics", source)
-    if hasattr(kin, "solve") and not hasattr(kin, "jacobian"):
-        if q is None:
-            raise ValueError("equations_of_motion(mechanism, …) needs the coordinates q")
-        kin = kin.solve(q)
+    from ..kinematics import kinematics_of
+    kin = kinematics_of(source, q, "equations_of_motion")
     if g is None:
         g = gravity_of(kin.mechanism)
     return EquationsOfMotion(kin, g)

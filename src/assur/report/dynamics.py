@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .figures import new_figure
+from .figures import new_figure, titled_axes
 from .labels import check_lang, t, unit
 
 __all__ = ["figures", "centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",
@@ -36,15 +36,6 @@ def _t(key, lang, *args):
 
 def _u(u, lang):
     return unit(u, lang)
-
-
-def _axes(fig, title, xlabel, ylabel):
-    ax = fig.add_subplot()
-    ax.set_title(title)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, alpha=0.35)
-    return ax
 
 
 def _sorted_degrees(q, *ys):
@@ -65,7 +56,7 @@ def centre_of_mass(dynamics, lang="en", balancing=None):
     lang = check_lang(lang)
     fig = new_figure(6.4, 5.0)
     mm = _u("mm", lang)
-    ax = _axes(fig, _t("f_com", lang), f"x − x̄ [{mm}]", f"y − ȳ [{mm}]")
+    ax = titled_axes(fig, _t("f_com", lang), f"x − x̄ [{mm}]", f"y − ȳ [{mm}]")
     paths = [(dynamics.centre, _t("before", lang))]
     if balancing is not None:
         paths.append((balancing.after, _t("after", lang)))
@@ -97,7 +88,7 @@ def hodographs(dynamics, lang="en", reactions=None):
             f"R{i}{j}": (i, j) for _, i, j in dynamics.joints if "0" in (i, j)}
     fig = new_figure(6.4, 5.0)
     N = unit("N", lang)
-    ax = _axes(fig, _t("f_hodo", lang), f"{_t('force_x', lang)} [{N}]",
+    ax = titled_axes(fig, _t("f_hodo", lang), f"{_t('force_x', lang)} [{N}]",
                f"{_t('force_y', lang)} [{N}]")
     for name, (i, j) in reactions.items():
         r = np.asarray(dynamics.reaction(i, j)).reshape(-1, 2)
@@ -114,7 +105,7 @@ def reduced_moment(dynamics, lang="en"):
     driving moment from the reactions [N·m], against the crank angle [°]."""
     lang = check_lang(lang)
     fig = new_figure()
-    ax = _axes(fig, _t("f_mred", lang), _xlabel(lang, dynamics.coordinate),
+    ax = titled_axes(fig, _t("f_mred", lang), _xlabel(lang, dynamics.coordinate),
                f"M [{unit('N·m', lang)}]")
     x, a, b, c = _sorted_degrees(dynamics.q, dynamics.reduced_moment,
                                  dynamics.reduced_moment_without_inertia,
@@ -131,7 +122,7 @@ def reduced_inertia(dynamics, lang="en"):
     """J_red [kg·m²] and dJ_red/dφ [kg·m²/rad] against the crank angle [°]."""
     lang = check_lang(lang)
     fig = new_figure()
-    ax = _axes(fig, _t("f_jred", lang), _xlabel(lang, dynamics.coordinate),
+    ax = titled_axes(fig, _t("f_jred", lang), _xlabel(lang, dynamics.coordinate),
                f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
     x, J, dJ = _sorted_degrees(dynamics.q, dynamics.reduced_inertia,
                                dynamics.reduced_inertia_derivative)

@@ -71,6 +71,16 @@ def new_figure(width=6.4, height=4.0) -> Figure:
     return fig
 
 
+def titled_axes(fig, title, xlabel, ylabel):
+    """A new subplot of ``fig`` with its title, axis labels and a light grid."""
+    ax = fig.add_subplot()
+    ax.set_title(title)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.35)
+    return ax
+
+
 #: line styles and markers of a curve that coincides with one drawn before it
 _SAME_STYLES = (dict(ls="--", marker="x", markersize=7, lw=1.6),
                 dict(ls=":", marker="+", markersize=9, lw=1.6),

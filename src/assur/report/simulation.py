@@ -25,22 +25,13 @@ from pathlib import Path
 
 import numpy as np
 
-from .figures import new_figure
+from .figures import new_figure, titled_axes
 from .labels import check_lang, t, unit
 
 __all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
 
 FIGURES = ("pressure", "pressure_rate", "coordinate", "speed", "acceleration", "reduced_mass")
 MPA = 1e6
-
-
-def _axes(fig, title, xlabel, ylabel):
-    ax = fig.add_subplot()
-    ax.set_title(title)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, alpha=0.35)
-    return ax
 
 
 def figures(result, lang="en"):
@@ -53,7 +44,7 @@ def figures(result, lang="en"):
     def fig(name, title, ylabel):
         f = new_figure()
         out[name] = f
-        return _axes(f, title, tx, ylabel)
+        return titled_axes(f, title, tx, ylabel)
 
     ax = fig("pressure", t("sim_p", lang), f"p [{unit('MPa', lang)}]")
     ax.plot(result.t, result.p1 / MPA, label="p1")
@@ -70,7 +61,7 @@ def figures(result, lang="en"):
     ax = fig("acceleration", t("sim_a", lang, c), f"d²{c}/dt² [{unit('m/s²', lang)}]")
     ax.plot(result.t, result.qddot)
     f = new_figure()
-    ax = _axes(f, t("sim_m", lang, c), f"{c} [{unit('m', lang)}]", f"m [{unit('kg', lang)}]")
+    ax = titled_axes(f, t("sim_m", lang, c), f"{c} [{unit('m', lang)}]", f"m [{unit('kg', lang)}]")
     order = np.argsort(result.q, kind="stable")
     ax.plot(result.q[order], result.reduced_mass[order], label="m")
     ax2 = ax.twinx()
