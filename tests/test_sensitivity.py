@@ -28,7 +28,9 @@ from assur import examples
 from assur.errors import AssemblyError, ModelError
 from assur.sensitivity import jet_outputs, numeric_parameters, sensitivities
 from assur.sensitivity.dual import Dual, base, variables
+from assur.statics import solve
 from conftest import examples as n_examples
+import test_statics_random as TS  # the random mechanism families and loads
 
 H_CS = 1e-30
 RTOL_CS = 1e-9
@@ -276,9 +278,6 @@ def test_random_mechanisms_against_complex_step(family, data):
     """Random assemblable mechanisms of every group family with random static loads:
     positions, analogs, actuator forces and joint reactions with respect to every
     parameter against complex step."""
-    import test_statics_random as TS
-    from assur.statics import solve
-
     case = TS.prepare(TS.FAMILIES[family](data))
     loads = [ld for ld in TS.draw_loads(data, case.mech, "loads") if ld[0] != "mass"]
     TS.assume_springs_long(case, loads)
