@@ -82,3 +82,72 @@ def test_errors():
         Tolerance("X01", 1e-3, "triangular")
     with pytest.raises(ModelError, match="not negative"):
         Tolerance("X01", -1e-3)
+
+
+# ---------------------------------------------------------------------------------
+# the [tolerances] section
+# ---------------------------------------------------------------------------------
+def _hitch_with(section: str):
+    text = io.bundled("hitch_003").read_text(encoding="utf-8")
+    return io.loads(text + "\n[tolerances]\n" + section, name="t.toml")
+
+
+def test_bundled_file_reads_its_tolerances():
+    """hitch_003_tolerances.toml extends hitch_003.toml: units of each parameter's
+    quantity (mm, deg, MPa), normal by ±3σ or uniform."""
+    m = io.load(io.bundled("hitch_003_tolerances"))
+    tol = {t.param: t for t in m.tolerances}
+    assert tol["X01"].dist == "normal" and tol["X01"].sigma == pytest.approx(0.5e-3 / 3)
+    assert tol["phiBD"].pm == pytest.approx(np.radians(0.2))
+    assert tol["Pgc_max"].dist == "uniform" and tol["Pgc_max"].pm == pytest.approx(0.5e6)
+    assert tol["Dgc"].sigma == pytest.approx(0.037e-3 / np.sqrt(3))
+    assert m.mechanism.params["L4"] == pytest.approx(0.661283167, abs=1e-9)
+
+
+def test_sigma_form():
+    m = _hitch_with('X01 = { sigma = "0.1 mm" }\nL5 = "+-0.2 mm"\n')
+    assert [t.sigma for t in m.tolerances] == pytest.approx([1e-4, 0.2e-3 / 3])
+
+
+@pytest.mark.parametrize("section, key, problem", [
+    ('X1 = "±0.5 mm"', "tolerances.X1", "did you mean"),
+    ('X01 = "±0.5 kN"', "tolerances.X01", "length"),
+    ('X01 = "-0.5 mm"', "tolerances.X01", "non-negative"),
+    ('X01 = { pm = "1 mm", dist = "triangle" }', "tolerances.X01.dist", "normal, uniform"),
+    ('X01 = { pm = "1 mm", sigma = "1 mm" }', "tolerances.X01", "either pm"),
+    ('X01 = { sigma = "1 mm", dist = "uniform" }', "tolerances.X01.sigma", "uniform"),
+    ('X01 = { pn = "1 mm" }', "tolerances.X01.pn", "unknown key"),
+    ('X01 = true', "tolerances.X01", "expected"),
+])
+def test_errors_name_the_key_and_line(section, key, problem):
+    text = io.bundled("hitch_003").read_text(encoding="utf-8")
+    line = text.count("\n") + 3
+    with pytest.raises(ModelError) as e:
+        _hitch_with(section)
+    msg = str(e.value)
+    assert f"t.toml:{line}:" in msg and key in msg and problem in msg, msg
+
+
+def test_cli_writes_tables_histograms_and_report(tmp_path):
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    out = tmp_path / "tol"
+    res = CliRunner().invoke(app, ["tolerance", str(io.bundled("hitch_003_tolerances")), "-o",
+                                   str(out), "--samples", "300", "--seed", "2", "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["tolerance.html", "tolerance.xlsx", "tolerance_hist_1.png",
+                     "tolerance_hist_2.png", "tolerance_hist_3.png", "tolerance_positions.csv",
+                     "tolerance_worst.csv"]
+    html = (out / "tolerance.html").read_text(encoding="utf-8")
+    assert "Анализ допусков" in html and "P95" in html
+    import pandas as pd
+    worst = pd.read_csv(out / "tolerance_worst.csv")
+    assert worst.shape == (3, 10)
+    m = io.load(io.bundled("hitch_003_tolerances"))
+    g = m.mechanism.evaluate(m.range, outputs=["G(ГЦ, 56)"])["G(ГЦ, 56)"]
+    assert worst["номинал"][1] == pytest.approx(g.min() / 1e3, rel=1e-12)  # kN
+    assert worst["P5"][1] < worst["P50"][1] < worst["P95"][1]
+    res = CliRunner().invoke(app, ["tolerance", str(io.bundled("hitch_003")), "-o", str(out)])
+    assert res.exit_code == 1 and "no [tolerances]" in res.output

@@ -84,6 +84,9 @@ class Model:
         (:mod:`assur.io._drive`, docs/simulation.md), None without them.
     simulation : SimulationSpec or None
         The ``[simulation]`` section, None without one.
+    tolerances : tuple of Tolerance
+        The ``[tolerances]`` section (:mod:`assur.io._tolerances`,
+        :mod:`assur.tolerance`), empty without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -106,6 +109,7 @@ class Model:
     paired: bool = False
     drive: object = None
     simulation: object = None
+    tolerances: tuple = ()
 
     @property
     def shape(self) -> tuple:
@@ -283,7 +287,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
                  tuple(builder.warnings), builder.lift_test, builder.paired, builder.drive,
-                 builder.simulation)
+                 builder.simulation, tuple(builder.tolerances))
 
 
 def _warn(model: Model) -> Model:
