@@ -31,8 +31,8 @@ Examples
 >>> m = examples.hitch_003()
 >>> tol = [Tolerance("X01", 0.5e-3), Tolerance("L4", 1e-3, "uniform")]
 >>> r = monte_carlo(m, [0.45, 0.6], tol, outputs=["p(ГЦ)"], samples=200, seed=1)
->>> r.assembled.mean()
-1.0
+>>> r.failure_share
+0.0
 >>> r.percentiles("p(ГЦ)").shape
 (2, 5)
 """
