@@ -69,32 +69,32 @@ class Tolerance:
         Half-width ±t [SI unit of the parameter]: ±3σ of a normal distribution, or
         the bounds of a uniform one.
     dist : {"normal", "uniform"}
-    sigma : float, optional
-        Standard deviation [SI] of a normal distribution, instead of ``pm``.
+    std : float, optional
+        Standard deviation σ [SI] of a normal distribution, instead of ``pm``.
     """
 
     param: str
     pm: float = 0.0
     dist: str = "normal"
-    sigma_: float | None = None
+    std: float | None = None
 
     def __post_init__(self):
         if self.dist not in DISTRIBUTIONS:
             raise ModelError(f"tolerance of {self.param!r}: dist must be one of: "
                              f"{list(DISTRIBUTIONS)}, got {self.dist!r}")
-        if self.dist == "uniform" and self.sigma_ is not None:
+        if self.dist == "uniform" and self.std is not None:
             raise ModelError(f"tolerance of {self.param!r}: a uniform tolerance is given "
                              f"by its half-width ±t, not by σ")
         s = self.sigma
         if not (math.isfinite(s) and s >= 0.0):
             raise ModelError(f"tolerance of {self.param!r}: the scatter must be finite and "
-                             f"not negative, got ±{self.pm!r}, σ = {self.sigma_!r}")
+                             f"not negative, got ±{self.pm!r}, σ = {self.std!r}")
 
     @property
     def sigma(self) -> float:
         """Standard deviation σ [SI]: t/3 (normal), t/√3 (uniform) or as given."""
-        if self.sigma_ is not None:
-            return float(self.sigma_)
+        if self.std is not None:
+            return float(self.std)
         return float(self.pm) / (3.0 if self.dist == "normal" else math.sqrt(3.0))
 
     def draw(self, rng, n) -> np.ndarray:
