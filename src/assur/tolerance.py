@@ -47,6 +47,7 @@ import numpy as np
 from .errors import AssemblyError, ModelError
 
 __all__ = ["Tolerance", "ToleranceResult", "monte_carlo", "first_order", "default_outputs",
+           "worst_kind",
            "PERCENTILES", "DISTRIBUTIONS"]
 
 #: the percentiles reported [%]
@@ -125,9 +126,10 @@ def default_outputs(mech) -> tuple:
     return tuple(out)
 
 
-def _worst(output) -> str:
-    """How a machine's output over the range is summarised: its minimum for a capacity
-    or a reserve (the weakest position), its maximum otherwise (the peak pressure)."""
+def worst_kind(output) -> str:
+    """How a machine's output over the range is summarised, ``"min"`` or ``"max"``:
+    its minimum for a capacity or a reserve (the weakest position), its maximum
+    otherwise (the peak pressure)."""
     return "min" if output.strip().startswith(("G(", "reserve(")) else "max"
 
 
@@ -198,7 +200,7 @@ class ToleranceResult:
         """Each assembled machine's worst value over the range (minimum of a capacity,
         maximum otherwise), shape (N_ok,) [SI]."""
         v = self.values(output)
-        return v.min(axis=1) if _worst(output) == "min" else v.max(axis=1)
+        return v.min(axis=1) if worst_kind(output) == "min" else v.max(axis=1)
 
     def worst_percentiles(self, output, q=PERCENTILES) -> np.ndarray:
         """Percentiles of :meth:`worst`, shape (len(q),) [SI]."""
