@@ -128,6 +128,7 @@ def test_errors_name_the_key_and_line(section, key, problem):
     assert f"t.toml:{line}:" in msg and key in msg and problem in msg, msg
 
 
+@pytest.mark.slow
 def test_cli_writes_tables_histograms_and_report(tmp_path):
     from typer.testing import CliRunner
 
