@@ -777,6 +777,8 @@ def simulate_model(model, **options):
     if sim is not None:
         options.setdefault("t_end", sim.duration)
         options.setdefault("p0", sim.p0)
+        if sim.start:
+            options.setdefault("s0", dict(sim.start))
         options.setdefault("method", sim.method)
         options.setdefault("t_eval", np.linspace(0.0, options["t_end"], sim.outputs))
     if "t_end" not in options:
