@@ -1,5 +1,5 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
-``assur fit``, ``assur simulate``, ``assur demo``.
+``assur fit``, ``assur simulate``, ``assur cycles``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -397,6 +397,37 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
         _fail(f"{file}: {result.message}")
     _ok(f"{result.message}; {result.nfev} right-hand-side evaluations; "
         f"energy residual {result.energy['residual']:.3g} J of {result.energy['pump']:.6g} J")
+    by_format = {}
+    for f in files:
+        by_format.setdefault(f.suffix.lstrip("."), []).append(f)
+    _summary(by_format, output)
+
+
+@app.command()
+def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylinder "
+                                                 "coordinates with [[drive]]."),
+           output: str = typer.Option("assur-cycles", "-o", "--output",
+                                      help="Output directory."),
+           lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+    """Seed 004's work cycles: max cylinder forces with their static and dynamic parts
+    for combined and separate motion, cycle times 4–20 s (CSV, XLSX, PNG) and an HTML
+    report that sets them against the paper's conclusions."""
+    from .errors import AssemblyError, ModelError
+    from .report.cycles import verdict_word, write_cycles_report
+
+    _check_lang(lang)
+    model = _load(file)
+    out = _output_dir(output)
+    try:
+        _, verdicts, files = write_cycles_report(model, out, lang)
+    except (ModelError, AssemblyError, ValueError) as e:
+        _fail(f"{file}: {e}")
+    except OSError as e:
+        _fail(f"{output}: cannot write the report: {e.strerror or e}")
+    for v in verdicts:
+        console.print(Text.assemble((f"{verdict_word(v.agrees, lang)}: ",
+                                     "green" if v.agrees else "yellow"), v.claim, " (", v.model,
+                                    ")"), soft_wrap=True)
     by_format = {}
     for f in files:
         by_format.setdefault(f.suffix.lstrip("."), []).append(f)
