@@ -209,7 +209,7 @@ def _criterion(c, key, mech, criterion, Limit):
             args["quantity"] = c.maximize or c.minimize
         kind = _kind_of_output(args["quantity"]) if c.type == "bound" else \
             _CRITERION_KIND[c.type]
-        unit = _default_unit(kind)
+        unit = _percent(args.get("quantity")) or _default_unit(kind)
         return criterion(c.type, args, mech, sense=sense, unit=unit)
     if c.at_least is not None and c.at_most is not None:
         raise ValueError("give at_least or at_most, not both")
@@ -227,7 +227,7 @@ def _criterion(c, key, mech, criterion, Limit):
     text = getattr(c, sense)
     if isinstance(text, str) and text.strip() == "original":
         return criterion(c.type, args, mech, limit=Limit("original", sense),
-                         unit=_default_unit(kind))
+                         unit=_percent(c.quantity) or _default_unit(kind))
     raw = parse(text) if not isinstance(text, str) or text.strip() else None
     if isinstance(raw, str):  # a parameter name
         if raw not in mech.params:
@@ -236,6 +236,15 @@ def _criterion(c, key, mech, criterion, Limit):
         return criterion(c.type, args, mech, limit=Limit(raw, sense), unit=_default_unit(kind))
     v, unit = _si(text, kind, f"{sense}: expected {_article(kind)}")
     return criterion(c.type, args, mech, limit=Limit(v, sense), unit=unit)
+
+
+def _percent(quantity):
+    """Unit("%") for an output in percent (a reserve), else None."""
+    from ..fused import OUTPUT_UNITS, parse_output
+    from ..quantities import Unit
+    if quantity and OUTPUT_UNITS[parse_output(quantity)[0]] == "%":
+        return Unit("%")
+    return None
 
 
 def _default_unit(kind):
