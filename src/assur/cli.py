@@ -549,7 +549,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
     c = pb.objectives[0]
     if not res.feasible:
         _fail(f"no feasible design found ({res.evaluations} evaluated): the best one "
-              f"{res.batch.reasons[0]}")
+              f"{res.batch.reason(0)}")
     name = f"{file.stem}_best.toml"
     units = display_units(pb.original)
     values = {v.name: float(x) for v, x in zip(pb.variables, res.x)}

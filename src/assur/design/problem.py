@@ -427,83 +427,115 @@ class Batch:
         return int(np.argmin(s))
 
     # ---- reasons -----------------------------------------------------------------------
-    def _templates(self):
-        """Reason text per (status, detail, code) combination: made once per batch."""
+    def _text(self, st, det, cd, w, lim=None):
+        """The reason of one kind of failure (status, group or criterion, code) at
+        position ``w``: made once per distinct combination of a batch."""
         pb = self.problem
         mech = pb.mechanism
-        bad = np.flatnonzero(~self.feasible)
-        keys = np.unique(np.column_stack([self.status[bad], self.detail[bad],
-                                          self.code[bad]]), axis=0) if len(bad) else []
-        out = {}
-        for st, det, cd in (tuple(int(x) for x in k) for k in keys):
-            if st == ASSEMBLY:
-                if det < len(mech.groups):
-                    g = mech.groups[det]
-                    links = diagnostics.group_links(mech, g)
-                    ltxt = f" (links {', '.join(links)})" if links else ""
-                    out[st, det, cd] = (f"does not assemble: {g.kind} {g.name!r}{ltxt}: "
-                                        f"{FAILURE_TEXT.get(cd, f'failure code {cd}')}")
-                else:
-                    obj = (mech.links + mech.distances)[det - len(mech.groups)]
-                    out[st, det, cd] = f"does not assemble: link {obj.name!r}: its two points coincide"
-            elif st == LIFT:
-                p = list(pb.lifts.values())[det]
-                out[st, det, cd] = (f"point {p} does not rise with the coordinate: its "
-                                    f"transmission number {list(pb.lifts)[det]}")
-            elif st == CONSTRAINT:
-                out[st, det, cd] = f"constraint {pb.constraints[det].name}"
+        at = ""
+        if w >= 0:
+            coords = ", ".join(diagnostics.coordinate_text(mech, c, v) for c, v in
+                               zip(mech.coordinates, np.atleast_1d(pb.positions[w])))
+            at = f" at position {w} ({coords})"
+        if st == ASSEMBLY:
+            if det < len(mech.groups):
+                g = mech.groups[det]
+                links = diagnostics.group_links(mech, g)
+                ltxt = f" (links {', '.join(links)})" if links else ""
+                return (f"does not assemble: {g.kind} {g.name!r}{ltxt}: "
+                        f"{FAILURE_TEXT.get(cd, f'failure code {cd}')}{at}")
+            obj = (mech.links + mech.distances)[det - len(mech.groups)]
+            return f"does not assemble: link {obj.name!r}: its two points coincide{at}"
+        if st == LIFT:
+            return (f"point {list(pb.lifts.values())[det]} does not rise with the coordinate: "
+                    f"its transmission number {list(pb.lifts)[det]} ≤ 0{at}")
+        c = pb.constraints[det]
+        rel = "≥" if c.limit.sense == "at_least" else "≤"
+        bound = f" {rel} {c.show(lim)}" if lim is not None else f" ({c.limit.sense})"
+        return f"constraint {c.name}{bound} does not hold{at}"
+
+    def _limits(self):
+        """Each constraint's limit when it is the same for every design (a number,
+        ``"original"``, a parameter that is not a variable) [SI], else None."""
+        out = []
+        for j, c in enumerate(self.problem.constraints):
+            v = c.limit.value
+            if isinstance(v, str) and v in self.problem.names:
+                out.append(None)
+                continue
+            ev = np.flatnonzero(self.status == CONSTRAINT)
+            ev = ev[self.detail[ev] == j]
+            if not len(ev):
+                out.append(None)
+                continue
+            i = ev[0]
+            val, mg = self.values[i, j], self.margins[i, j]
+            out.append(float(val - mg if c.limit.sense == "at_least" else val + mg))
         return out
 
     @property
     def reasons(self) -> list:
         """Why each design is infeasible ("" for a feasible one), e.g.
-        ``"does not assemble: dyad 'II (4,5)' (links 4, 5): … at position 7 (S = 0.56)"``.
-        The words are made once per kind of failure, the positions and amounts per
-        design (linear in the number of designs)."""
-        tpl = self._templates()
-        mech = self.problem.mechanism
-        q = self.problem.positions
-        out = [""] * len(self)
-        for i in np.flatnonzero(~self.feasible):
-            st = int(self.status[i])
-            if st == ENGINE:
-                out[i] = f"refused by the engine: {self.errors[i]}"
-                continue
-            text = tpl[st, int(self.detail[i]), int(self.code[i])]
-            w = int(self.where[i])
-            at = ""
-            if w >= 0:
-                qv = q[w]
-                coords = ", ".join(diagnostics.coordinate_text(mech, c, v) for c, v in
-                                   zip(mech.coordinates, np.atleast_1d(qv)))
-                at = f" at position {w} ({coords})"
-            if st == LIFT:
-                text += f" is {self.amount[i]:.4g}{at}"
-            elif st == CONSTRAINT:
-                c = self.problem.constraints[int(self.detail[i])]
-                val = self.values[i, int(self.detail[i])]
-                lim = val - self.margins[i, int(self.detail[i])] \
-                    if c.limit.sense == "at_least" else val + self.margins[i, int(self.detail[i])]
-                rel = "<" if c.limit.sense == "at_least" else ">"
-                text += f" = {c.show(val)} {rel} {c.show(lim)}{at}"
-            else:
-                text += at
-            out[i] = text
-        return out
+        ``"does not assemble: cylinder–lever group 'I (2,3)' (links 2, 3): … at
+        position 0 (S = 0.42)"`` or ``"constraint max Y(56) ≥ 1.04316 m does not hold at
+        position 49 (S = 0.67)"``. Vectorized: the words are made once per distinct
+        (kind, group or constraint, failure, position) of the batch and spread to the
+        designs by index; :meth:`reason` adds the design's own values."""
+        out = np.full(len(self), "", dtype=object)
+        bad = np.flatnonzero(~self.feasible & (self.status != ENGINE))
+        if len(bad):
+            # one int64 key per design: status, group or constraint, code, position
+            d, c, w = (self.detail[bad].astype(np.int64) + 1, self.code[bad].astype(np.int64),
+                       self.where[bad].astype(np.int64) + 1)
+            nd, nc, nw = int(d.max()) + 1, int(c.max()) + 1, int(w.max()) + 1
+            key = ((self.status[bad].astype(np.int64) * nd + d) * nc + c) * nw + w
+            uniq, inv = np.unique(key, return_inverse=True)
+            lims = self._limits()
+            texts = []
+            for k in uniq.tolist():
+                k, wi = divmod(k, nw)
+                k, ci = divmod(k, nc)
+                st, di = divmod(k, nd)
+                texts.append(self._text(st, di - 1, ci, wi - 1,
+                                        lims[di - 1] if st == CONSTRAINT else None))
+            out[bad] = np.array(texts, dtype=object)[inv.reshape(-1)]
+        for i in np.flatnonzero(self.status == ENGINE):
+            out[i] = f"refused by the engine: {self.errors[i]}"
+        return out.tolist()
+
+    def reason(self, i) -> str:
+        """The reason of design ``i`` with its own values (a constraint's value and
+        limit, a transmission number), "" for a feasible design."""
+        st = int(self.status[i])
+        if st == FEASIBLE:
+            return ""
+        if st == ENGINE:
+            return f"refused by the engine: {self.errors[i]}"
+        det, w = int(self.detail[i]), int(self.where[i])
+        if st == CONSTRAINT:
+            c = self.problem.constraints[det]
+            val, mg = self.values[i, det], self.margins[i, det]
+            lim = val - mg if c.limit.sense == "at_least" else val + mg
+            return (self._text(st, det, int(self.code[i]), w, lim)
+                    + f": {c.show(val)}")
+        text = self._text(st, det, int(self.code[i]), w)
+        if st == LIFT:
+            text += f": {self.amount[i]:.4g}"
+        return text
 
     def explain(self, i) -> str:
         """The engine's full message for an infeasible design ``i`` (for an assembly
         failure: the group's own words with its values, as
         :class:`~assur.errors.AssemblyError` gives them)."""
         if int(self.status[i]) != ASSEMBLY:
-            return self.reasons[i]
+            return self.reason(i)
         pb = self.problem
         try:
             pb.mechanism.solve(pb.positions, pb._params(self.X[i:i + 1]),
                                check_continuity=False)
         except AssemblyError as e:
             return str(e)
-        return self.reasons[i]
+        return self.reason(i)
 
     def to_frame(self):
         """A :class:`pandas.DataFrame`: one row per design, the variables [SI], the

@@ -90,7 +90,7 @@ def comparison_html(problem, result, title=None):
         ax.legend()
         figs += f'<figure><img alt="{esc(o)}" src="data:image/png;base64,{_png(fig)}"></figure>'
     ttl = esc(title or f"{problem.name}: best design against the original")
-    status = "feasible" if result.feasible else f"infeasible: {best.reasons[0]}"
+    status = "feasible" if result.feasible else f"infeasible: {best.reason(0)}"
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{ttl}</title>
 <style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}
