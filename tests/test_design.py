@@ -191,7 +191,7 @@ def test_cli_optimize_writes_a_loadable_best_design(tmp_path):
     from typer.testing import CliRunner
     from assur.cli import app
     r = CliRunner().invoke(app, ["optimize", str(HITCH), "--popsize", "6", "--maxiter", "15",
-                                 "--seed", "3", "-o", str(tmp_path)])
+                                 "--seed", "3", "--workers", "0", "-o", str(tmp_path)])
     assert r.exit_code == 0, r.output
     best = io.load(tmp_path / "hitch_003_design_best.toml")
     pb = load_problem(HITCH)
@@ -213,3 +213,22 @@ def test_cli_sweep_in_process_to_parquet(tmp_path):
     df = pd.read_parquet(out)
     assert len(df) == 500 and {"X01", "feasible", "reason"} <= set(df.columns)
     assert (df["reason"] == "").equals(df["feasible"])
+
+
+def test_reductions_equal_the_array_pass(problem):
+    """The criteria of a batch (reduced in the kernel) equal the full analysis of each
+    design position by position: the minimum reserve ΔGS65, the largest pressure and
+    the lowest and highest Y56."""
+    X = problem.sample(300, seed=8)
+    b = problem.evaluate(X)
+    idx = np.flatnonzero(b.failed_positions == 0)[:40]
+    assert len(idx) >= 10
+    P6 = float(problem.mechanism.params["P6"])
+    for i in idx:
+        a = problem.with_design(X[i]).analyze(problem.positions)
+        cyl = a.cylinder("ГЦ")
+        assert b.objectives[i, 0] == pytest.approx(cyl.reserve("S6", P6).min(), rel=1e-10)
+        if b.status[i] in (FEASIBLE, CONSTRAINT):
+            y = a.kinematics.y("56")
+            np.testing.assert_allclose(b.values[i, :3], [y.min(), y.max(), cyl.pressure.max()],
+                                       rtol=1e-10)

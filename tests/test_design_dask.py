@@ -16,8 +16,15 @@ def test_local_cluster_equals_in_process():
     X[::7, pb.names.index("X03")] += 0.8  # some designs that do not assemble
     here = sweep(pb, X)
     seen = []
+    from assur.design.search import optimize
+    de_here = optimize(pb, popsize=5, maxiter=8, seed=6)
     with Executor(workers=2, chunk=700, progress=lambda d, t: seen.append(d)) as ex:
         there = sweep(pb, X, executor=ex)
+        # differential evolution with its populations on the cluster: the same search
+        de_there = optimize(pb, popsize=5, maxiter=8, seed=6,
+                            evaluate=lambda Xp: ex.evaluate(pb, Xp))
+    np.testing.assert_array_equal(de_here.x, de_there.x)
+    assert de_here.evaluations == de_there.evaluations
     assert seen[-1] == len(X)
     np.testing.assert_array_equal(here.status, there.status)
     np.testing.assert_array_equal(here.objectives, there.objectives)

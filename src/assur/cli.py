@@ -500,8 +500,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
                                          "(differential evolution)."),
              maxiter: int = typer.Option(150, "--maxiter", help="Generations at most."),
              seed: int = typer.Option(0, "--seed"),
-             workers: int = typer.Option(0, "--workers", help="Worker processes of a Dask "
-                                         "LocalCluster for the populations (0: here)."),
+             workers: int = _WORKERS,
              scheduler: str = _SCHED,
              chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
              output: str = typer.Option("assur-optimize", "-o", "--output",

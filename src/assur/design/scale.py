@@ -42,7 +42,8 @@ class Executor:
         Worker processes of a LocalCluster started here (without ``scheduler``);
         0 or None: evaluate in this process.
     chunk : int
-        Designs per task.
+        Designs per task at most (a batch smaller than chunk × workers is cut into one
+        chunk per worker).
     progress : callable, optional
         ``progress(done, total)`` after every chunk (designs).
 
@@ -94,8 +95,12 @@ class Executor:
         chunk (on the cluster: one task per chunk, in parallel); returns one Batch."""
         from .problem import Batch
         X = np.atleast_2d(np.asarray(X, float))
-        starts = list(range(0, len(X), self.chunk)) or [0]
-        chunks = [X[i:i + self.chunk] for i in starts]
+        size = self.chunk
+        if self.client is not None:  # a small batch (a population) still fills the workers
+            nw = max(1, len(self.client.scheduler_info().get("workers", {})))
+            size = max(1, min(size, -(-len(X) // nw)))
+        starts = list(range(0, len(X), size)) or [0]
+        chunks = [X[i:i + size] for i in starts]
         total, done = len(X), 0
         if self.client is None:
             if self.distributed:
