@@ -1,5 +1,6 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
-``assur fit``, ``assur simulate``, ``assur cycles``, ``assur demo``.
+``assur fit``, ``assur simulate``, ``assur cycles``, ``assur sweep``, ``assur optimize``,
+``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -432,6 +433,175 @@ def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylin
     for f in files:
         by_format.setdefault(f.suffix.lstrip("."), []).append(f)
     _summary(by_format, output)
+
+# ---- synthesis (issue 12): assur sweep, assur optimize ---------------------------------
+def _design_problem(file: Path, var, positions):
+    """The design problem of a model file (+ --var); user errors exit 1."""
+    from .design import load_problem
+    from .errors import AssemblyError, ModelError
+
+    _load(file)  # the file's own errors and warnings, as every command shows them
+    try:
+        return load_problem(file, variables=tuple(var), positions=positions)
+    except (ModelError, AssemblyError) as e:
+        _fail(str(e))
+
+
+def _executor(scheduler, workers, chunk, progress):
+    from .design.scale import Executor
+    from .errors import ModelError
+    try:
+        return Executor(scheduler=scheduler, workers=workers, chunk=chunk, progress=progress)
+    except ModelError as e:
+        _fail(str(e), 2)
+
+
+_VAR = typer.Option([], "--var", help='A design variable: NAME=LOW:HIGH or NAME=±DELTA, units '
+                                      'as in files (e.g. "L4=0.6 m:0.72 m", "X01=±30 mm"); '
+                                      'repeat. Adds to (or replaces) the file\'s [design].')
+_WORKERS = typer.Option(2, "--workers", help="Worker processes of a Dask LocalCluster "
+                                             "(0: in this process).")
+_SCHED = typer.Option(None, "--scheduler", help="An existing Dask scheduler, "
+                                                "e.g. tcp://host:8786 (instead of --workers).")
+
+
+def _bar():
+    return Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
+                    TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(),
+                    console=err, transient=True)
+
+
+@app.command()
+def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
+          samples: int = typer.Option(10000, "--samples", help="Designs drawn uniformly "
+                                      "within the bounds."),
+          seed: int = typer.Option(0, "--seed"),
+          var: list[str] = _VAR,
+          positions: int = typer.Option(None, "--positions", help="Positions over the range "
+                                        "(default: [design] positions, else the range)."),
+          workers: int = _WORKERS, scheduler: str = _SCHED,
+          chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
+          output: str = typer.Option("assur-sweep.parquet", "-o", "--output",
+                                     help="The results table (Parquet).")):
+    """Evaluate many designs (on Dask) and write every design's criteria, feasibility
+    and reason to Parquet."""
+    from .design.scale import sweep as run_sweep, write_parquet
+    from .errors import AssemblyError, ModelError
+
+    if samples < 1:
+        _fail(f"--samples must be ≥ 1, got {samples}", 2)
+    pb = _design_problem(file, var, positions)
+    t0 = time.perf_counter()
+    with _bar() as bar:
+        task = bar.add_task("designs", total=samples)
+        ex = _executor(scheduler, workers, chunk,
+                       lambda done, total: bar.update(task, completed=done))
+        try:
+            with ex:
+                batch = run_sweep(pb, samples=samples, seed=seed, executor=ex)
+        except (ModelError, AssemblyError, OSError) as e:
+            _fail(str(e))
+    try:
+        write_parquet(batch, output)
+    except (OSError, ValueError) as e:
+        _fail(f"{output}: cannot write the table: {e}")
+    nf = int(batch.feasible.sum())
+    _ok(f"{samples} designs × {len(pb.positions)} positions on {ex.describe()} in "
+        f"{time.perf_counter() - t0:.1f} s; {nf} feasible; table: {output}")
+    i = batch.best()
+    if i >= 0:
+        c = pb.objectives[0]
+        console.print(Text(f"best sampled design: {c.sense} {c.name} = "
+                           f"{c.show(batch.objectives[i, 0])}"))
+    counts: dict = {}
+    for r in batch.reasons:
+        if r:
+            key = r.split(" at position")[0].split(" = ")[0]
+            counts[key] = counts.get(key, 0) + 1
+    for k, n in sorted(counts.items(), key=lambda kv: -kv[1])[:5]:
+        console.print(Text(f"  {n} infeasible: {k}"))
+
+
+@app.command()
+def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
+             var: list[str] = _VAR,
+             positions: int = typer.Option(None, "--positions"),
+             popsize: int = typer.Option(15, "--popsize", help="Population per variable "
+                                         "(differential evolution)."),
+             maxiter: int = typer.Option(150, "--maxiter", help="Generations at most."),
+             seed: int = typer.Option(0, "--seed"),
+             workers: int = _WORKERS,
+             scheduler: str = _SCHED,
+             chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
+             output: str = typer.Option("assur-optimize", "-o", "--output",
+                                        help="Output directory.")):
+    """Search for the best design (differential evolution over whole populations; with
+    two or more objectives, NSGA-II's Pareto front); write it as a model file that
+    extends the original, and an HTML report comparing the two."""
+    from .design.search import optimize as run_de, pareto
+    from .errors import AssemblyError, ModelError
+    from .io import load
+    from .io._design import write_design_file
+    from .quantities import display_units
+    from .report.design import pareto_figure, write_comparison
+
+    pb = _design_problem(file, var, positions)
+    if not pb.objectives:
+        _fail(f"{file}: no objective: add [[design.objectives]] (maximize = … or minimize = …)")
+    out = _output_dir(output)
+    t0 = time.perf_counter()
+    with _bar() as bar:
+        task = bar.add_task("generations", total=maxiter)
+        ex = _executor(scheduler, workers, chunk, None)
+        try:
+            with ex:
+                def run(X):
+                    return ex.evaluate(pb, X)
+                if len(pb.objectives) > 1:
+                    res = pareto(pb, pop_size=popsize * len(pb.variables), generations=maxiter,
+                                 seed=seed, evaluate=run,
+                                 callback=lambda g, n: bar.update(task, completed=g))
+                else:
+                    res = run_de(pb, popsize=popsize, maxiter=maxiter, seed=seed, evaluate=run,
+                                 callback=lambda g, v: bar.update(task, completed=g))
+        except (ModelError, AssemblyError) as e:
+            _fail(str(e))
+    dt = time.perf_counter() - t0
+    if len(pb.objectives) > 1:
+        fig = pareto_figure(pb, res, out / "pareto.png")
+        if res.batch is not None:
+            from .design.scale import write_parquet
+            write_parquet(res.batch, out / "pareto.parquet")
+        _ok(f"Pareto front of {len(res.X)} feasible designs ({res.evaluations} evaluated, "
+            f"{dt:.1f} s): {fig}")
+        return
+    c = pb.objectives[0]
+    if not res.feasible:
+        _fail(f"no feasible design found ({res.evaluations} evaluated): the best one "
+              f"{res.batch.reason(0)}")
+    name = f"{file.stem}_best.toml"
+    units = display_units(pb.original)
+    values = {v.name: float(x) for v, x in zip(pb.variables, res.x)}
+    path = write_design_file(out / name, file, values, units, header=(
+        f"The best design of {file.name} found by assur optimize: {c.sense} {c.name} = "
+        f"{c.show(res.value)} (original {c.show(res.original.objectives[0, 0])}).",))
+    try:
+        best = load(path)  # the file written must load and assemble
+        best.mechanism.solve(pb.positions)
+    except (ModelError, AssemblyError) as e:
+        _fail(f"{path}: the written model does not load: {e}")
+    rep = write_comparison(out / "design.html", pb, res)
+    rt = Table(title="best design", header_style="bold", title_justify="left")
+    for h in ("variable", "original", "best", "bounds"):
+        rt.add_column(h, justify="right")
+    for j, v in enumerate(pb.variables):
+        rt.add_row(v.name, v.show(pb.x0[j]), v.show(res.x[j]),
+                   f"{v.show(v.low)} … {v.show(v.high)}")
+    console.print(rt)
+    console.print(Text(f"{c.sense} {c.name}: {c.show(res.original.objectives[0, 0])} → "
+                       f"{c.show(res.value)}"))
+    _ok(f"{res.evaluations} designs in {res.calls} batches, {res.generations} generations on "
+        f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
 
 
 def main(argv=None):  # pragma: no cover - console entry
