@@ -602,6 +602,53 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
                        f"{c.show(res.value)}"))
     _ok(f"{res.evaluations} designs in {res.calls} batches, {res.generations} generations on "
         f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
+def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tolerances]."),
+              output: str = typer.Option("assur-tolerance", "-o", "--output",
+                                         help="Output directory."),
+              samples: int = typer.Option(2000, "--samples", help="Machines drawn."),
+              seed: int = typer.Option(0, "--seed", help="Seed of the random generator."),
+              lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+    """Monte Carlo over the model's manufacturing tolerances: distributions of pressure
+    and capacity (P1…P99), machines that do not assemble, and the first-order stack-up
+    from the exact sensitivities; tables (CSV, XLSX), histograms and an HTML report."""
+    import numpy as np
+
+    from .errors import AssemblyError, ModelError, SingularPositionError
+    from .report.tolerance import display_scale, write_tolerance
+    from .tolerance import _worst, monte_carlo
+
+    _check_lang(lang)
+    if samples < 2:
+        _fail(f"--samples must be at least 2; got {samples}", 2)
+    model = _load(file)
+    if not model.tolerances:
+        _fail(f"{file}: no [tolerances] section (docs/tolerance.md)")
+    out = _output_dir(output)
+    try:
+        r = monte_carlo(model, None, model.tolerances, samples=samples, seed=seed)
+    except (AssemblyError, ModelError, SingularPositionError) as e:
+        _fail(f"{file}: {e}")
+    files = write_tolerance(r, model.mechanism, out, lang)
+    tab = Table(title=f"{model.mechanism.name}: {samples} machines, seed {seed}",
+                show_header=True, header_style="bold")
+    for col in ("output", "unit", "nominal", "P5", "P50", "P95", "σ MC", "σ lin"):
+        tab.add_column(col)
+    for o in r.outputs:  # each machine's worst value over the range
+        j = r.outputs.index(o)
+        k, u = display_scale(r, o)
+        how = _worst(o)
+        nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
+        p = r.worst_percentiles(o) if r.assembled.any() else [float("nan")] * 5
+        iw = int(np.argmin(r.nominal[:, j]) if how == "min" else np.argmax(r.nominal[:, j]))
+        sd = r.std(o)[iw] if r.assembled.sum() > 1 else float("nan")
+        tab.add_row(f"{o} {how}", u, *(f"{v / k:.5g}" for v in (nom, p[1], p[2], p[3], sd,
+                                                              r.linear_sigma[iw, j])))
+    console.print(tab)
+    console.print(f"does not assemble: {100 * r.failure_share:.3g} % of the machines")
+    for d, _g, msg in r.reasons[:5]:
+        console.print(f"  machine {d}: {msg}", soft_wrap=True)
+    _summary({"tolerance": [f for f in files if not str(f).endswith(".html")],
+              "html": [f for f in files if str(f).endswith(".html")]}, output)
 
 
 def main(argv=None):  # pragma: no cover - console entry
