@@ -20,7 +20,6 @@ from pathlib import Path
 
 import typer
 from rich.console import Console
-from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 from rich.text import Text
 
@@ -197,6 +196,8 @@ def _positions(analysis, draw_at):
 
 
 def _run_report(model, output: str, lang: str, fmts, draw_at=None):
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
     from .errors import AssemblyError, ModelError, SingularPositionError
     from .report import report_steps, write_report
 
