@@ -1,6 +1,6 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
 ``assur fit``, ``assur simulate``, ``assur cycles``, ``assur sweep``, ``assur optimize``,
-``assur demo``.
+``assur tolerance``, ``assur serve``, ``assur dxf``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -603,6 +603,9 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
                        f"{c.show(res.value)}"))
     _ok(f"{res.evaluations} designs in {res.calls} batches, {res.generations} generations on "
         f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
+
+
+@app.command()
 def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tolerances]."),
               output: str = typer.Option("assur-tolerance", "-o", "--output",
                                          help="Output directory."),
@@ -650,6 +653,102 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
         console.print(f"  machine {d}: {msg}", soft_wrap=True)
     _summary({"tolerance": [f for f in files if not str(f).endswith(".html")],
               "html": [f for f in files if str(f).endswith(".html")]}, output)
+
+
+@app.command()
+def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
+          port: int = typer.Option(8000, "--port", help="TCP port (0: any free port)."),
+          host: str = typer.Option("127.0.0.1", "--host",
+                                   help="Address to bind (default: loopback only)."),
+          no_browser: bool = typer.Option(False, "--no-browser",
+                                          help="Do not open the page in a browser."),
+          lang: str = typer.Option("en", "--lang", help="The page's language: ru or en.")):
+    """Serve an interactive page for a model: parameters as sliders, the mechanism's
+    drawing moved by a stroke slider, live plots and tables (docs/page.md)."""
+    _check_lang(lang)
+    if not 0 <= port <= 65535:
+        _fail(f"--port must be in 0…65535, got {port}", 2)
+    _load(file)  # one message for a bad file, before the server starts
+    from .app.server import create_app
+    from .errors import ModelError
+
+    try:
+        application = create_app(file, lang=lang)
+    except (ModelError, OSError) as e:
+        _fail(str(e))
+    import socket
+
+    import uvicorn
+
+    try:  # the port first, so that a busy one is one message and the URL is known
+        sock = socket.socket(socket.AF_INET6 if ":" in host else socket.AF_INET)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((host, port))
+    except OSError as e:
+        _fail(f"cannot listen on {host}:{port}: {e.strerror or e}")
+    port = sock.getsockname()[1]
+    shown = f"[{host}]" if ":" in host else host
+    url = f"http://{shown}:{port}/?lang={lang}"
+    if host not in ("127.0.0.1", "::1", "localhost"):
+        err.print(Text.assemble(("warning:", "bold yellow"), " ", f"serving on {host}: "
+                                "anyone who can reach this address can use the page"))
+    console.print(f"assur: serving {file} at {url} (Ctrl+C stops)")
+    if not no_browser:
+        import threading
+        import webbrowser
+        threading.Timer(0.8, lambda: webbrowser.open(url)).start()
+    config = uvicorn.Config(application, log_level="warning")
+    uvicorn.Server(config).run(sockets=[sock])
+
+
+@app.command()
+def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
+        at: str = typer.Option("", "--at", help="Coordinate values to draw: cylinder "
+                               "lengths in m (0.42,0.67), crank angles in degrees; "
+                               "default: first and last."),
+        output: str = typer.Option("", "-o", "--output",
+                                   help="The DXF file (default: <model>.dxf).")):
+    """Write the mechanism's drawing at chosen positions as DXF (millimetres, one layer
+    per link, pivots as points; docs/page.md)."""
+    import numpy as np
+
+    from .app.dxf import write_dxf
+    from .errors import AssemblyError, ModelError, SingularPositionError
+
+    model = _load(file)
+    out = Path(output or (file.stem + ".dxf"))
+    if out.exists() and out.is_dir():
+        _fail(f"{out}: is a directory; expected a .dxf file name")
+    mech = model.mechanism
+    kin, idx = None, None
+    if at and len(mech.coordinates) == 1 and mech.coordinate_kind(mech.coordinates[0]) != \
+            "angle":
+        try:
+            values = [float(v) for v in at.split(",") if v.strip()]
+        except ValueError:
+            _fail(f"--at must be comma-separated numbers (m), got {at!r}")
+        r = np.asarray(model.range, dtype=float)
+        lo, hi = float(r.min()), float(r.max())
+        bad = [v for v in values if not lo <= v <= hi]
+        if bad or not values:
+            _fail(f"--at {bad or at!r}: give values in the range {lo:.6g} … {hi:.6g} m")
+        # a fine grid through the values keeps the assembly mode continuous between them
+        q = np.unique(np.concatenate([np.linspace(r[0], r[-1], 201), values]))
+        q = q if r[-1] >= r[0] else q[::-1]
+        try:
+            kin = mech.solve(q)
+        except (AssemblyError, ModelError, SingularPositionError) as e:
+            _fail(f"{file}: {e}")
+        idx = [int(np.abs(q - v).argmin()) for v in values]
+    else:
+        analysis = _assemble(model)
+        kin = analysis.kinematics
+        idx = _positions(analysis, at) or sorted({0, kin.shape[-1] - 1})
+    try:
+        write_dxf(kin, out, positions=idx)
+    except OSError as e:
+        _fail(f"{out}: cannot write the DXF file: {e.strerror or e}")
+    _ok(f"wrote {out} ({len(idx)} positions)")
 
 
 def main(argv=None):  # pragma: no cover - console entry
