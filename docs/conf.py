@@ -90,7 +90,7 @@ sphinx_gallery_conf = {
     "reset_modules": ("matplotlib",),
     "doc_module": ("assur",),
     "backreferences_dir": None,
-    "image_scrapers": ("matplotlib",),
+    "image_scrapers": ("matplotlib", "_ext.scraper.scrape"),
     "min_reported_time": 1e9,
 }
 

@@ -79,13 +79,10 @@ for i in range(6):
 # L4 = 0.652 m. It assembles, and the whole worksheet follows: transmission numbers,
 # the force on the two cylinders and the share of their maximum force for the
 # seed's candidate bores D = 80, 63, 50 mm (its table 5).
-import matplotlib.pyplot as plt  # noqa: E402
-
 from assur.report import drawing, figures  # noqa: E402
 
 a = fixed.mechanism.analyze(S)
-fig = drawing.draw(a)
-plt.show()
+drawn = drawing.draw(a)
 
 # %%
 cyl = a.cylinder()
@@ -93,8 +90,7 @@ for D in (0.080, 0.063, 0.050):
     share = cyl.share(bore=D)
     print(f"D = {D * 1e3:.0f} mm: the lift needs {share.min():.2f} … {share.max():.2f} "
           f"of the two cylinders' maximum force")
-fig = figures.transmission(a)
-plt.show()
+transmission_figure = figures.transmission(a)
 
 # %%
 # The seed's other slips (the file's notes): FIS6 is overwritten by hand, delI lacks

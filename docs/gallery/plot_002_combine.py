@@ -53,12 +53,9 @@ assert abs(d3[0]) < 5e-4 and abs(d3[12]) < 5e-4 and np.all(np.abs(d3[1:12]) > 0.
 # %%
 # The drawing at the two extremes of the rocker (``--draw-at 14.679,188.229`` on the
 # command line):
-import matplotlib.pyplot as plt  # noqa: E402
-
 from assur.report import drawing, figures  # noqa: E402
 
-fig = drawing.draw(a, positions=[0, 12])
-plt.show()
+drawn = drawing.draw(a, positions=[0, 12])
 
 # %%
 # A full turn — полный оборот
@@ -74,8 +71,7 @@ print(f"φ3 least at j1 = {q[phi3.argmin()]:.1f}°, largest at j1 = {q[phi3.argm
       f"(the seed: 14.679°, 188.229°); swing {phi3.max() - phi3.min():.2f}°")
 assert abs(q[phi3.argmin()] - 14.679) <= 1 and abs(q[phi3.argmax()] - 188.229) <= 1
 
-fig = figures.angles(t)
-plt.show()
+angles_figure = figures.angles(t)
 
 # %%
 # Velocities at 300 rpm — скорости при 300 об/мин

@@ -58,15 +58,11 @@ for s_, c, p in zip(S, phi6, PHI6_PRINTED):
 assert agrees(phi6, PHI6_PRINTED, 1).all()
 
 # %%
-# The drawing of the reports, at the first and the last position, in English and in
-# Russian (the reports' two languages):
-import matplotlib.pyplot as plt  # noqa: E402
-
+# The drawing of the reports (:func:`assur.report.drawing.draw`), at the first and
+# the last position, in English and in Russian (the reports' two languages):
 from assur.report import drawing, figures  # noqa: E402
 
-for lang in ("en", "ru"):
-    fig = drawing.draw(a, lang=lang)
-    plt.show()
+drawings = [drawing.draw(a, lang=lang) for lang in ("en", "ru")]
 
 # %%
 # Transmission numbers — передаточные числа (таблица 3.1)
@@ -94,8 +90,7 @@ print(f"capacity at the suspension axis G56: {G56[0]:.0f} … {G56[-1]:.0f} N "
 print(f"capacity at the centre of mass GS6: least {GS6.min():.0f} N at S = "
       f"{S[GS6.argmin()]:.3f} m (printed least {GS6_PRINTED.min()})")
 
-fig = figures.capacity(a)
-plt.show()
+capacity_figure = figures.capacity(a)
 
 # %%
 # Every printed value of table 4.1 agrees to the unit — with one reading of the
@@ -142,8 +137,7 @@ GS6MAX_PRINTED = (50645, 57569)  # seed 003 table 6.1 at S = 0.420, 0.670 m
 for i, p in zip((0, -1), GS6MAX_PRINTED):
     print(f"S = {S[i]:.3f} m: largest implement weight keeping 20 % on A "
           f"{stab.max_implement_weight[i]:.0f} N (the seed's GS6max prints {p} N)")
-fig = figures.stability(a)
-plt.show()
+stability_figure = figures.stability(a)
 
 # %%
 # The seed's other slips, and where the model resolves them (``notes`` of the file,
