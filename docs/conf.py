@@ -48,9 +48,11 @@ extensions = [
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "_ext", "gallery/README.rst", "**/README.md",
+exclude_patterns = ["_build", "_ext", "gallery/README.rst", "tutorials/README.rst", "**/README.md",
                     "auto_gallery/*.ipynb", "auto_gallery/*.py", "auto_gallery/*.zip",
-                    "auto_gallery/*.json", "auto_gallery/*.md5"]
+                    "auto_gallery/*.json", "auto_gallery/*.md5",
+                    "auto_tutorials/*.ipynb", "auto_tutorials/*.py", "auto_tutorials/*.zip",
+                    "auto_tutorials/*.json", "auto_tutorials/*.md5"]
 
 # --- generated pages ---------------------------------------------------------
 GENERATED = HERE / "_generated"
@@ -67,7 +69,7 @@ myst_heading_anchors = 3
 # --- autodoc / numpydoc ------------------------------------------------------------
 autosummary_generate = True
 autosummary_imported_members = False
-autodoc_default_options = {"members": True, "show-inheritance": False}
+autodoc_default_options = {"show-inheritance": False}
 autodoc_typehints = "none"
 autodoc_member_order = "bysource"
 numpydoc_show_class_members = False
@@ -77,8 +79,8 @@ numpydoc_validation_checks = set()
 # --- sphinx-gallery ------------------------------------------------------------------
 os.environ.setdefault("ASSUR_DOCS_BUILD", "1")
 sphinx_gallery_conf = {
-    "examples_dirs": "gallery",
-    "gallery_dirs": "auto_gallery",
+    "examples_dirs": ["gallery", "tutorials"],
+    "gallery_dirs": ["auto_gallery", "auto_tutorials"],
     "filename_pattern": r"/plot_",
     "ignore_pattern": r"_common\.py",
     "within_subsection_order": "FileNameSortKey",

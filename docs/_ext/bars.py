@@ -40,7 +40,9 @@ def escape(lines: list[str]) -> list[str]:
             doctest = True
             out.append(line)
             continue
-        if s.startswith(("|", "+", "..")) or re.match(r"^[=\-+ ]+$", s or "x"):
+        table_row = s.startswith("|") and s.endswith("|") and s.count("|") >= 3
+        if (table_row or s.startswith(("| ", "+", "..")) or s == "|"
+                or re.match(r"^[=\-+ ]+$", s or "x")):
             out.append(line)
         else:
             out.append(_escape_prose(line))

@@ -13,7 +13,7 @@ lift capacity, joint reactions and stability — from the bundled model file
 
 # %%
 # The model and its design conditions — модель и условия синтеза
-# ---------------------------------------------------------------
+# --------------------------------------------------------------
 # Loading the file solves the seed's three Find blocks (§2.2–2.3): L4 such that
 # Y56(Smin) = 0.2 m, Sp such that Y56(Sp) = 0.4 m, L7 such that φ6(Sp) = 90°.
 import numpy as np
@@ -77,7 +77,7 @@ print(f"I56 from {I56[0]:.3f} to {I56[-1]:.3f} (printed {I56_PRINTED[0]} … {I5
 
 # %%
 # Force, pressure and lift capacity — грузоподъёмность (таблица 4.1)
-# -----------------------------------------------------------------
+# ------------------------------------------------------------------
 cyl = a.cylinder("ГЦ")
 G56, GS6 = cyl.capacity("56"), cyl.capacity("S6")
 G56_PRINTED = np.array([33139, 37094, 39694, 41697, 43466, 45232, 47183, 49511, 52459, 56377])
@@ -112,7 +112,7 @@ assert np.allclose(st.actuator_force("S"), st.actuator_force_from_reactions("S")
 # with R65 already the force of 6 on 5, and repeats the slip with R43 := −R34 in §5.3.
 # So its printed x, y components of R05, R34, R45 have the opposite sign to its own
 # naming, while their magnitudes are right. At S = 0.420 m the seed prints
-# R05 = (−49391, 47486) N, |R05| = 68516 N:
+# R05 = (−49391, 47486) N of magnitude 68516 N:
 R05 = st.reaction("0", "5")[0]
 print(f"force of the frame on link 5 at 05: ({R05[0]:.0f}, {R05[1]:.0f}) N, "
       f"|R05| = {np.hypot(*R05):.0f} N")

@@ -1,6 +1,6 @@
 """
 Seed 001, lab 2: the conditioner's pressing device — Прижимное устройство плющилки
-=================================================================================
+==================================================================================
 
 Lab 2 of the practicum: the rollers of a mower-conditioner are pressed together by
 springs; the specific pressure p_c(Y) on the crop layer (eq. 4) follows from the

@@ -68,7 +68,7 @@ plt.show()
 
 # %%
 # The paper's conclusions against the model — выводы статьи
-# --------------------------------------------------------
+# ---------------------------------------------------------
 # The paper: "at a 6 s cycle separate motion gives max forces ≈ 90 % (boom) and 30 %
 # (stick) higher" and "dynamic components fall 3–8 times with combined motion".
 d = sweep(m, start, end, periods=[6, 11]).set_index(["scenario", "T"])
