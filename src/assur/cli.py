@@ -35,6 +35,19 @@ LANGS = ("ru", "en")
 FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")  # = assur.report.FORMATS
 
 
+def _version(value: bool):
+    if value:
+        from . import __version__
+        console.print(f"assur {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")):
+    """Hydraulic-cylinder driven planar linkages solved by Assur groups."""
+
+
 def _fail(message: str, code: int = 1):
     err.print(Text.assemble(("error:", "bold red"), " ", str(message)), soft_wrap=True)
     raise typer.Exit(code)
