@@ -448,6 +448,7 @@ def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylin
         by_format.setdefault(f.suffix.lstrip("."), []).append(f)
     _summary(by_format, output)
 
+
 # ---- synthesis (issue 12): assur sweep, assur optimize ---------------------------------
 def _design_problem(file: Path, var, positions):
     """The design problem of a model file (+ --var); user errors exit 1."""
