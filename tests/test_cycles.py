@@ -172,6 +172,7 @@ def test_cli_cycles_writes_tables_figures_and_report(tmp_path, lang, crane):
     page = (tmp_path / "cycles.html").read_text(encoding="utf-8")
     if lang == "ru":
         assert "согласуется" in page and "12,666e-3" in page and "S_max2" in page
+        assert "3,335 м" not in page  # ЛВ-185's own notes, not ЛВ-184А's (extends)
         assert "Выводы статьи и модель" in page
     else:
         assert "does not agree" in page and "agrees" in page and "S_max2" in page

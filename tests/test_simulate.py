@@ -323,3 +323,18 @@ def test_k_cylinders_need_a_divider_and_their_branches(crane):
     with pytest.raises(ModelError, match="3 shares for 2 cylinders"):
         Circuit(tuple(dataclasses.replace(c, shares=(0.2, 0.3, 0.5))
                       if c.role == "divider" else c for c in comps))
+
+
+def test_simulation_start_and_hold_in_the_file(crane):
+    """[simulation] start names coordinates (an unknown one is refused at its line);
+    p0 = "hold" starts every branch at the pressure that holds its rod."""
+    text = io.bundled("crane_lv184a").read_text(encoding="utf-8")
+    assert crane.simulation.p0 == "hold"
+    assert crane.simulation.start == {"S2": pytest.approx(1.80)}
+    bad = text.replace('start = { S2 = "S2_start" }', 'start = { S9 = "1.8 m" }')
+    with pytest.raises(ModelFileError, match=r":\d+: simulation\.start\.S9"):
+        io.loads(bad, "crane.toml")
+    r = simulate_model(crane, t_end=0.05, t_eval=[0.0, 0.05])
+    b = crane.drive.branches[1]  # the stick's rod held by its rod side: σ·A·p = −Q
+    assert b.sense * b.area * r.p1[0, 1] == pytest.approx(r.load[0, 1], rel=1e-12)
+    assert r.p1[0, 1] > 0
