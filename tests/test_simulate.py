@@ -338,3 +338,28 @@ def test_simulation_start_and_hold_in_the_file(crane):
     b = crane.drive.branches[1]  # the stick's rod held by its rod side: σ·A·p = −Q
     assert b.sense * b.area * r.p1[0, 1] == pytest.approx(r.load[0, 1], rel=1e-12)
     assert r.p1[0, 1] > 0
+
+
+def test_cli_simulate_the_crane(tmp_path):
+    """Two coordinates through the report: a curve per branch, per-branch columns and
+    events with their coordinate, the divider's loss in the balance."""
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    from assur.report.simulation import FIGURES
+    for lang, word in (("ru", "потери в делителе потока"),):
+        out = tmp_path / lang
+        r = CliRunner().invoke(app, ["simulate", str(io.bundled("crane_lv184a")), "-o",
+                                     str(out), "--lang", lang, "--duration", "0.6"])
+        assert r.exit_code == 0, r.output
+        for name in FIGURES:
+            assert (out / f"sim_{name}.png").stat().st_size > 0
+        df = pd.read_csv(out / "simulation.csv")
+        assert {"S1 [m]", "S2 [m]", "p1 S1 [MPa]", "p1 S2 [MPa]", "p_pump [MPa]",
+                "Q_relief S2 [l/min]"} <= set(df.columns)
+        np.testing.assert_allclose(df["p_pump [MPa]"],
+                                   df[["p1 S1 [MPa]", "p1 S2 [MPa]"]].max(axis=1))
+        summary = (out / "simulation_summary.csv").read_text(encoding="utf-8")
+        assert word in summary and "(S1)" in summary
+        assert (out / "simulation.gif").stat().st_size > 0
