@@ -363,3 +363,12 @@ def test_cli_simulate_the_crane(tmp_path):
         summary = (out / "simulation_summary.csv").read_text(encoding="utf-8")
         assert word in summary and "(S1)" in summary
         assert (out / "simulation.gif").stat().st_size > 0
+
+
+def test_an_overrunning_load_is_reported(crane):
+    """Started at rest near Φ1p0 with no pressure, the stick's load pulls its rod in:
+    the fed chamber's pressure falls below zero, and the result says so."""
+    r = simulate_model(crane, t_end=0.5, s0={"S2": 2.1}, p0=0.0, t_eval=[0.0, 0.25, 0.5])
+    assert r.status == 0
+    assert r.p1[:, 1].min() < 0
+    assert "S2 falls to" in r.message and "overruns" in r.message

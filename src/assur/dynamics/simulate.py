@@ -88,6 +88,8 @@ METHODS = ("Radau", "BDF", "LSODA")
 #: piston that has just left a stop with zero speed and force may creep back by
 #: rounding, which must not count as a new impact
 CONTACT = 1e-9
+#: a chamber pressure below −NEGATIVE [Pa] is reported in the result's message
+NEGATIVE = 1e3
 #: phase changes (lift-off, impact) after which a simulation is stopped as chattering
 MAX_SWITCHES = 100
 
@@ -665,6 +667,11 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
         "relief", "divider", "line", "impact", "mechanism_kinetic", "line_kinetic", "loads",
         "oil"))
     log.sort()
+    P = Y[2 * k:3 * k]
+    for j in np.flatnonzero(P.min(axis=1) < -NEGATIVE):
+        i = int(np.argmin(P[j]))
+        message += (f"; p1 of {coords[j]} falls to {P[j, i] / 1e6:.4g} MPa at t = {tt[i]:.4g} "
+                    f"s: a load overruns the rod (its drained side is not modelled)")
     for v in events_log.values():
         v.sort()
 
