@@ -388,8 +388,9 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
              duration: float = typer.Option(0.0, "--duration",
                                             help="Simulated time in s (default: the "
                                                  "file's [simulation] duration).")):
-    """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6): time
-    series (CSV), figures (PNG), the mechanism's motion (GIF) and an HTML report."""
+    """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6; seed
+    004's crane, two cylinders through a flow divider): time series (CSV), figures
+    (PNG), the mechanism's motion (GIF) and an HTML report."""
     from .dynamics import simulate_model
     from .errors import AssemblyError, ModelError
     from .report.simulation import write_simulation_report
