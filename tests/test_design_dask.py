@@ -25,7 +25,7 @@ def test_local_cluster_equals_in_process():
                             evaluate=lambda Xp: ex.evaluate(pb, Xp))
     np.testing.assert_array_equal(de_here.x, de_there.x)
     assert de_here.evaluations == de_there.evaluations
-    assert seen[-1] == len(X)
+    assert len(X) in seen  # the progress of the sweep reached every design
     np.testing.assert_array_equal(here.status, there.status)
     np.testing.assert_array_equal(here.objectives, there.objectives)
     np.testing.assert_array_equal(here.values, there.values)
