@@ -114,6 +114,9 @@ def test_nsga2_pareto_front():
         p.write_text(text, encoding="utf-8")
         pb = load_problem(p)
         res = pareto(pb, pop_size=24, generations=8, seed=2)
+        from assur.report.design import pareto_figure
+        png = pareto_figure(pb, res, Path(d) / "front.png")
+        assert png.stat().st_size > 1000
     assert len(res.X) >= 1 and res.batch.feasible.all()
     F = res.batch.scores()
     for i in range(len(F)):
@@ -232,3 +235,13 @@ def test_reductions_equal_the_array_pass(problem):
             y = a.kinematics.y("56")
             np.testing.assert_allclose(b.values[i, :3], [y.min(), y.max(), cyl.pressure.max()],
                                        rtol=1e-10)
+
+
+def test_cli_refuses_a_bad_var_with_one_message(tmp_path):
+    from typer.testing import CliRunner
+    from assur.cli import app
+    r = CliRunner().invoke(app, ["sweep", str(HITCH), "--var", "L44=1:2", "--workers", "0",
+                                 "-o", str(tmp_path / "x.parquet")])
+    assert r.exit_code == 1
+    assert "--var 'L44=1:2': 'L44' is not a parameter" in r.output
+    assert "Traceback" not in r.output
