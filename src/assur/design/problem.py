@@ -143,6 +143,10 @@ class Problem:
         for c in self.objectives:
             if c.sense is None:
                 raise ModelError(f"objective {c.name}: maximize or minimize?")
+        # bounds outside a parameter's physical span (a length ≤ 0, a count < 1) are
+        # refused here, once, rather than design by design
+        from ..inputs import check_params
+        check_params(mechanism, {v.name: np.array([v.low, v.high]) for v in self.variables})
         mech = mechanism
         have = {d.name for d in mech.distances}
         for c in self.constraints + self.objectives:
@@ -226,7 +230,7 @@ class Problem:
         Batch
         """
         X = np.atleast_2d(np.asarray(X, float))
-        if X.ndim != 2 or X.shape[1] != len(self.variables):
+        if X.ndim != 2 or X.shape[1] != len(self.variables) or not len(X):
             raise ModelError(f"design problem {self.name!r}: designs must have shape "
                              f"(m, {len(self.variables)}) for the variables {list(self.names)}, "
                              f"got {X.shape}")
@@ -253,9 +257,9 @@ class Problem:
                                         reduce=True, on_failure="report")
         except (ModelError, AssemblyError) as e:
             if m == 1:
-                nan = {o: np.zeros(1) for o in self.outputs}
+                zero = {o: np.zeros(1) for o in self.outputs}
                 neg = {o: np.full(1, -1) for o in self.outputs}
-                return (Reductions(nan, dict(nan), neg, dict(neg), self._param_fn(X)),
+                return (Reductions(zero, dict(zero), neg, dict(neg), self._param_fn(X)),
                         np.full(1, self.n_positions), [str(e)])
             h = m // 2
             a, b = self._reduce(X[:h]), self._reduce(X[h:])
