@@ -89,7 +89,7 @@ def test_differential_evolution_beats_the_seed(problem):
     res = optimize(problem, popsize=10, maxiter=60, seed=1)
     print(f"\nminimum capacity reserve: seed 8.9 %, optimum {res.value:.2f} % "
           f"({res.evaluations} designs in {res.calls} batches)")
-    assert res.feasible
+    assert res.feasible and res.verified == ""
     assert res.value > 8.9 + 5.0
     assert np.all(res.x >= problem.bounds[:, 0]) and np.all(res.x <= problem.bounds[:, 1])
     # one batch per generation (and the start), not one call per design
@@ -203,6 +203,11 @@ def test_cli_optimize_writes_a_loadable_best_design(tmp_path):
     assert b.feasible[0] and b.objectives[0, 0] > 8.95
     html = (tmp_path / "design.html").read_text(encoding="utf-8")
     assert "Variables" in html and "X01" in html and "data:image/png;base64" in html
+    from assur.report.design import comparison_html
+    from assur.design.search import optimize
+    res = optimize(pb, popsize=4, maxiter=3, seed=0)
+    ru = comparison_html(pb, res, lang="ru")
+    assert "Переменные проектирования" in ru and "максимизировать" in ru
 
 
 def test_cli_sweep_in_process_to_parquet(tmp_path):
@@ -245,3 +250,32 @@ def test_cli_refuses_a_bad_var_with_one_message(tmp_path):
     assert r.exit_code == 1
     assert "--var 'L44=1:2': 'L44' is not a parameter" in r.output
     assert "Traceback" not in r.output
+
+
+def test_capacity_constraint_and_a_point_that_does_not_rise():
+    """A capacity at the lever's point 23 (Python API): where 23 goes down with S
+    (I(23) ≤ 0) the design is infeasible with that reason; elsewhere the minimum
+    capacity equals the array pass's."""
+    from assur.design import Limit, Problem, Variable, criterion
+    from assur.design.problem import LIFT
+    mech = io.load(io.bundled("hitch_003")).mechanism
+    cap = criterion("capacity", {"cylinder": "ГЦ", "point": "23"}, mech,
+                    limit=Limit(60e3, "at_least"))
+    span = criterion("bound", {"quantity": "Y(23)", "of": "span"}, mech, sense="minimize")
+    S = np.linspace(0.42, 0.67, 50)
+    pb = Problem(mech, S, [Variable("X03", 0.0, 0.6), Variable("Y03", 0.6, 1.3)], [cap],
+                 [span])
+    X = np.array([[0.15967816, 0.97725409], [0.25, 1.112]])
+    b = pb.evaluate(X)
+    assert b.status[0] == LIFT
+    kin = pb.with_design(X[0]).solve(S)
+    I = kin.transmission("23")
+    assert I.min() <= 0 and b.where[0] == int(np.argmin(I))
+    assert b.reasons[0] == ("point 23 does not rise with the coordinate: its transmission "
+                            f"number I(23) ≤ 0 at position {b.where[0]} (S = {S[b.where[0]]:.6g})")
+    a = pb.with_design(X[1]).analyze(S)
+    G = a.cylinder("ГЦ").capacity("23")
+    assert b.values[1, 0] == pytest.approx(G.min(), rel=1e-10)
+    assert b.status[1] == (FEASIBLE if G.min() >= 60e3 else CONSTRAINT)
+    y = a.kinematics.y("23")
+    assert b.objectives[1, 0] == pytest.approx(y.max() - y.min(), rel=1e-10)

@@ -204,6 +204,16 @@ class Problem:
         return self.original.with_params(**{v.name: float(xi)
                                             for v, xi in zip(self.variables, x)})
 
+    def verify(self, x) -> str:
+        """Check one design [SI] the way a single analysis does — every position, the
+        branches kept continuous *between* positions too (the batches check the
+        positions only): "" when it holds, else the :class:`AssemblyError` message."""
+        try:
+            self.with_design(x).solve(self.positions)
+        except AssemblyError as e:
+            return str(e)
+        return ""
+
     # ---- evaluation ------------------------------------------------------------------
     def reference(self):
         """The criteria's values for the original design (used by ``"original"``
