@@ -279,3 +279,21 @@ def test_capacity_constraint_and_a_point_that_does_not_rise():
     assert b.status[1] == (FEASIBLE if G.min() >= 60e3 else CONSTRAINT)
     y = a.kinematics.y("23")
     assert b.objectives[1, 0] == pytest.approx(y.max() - y.min(), rel=1e-10)
+
+
+def test_written_design_file_loads_with_the_values(tmp_path):
+    """The best design's file extends the original, writes each value in the file's
+    own unit (an angle in degrees, a length in m or mm, a plain number) and loads
+    back to the same values."""
+    from assur.io._design import write_design_file
+    from assur.quantities import display_units
+    base = io.bundled("hitch_003")
+    mech = io.load(base).mechanism
+    values = {"phiBD": 0.40123456789, "X01": 0.4123456789, "eta": 0.8512345, "Dgc": 0.0812345}
+    p = write_design_file(tmp_path / "best.toml",
+                          base, values, display_units(mech), header=("a header",))
+    text = p.read_text(encoding="utf-8")
+    assert text.startswith("# a header\nextends = ") and ' deg"' in text and ' mm"' in text
+    got = io.load(p).mechanism.params
+    for k, v in values.items():
+        assert got[k] == pytest.approx(v, rel=1e-14)

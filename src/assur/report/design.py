@@ -71,7 +71,13 @@ def _unit_of(problem, output):
             return c.unit
     from ..fused import OUTPUT_UNITS, parse_output
     from ..quantities import Unit
-    return Unit(OUTPUT_UNITS[parse_output(output)[0]])
+    fn, args = parse_output(output)
+    text = OUTPUT_UNITS[fn]
+    if "/q" in text:  # an analog: per metre of a cylinder, per radian of a crank
+        mech = problem.mechanism
+        c = args[1] if len(args) > 1 else mech.coordinates[0]
+        text = text.replace("/q", "/rad" if mech.coordinate_kind(c) == "angle" else "/m")
+    return Unit(text)
 
 
 def comparison_html(problem, result, title=None, lang="en"):
