@@ -70,16 +70,25 @@ def test_many_infeasible_designs_in_one_batch(problem):
     assert len(set(b.reasons)) >= 1 and all("does not assemble" in r for r in b.reasons)
 
 
-def test_engine_refusal_is_isolated(problem):
-    """A design the engine refuses as a whole is split off; the rest is evaluated."""
+def test_engine_refusal_is_isolated():
+    """A design the engine refuses as a whole — the implement's centre of mass fixed at
+    a pose S = Sp where the cylinder cannot reach — is split off the batch with the
+    engine's message; the rest of the batch is evaluated (and the problem needs no
+    constraint)."""
+    from assur.design import Problem, Variable, criterion
     from assur.design.problem import ENGINE
-    X = np.repeat(problem.x0[None], 5, axis=0)
-    # lever pivot on top of the cylinder's frame pivot: the engine refuses that design
-    X[3, problem.names.index("X03")] = X[3, problem.names.index("X01")]
-    X[3, problem.names.index("Y03")] = X[3, problem.names.index("Y01")]
-    b = problem.evaluate(X)
-    assert b.feasible[[0, 1, 2, 4]].all()
-    assert b.status[3] in (ENGINE, ASSEMBLY) and b.reasons[3]
+    mech = io.load(io.bundled("hitch_003")).mechanism
+    obj = criterion("bound", {"quantity": "Y(S6)", "of": "max"}, mech, sense="maximize")
+    S = np.linspace(0.42, 0.67, 8)
+    pb = Problem(mech, S, [Variable("Sp", 0.1, 0.6)], [], [obj])
+    X = np.array([[0.469], [0.1], [0.5], [0.2], [0.55]])
+    b = pb.evaluate(X)
+    assert list(b.status) == [FEASIBLE, ENGINE, FEASIBLE, ENGINE, FEASIBLE]
+    assert b.reasons[1].startswith("refused by the engine: rigid point fixed at a pose "
+                                   "'centre of mass S6' is defined at the pose S = 0.1")
+    for i in (0, 2, 4):
+        y = pb.with_design(X[i]).solve(S).y("S6")
+        assert b.objectives[i, 0] == pytest.approx(y.max(), rel=1e-12)
 
 
 def test_differential_evolution_beats_the_seed(problem):

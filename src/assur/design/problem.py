@@ -353,7 +353,7 @@ class Problem:
         bad_rows = ~ok
         margins[bad_rows] = -1.0
         violated = margins < 0
-        first = np.argmax(violated, axis=1)
+        first = np.argmax(violated, axis=1) if nc else np.zeros(m, np.int64)
         viol = ok & violated.any(axis=1)
         status[viol], detail[viol] = CONSTRAINT, first[viol]
         amount[viol] = margins[viol, first[viol]]
