@@ -306,3 +306,23 @@ def test_written_design_file_loads_with_the_values(tmp_path):
     got = io.load(p).mechanism.params
     for k, v in values.items():
         assert got[k] == pytest.approx(v, rel=1e-14)
+
+
+def test_bore_and_relief_as_variables():
+    """--var on the cylinder's bore and relief setting (units as in files): the
+    capacity scales with D² and p_max (k·p_max·A·η/I, seed 003 §4), the pressure with
+    1/D², and the pressure limit follows the relief setting of each design."""
+    pb = load_problem(HITCH, variables=("Dgc=70 mm:90 mm", "Pgc_max=15 MPa:20 MPa"))
+    assert pb.names[-2:] == ("Dgc", "Pgc_max")
+    X = np.repeat(pb.x0[None], 4, axis=0)
+    X[1, -2] = 0.09
+    X[2, -1] = 20e6
+    X[3, -1] = 15e6          # below the working pressure of 16.06 MPa: infeasible
+    b = pb.evaluate(X)
+    G = 1 + b.objectives[:, 0] / 100  # GS6/P6
+    assert G[1] / G[0] == pytest.approx((0.09 / 0.08) ** 2, rel=1e-12)
+    assert G[2] / G[0] == pytest.approx(20 / 17.5, rel=1e-12)
+    assert b.values[1, 2] == pytest.approx(b.values[0, 2] * (0.08 / 0.09) ** 2, rel=1e-12)
+    assert list(b.status[:3]) == [FEASIBLE] * 3 and b.status[3] == CONSTRAINT
+    assert b.reasons[3].startswith("constraint max p(ГЦ) ≤ Pgc_max does not hold")
+    assert b.reason(3).startswith("constraint max p(ГЦ) ≤ 15 MPa does not hold")

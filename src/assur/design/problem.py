@@ -465,17 +465,19 @@ class Batch:
                     f"its transmission number {list(pb.lifts)[det]} ≤ 0{at}")
         c = pb.constraints[det]
         rel = "≥" if c.limit.sense == "at_least" else "≤"
-        bound = f" {rel} {c.show(lim)}" if lim is not None else f" ({c.limit.sense})"
+        bound = f" {rel} {lim}" if isinstance(lim, str) else \
+            f" {rel} {c.show(lim)}" if lim is not None else f" ({c.limit.sense})"
         return f"constraint {c.name}{bound} does not hold{at}"
 
     def _limits(self):
         """Each constraint's limit when it is the same for every design (a number,
-        ``"original"``, a parameter that is not a variable) [SI], else None."""
+        ``"original"``, a parameter that is not a variable) [SI]; the name of the
+        variable it is; None when no design of the batch violates it."""
         out = []
         for j, c in enumerate(self.problem.constraints):
-            v = c.limit.value
+            v = c.limit.value if c.limit.value is not None else c.args.get("relief")
             if isinstance(v, str) and v in self.problem.names:
-                out.append(None)
+                out.append(v)  # a design variable: named, its value differs per design
                 continue
             ev = np.flatnonzero(self.status == CONSTRAINT)
             ev = ev[self.detail[ev] == j]
