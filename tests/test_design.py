@@ -326,3 +326,18 @@ def test_bore_and_relief_as_variables():
     assert list(b.status[:3]) == [FEASIBLE] * 3 and b.status[3] == CONSTRAINT
     assert b.reasons[3].startswith("constraint max p(ГЦ) ≤ Pgc_max does not hold")
     assert b.reason(3).startswith("constraint max p(ГЦ) ≤ 15 MPa does not hold")
+
+
+def test_chunks_and_order_do_not_change_results(problem):
+    """The same designs in chunks of 37 and in another order give the same results
+    (the reasons, made once per batch, included)."""
+    X = problem.sample(500, seed=21)
+    X[::5, problem.names.index("X03")] += 0.8
+    b = problem.evaluate(X)
+    small = load_problem(HITCH, chunk=37)
+    perm = np.random.default_rng(0).permutation(len(X))
+    c = small.evaluate(X[perm])
+    np.testing.assert_array_equal(c.status, b.status[perm])
+    np.testing.assert_array_equal(c.objectives, b.objectives[perm])
+    np.testing.assert_array_equal(c.margins, b.margins[perm])
+    assert c.reasons == [b.reasons[i] for i in perm]
