@@ -1,5 +1,6 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
-``assur fit``, ``assur simulate``, ``assur sweep``, ``assur optimize``, ``assur demo``.
+``assur fit``, ``assur simulate``, ``assur cycles``, ``assur sweep``, ``assur optimize``,
+``assur tolerance``, ``assur serve``, ``assur dxf``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -19,7 +20,6 @@ from pathlib import Path
 
 import typer
 from rich.console import Console
-from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 from rich.text import Text
 
@@ -33,6 +33,19 @@ err = Console(stderr=True, markup=False, emoji=False, highlight=False)
 LANGS = ("ru", "en")
 
 FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")  # = assur.report.FORMATS
+
+
+def _version(value: bool):
+    if value:
+        from . import __version__
+        console.print(f"assur {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")):
+    """Hydraulic-cylinder driven planar linkages solved by Assur groups."""
 
 
 def _fail(message: str, code: int = 1):
@@ -196,6 +209,8 @@ def _positions(analysis, draw_at):
 
 
 def _run_report(model, output: str, lang: str, fmts, draw_at=None):
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
     from .errors import AssemblyError, ModelError, SingularPositionError
     from .report import report_steps, write_report
 
@@ -403,6 +418,36 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
     _summary(by_format, output)
 
 
+@app.command()
+def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylinder "
+                                                 "coordinates with [[drive]]."),
+           output: str = typer.Option("assur-cycles", "-o", "--output",
+                                      help="Output directory."),
+           lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+    """Seed 004's work cycles: max cylinder forces with their static and dynamic parts
+    for combined and separate motion, cycle times 4–20 s (CSV, XLSX, PNG) and an HTML
+    report that sets them against the paper's conclusions."""
+    from .errors import AssemblyError, ModelError
+    from .report.cycles import verdict_word, write_cycles_report
+
+    _check_lang(lang)
+    model = _load(file)
+    out = _output_dir(output)
+    try:
+        _, verdicts, files = write_cycles_report(model, out, lang)
+    except (ModelError, AssemblyError, ValueError) as e:
+        _fail(f"{file}: {e}")
+    except OSError as e:
+        _fail(f"{output}: cannot write the report: {e.strerror or e}")
+    for v in verdicts:
+        console.print(Text.assemble((f"{verdict_word(v.agrees, lang)}: ",
+                                     "green" if v.agrees else "yellow"), v.claim, " (", v.model,
+                                    ")"), soft_wrap=True)
+    by_format = {}
+    for f in files:
+        by_format.setdefault(f.suffix.lstrip("."), []).append(f)
+    _summary(by_format, output)
+
 
 # ---- synthesis (issue 12): assur sweep, assur optimize ---------------------------------
 def _design_problem(file: Path, var, positions):
@@ -574,6 +619,152 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
                        f"{c.show(res.value)}"))
     _ok(f"{res.evaluations} designs in {res.calls} batches, {res.generations} generations on "
         f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
+
+
+@app.command()
+def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tolerances]."),
+              output: str = typer.Option("assur-tolerance", "-o", "--output",
+                                         help="Output directory."),
+              samples: int = typer.Option(2000, "--samples", help="Machines drawn."),
+              seed: int = typer.Option(0, "--seed", help="Seed of the random generator."),
+              lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+    """Monte Carlo over the model's manufacturing tolerances: distributions of pressure
+    and capacity (P1…P99), machines that do not assemble, and the first-order stack-up
+    from the exact sensitivities; tables (CSV, XLSX), histograms and an HTML report."""
+    import numpy as np
+
+    from .errors import AssemblyError, ModelError, SingularPositionError
+    from .report.tolerance import display_scale, write_tolerance
+    from .tolerance import _worst, monte_carlo
+
+    _check_lang(lang)
+    if samples < 2:
+        _fail(f"--samples must be at least 2; got {samples}", 2)
+    model = _load(file)
+    if not model.tolerances:
+        _fail(f"{file}: no [tolerances] section (docs/tolerance.md)")
+    out = _output_dir(output)
+    try:
+        r = monte_carlo(model, None, model.tolerances, samples=samples, seed=seed)
+    except (AssemblyError, ModelError, SingularPositionError) as e:
+        _fail(f"{file}: {e}")
+    files = write_tolerance(r, model.mechanism, out, lang)
+    tab = Table(title=f"{model.mechanism.name}: {samples} machines, seed {seed}",
+                show_header=True, header_style="bold")
+    for col in ("output", "unit", "nominal", "P5", "P50", "P95", "σ MC", "σ lin"):
+        tab.add_column(col)
+    for o in r.outputs:  # each machine's worst value over the range
+        j = r.outputs.index(o)
+        k, u = display_scale(r, o)
+        how = _worst(o)
+        nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
+        p = r.worst_percentiles(o) if r.assembled.any() else [float("nan")] * 5
+        iw = int(np.argmin(r.nominal[:, j]) if how == "min" else np.argmax(r.nominal[:, j]))
+        sd = r.std(o)[iw] if r.assembled.sum() > 1 else float("nan")
+        tab.add_row(f"{o} {how}", u, *(f"{v / k:.5g}" for v in (nom, p[1], p[2], p[3], sd,
+                                                              r.linear_sigma[iw, j])))
+    console.print(tab)
+    console.print(f"does not assemble: {100 * r.failure_share:.3g} % of the machines")
+    for d, _g, msg in r.reasons[:5]:
+        console.print(f"  machine {d}: {msg}", soft_wrap=True)
+    _summary({"tolerance": [f for f in files if not str(f).endswith(".html")],
+              "html": [f for f in files if str(f).endswith(".html")]}, output)
+
+
+@app.command()
+def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
+          port: int = typer.Option(8000, "--port", help="TCP port (0: any free port)."),
+          host: str = typer.Option("127.0.0.1", "--host",
+                                   help="Address to bind (default: loopback only)."),
+          no_browser: bool = typer.Option(False, "--no-browser",
+                                          help="Do not open the page in a browser."),
+          lang: str = typer.Option("en", "--lang", help="The page's language: ru or en.")):
+    """Serve an interactive page for a model: parameters as sliders, the mechanism's
+    drawing moved by a stroke slider, live plots and tables (docs/page.md)."""
+    _check_lang(lang)
+    if not 0 <= port <= 65535:
+        _fail(f"--port must be in 0…65535, got {port}", 2)
+    _load(file)  # one message for a bad file, before the server starts
+    from .app.server import create_app
+    from .errors import ModelError
+
+    try:
+        application = create_app(file, lang=lang)
+    except (ModelError, OSError) as e:
+        _fail(str(e))
+    import socket
+
+    import uvicorn
+
+    try:  # the port first, so that a busy one is one message and the URL is known
+        sock = socket.socket(socket.AF_INET6 if ":" in host else socket.AF_INET)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((host, port))
+    except OSError as e:
+        _fail(f"cannot listen on {host}:{port}: {e.strerror or e}")
+    port = sock.getsockname()[1]
+    shown = f"[{host}]" if ":" in host else host
+    url = f"http://{shown}:{port}/?lang={lang}"
+    if host not in ("127.0.0.1", "::1", "localhost"):
+        err.print(Text.assemble(("warning:", "bold yellow"), " ", f"serving on {host}: "
+                                "anyone who can reach this address can use the page"))
+    console.print(f"assur: serving {file} at {url} (Ctrl+C stops)")
+    if not no_browser:
+        import threading
+        import webbrowser
+        threading.Timer(0.8, lambda: webbrowser.open(url)).start()
+    config = uvicorn.Config(application, log_level="warning")
+    uvicorn.Server(config).run(sockets=[sock])
+
+
+@app.command()
+def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
+        at: str = typer.Option("", "--at", help="Coordinate values to draw: cylinder "
+                               "lengths in m (0.42,0.67), crank angles in degrees; "
+                               "default: first and last."),
+        output: str = typer.Option("", "-o", "--output",
+                                   help="The DXF file (default: <model>.dxf).")):
+    """Write the mechanism's drawing at chosen positions as DXF (millimetres, one layer
+    per link, pivots as points; docs/page.md)."""
+    import numpy as np
+
+    from .app.dxf import write_dxf
+    from .errors import AssemblyError, ModelError, SingularPositionError
+
+    model = _load(file)
+    out = Path(output or (file.stem + ".dxf"))
+    if out.exists() and out.is_dir():
+        _fail(f"{out}: is a directory; expected a .dxf file name")
+    mech = model.mechanism
+    kin, idx = None, None
+    if at and len(mech.coordinates) == 1 and mech.coordinate_kind(mech.coordinates[0]) != \
+            "angle":
+        try:
+            values = [float(v) for v in at.split(",") if v.strip()]
+        except ValueError:
+            _fail(f"--at must be comma-separated numbers (m), got {at!r}")
+        r = np.asarray(model.range, dtype=float)
+        lo, hi = float(r.min()), float(r.max())
+        bad = [v for v in values if not lo <= v <= hi]
+        if bad or not values:
+            _fail(f"--at {bad or at!r}: give values in the range {lo:.6g} … {hi:.6g} m")
+        # a fine grid through the values keeps the assembly mode continuous between them
+        q = np.unique(np.concatenate([np.linspace(r[0], r[-1], 201), values]))
+        q = q if r[-1] >= r[0] else q[::-1]
+        try:
+            kin = mech.solve(q)
+        except (AssemblyError, ModelError, SingularPositionError) as e:
+            _fail(f"{file}: {e}")
+        idx = [int(np.abs(q - v).argmin()) for v in values]
+    else:
+        analysis = _assemble(model)
+        kin = analysis.kinematics
+        idx = _positions(analysis, at) or sorted({0, kin.shape[-1] - 1})
+    try:
+        write_dxf(kin, out, positions=idx)
+    except OSError as e:
+        _fail(f"{out}: cannot write the DXF file: {e.strerror or e}")
+    _ok(f"wrote {out} ({len(idx)} positions)")
 
 
 def main(argv=None):  # pragma: no cover - console entry

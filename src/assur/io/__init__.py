@@ -87,6 +87,9 @@ class Model:
     design : DesignSpec or None
         The ``[design]`` section: design variables, constraints and objectives
         (:mod:`assur.io._design`, docs/design.md), None without one.
+    tolerances : tuple of Tolerance
+        The ``[tolerances]`` section (:mod:`assur.io._tolerances`,
+        :mod:`assur.tolerance`), empty without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -110,6 +113,7 @@ class Model:
     drive: object = None
     simulation: object = None
     design: object = None
+    tolerances: tuple = ()
 
     @property
     def shape(self) -> tuple:
@@ -291,7 +295,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
                  tuple(builder.warnings), builder.lift_test, builder.paired, builder.drive,
-                 builder.simulation, design)
+                 builder.simulation, design, tuple(builder.tolerances))
 
 
 def _warn(model: Model) -> Model:
