@@ -481,7 +481,8 @@ _SCHED = typer.Option(None, "--scheduler", help="An existing Dask scheduler, "
 
 
 def _bar():
-    return Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+    return Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False), BarColumn(),
                     TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(),
                     console=err, transient=True)
 
