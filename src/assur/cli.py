@@ -482,7 +482,8 @@ _SCHED = typer.Option(None, "--scheduler", help="An existing Dask scheduler, "
 
 
 def _bar():
-    return Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+    return Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False), BarColumn(),
                     TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(),
                     console=err, transient=True)
 
@@ -550,7 +551,8 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
              scheduler: str = _SCHED,
              chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
              output: str = typer.Option("assur-optimize", "-o", "--output",
-                                        help="Output directory.")):
+                                        help="Output directory."),
+             lang: str = typer.Option("en", "--lang", help="Report labels: ru or en.")):
     """Search for the best design (differential evolution over whole populations; with
     two or more objectives, NSGA-II's Pareto front); write it as a model file that
     extends the original, and an HTML report comparing the two."""
@@ -561,6 +563,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
     from .quantities import display_units
     from .report.design import pareto_figure, write_comparison
 
+    _check_lang(lang)
     pb = _design_problem(file, var, positions)
     if not pb.objectives:
         _fail(f"{file}: no objective: add [[design.objectives]] (maximize = … or minimize = …)")
@@ -606,7 +609,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
         best.mechanism.solve(pb.positions)
     except (ModelError, AssemblyError) as e:
         _fail(f"{path}: the written model does not load: {e}")
-    rep = write_comparison(out / "design.html", pb, res)
+    rep = write_comparison(out / "design.html", pb, res, lang=lang)
     rt = Table(title="best design", header_style="bold", title_justify="left")
     for h in ("variable", "original", "best", "bounds"):
         rt.add_column(h, justify="right")
