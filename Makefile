@@ -28,6 +28,7 @@ test-fast: $(STAMP)
 bench: $(STAMP)
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/simulate.py
+	$(PY) benchmarks/design.py
 	$(PY) benchmarks/sensitivity.py
 
 clean:

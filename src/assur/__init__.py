@@ -7,6 +7,9 @@
 [4.459, 2.621]
 """
 
+#: the package's version: the one place it is written (pyproject.toml reads it)
+__version__ = "0.1.0"
+
 from . import groups, kinematics
 from .errors import AssemblyError, ModelError, SingularPositionError
 from .groups import (Crank, CylinderLever, DoubleSliderDyad, Dyad, Frame, PosePoint, RigidPoint,
@@ -19,6 +22,4 @@ from . import examples
 __all__ = ["Mechanism", "Kinematics", "Topology", "AssemblyError", "ModelError",
            "SingularPositionError", "Frame", "CylinderLever", "Dyad", "Crank", "SliderInput",
            "SliderDyad", "RigidPoint", "PosePoint", "SleeveDyad", "DoubleSliderDyad", "groups",
-           "kinematics", "examples"]
-
-__version__ = "0.1.0"
+           "kinematics", "examples", "__version__"]

@@ -13,22 +13,22 @@ sweep of millions of designs stores no positions at all.
 
 Outputs are written as function calls (units SI):
 
-=====================  ==============================================================
-``X(p)``, ``Y(p)``     coordinates of point p [m]
-``dX(p)``, ``dY(p)``   first analogs ∂x/∂q, ∂y/∂q (``dY(p, S)`` for k > 1) [m/m, m/rad]
-``I(p)``               transmission number dY/dq of p (= ``dY(p)``)
-``phi(l)``             angle of link l in (−π, π] (unwrapped along stored positions) [rad]
-``dphi(l)``            its analog dφ/dq [rad/m or rad/rad]
-``length(d)``          a named distance [m]
-``F(c)``               actuator force of coordinate c by virtual work [N or N·m]
-``Fr(c)``              the same from the joint reactions [N or N·m]
-``Rx(i, j)``, ``Ry``   force of link i on link j [N]; ``R(i, j)`` its magnitude,
-                       ``Rm(i, j)`` the moment at a prismatic pair or crank drive [N·m]
-``p(cyl)``             pressure of cylinder ``cyl`` F/(η_m·k·A·η_h) [Pa]
-``G(cyl, p)``          lift capacity at point p, k·p_max·A·η_h·η_m / I(p) [N]
-``reserve(cyl, p, P)`` capacity reserve (G − P)/P·100 for a load P (number or
-                       parameter) [%]
-=====================  ==============================================================
+=======================  ==============================================================
+``X(p)``, ``Y(p)``       coordinates of point p [m]
+``dX(p)``, ``dY(p)``     first analogs ∂x/∂q, ∂y/∂q (``dY(p, S)`` for k > 1) [m/m, m/rad]
+``I(p)``                 transmission number dY/dq of p (= ``dY(p)``)
+``phi(l)``               angle of link l in (−π, π] (unwrapped along stored positions) [rad]
+``dphi(l)``              its analog dφ/dq [rad/m or rad/rad]
+``length(d)``            a named distance [m]
+``F(c)``                 actuator force of coordinate c by virtual work [N or N·m]
+``Fr(c)``                the same from the joint reactions [N or N·m]
+``Rx(i, j)``, ``Ry``     force of link i on link j [N]; ``R(i, j)`` its magnitude,
+                         ``Rm(i, j)`` the moment at a prismatic pair or crank drive [N·m]
+``p(cyl)``               pressure of cylinder ``cyl`` F/(η_m·k·A·η_h) [Pa]
+``G(cyl, p)``            lift capacity at point p, k·p_max·A·η_h·η_m / I(p) [N]
+``reserve(cyl, p, P)``   capacity reserve (G − P)/P·100 for a load P (number or
+                         parameter) [%]
+=======================  ==============================================================
 
 Static loads only (weights, forces, moments, springs, the weights of masses); the
 fused kernel does not check continuity between positions (``solve`` does).

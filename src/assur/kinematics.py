@@ -187,7 +187,7 @@ class Kinematics:
         return w1, w2
 
     def reshape(self, a):
-        """An array of shape (m, n, *tail) in the result's shape (``shape + tail``)."""
+        """An array of shape ``(m, n, *tail)`` in the result's shape (``shape + tail``)."""
         return self._out(a)
 
     def _val(self, point):

@@ -36,9 +36,32 @@ import numpy as np
 
 from .eom import equations_of_motion
 
-__all__ = ["SCENARIOS", "Cycle", "cycle", "cycle_forces", "sweep"]
+__all__ = ["SCENARIOS", "PERIODS", "Cycle", "cycle", "cycle_forces", "sweep", "strokes",
+           "drive_cycles"]
 
 SCENARIOS = ("combined_equal", "combined_ideal", "separate_second", "separate_first")
+#: seed 004's cycle times: 4 to 20 s by 1 s [s]
+PERIODS = tuple(float(T) for T in range(4, 21))
+
+
+def strokes(circuit):
+    """``(start, end)`` [m] of the work cycle a drive sets: every cylinder from the
+    stop where its fed chamber is smallest to the other one (a ``raise`` valve:
+    s_min → s_max; ``lower``: s_max → s_min), in the circuit's order of coordinates
+    (seed 004's crane: the boom S01 → S_max1, the stick from Φ1p0 to Φ1pmax).
+
+    Parameters
+    ----------
+    circuit : assur.drive.Circuit
+
+    Returns
+    -------
+    tuple of ndarray, shape (k,)
+    """
+    start = np.array([b.stop for b in circuit.branches])
+    end = np.array([b.cylinder.s_max if b.sense > 0 else b.cylinder.s_min
+                    for b in circuit.branches])
+    return start, end
 
 
 @dataclass(frozen=True)
@@ -99,6 +122,12 @@ def cycle(start, end, period, scenario, samples=41) -> Cycle:
             v = np.zeros(2)
             v[j] = V * sense[j]
             segs.append((stroke[j] / V, v))
+    return _sampled(scenario, period, a, b, segs, samples)
+
+
+def _sampled(scenario, period, a, b, segs, samples):
+    """The :class:`Cycle` of segments ``(duration, velocity)`` from ``a`` to ``b``."""
+    sense = np.sign(b - a)
     t0, q0 = 0.0, a.copy()
     ts, qs, vs, ss = [], [], [], []
     for i, (dur, v) in enumerate(segs):
@@ -118,6 +147,47 @@ def cycle(start, end, period, scenario, samples=41) -> Cycle:
                  np.concatenate(ss))
 
 
+def drive_cycles(circuit, samples=41):
+    """The work cycle at the rod speeds a drive's pump sets (seed 004, §Г: the
+    standard pump with a flow divider against separate motion), between the drive's
+    stops (:func:`strokes`):
+
+    * ``divider``: both rods from the start at V_j = s_j·Q/f_j (eqs. 65–66; f_j the
+      fed area), each stopping at its end;
+    * ``pump_second``, ``pump_first``: one rod at a time with the whole flow,
+      V_j = Q/f_j (eqs. 67–68), the second coordinate (the stick) first or the
+      first (the boom) first.
+
+    Returns
+    -------
+    dict of str to Cycle
+        ``period`` is the time the cycle takes [s].
+    """
+    a, b = strokes(circuit)
+    if a.shape != (2,):
+        raise ValueError("a drive's cycle moves two coordinates")
+    sense = np.sign(b - a)
+    stroke = np.abs(b - a)
+    Q = circuit.pump_flow()
+    Vc = np.array([br.share * Q / br.area for br in circuit.branches])
+    Vs = np.array([Q / br.area for br in circuit.branches])
+    t = stroke / Vc
+    slow = int(np.argmax(t))
+    rest = np.zeros(2)
+    rest[slow] = Vc[slow] * sense[slow]
+    out = {"divider": _sampled("divider", float(t.max()), a, b,
+                               [(float(t.min()), Vc * sense), (float(t.max() - t.min()), rest)],
+                               samples)}
+    for name, order in (("pump_second", (1, 0)), ("pump_first", (0, 1))):
+        segs = []
+        for j in order:
+            v = np.zeros(2)
+            v[j] = Vs[j] * sense[j]
+            segs.append((float(stroke[j] / Vs[j]), v))
+        out[name] = _sampled(name, float(sum(d for d, _ in segs)), a, b, segs, samples)
+    return out
+
+
 def cycle_forces(mechanism, cycles, g=None):
     """Cylinder forces along cycles: ``[(F, F_static), …]`` with arrays of shape
     (n, k) [N] (F = h − Q, F_static = −Q), for all the cycles' positions solved at
@@ -135,18 +205,20 @@ def cycle_forces(mechanism, cycles, g=None):
     return out
 
 
-def sweep(mechanism, start, end, periods=range(4, 21), scenarios=SCENARIOS, g=None,
+def sweep(mechanism, start, end, periods=PERIODS, scenarios=SCENARIOS, g=None,
           samples=41):
-    """Largest |F_j| and |F_d,j| of every scenario and cycle time (seed 004: T_c from
-    4 to 20 s by 1 s), a pandas DataFrame with columns ``scenario``, ``T`` [s],
-    ``F1_max``, ``F2_max``, ``Fd1_max``, ``Fd2_max`` [N] and ``duration`` [s] (when the
-    last rod arrives)."""
+    """Largest |F_j|, |F_s,j| and |F_d,j| of every scenario and cycle time (seed 004:
+    T_c from 4 to 20 s by 1 s), a pandas DataFrame with columns ``scenario``, ``T``
+    [s], ``F1_max``, ``F2_max`` (the force), ``Fs1_max``, ``Fs2_max`` (its static part
+    −Q), ``Fd1_max``, ``Fd2_max`` (its dynamic part h) [N] and ``duration`` [s] (when
+    the last rod arrives)."""
     import pandas as pd
     cycles = [cycle(start, end, float(T), s, samples) for s in scenarios for T in periods]
     rows = []
     for c, (F, Fs) in zip(cycles, cycle_forces(mechanism, cycles, g)):
         Fd = F - Fs
         rows.append(dict(scenario=c.scenario, T=c.period, F1_max=np.abs(F[:, 0]).max(),
-                         F2_max=np.abs(F[:, 1]).max(), Fd1_max=np.abs(Fd[:, 0]).max(),
+                         F2_max=np.abs(F[:, 1]).max(), Fs1_max=np.abs(Fs[:, 0]).max(),
+                         Fs2_max=np.abs(Fs[:, 1]).max(), Fd1_max=np.abs(Fd[:, 0]).max(),
                          Fd2_max=np.abs(Fd[:, 1]).max(), duration=c.t[-1]))
     return pd.DataFrame(rows)

@@ -530,6 +530,8 @@ class FileSpec(_Table):
     #: [[drive]] and [simulation]: checked by :mod:`assur.io._drive` (hydraulic drive)
     drive: Optional[Any] = None
     simulation: Optional[dict[str, Any]] = None
+    #: [design]: checked by :mod:`assur.io._design` (design variables and criteria)
+    design: Optional[dict[str, Any]] = None
     motion: dict[str, MotionSpec] = {}
 
 
