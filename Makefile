@@ -29,6 +29,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/simulate.py
 	$(PY) benchmarks/design.py
+	$(PY) benchmarks/sensitivity.py
 
 clean:
 	rm -rf $(VENV) assur-demo .pytest_cache .hypothesis build dist src/*.egg-info

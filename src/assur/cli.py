@@ -637,7 +637,7 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
 
     from .errors import AssemblyError, ModelError, SingularPositionError
     from .report.tolerance import display_scale, write_tolerance
-    from .tolerance import _worst, monte_carlo
+    from .tolerance import monte_carlo, worst_kind
 
     _check_lang(lang)
     if samples < 2:
@@ -658,7 +658,7 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
     for o in r.outputs:  # each machine's worst value over the range
         j = r.outputs.index(o)
         k, u = display_scale(r, o)
-        how = _worst(o)
+        how = worst_kind(o)
         nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
         p = r.worst_percentiles(o) if r.assembled.any() else [float("nan")] * 5
         iw = int(np.argmin(r.nominal[:, j]) if how == "min" else np.argmax(r.nominal[:, j]))
