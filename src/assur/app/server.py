@@ -27,6 +27,7 @@ fixed text and is logged on the server). ``assur serve`` binds to 127.0.0.1.
 
 from __future__ import annotations
 
+import json
 import logging
 from importlib import resources
 
@@ -177,7 +178,11 @@ def create_app(model, lang: str = "en") -> FastAPI:
 
     @app.post("/api/analyze")
     def analyze(req: AnalyzeRequest):
-        return pm.compute(dict(req.params), positions=req.positions, lang=req.lang)
+        out = pm.compute(dict(req.params), positions=req.positions, lang=req.lang)
+        # serialized here: the payload is plain (lists of floats, None for NaN), and
+        # FastAPI's generic encoder would walk it element by element
+        return Response(json.dumps(out, allow_nan=False, separators=(",", ":")),
+                        media_type="application/json")
 
     @app.post("/api/export/dxf")
     def export_dxf(req: DxfRequest):

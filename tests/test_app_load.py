@@ -1,0 +1,80 @@
+"""A bounded load test of the page's server on loopback (issue 13): 50 requests/s for
+30 s, open loop (each request is sent at its scheduled time, whether the earlier ones
+have been answered or not), no error allowed; the latencies' p50, p99 and maximum are
+printed (measured, not asserted).
+
+The requests are what a page sends while a slider moves: ``POST /api/analyze`` of
+the seed-003 hitch at 101 positions with the implement's weight P6 taking one of
+five values (each answer is computed: the server keeps no results), and every
+tenth request ``GET /api/model``.
+"""
+
+import http.client
+import json
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+from urllib.parse import urlparse
+
+import numpy as np
+import pytest
+
+from assur.io import bundled
+
+pytestmark = pytest.mark.slow
+
+RATE = 50        # requests per second
+DURATION = 30    # seconds
+
+
+def test_fifty_requests_per_second_for_thirty_seconds(capsys):
+    from assur.app.server import create_app, running
+    local = threading.local()
+
+    with running(create_app(bundled("hitch_003"))) as url:
+        host, port = urlparse(url).hostname, urlparse(url).port
+
+        def call(i):
+            conn = getattr(local, "conn", None)
+            if conn is None:
+                conn = local.conn = http.client.HTTPConnection(host, port, timeout=60)
+            t0 = time.perf_counter()
+            try:
+                if i % 10 == 9:
+                    conn.request("GET", "/api/model")
+                else:
+                    body = json.dumps({"params": {"P6": 25.0 + (i % 5)}, "positions": 101})
+                    conn.request("POST", "/api/analyze", body=body,
+                                 headers={"Content-Type": "application/json"})
+                r = conn.getresponse()
+                data = r.read()
+            except (OSError, http.client.HTTPException) as e:
+                local.conn = None
+                return time.perf_counter() - t0, f"{type(e).__name__}: {e}"
+            dt = time.perf_counter() - t0
+            if r.status != 200:
+                return dt, f"HTTP {r.status}: {data[:200]!r}"
+            if i % 10 != 9 and not json.loads(data)["ok"]:
+                return dt, f"not ok: {data[:200]!r}"
+            return dt, None
+
+        call(0)  # warm: kernels and the solve cache
+        n = RATE * DURATION
+        futures = []
+        with ThreadPoolExecutor(max_workers=32) as pool:
+            start = time.perf_counter()
+            for i in range(n):
+                delay = start + i / RATE - time.perf_counter()
+                if delay > 0:
+                    time.sleep(delay)
+                futures.append(pool.submit(call, i))
+            results = [f.result() for f in futures]
+            elapsed = time.perf_counter() - start
+    lat = np.array([r[0] for r in results]) * 1e3
+    errors = [r[1] for r in results if r[1]]
+    with capsys.disabled():
+        print(f"\nload test: {n} requests in {elapsed:.1f} s ({n / elapsed:.1f}/s), "
+              f"{len(errors)} errors; latency p50 {np.percentile(lat, 50):.1f} ms, "
+              f"p99 {np.percentile(lat, 99):.1f} ms, max {lat.max():.1f} ms")
+    assert not errors, errors[:5]
+    assert elapsed < DURATION + 30  # the schedule was kept (not a latency bound)
