@@ -30,6 +30,7 @@ DURATION = 30    # seconds
 def test_fifty_requests_per_second_for_thirty_seconds(capsys):
     from assur.app.server import create_app, running
     local = threading.local()
+    conns, lock = [], threading.Lock()
 
     with running(create_app(bundled("hitch_003"))) as url:
         host, port = urlparse(url).hostname, urlparse(url).port
@@ -38,6 +39,8 @@ def test_fifty_requests_per_second_for_thirty_seconds(capsys):
             conn = getattr(local, "conn", None)
             if conn is None:
                 conn = local.conn = http.client.HTTPConnection(host, port, timeout=60)
+                with lock:
+                    conns.append(conn)
             t0 = time.perf_counter()
             try:
                 if i % 10 == 9:
@@ -70,6 +73,8 @@ def test_fifty_requests_per_second_for_thirty_seconds(capsys):
                 futures.append(pool.submit(call, i))
             results = [f.result() for f in futures]
             elapsed = time.perf_counter() - start
+        for c in conns:
+            c.close()
     lat = np.array([r[0] for r in results]) * 1e3
     errors = [r[1] for r in results if r[1]]
     with capsys.disabled():
