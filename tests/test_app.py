@@ -252,3 +252,26 @@ def test_display_does_not_import_matplotlib():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "False"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name, ok", [("combine_002", True), ("loader_lab1", True),
+                                      ("crane_lv184a", True), ("header_000", False)])
+def test_other_machines_on_the_page(name, ok):
+    """A crank (angles), a grid of two cylinders, the crane, and a file that cannot
+    assemble as printed (seed 000: its message, not a drawing)."""
+    from assur.app.server import create_app
+    c = TestClient(create_app(bundled(name)), raise_server_exceptions=False)
+    info = c.get("/api/model").json()
+    out = c.post("/api/analyze", json={"params": {}, "positions": 21}).json()
+    assert out["ok"] is ok
+    if ok:
+        n = out["geometry"]["n"]
+        model = aio.load(bundled(name))
+        k = len(model.mechanism.coordinates)
+        assert n == (21 if k == 1 else len(model.range))
+        assert [c["name"] for c in out["coordinates"]] == list(model.mechanism.coordinates)
+        assert all(len(v) == n for v in out["geometry"]["points"].values())
+    else:
+        assert "cannot close" in out["error"]["message"]
+        assert info["parameters"]
