@@ -3,16 +3,22 @@
 have been answered or not), no error allowed; the latencies' p50, p99 and maximum are
 printed (measured, not asserted).
 
-The requests are what a page sends while a slider moves: ``POST /api/analyze`` of
+The server is ``assur serve`` in its own process, on 127.0.0.1 and a free port. The
+requests are what a page sends while a slider moves: ``POST /api/analyze`` of
 the seed-003 hitch at 101 positions with the implement's weight P6 taking one of
 five values (each answer is computed: the server keeps no results), and every
 tenth request ``GET /api/model``.
 """
 
+import contextlib
 import http.client
 import json
+import re
+import subprocess
+import sys
 import threading
 import time
+import urllib.request
 from concurrent.futures import ThreadPoolExecutor
 from urllib.parse import urlparse
 
@@ -27,12 +33,40 @@ RATE = 50        # requests per second
 DURATION = 30    # seconds
 
 
+@contextlib.contextmanager
+def served(path):
+    """``assur serve path --port 0 --no-browser`` in its own process (the load
+    generator does not share its interpreter); yields the page's URL."""
+    proc = subprocess.Popen([sys.executable, "-u", "-m", "assur", "serve", str(path),
+                             "--port", "0", "--no-browser"], stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    try:
+        line = proc.stdout.readline()
+        m = re.search(r"at (http://127\.0\.0\.1:\d+)/", line)
+        assert m, f"assur serve printed {line!r}"
+        url = m.group(1)
+        for _ in range(300):  # until it answers
+            try:
+                with urllib.request.urlopen(url + "/api/model", timeout=5):
+                    break
+            except OSError:
+                time.sleep(0.1)
+        yield url
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+        proc.stdout.close()
+
+
 def test_fifty_requests_per_second_for_thirty_seconds(request):
-    from assur.app.server import create_app, running
     local = threading.local()
     conns, lock = [], threading.Lock()
 
-    with running(create_app(bundled("hitch_003"))) as url:
+    with served(bundled("hitch_003")) as url:
         host, port = urlparse(url).hostname, urlparse(url).port
 
         def call(i):
