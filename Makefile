@@ -6,7 +6,7 @@ VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.assur-installed
 
-.PHONY: demo test test-fast bench clean
+.PHONY: demo test test-fast bench clean serve chromium
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -19,10 +19,14 @@ $(STAMP): pyproject.toml | $(PY)
 demo: $(STAMP)
 	$(VENV)/bin/assur demo
 
-test: $(STAMP)
+# Debian's chromium for the page's end-to-end test (apt-get when missing; .ci/chromium.sh)
+chromium:
+	bash .ci/chromium.sh
+
+test: $(STAMP) chromium
 	$(PY) -m pytest -n 2 --durations=10
 
-test-fast: $(STAMP)
+test-fast: $(STAMP) chromium
 	$(PY) -m pytest -n 2 -m "not slow"
 
 bench: $(STAMP)
@@ -30,6 +34,11 @@ bench: $(STAMP)
 	$(PY) benchmarks/simulate.py
 	$(PY) benchmarks/design.py
 	$(PY) benchmarks/sensitivity.py
+	$(PY) benchmarks/page.py
+
+# the interactive page for the seed-003 hitch (docs/page.md)
+serve: $(STAMP)
+	$(VENV)/bin/assur serve examples/hitch_003.toml
 
 clean:
 	rm -rf $(VENV) assur-demo .pytest_cache .hypothesis build dist src/*.egg-info

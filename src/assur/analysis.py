@@ -84,6 +84,11 @@ class Analysis:
             return next(iter(self.cylinders.values()))
         return self.cylinders[name]
 
+    def _repr_html_(self):
+        """Summary, drawing and the seed-like tables in a notebook (:mod:`assur.display`)."""
+        from .display import analysis_html
+        return analysis_html(self)
+
 
 def gravity_of(mech) -> float:
     """The acceleration of gravity of a mechanism [m/s²]: the model's own

@@ -710,7 +710,7 @@ def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
     if host not in ("127.0.0.1", "::1", "localhost"):
         err.print(Text.assemble(("warning:", "bold yellow"), " ", f"serving on {host}: "
                                 "anyone who can reach this address can use the page"))
-    console.print(f"assur: serving {file} at {url} (Ctrl+C stops)")
+    console.print(f"assur: serving {file} at {url} (Ctrl+C stops)", soft_wrap=True)
     if not no_browser:
         import threading
         import webbrowser

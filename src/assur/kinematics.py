@@ -546,6 +546,11 @@ class Kinematics:
                                                names=["design", "position"])
         return pd.DataFrame(cols, index=index)
 
+    def _repr_html_(self):
+        """Summary, drawing and positions in a notebook (:mod:`assur.display`)."""
+        from .display import kinematics_html
+        return kinematics_html(self)
+
     def __repr__(self):
         return (f"Kinematics({self.mechanism.name!r}, shape={self.shape}, "
                 f"points={len(self._pidx)}, links={len(self.links)})")

@@ -818,6 +818,11 @@ class Mechanism:
         qa = np.moveaxis(a, -1, 0).reshape(k, m * n)
         return np.ascontiguousarray(qa), shape, m, n
 
+    def _repr_html_(self):
+        """The model summary in a notebook (:mod:`assur.display`)."""
+        from .display import mechanism_html
+        return mechanism_html(self)
+
     def __repr__(self):
         return (f"Mechanism({self.name!r}, coordinates={self.coordinates}, "
                 f"{len(self.groups)} groups, {len(self.links)} links)")

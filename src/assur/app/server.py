@@ -27,6 +27,7 @@ fixed text and is logged on the server). ``assur serve`` binds to 127.0.0.1.
 
 from __future__ import annotations
 
+import json
 import logging
 from importlib import resources
 
@@ -39,7 +40,7 @@ from .api import MAX_BODY, AnalyzeRequest, DxfRequest, ExportRequest
 from .session import PageModel
 from .texts import page_texts
 
-__all__ = ["create_app"]
+__all__ = ["create_app", "running"]
 
 log = logging.getLogger("assur.app")
 
@@ -177,7 +178,11 @@ def create_app(model, lang: str = "en") -> FastAPI:
 
     @app.post("/api/analyze")
     def analyze(req: AnalyzeRequest):
-        return pm.compute(dict(req.params), positions=req.positions, lang=req.lang)
+        out = pm.compute(dict(req.params), positions=req.positions, lang=req.lang)
+        # serialized here: the payload is plain (lists of floats, None for NaN), and
+        # FastAPI's generic encoder would walk it element by element
+        return Response(json.dumps(out, allow_nan=False, separators=(",", ":")),
+                        media_type="application/json")
 
     @app.post("/api/export/dxf")
     def export_dxf(req: DxfRequest):
@@ -230,3 +235,42 @@ def _nearest(model, kin, at):
     if bad:
         raise ModelError(f"at: {bad} outside the range of {c}: {lo:.6g} … {hi:.6g}")
     return [int(np.abs(q - v).argmin()) for v in at]
+
+
+class running:
+    """A context manager that serves ``app`` with uvicorn in a background thread on
+    ``host`` (loopback) and a free port; ``with running(app) as url: …`` — for tests,
+    benchmarks and notebooks. The server stops when the block ends."""
+
+    def __init__(self, app, host: str = "127.0.0.1", port: int = 0):
+        self.app, self.host, self.port = app, host, port
+
+    def __enter__(self) -> str:
+        import socket
+        import threading
+        import time
+
+        import uvicorn
+        sock = socket.socket(socket.AF_INET)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((self.host, self.port))
+        self.sock = sock
+        port = sock.getsockname()[1]
+        config = uvicorn.Config(self.app, log_level="warning", lifespan="off")
+        self.server = uvicorn.Server(config)
+        self.server.install_signal_handlers = lambda: None  # not the main thread
+        self.thread = threading.Thread(target=self.server.run, kwargs={"sockets": [sock]},
+                                       daemon=True)
+        self.thread.start()
+        t0 = time.monotonic()
+        while not self.server.started:
+            if not self.thread.is_alive() or time.monotonic() - t0 > 30:
+                raise RuntimeError("the server did not start")
+            time.sleep(0.02)
+        return f"http://{self.host}:{port}"
+
+    def __exit__(self, *exc):
+        self.server.should_exit = True
+        self.thread.join(timeout=10)
+        self.sock.close()
+        return False

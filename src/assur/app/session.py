@@ -35,7 +35,9 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
+import threading
 import time
+from collections import OrderedDict
 from pathlib import Path
 
 import numpy as np
@@ -46,6 +48,8 @@ __all__ = ["PageModel", "MAX_POSITIONS", "MAX_PARAMS"]
 MAX_POSITIONS = 1001
 #: most parameters one request may set
 MAX_PARAMS = 512
+#: loaded models kept, by their edited text (least recently used dropped)
+MODELS_KEPT = 16
 
 #: a value with an optional unit as a model file writes it: "0.48 m", "22 deg", "17.5 MPa"
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\d\s].*)?$")
@@ -63,6 +67,18 @@ def _number_and_unit(value):
         if m:
             return float(m.group(1)), (m.group(2) or "").strip()
     return None
+
+
+def _toml_number(raw: str):
+    """A bare TOML number's text (``2``, ``0.84``, ``1_000``) as a Python number."""
+    raw = raw.replace("_", "")
+    try:
+        return int(raw)
+    except ValueError:
+        try:
+            return float(raw)
+        except ValueError:
+            return None
 
 
 def _plain(value):
@@ -97,8 +113,16 @@ class PageModel:
         self.name = name
         self.source = source
         self.model = loads(self.text, name=name, source=source)  # refuses a bad start
+        # the models of the texts loaded last (a model is immutable, loading is pure):
+        # a slider moved back, the language switched or a download after a change
+        # reads its file once
+        self._models = OrderedDict()
+        self._lock = threading.Lock()
         self.doc = tomlkit.parse(self.text)
         self._params = self._read_params()
+        self._spans = self._value_spans()
+        for p in self._params:  # a value the text does not show plainly is not edited
+            p["editable"] = p["editable"] and p["name"] in self._spans
         self.editable = {p["name"]: p for p in self._params if p["editable"]}
 
     @classmethod
@@ -153,6 +177,31 @@ class PageModel:
             })
         return out
 
+    def _value_spans(self) -> dict:
+        """``{name: (start, end)}``: where the value of each number-valued parameter of
+        ``[params]`` stands in the text (one line ``name = value``, found once), so an
+        edit replaces those characters and leaves the rest of the text as it is."""
+        header = re.search(r"(?m)^\[params\][ \t]*(#.*)?$", self.text)
+        if header is None:
+            return {}
+        end = re.search(r"(?m)^[ \t]*\[", self.text[header.end():])
+        stop = header.end() + end.start() if end else len(self.text)
+        spans = {}
+        for p in self._params:
+            if p["file_value"] is None:
+                continue
+            key = re.escape(p["name"])
+            pat = re.compile(rf'(?m)^[ \t]*(?:{key}|"{key}"|\'{key}\')[ \t]*=[ \t]*'
+                             rf'("[^"\n]*"|\'[^\'\n]*\'|[-+0-9.eE_]+)')
+            hits = list(pat.finditer(self.text, header.end(), stop))
+            if len(hits) == 1:
+                raw = hits[0].group(1)
+                text = raw[1:-1] if raw[:1] in "\"'" else raw
+                nu = _number_and_unit(text if raw[:1] in "\"'" else _toml_number(raw))
+                if nu is not None and nu[0] == p["file_value"]:
+                    spans[p["name"]] = hits[0].span(1)
+        return spans
+
     def parameters(self) -> list:
         """The parameters of ``[params]``: name, group (the comment above), unit as the
         file writes it (``-`` for a plain number), current value in that unit, whether
@@ -195,26 +244,23 @@ class PageModel:
         ModelError
             See :meth:`check_params`.
         """
-        import tomlkit
         self.check_params(values)
         if not values:
             return self.text
-        doc = tomlkit.parse(self.text)
+        edits = []
         for k, v in values.items():
             unit = self.editable[k]["unit"]
-            old = doc["params"][k]
             num = repr(float(v))
+            num = num[:-2] if num.endswith(".0") else num
             if unit == "-":
-                new = int(v) if isinstance(_plain(old), int) and float(v).is_integer() \
-                    else float(v)
+                new = num  # 2.0 is written 2 (a TOML integer), 0.84 as it is
             else:
-                new = f"{num.removesuffix('.0') if num.endswith('.0') else num} {unit}"
-            comment = getattr(old.trivia, "comment", "")
-            item = tomlkit.item(new)
-            if comment:
-                item.comment(comment.lstrip("# ").strip())
-            doc["params"][k] = item
-        return tomlkit.dumps(doc)
+                new = f'"{num} {unit}"'
+            edits.append((*self._spans[k], new))
+        text = self.text
+        for start, end, new in sorted(edits, reverse=True):
+            text = text[:start] + new + text[end:]
+        return text
 
     def load(self, values: dict):
         """The :class:`assur.io.Model` of the edited text.
@@ -226,7 +272,18 @@ class PageModel:
             a root, a group that cannot be built) with its key and line.
         """
         from ..io import loads
-        return loads(self.edited_text(values), name=self.name, source=self.source)
+        text = self.edited_text(values)
+        with self._lock:
+            model = self._models.get(text)
+            if model is not None:
+                self._models.move_to_end(text)
+                return model
+        model = loads(text, name=self.name, source=self.source)  # raises: not kept
+        with self._lock:
+            self._models[text] = model
+            while len(self._models) > MODELS_KEPT:
+                self._models.popitem(last=False)
+        return model
 
     # ---- the page's payload -------------------------------------------------------
     def model_on(self, model, positions: int):

@@ -146,6 +146,11 @@ class Model:
         analysis.model_warnings = tuple(self.warnings)  # shown among the report's warnings
         return analysis
 
+    def _repr_html_(self):
+        """Solved conditions, drawing and tables in a notebook (:mod:`assur.display`)."""
+        from ..display import model_html
+        return model_html(self)
+
     def __repr__(self):
         src = f", source={str(self.source)!r}" if self.source else ""
         return (f"Model({self.mechanism.name!r}, {len(self.range)} positions, "

@@ -1,0 +1,114 @@
+"""Timing of the interactive page (issue 13 target: a parameter change on the seed-003
+hitch redraws within 100 ms). ``make bench`` runs it after simulate.py.
+
+Three figures, each the median of N changes of a link length to values not seen
+before (so nothing is reused: the edited file is read, its three [[solve]]
+conditions solved again, the hitch analyzed at 101 positions and its tables built):
+
+* **server**: :meth:`assur.app.session.PageModel.compute`, in process, next to its
+  peer run interleaved in the same process — the bare engine call a script would
+  make for the same change (``io.loads`` of the edited text and ``Model.analyze``
+  at the same 101 positions); the ratio is the page's own overhead (the
+  tables and the drawing's data);
+* **HTTP**: ``POST /api/analyze`` on loopback (uvicorn), answer read and parsed;
+* **browser**: in Debian's headless chromium (Playwright, when /usr/bin/chromium is
+  there), the time from the input event of a parameter field to the new drawing,
+  as the page logs it ("assur: redrawn in … ms").
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import re
+import statistics
+import time
+import urllib.request
+from pathlib import Path
+
+import numpy as np
+
+from assur.app.server import create_app, running
+from assur.app.session import PageModel
+from assur.io import bundled, loads
+
+N = 15
+TARGET = 100.0  # [ms]
+
+
+def lengths(k0):
+    """L5 values never asked before [m] (feasible: 0.47 … 0.49)."""
+    return [0.47 + 0.02 * ((k0 + i) * 0.6180339887 % 1.0) for i in range(N)]
+
+
+def server_figures():
+    pm = PageModel.from_path(bundled("hitch_003"))
+    pm.compute({}, 101)  # warm: kernels, imports
+    page, peer = [], []
+    for v in lengths(1):
+        t0 = time.perf_counter()
+        out = pm.compute({"L5": v}, 101)
+        page.append(time.perf_counter() - t0)
+        assert out["ok"], out
+        text = pm.edited_text({"L5": v + 1e-7})  # new text: the peer reuses nothing
+        t0 = time.perf_counter()
+        m = loads(text, name="hitch_003.toml")
+        r = np.asarray(m.range, dtype=float)
+        dataclasses.replace(m, range=np.linspace(r[0], r[-1], 101)).analyze()
+        peer.append(time.perf_counter() - t0)
+    p, q = statistics.median(page) * 1e3, statistics.median(peer) * 1e3
+    print(f"  server  compute {p:7.1f} ms   bare engine (load + analyze) {q:7.1f} ms   "
+          f"ratio {p / q:5.2f}")
+
+
+def http_figures(url):
+    times = []
+    for v in lengths(40):
+        body = json.dumps({"params": {"L5": v}, "positions": 101}).encode()
+        req = urllib.request.Request(url + "/api/analyze", data=body,
+                                     headers={"Content-Type": "application/json"})
+        t0 = time.perf_counter()
+        with urllib.request.urlopen(req) as r:
+            out = json.loads(r.read())
+        times.append(time.perf_counter() - t0)
+        assert out["ok"], out
+    print(f"  HTTP    POST /api/analyze {statistics.median(times) * 1e3:7.1f} ms "
+          f"(median of {N}; max {max(times) * 1e3:.1f} ms)")
+
+
+def browser_figures(url):
+    chromium = Path("/usr/bin/chromium")
+    if not chromium.exists():
+        print("  browser (no /usr/bin/chromium: `make chromium` installs it)")
+        return
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=str(chromium), headless=True)
+        page = b.new_page(viewport={"width": 1400, "height": 1000})
+        logs = []
+        page.on("console", lambda m: logs.append(m.text))
+        page.goto(url + "/")
+        page.wait_for_selector("#pt-56")
+        page.wait_for_timeout(300)
+        start = len(logs)
+        for v in lengths(80):
+            page.fill("#input-L5", f"{v:.6f}")
+            page.wait_for_timeout(400)  # one change at a time, as a user types
+        b.close()
+    times = [float(m.group(1)) for m in (re.search(r"redrawn in ([\d.]+) ms", s)
+                                         for s in logs[start:]) if m]
+    if times:
+        print(f"  browser input → new drawing {statistics.median(times):7.1f} ms "
+              f"(median of {len(times)}; max {max(times):.1f} ms; target ≤ {TARGET:.0f} ms)")
+
+
+def main():
+    print("page (seed-003 hitch, 101 positions, a new L5 each time; medians):")
+    server_figures()
+    with running(create_app(bundled("hitch_003"))) as url:
+        http_figures(url)
+        browser_figures(url)
+
+
+if __name__ == "__main__":
+    main()

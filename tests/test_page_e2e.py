@@ -1,0 +1,128 @@
+"""The page end to end in a real headless Chromium (issue 13).
+
+Debian's chromium (/usr/bin/chromium, installed by ``make test`` through
+.ci/chromium.sh) driven by Playwright for Python; Playwright's own browser builds
+are never downloaded. The server is ``assur serve``'s application on loopback with
+the seed-003 hitch. The page logs "assur: redrawn in … ms" after every parameter
+change (the time from the input event to the new drawing); the test prints those
+times — measured, not asserted (benchmarks/page.py measures them too).
+"""
+
+import os
+import re
+from pathlib import Path
+
+import pytest
+
+from assur.io import bundled
+
+CHROMIUM = os.environ.get("ASSUR_CHROMIUM", "/usr/bin/chromium")
+
+pytestmark = pytest.mark.slow
+
+
+@pytest.fixture(scope="module")
+def browser():
+    if not Path(CHROMIUM).exists():
+        pytest.fail(f"{CHROMIUM} is missing: `make test` installs Debian's chromium "
+                    f"(.ci/chromium.sh, as root); install it to run the page's e2e test")
+    from playwright.sync_api import sync_playwright
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, headless=True)
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="module")
+def url():
+    from assur.app.server import create_app, running
+    with running(create_app(bundled("hitch_003"))) as u:
+        yield u
+
+
+def _redraws(logs):
+    return [float(m.group(1)) for m in (re.search(r"redrawn in ([\d.]+) ms", s) for s in logs)
+            if m]
+
+
+def test_hitch_page_end_to_end(browser, url, request):
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    logs, errors = [], []
+    page.on("console", lambda m: logs.append(m.text))
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(url + "/")
+    page.wait_for_selector("#pt-56")
+    assert "Mini-tractor mounted-implement hitch" in page.text_content("#title")
+
+    # the stroke slider moves the drawing and the table's values
+    page.select_option("#table-select", "2.2")
+    y0 = float(page.get_attribute("#pt-56", "data-y"))
+    cell0 = page.text_content("#value-Y56")
+    row0 = page.get_attribute("#table tr.current", "data-row")
+    assert abs(y0 - 0.2) < 1e-9   # seed 003 §2.2: Y56(Smin) = 0.2 m (the Find condition)
+    assert page.text_content("#position-text").startswith("S = 0.4200 m")
+    page.fill("#stroke", "50")
+    y1 = float(page.get_attribute("#pt-56", "data-y"))
+    assert y1 > y0 + 0.05          # the lift rises with the stroke
+    assert page.text_content("#value-Y56") != cell0
+    assert float(page.text_content("#value-Y56")) == pytest.approx(y1, rel=1e-4)
+    assert page.get_attribute("#table tr.current", "data-row") == "50" != row0
+    assert page.text_content("#position-text").startswith("S = 0.5450 m")
+
+    # a link length that cannot assemble: the message in place of the drawing
+    n = len(logs)
+    page.fill("#input-L5", "0.3")
+    page.wait_for_selector("#error-panel:not([hidden])")
+    message = page.text_content("#error-message")
+    assert "RRR dyad 'II (4,5)'" in message and "L4 + L5 = 0.626167 + 0.3" in message
+    assert "cannot assemble" in message
+    assert "Traceback" not in message
+    assert not page.is_visible("#drawing")
+
+    # restored: the drawing is back where it was
+    page.fill("#input-L5", "0.48")
+    page.wait_for_selector("#error-panel", state="hidden")
+    page.wait_for_function("!document.getElementById('drawing-box').classList.contains('failed')")
+    assert page.is_visible("#drawing")
+    page.wait_for_function(
+        "Math.abs(Number(document.getElementById('pt-56').dataset.y) - %r) < 1e-12" % y1)
+
+    # a feasible change re-solves the Find conditions and redraws
+    page.fill("#input-L5", "0.5")
+    page.wait_for_function("document.getElementById('param-L5').classList.contains('changed')")
+    page.wait_for_function("!document.getElementById('drawing-box').classList.contains("
+                           "'failed') && document.querySelectorAll('#plots svg').length > 0")
+
+    # the edited model file is downloaded with the new value
+    with page.expect_download() as dl:
+        page.click("[data-export=toml]")
+    text = Path(dl.value.path()).read_text(encoding="utf-8")
+    assert 'L5 = "0.5 m"' in text and "# §1.2 links" in text
+
+    # Russian labels
+    page.click("#lang-toggle")
+    page.wait_for_function("document.getElementById('title').textContent.includes('навески')")
+    assert page.text_content("h2[data-t=parameters]") == "Параметры"
+
+    page.wait_for_timeout(300)
+    times = _redraws(logs)
+    assert len(times) > len(_redraws(logs[:n]))
+    assert not errors, errors
+    _log(request, f"\npage e2e (seed 003): {len(times)} redraws after a parameter change, "
+              f"times from the input event to the new drawing [ms]: "
+              f"{', '.join(f'{t:.0f}' for t in times)}")
+    page.close()
+
+
+def _log(request, line):
+    """Show the measurement in the terminal (without xdist, whose workers keep their
+    output) and append it to ``.pytest_cache/assur-page.log``."""
+    import os
+    from pathlib import Path
+    tr = request.config.pluginmanager.get_plugin("terminalreporter")
+    if tr is not None and "PYTEST_XDIST_WORKER" not in os.environ:
+        tr.write_line(line)
+    path = Path(request.config.rootpath) / ".pytest_cache" / "assur-page.log"
+    path.parent.mkdir(exist_ok=True)
+    with open(path, "a", encoding="utf-8") as f:
+        f.write(line.strip() + "\n")
