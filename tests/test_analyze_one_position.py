@@ -1,0 +1,78 @@
+"""One position at a time (as dynamics and the page call it) gives what the array
+path gives: ``Mechanism.analyze`` of single positions — after
+:data:`assur.statics.FUSED_AFTER` calls through the fused statics kernel, with the
+cylinders' constants and the stability machine made once per mechanism — equals the
+analysis of all the positions at once with the array pass of the statics, for the
+kinematics, every joint reaction, the actuator forces by both routes, every
+cylinder's force, pressure and largest force, and the axle reactions, shares and
+implement limits."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from assur import io, statics
+from assur.analysis import gravity_of
+
+MODELS = ["hitch_003", "header_000_fixed", "loader_lab1", "adapter_lab6", "combine_002"]
+
+
+def _close(a, b, what):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    scale = max(1.0, float(np.abs(b).max(initial=0.0)))
+    assert a.shape == b.shape, (what, a.shape, b.shape)
+    assert np.allclose(a, b, rtol=1e-9, atol=1e-9 * scale), (what, a, b)
+
+
+@pytest.mark.parametrize("name", MODELS)
+def test_one_position_equals_the_array_path(name, monkeypatch):
+    model = io.load(io.bundled(name))
+    mech = model.mechanism.with_params(**dict(model.mechanism.params))  # a fresh cache
+    if len(mech.coordinates) != 1:
+        pytest.skip("one coordinate")
+    q = np.asarray(model.range, dtype=float)
+    q = q[np.linspace(0, q.size - 1, min(q.size, 6)).astype(int)]
+    ref = mech.analyze(q)
+    ref_st = statics.solve(ref.kinematics, g=gravity_of(mech), method="array")
+
+    fused_calls = []
+    real = statics._solve_fused
+    monkeypatch.setattr(statics, "_solve_fused",
+                        lambda kin, g: fused_calls.append(1) or real(kin, g))
+    for _ in range(statics.FUSED_AFTER):  # the array pass, then the fused kernel
+        mech.analyze(q[:1])
+    c = model.mechanism.coordinates[0]
+    fused_calls.clear()
+    for i, qi in enumerate(q):
+        one = mech.analyze(np.array([qi]))
+        kin, k0 = one.kinematics, ref.kinematics
+        for p in mech.points:
+            _close(kin.value(p)[..., 0], k0.value(p)[..., i], f"position of {p}")
+            _close(kin.jacobian(p)[..., 0], k0.jacobian(p)[..., i], f"analogs of {p}")
+        for _, a, b in ref_st.joints:
+            _close(one.statics.reaction(a, b)[0], ref_st.reaction(a, b)[i],
+                   f"reaction ({a}, {b})")
+            _close(one.statics.reaction_moment(a, b)[0], ref_st.reaction_moment(a, b)[i],
+                   f"moment ({a}, {b})")
+        _close(one.statics.actuator_force(c)[0], ref_st.actuator_force(c)[i], "F")
+        try:
+            want = ref_st.actuator_force_from_reactions(c)[i]
+        except KeyError:
+            want = None
+        if want is not None:
+            _close(one.statics.actuator_force_from_reactions(c)[0], want, "F from reactions")
+        for cname, cyl in ref.cylinders.items():
+            got = one.cylinders[cname]
+            for attr in ("force", "force_required", "pressure", "force_max"):
+                if hasattr(cyl, attr):
+                    _close(np.ravel(np.broadcast_to(getattr(got, attr), (1,))),
+                           np.ravel(np.broadcast_to(getattr(cyl, attr), q.shape))[i:i + 1],
+                           f"{cname} {attr}")
+        if ref.stability is not None:
+            s1, s0 = one.stability, ref.stability
+            for axle in s0.reactions:
+                _close(s1.reaction(axle)[0], s0.reaction(axle)[i], f"axle {axle}")
+                _close(s1.share(axle)[0], s0.share(axle)[i], f"share {axle}")
+            _close(s1.max_implement_weight[0], s0.max_implement_weight[i], "G max")
+    assert len(fused_calls) == q.size  # every single position went through the kernel
