@@ -383,11 +383,14 @@ FUSED_AFTER = 3
 def _use_fused(kin) -> bool:
     """The default method for static loads: fused on large problems and on mechanisms
     analysed repeatedly (:data:`FUSED_MIN`, :data:`FUSED_AFTER`)."""
-    if not kin.has_all_points():
+    mech = kin.mechanism
+    # whether the result holds every point depends only on which it holds: once per
+    # mechanism and set of output points
+    if not mech.memo(("statics: all points", kin.points), kin.has_all_points):
         return False
     if kin.m * kin.n >= FUSED_MIN:
         return True
-    calls = kin.mechanism.memo(("statics: small calls",), lambda: [0])
+    calls = mech.memo(("statics: small calls",), lambda: [0])
     calls[0] += 1
     return calls[0] > FUSED_AFTER
 
