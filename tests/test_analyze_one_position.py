@@ -80,3 +80,23 @@ def test_one_position_equals_the_array_path(name, monkeypatch):
     # every single position of a static analysis went through the fused kernel (with
     # inertia loads the array pass serves both)
     assert len(fused_calls) == (q.size if ref.rates is None else 0)
+
+
+def _limit_reference(r0, w0, c, m):
+    """The 20 % rule's limit as first written (before the one-position work)."""
+    excess = r0 - m * w0
+    den = m - c
+    pos = den > 0
+    finite = np.divide(max(excess, 0.0), den, out=np.zeros(np.shape(den)), where=pos)
+    unbounded = (den < 0) | ((den == 0) & (excess >= 0))
+    return np.where(pos, finite, np.where(unbounded, np.inf, 0.0))
+
+
+@pytest.mark.parametrize("r0, w0", [(5000.0, 20000.0), (4000.0, 20000.0), (3000.0, 20000.0),
+                                    (0.0, 0.0), (-0.0, 0.0), (1e-300, 0.0)])
+def test_stability_limit_equals_its_first_form(r0, w0):
+    from assur.stability import _limit
+    c = np.array([-1.0, 0.0, 0.1, 0.2, 0.2 + 1e-17, 0.3, 1.0, 5.0])
+    for cc in (c, c[:1].reshape(()), c.reshape(2, 4)):
+        got, want = _limit(r0, w0, cc, 0.2), _limit_reference(r0, w0, cc, 0.2)
+        assert got.shape == want.shape and np.array_equal(got, want), (r0, w0, cc)

@@ -328,10 +328,10 @@ def _limit(r0: float, w0: float, c: np.ndarray, m: float) -> np.ndarray:
     """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty."""
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
     den = m - c                   # m − ∂R_s/∂P [-]
-    pos = den > 0
-    finite = np.divide(max(excess, 0.0), den, out=np.zeros(np.shape(den)), where=pos)
-    unbounded = (den < 0) | ((den == 0) & (excess >= 0))
-    return np.where(pos, finite, np.where(unbounded, np.inf, 0.0))
+    if excess >= 0:  # bounded where den > 0 (excess/den), unbounded where den ≤ 0
+        return np.divide(excess, den, out=np.full(np.shape(den), np.inf), where=den > 0)
+    # no weight where den ≥ 0 (0 at den > 0: max(excess, 0)/den), unbounded where den < 0
+    return np.where(den < 0, np.inf, 0.0)
 
 
 def axle_reactions(machine: Machine, implement_weight: ArrayLike,
