@@ -565,36 +565,15 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     inputs.check_params(mech, params)
     m_ = mech.with_params(**params) if params else mech
     g = gravity_of(m_) if g is None else float(g)
-    kern, ptab, trig, pose_failures = m_.memo(("fused", specs, bool(reduce), g),
-                                              lambda: _plan(m_, specs, reduce, g))
+    plan = m_.memo(("fused", specs, bool(reduce), g), lambda: _plan(m_, specs, reduce, g))
     per_pos = 8.0 * (m_.program().k + 2 + (0 if reduce else len(specs)))
-    qarr, shape, m, n = m_.coordinate_array(q, ptab.shape[1], per_pos)
-    if ptab.shape[1] == 1 and m > 1:
-        ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
-    elif ptab.shape[1] != m:
-        raise ModelError(f"mechanism {mech.name!r}: parameters describe {ptab.shape[1]} "
-                         f"designs but the coordinates {m}")
-    prog = m_.program()
+    qarr, shape, m, n = m_.coordinate_array(q, plan[1].shape[1], per_pos)
+    out, red, status, ptab = _run(m_, plan, qarr, m, n, len(specs), reduce)
     E = qarr.shape[1]
     cpd = (n + CHUNK - 1) // CHUNK
-    nchunks = m * cpd
-    out = np.empty((0 if reduce else len(specs), E))
-    red = np.empty((4 * len(specs) if reduce else 0, nchunks))
-    status = np.empty(E, dtype=np.int64)
-    nthreads = KR.threads_for(E, nchunks)
-    per = (nchunks + nthreads - 1) // nthreads
-    if nthreads <= 1:
-        kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
-    else:
-        futs = [KR.pool().submit(kern, ptab, trig, qarr, n, out, red, status, i * per,
-                                 min(nchunks, (i + 1) * per)) for i in range(nthreads)]
-        for f in futs:
-            f.result()
     failed = status >= 0
-    if pose_failures and not failed.any():
-        raise pose_failures[0]
     if failed.any() and on_failure == "raise":
-        raise diagnostics.assembly_error(m_, prog, ptab, qarr, status, np.zeros(E), n,
+        raise diagnostics.assembly_error(m_, m_.program(), ptab, qarr, status, np.zeros(E), n,
                                          ~failed.reshape(m, n))
     nfail = failed.reshape(m, n).sum(axis=1)
     units = {o: OUTPUT_UNITS[fn] for o, (fn, _) in zip(outputs, specs)}
@@ -621,6 +600,64 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     if not np.isfinite(out).all():  # one pass; name the output only when one is not
         _check_finite(vals, "value")
     return Fused(outputs, units, vals, None, ~failed.reshape(shape), nfail, shape)
+
+
+def _run(mech, plan, qarr, m, n, nspecs, reduce=False):
+    """Run a planned fused kernel (:func:`_plan`) over checked coordinates ``qarr``
+    (k, m·n): returns ``(out, red, status, ptab)`` — outputs (nspecs, m·n), 0 at failed
+    elements (status ≥ 0), or the per-chunk reductions. Raises the failure of a
+    pre-pass pose when every element assembled."""
+    kern, ptab, trig, pose_failures = plan
+    if ptab.shape[1] == 1 and m > 1:
+        ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
+    elif ptab.shape[1] != m:
+        raise ModelError(f"mechanism {mech.name!r}: parameters describe {ptab.shape[1]} "
+                         f"designs but the coordinates {m}")
+    E = qarr.shape[1]
+    nchunks = m * ((n + CHUNK - 1) // CHUNK)
+    out = np.empty((0 if reduce else nspecs, E))
+    red = np.empty((4 * nspecs if reduce else 0, nchunks))
+    status = np.empty(E, dtype=np.int64)
+    nthreads = KR.threads_for(E, nchunks)
+    if nthreads <= 1:
+        kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
+    else:
+        per = (nchunks + nthreads - 1) // nthreads
+        futs = [KR.pool().submit(kern, ptab, trig, qarr, n, out, red, status, i * per,
+                                 min(nchunks, (i + 1) * per)) for i in range(nthreads)]
+        for f in futs:
+            f.result()
+    if pose_failures and not (status >= 0).any():
+        raise pose_failures[0]
+    return out, red, status, ptab
+
+
+def statics_outputs(kin, g):
+    """The static joint reactions and actuator forces of every position of ``kin``
+    from the fused kernel: ``(joints, specs, out)`` with ``joints`` the mechanism's
+    ``(i, j, point)`` (:func:`joint_list`), ``specs`` the outputs — Rx, Ry, Rm of each
+    joint, then F, Fr of each coordinate — and ``out`` their values, shape
+    (len(specs), m, n) [N, N·m], 0 where the mechanism did not assemble. The
+    coordinates are those ``kin`` was solved at (checked then); the plan — kernel,
+    parameter table, output list — is made once per mechanism (what does not depend
+    on the positions)."""
+    mech = kin.mechanism
+
+    def make():
+        joints_ = joint_list(mech)
+        specs = [(f, (i, j)) for i, j, _ in joints_ for f in ("Rx", "Ry", "Rm")]
+        specs += [(f, (c,)) for c in mech.coordinates for f in ("F", "Fr")]
+        specs = tuple(specs)
+        return joints_, specs, _plan(mech, specs, False, g)
+
+    joints_, specs, plan = mech.memo(("fused statics", g), make)
+    m, n = kin.m, kin.n
+    qarr = np.ascontiguousarray(np.stack([np.reshape(kin.q(c), -1) for c in mech.coordinates]),
+                                dtype=float)
+    out = _run(mech, plan, qarr, m, n, len(specs))[0]
+    if not np.isfinite(out).all():  # one pass; name the output only when one is not
+        _check_finite({f"{f}{tuple(a)}": v for (f, a), v in zip(specs, out)}, "value")
+    return joints_, specs, out.reshape(len(specs), m, n)
 
 
 def _check_finite(values, what, where=None):

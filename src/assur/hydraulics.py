@@ -96,26 +96,41 @@ class CylinderResult:
 
         self._val = val
         self.supply_line = None
-        self.count = val(cyl.count)
-        self.eta_mech = val(cyl.eta_mech)
-        self.eta_hyd = val(cyl.eta_hyd)
-        self.p_max = val(cyl.p_relief) - (val(cyl.dp_throttle) + val(cyl.dp_line))
+        # the cylinder's numbers do not depend on the positions: made once per
+        # mechanism (and shape of its batch), then shared by every analysis of it
+        key = (cyl.name, len(kin.shape))
+        hit = mech.memo(("hydraulics: constants",) + key, lambda: (cyl, self._constants()))
+        const = hit[1] if hit[0] is cyl else self._constants()
+        self.count, self.eta_mech, self.eta_hyd, self.p_max = const
         if cyl.coordinate is None or statics is None:  # a passive cylinder: its line
             return                                   # sets it (SupplyLine)
+        hit = mech.memo(("hydraulics: areas",) + key, lambda: (cyl, self._areas()))
+        areas = hit[1] if hit[0] is cyl else self._areas()
         self.force = statics.actuator_force(cyl.coordinate)
         self.force_required = self.force / self.eta_mech
         if cyl.side == "auto":  # the chamber that gives the force's sign (double rod)
             #: +1 where the piston side is pressurised (push), −1 the rod side (pull)
             self.sign = np.where(self.force >= 0, 1.0, -1.0)
-            self.area = np.where(self.sign > 0, self.chamber_area("piston"),
-                                 self.chamber_area("rod"))
+            self.area = np.where(self.sign > 0, areas["piston"], areas["rod"])
             self.pressure = np.abs(self.force_required) / (self.count * self.area
                                                            * self.eta_hyd)
         else:
             self.sign = 1.0 if cyl.side == "piston" else -1.0
-            self.area = self.chamber_area(cyl.side)
+            self.area = areas[cyl.side]
             self.pressure = self.force_required / (self.count * self.area * self.eta_hyd)
         self.force_max = self.count * self.p_max * self.area * self.eta_hyd
+
+    def _constants(self):
+        """count, η_m, η_h and p_max [Pa] from the mechanism's parameters."""
+        cyl, val = self.cylinder, self._val
+        return (val(cyl.count), val(cyl.eta_mech), val(cyl.eta_hyd),
+                val(cyl.p_relief) - (val(cyl.dp_throttle) + val(cyl.dp_line)))
+
+    def _areas(self):
+        """The areas [m²] of the chambers the cylinder uses (both for ``side =
+        "auto"``)."""
+        sides = ("piston", "rod") if self.cylinder.side == "auto" else (self.cylinder.side,)
+        return {sd: self.chamber_area(sd) for sd in sides}
 
     def chamber_area(self, side):
         """Area of one chamber of one cylinder [m²]: ``"piston"`` (π·(D² − d2²)/4) or

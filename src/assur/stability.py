@@ -71,6 +71,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Mapping, Sequence
 
 import numpy as np
@@ -205,6 +206,19 @@ class Machine:
         xs, xo = self.axles[self.steered], self.axles[self.other]
         return sum(p * (x - xo) for _, p, x in items) / (xs - xo)
 
+    @cached_property
+    def _constants(self):
+        """What :func:`axle_reactions` needs of the machine alone, made once: x of the
+        steered and the other axle [m], the moments of the weights and counterweights
+        about each [N·m], the steered axle's reaction and the weight with and without
+        the counterweights [N]."""
+        xs, xo = self.axles[self.steered], self.axles[self.other]
+        fixed = self.weights + self.counterweights
+        return (xs, xo, sum(pi * (xi - xo) for _, pi, xi in fixed),
+                sum(pi * (xs - xi) for _, pi, xi in fixed),
+                self._steered_reaction(fixed), self.weight,
+                self._steered_reaction(self.weights), sum(w[1] for w in self.weights))
+
 
 @dataclass(frozen=True)
 class StabilityResult:
@@ -314,10 +328,10 @@ def _limit(r0: float, w0: float, c: np.ndarray, m: float) -> np.ndarray:
     """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty."""
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
     den = m - c                   # m − ∂R_s/∂P [-]
-    pos = den > 0
-    finite = np.divide(max(excess, 0.0), den, out=np.zeros(np.shape(den)), where=pos)
-    unbounded = (den < 0) | ((den == 0) & (excess >= 0))
-    return np.where(pos, finite, np.where(unbounded, np.inf, 0.0))
+    if excess >= 0:  # bounded where den > 0 (excess/den), unbounded where den ≤ 0
+        return np.divide(excess, den, out=np.full(np.shape(den), np.inf), where=den > 0)
+    # no weight where den ≥ 0 (0 at den > 0: max(excess, 0)/den), unbounded where den < 0
+    return np.where(den < 0, np.inf, 0.0)
 
 
 def axle_reactions(machine: Machine, implement_weight: ArrayLike,
@@ -367,32 +381,34 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
     """
     p = np.asarray(implement_weight, dtype=float)
     x = np.asarray(implement_x, dtype=float)
-    if not np.all(np.isfinite(p)):
+    if not np.isfinite(p).all():
         raise ValueError("implement_weight [N] must be finite")
-    if np.any(p < 0):
+    if (p < 0).any():
         raise ValueError(f"implement_weight acts downward and must be ≥ 0 N; smallest is "
                          f"{p.min()} N")
-    if not np.all(np.isfinite(x)):
+    if not np.isfinite(x).all():
         raise ValueError("implement_x [m] must be finite")
     shape = np.broadcast_shapes(p.shape, x.shape)
-    p, x = np.broadcast_to(p, shape), np.broadcast_to(x, shape)
+    if p.shape != shape:
+        p = np.full(shape, p) if p.ndim == 0 else np.broadcast_to(p, shape)
+    if x.shape != shape:
+        x = np.broadcast_to(x, shape)
 
-    s, o = machine.steered, machine.other
-    xs, xo = machine.axles[s], machine.axles[o]
+    s = machine.steered
+    # the machine's own numbers, made once per machine (Machine._constants)
+    xs, xo, mom_o, mom_s, r_cw, weight, r_bare, w_bare = machine._constants
     span = xs - xo
-    fixed = machine.weights + machine.counterweights
     # moments about the other axle give R_s, about the steered axle R_o (module notes)
-    r_s = (sum(pi * (xi - xo) for _, pi, xi in fixed) + p * (x - xo)) / span
-    r_o = (sum(pi * (xs - xi) for _, pi, xi in fixed) + p * (xs - x)) / span
-    total = machine.weight + p
+    r_s = (mom_o + p * (x - xo)) / span
+    r_o = (mom_s + p * (xs - x)) / span
+    total = weight + p
     reactions = {n: (r_s if n == s else r_o) for n in machine.axles}
     shares = {n: 100.0 * reactions[n] / total for n in machine.axles}
 
     c = (x - xo) / span                       # ∂R_s/∂P [-]
     m = machine.min_share
-    g_cw = _limit(machine._steered_reaction(fixed), machine.weight, c, m)
-    w_bare = sum(w[1] for w in machine.weights)
-    g_bare = _limit(machine._steered_reaction(machine.weights), w_bare, c, m)
+    g_cw = _limit(r_cw, weight, c, m)
+    g_bare = _limit(r_bare, w_bare, c, m)
     return StabilityResult(
         reactions=reactions, shares=shares, steered=s, min_share=m,
         total_weight=total, steered_share=shares[s],
@@ -486,8 +502,10 @@ class Carrying:
                 return v.reshape((-1,) + (1,) * (len(kin.shape) - 1))
             return v.reshape(()) if v.ndim == 1 else v
 
-        names = self.ref_names()
-        varying = [r for r in names if np.size(mech.params[r]) > 1]
+        # what does not depend on the positions, once per mechanism: the parameters the
+        # machine refers to, whether they vary over designs, the machine of one design
+        hit = mech.memo(("stability: machine", id(self)), lambda: (self, *self._refs(mech)))
+        names, varying, machine = hit[1:] if hit[0] is self else self._refs(mech)
         if varying and len(kin.shape) == 2:
             rows = []
             for d in range(kin.shape[0]):
@@ -496,8 +514,13 @@ class Carrying:
                 w = np.broadcast_to(val(self.weight), kin.shape)[d]
                 rows.append(axle_reactions(self.machine_for(pd_), w, kin.x(self.point)[d]))
             return _stack_results(rows)
+        return axle_reactions(machine, val(self.weight), kin.x(self.point))
+
+    def _refs(self, mech):
+        names = self.ref_names()
+        varying = [r for r in names if np.size(mech.params[r]) > 1]
         pd_ = {r: float(np.atleast_1d(np.asarray(mech.params[r], float))[0]) for r in names}
-        return axle_reactions(self.machine_for(pd_), val(self.weight), kin.x(self.point))
+        return names, varying, self.machine_for(pd_)
 
 
 def _stack_results(rows):

@@ -103,7 +103,8 @@ class Statics:
         return [(v[0], i, j) for (i, j), v in self._joints.items()]
 
     def _o(self, a):
-        return self.kinematics.reshape(np.broadcast_to(a, (self.kinematics.m, self.kinematics.n)))
+        mn = (self.kinematics.m, self.kinematics.n)
+        return self.kinematics.reshape(a if np.shape(a) == mn else np.broadcast_to(a, mn))
 
     def actuator_force(self, coordinate=None):
         """Force the actuator of a coordinate must supply, by virtual work [N]
@@ -382,11 +383,14 @@ FUSED_AFTER = 3
 def _use_fused(kin) -> bool:
     """The default method for static loads: fused on large problems and on mechanisms
     analysed repeatedly (:data:`FUSED_MIN`, :data:`FUSED_AFTER`)."""
-    if not kin.has_all_points():
+    mech = kin.mechanism
+    # whether the result holds every point depends only on which it holds: once per
+    # mechanism and set of output points
+    if not mech.memo(("statics: all points", kin.points), kin.has_all_points):
         return False
     if kin.m * kin.n >= FUSED_MIN:
         return True
-    calls = kin.mechanism.memo(("statics: small calls",), lambda: [0])
+    calls = mech.memo(("statics: small calls",), lambda: [0])
     calls[0] += 1
     return calls[0] > FUSED_AFTER
 
@@ -494,20 +498,14 @@ def _solve_fused(kin, g):
     from . import fused
 
     mech = kin.mechanism
-    joints_ = fused.joint_list(mech)
-    specs = [(f, (i, j)) for i, j, _ in joints_ for f in ("Rx", "Ry", "Rm")]
-    specs += [(f, (c,)) for c in mech.coordinates for f in ("F", "Fr")]
-    q = kin.q() if kin.k == 1 else np.stack([kin.q(c) for c in mech.coordinates], -1)
-    res = fused.evaluate(mech, q, None, specs, on_failure="report", g=g)
-    m, n = kin.m, kin.n
-
-    def get(spec):
-        return np.asarray(res[spec]).reshape(m, n)
-
-    joints = {(i, j): (pt, get(("Rx", (i, j))), get(("Ry", (i, j))), get(("Rm", (i, j))))
-              for i, j, pt in joints_}
-    vw = {c: get(("F", (c,))) for c in mech.coordinates}
-    act = {c: get(("Fr", (c,))) for c in mech.coordinates if fused.has_actuator(mech, c)}
+    joints_, _, out = fused.statics_outputs(kin, g)
+    # the outputs' rows: Rx, Ry, Rm of each joint, then F, Fr of each coordinate
+    joints = {(i, j): (pt, out[3 * r], out[3 * r + 1], out[3 * r + 2])
+              for r, (i, j, pt) in enumerate(joints_)}
+    r0 = 3 * len(joints_)
+    vw = {c: out[r0 + 2 * a] for a, c in enumerate(mech.coordinates)}
+    act = {c: out[r0 + 2 * a + 1] for a, c in enumerate(mech.coordinates)
+           if fused.has_actuator(mech, c)}
 
     def residual():
         return _residual(kin, _applied(kin, None, None, g), joints)

@@ -139,6 +139,11 @@ COMMON_UNITS: dict[str, _Common] = {
     # hydraulic line coefficients (inertance, laminar and turbulent loss)
     "Pa*s**2/m": _Common(1.0, -2, 1, 0), "Pa*s/m": _Common(1.0, -2, 1, -1),
     "Pa*s**2/m**2": _Common(1.0, -3, 1, 0),
+    # per length, per time, power
+    "m**-1": _Common(1.0, length=-1), "1/m": _Common(1.0, length=-1),
+    "m**-2": _Common(1.0, length=-2), "1/m**2": _Common(1.0, length=-2),
+    "1/s": _Common(1.0, time=-1), "Hz": _Common(1.0, time=-1),
+    "W": _Common(1.0, 2, 1, -3), "kW": _Common(1000.0, 2, 1, -3),
     # plain numbers
     "%": _Common(0.01), "percent": _Common(0.01),
 }

@@ -49,8 +49,10 @@ SMALL = 256
 
 #: calls evaluated by numpy in a process before the compiled kernels take over; each
 #: costs about 1–3 ms for a ten-group structure, the compiled kernels' first use in a
-#: process about 0.5 s
-CALLS = 200
+#: process about 0.5 s. A check of a bundled model makes at most a dozen; a process
+#: that makes more (a simulation, a sweep of single positions) loses at most ~0.1 s
+#: before it runs compiled
+CALLS = 50
 
 _state = {"calls": 0, "limit": None}
 _VECTORS: dict = {}
