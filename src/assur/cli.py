@@ -25,7 +25,7 @@ from rich.text import Text
 
 __all__ = ["app", "main"]
 
-app = typer.Typer(add_completion=False, no_args_is_help=True,
+app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
                   help="Hydraulic-cylinder driven planar linkages solved by Assur groups.")
 # markup=False, emoji=False: "[/x]" in a title or ":100:" in a message stay as written
 console = Console(stderr=False, markup=False, emoji=False, highlight=False)
