@@ -55,7 +55,7 @@ from .kernel.source import BUF_ROW, CHUNK, chunk_loop, hoisted, status_out
 from .kernel.sym import Sym, Tracer, code
 from .statics import GRAVITY, ReactionContextBase
 
-__all__ = ["evaluate", "Fused", "OUTPUT_UNITS", "REDUCTIONS"]
+__all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS"]
 
 FORMAT = "7"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
@@ -84,7 +84,114 @@ def parse_output(text: str) -> tuple:
     return m.group(1), args
 
 
-class _Fused(ReactionContextBase):
+class OutputContext(ReactionContextBase):
+    """The outputs of :data:`OUTPUT_UNITS` as formulas of a reverse-pass context: one
+    home for them, shared by the fused kernel's symbols (:class:`_Fused`) and the dual
+    numbers of :mod:`assur.sensitivity`.
+
+    Subclasses provide, besides :class:`~assur.statics.ReactionContextBase`'s needs,
+    ``jet(p, a)`` (the analogs ∂(X, Y)/∂q_a of a point), ``vw`` (the generalized forces
+    of the loads, one per coordinate [N or N·m]), ``has_point(p)`` and
+    ``cylinder_terms(name)`` → ``(Cylinder, η_mech, k·A·η_hyd [m²], F_max·η_mech [N])``.
+    """
+
+    def has_point(self, p):
+        raise NotImplementedError
+
+    def cylinder_terms(self, name):
+        raise NotImplementedError
+
+    def rate(self, link, coordinate=None):
+        """∂φ/∂q of a link along a coordinate (the only one by default)."""
+        a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
+        return self.omega(link, a)
+
+    def omega(self, body, a):
+        """Angular analog ∂φ/∂q_a of a body (0 for the frame)."""
+        pq = self.mech.topology.angle_points(body)
+        if pq is None:
+            return 0.0
+        (px, py), (qx, qy) = self.point(pq[0]), self.point(pq[1])
+        (pxa, pya), (qxa, qya) = self.jet(pq[0], a), self.jet(pq[1], a)
+        dx, dy = qx - px, qy - py
+        return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
+
+    # outputs ------------------------------------------------------------------------
+    def coord_index(self, args, fn):
+        if len(args) > 1:
+            if args[1] not in self.mech.coordinates:
+                raise ModelError(f"output {fn}{args}: {args[1]!r} is not a coordinate "
+                                 f"{self.mech.coordinates}")
+            return self.mech.coordinates.index(args[1])
+        if self.k > 1:
+            raise ModelError(f"output {fn}({args[0]}): name the coordinate, e.g. "
+                             f"{fn}({args[0]}, {self.mech.coordinates[0]})")
+        return 0
+
+    def angle_points(self, link):
+        for lk in self.mech.links:
+            if lk.name == link:
+                return lk.tail, lk.head
+        pq = self.mech.topology.angle_points(link) if link in self.mech.topology.bodies \
+            else None
+        if pq is None:
+            raise ModelError(f"no link {link!r} with an angle; links: "
+                             f"{[l.name for l in self.mech.links]} and bodies "
+                             f"{[b for b in self.mech.topology.bodies if b != '0']}")
+        return pq
+
+    def output(self, fn, args):
+        if fn in ("X", "Y", "dX", "dY", "I") and not self.has_point(args[0]):
+            raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
+        if fn in ("X", "Y"):
+            return self.point(args[0])[fn == "Y"]
+        if fn in ("dX", "dY", "I"):
+            return self.jet(args[0], self.coord_index(args, fn))[fn != "dX"]
+        if fn in ("phi", "dphi"):
+            P, Q = self.angle_points(args[0])
+            (px, py), (qx, qy) = self.point(P), self.point(Q)
+            if fn == "phi":
+                return np.arctan2(qy - py, qx - px)
+            a = self.coord_index(args, fn)
+            (pxa, pya), (qxa, qya) = self.jet(P, a), self.jet(Q, a)
+            dx, dy = qx - px, qy - py
+            return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
+        if fn == "length":
+            dd = [x for x in self.mech.distances if x.name == args[0]]
+            if not dd:
+                raise ModelError(f"no distance {args[0]!r}")
+            (ax, ay), (bx, by) = self.point(dd[0].a), self.point(dd[0].b)
+            return np.hypot(bx - ax, by - ay)
+        if fn in ("F", "Fr"):
+            if args[0] not in self.mech.coordinates:
+                raise ModelError(f"output {fn}({args[0]}): not a coordinate "
+                                 f"{self.mech.coordinates}")
+            if fn == "F":
+                return -self.vw[self.mech.coordinates.index(args[0])]
+            return self.act.get(args[0], 0.0)
+        if fn in ("Rx", "Ry", "R", "Rm"):
+            key = (args[0], args[1])
+            if key not in self.joints:
+                raise ModelError(f"output {fn}({args[0]}, {args[1]}): no joint of link "
+                                 f"{args[0]!r} on link {args[1]!r}; joints: "
+                                 f"{sorted(self.joints)}")
+            _, fx, fy, mz = self.joints[key]
+            return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
+        c, eta_mech, kAeta, fmax_eta = self.cylinder_terms(args[0])
+        j = self.mech.coordinates.index(c.coordinate)
+        if fn == "p":
+            return -self.vw[j] / (eta_mech * kAeta)  # seed 003: Pgc = Fgc/(k_gc·S_gc·η)
+        if not self.has_point(args[1]):
+            raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
+        G = fmax_eta / self.jet(args[1], j)[1]  # seed 003 G56, GS6
+        if fn == "G":
+            return G
+        load = self.value(args[2] if not _is_float(args[2]) else float(args[2]))
+        return (G - load) / load * 100.0  # seed 003 ΔGS65
+
+
+
+class _Fused(OutputContext):
     """Load and reaction context whose values are symbols of the generated code."""
 
     def __init__(self, mech, prog, tracer, rod_ends, cyl_rows, literal_rows):
@@ -149,104 +256,22 @@ class _Fused(ReactionContextBase):
     def spring(self, load, T, L):
         pass
 
-    def rate(self, link, coordinate=None):
-        """∂φ/∂q of a link along a coordinate (the only one by default)."""
-        a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
-        return self.omega(link, a)
+    def has_point(self, p):
+        return p in self.prog.slot
 
-    def omega(self, body, a):
-        """Angular analog ∂φ/∂q_a of a body (0 for the frame)."""
-        pq = self.mech.topology.angle_points(body)
-        if pq is None:
-            return 0.0
-        (px, py), (qx, qy) = self.point(pq[0]), self.point(pq[1])
-        (pxa, pya), (qxa, qya) = self.jet(pq[0], a), self.jet(pq[1], a)
-        dx, dy = qx - px, qy - py
-        return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
-
-    # outputs ------------------------------------------------------------------------
-    def coord_index(self, args, fn):
-        if len(args) > 1:
-            if args[1] not in self.mech.coordinates:
-                raise ModelError(f"output {fn}{args}: {args[1]!r} is not a coordinate "
-                                 f"{self.mech.coordinates}")
-            return self.mech.coordinates.index(args[1])
-        if self.k > 1:
-            raise ModelError(f"output {fn}({args[0]}): name the coordinate, e.g. "
-                             f"{fn}({args[0]}, {self.mech.coordinates[0]})")
-        return 0
-
-    def angle_points(self, link):
-        for lk in self.mech.links:
-            if lk.name == link:
-                return lk.tail, lk.head
-        pq = self.mech.topology.angle_points(link) if link in self.mech.topology.bodies \
-            else None
-        if pq is None:
-            raise ModelError(f"no link {link!r} with an angle; links: "
-                             f"{[l.name for l in self.mech.links]} and bodies "
-                             f"{[b for b in self.mech.topology.bodies if b != '0']}")
-        return pq
-
-    def output(self, fn, args):
-        need_point = fn in ("X", "Y", "dX", "dY", "I")
-        if need_point and args[0] not in self.prog.slot:
-            raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
-        if fn in ("X", "Y"):
-            return self.point(args[0])[fn == "Y"]
-        if fn in ("dX", "dY", "I"):
-            return self.jet(args[0], self.coord_index(args, fn))[fn != "dX"]
-        if fn in ("phi", "dphi"):
-            P, Q = self.angle_points(args[0])
-            (px, py), (qx, qy) = self.point(P), self.point(Q)
-            if fn == "phi":
-                return np.arctan2(qy - py, qx - px)
-            a = self.coord_index(args, fn)
-            (pxa, pya), (qxa, qya) = self.jet(P, a), self.jet(Q, a)
-            dx, dy = qx - px, qy - py
-            return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
-        if fn == "length":
-            dd = [x for x in self.mech.distances if x.name == args[0]]
-            if not dd:
-                raise ModelError(f"no distance {args[0]!r}")
-            (ax, ay), (bx, by) = self.point(dd[0].a), self.point(dd[0].b)
-            return np.hypot(bx - ax, by - ay)
-        if fn in ("F", "Fr"):
-            if args[0] not in self.mech.coordinates:
-                raise ModelError(f"output {fn}({args[0]}): not a coordinate "
-                                 f"{self.mech.coordinates}")
-            if fn == "F":
-                return -self.vw[self.mech.coordinates.index(args[0])]
-            return self.act.get(args[0], 0.0)
-        if fn in ("Rx", "Ry", "R", "Rm"):
-            key = (args[0], args[1])
-            if key not in self.joints:
-                raise ModelError(f"output {fn}({args[0]}, {args[1]}): no joint of link "
-                                 f"{args[0]!r} on link {args[1]!r}; joints: "
-                                 f"{sorted(self.joints)}")
-            _, fx, fy, mz = self.joints[key]
-            return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
-        cyl = self.cyl_rows.get(args[0])
-        if cyl is None and args[0] in {c.name for c in self.mech.cylinders}:
-            raise ModelError(f"output {fn}(…): cylinder {args[0]!r} is on a supply line or "
+    def cylinder_terms(self, name):
+        cyl = self.cyl_rows.get(name)
+        if cyl is None and name in {c.name for c in self.mech.cylinders}:
+            raise ModelError(f"output …({name}): cylinder {name!r} is on a supply line or "
                              f"picks its chamber (side = \"auto\"): its pressure and capacity "
                              f"come from Mechanism.analyze (assur.hydraulics), not the fused "
                              f"kernel")
         if cyl is None:
-            raise ModelError(f"output {fn}(…): no cylinder {args[0]!r}; cylinders: "
+            raise ModelError(f"output …({name}): no cylinder {name!r}; cylinders: "
                              f"{sorted(self.cyl_rows)}")
         c, rows = cyl
         P = {k: self.t.sym(f"params[{r}, d]") for k, r in rows.items()}
-        j = self.mech.coordinates.index(c.coordinate)
-        if fn == "p":
-            return -self.vw[j] / (P["eta_mech"] * P["kAeta"])
-        if args[1] not in self.prog.slot:
-            raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
-        G = P["fmax_eta"] / self.jet(args[1], j)[1]
-        if fn == "G":
-            return G
-        load = self.value(args[2] if not _is_float(args[2]) else float(args[2]))
-        return (G - load) / load * 100.0
+        return c, P["eta_mech"], P["kAeta"], P["fmax_eta"]
 
 
 _G = "__gravity__"

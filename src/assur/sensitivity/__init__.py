@@ -62,9 +62,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ModelError
-from ..fused import OUTPUT_UNITS, parse_output
+from ..fused import OUTPUT_UNITS, OutputContext, parse_output
 from ..groups.base import is_number, signed_name
-from ..statics import ReactionContextBase, gravity_unit
+from ..statics import gravity_unit
 from .dual import Dual, base, variables
 
 __all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs"]
@@ -110,7 +110,7 @@ def _qderiv(x, a):
     return Dual(inner(x.val), inner(x.der))
 
 
-class _JetContext(ReactionContextBase):
+class _JetContext(OutputContext):
     """Load and reaction context over jets (the array twin of :mod:`assur.fused`'s
     symbolic one): the loads' virtual work, the reverse-order pass and the outputs,
     with the formulas of :mod:`assur.fused` (its docstring lists them)."""
@@ -160,46 +160,10 @@ class _JetContext(ReactionContextBase):
     def spring(self, load, T, L):
         pass
 
-    def rate(self, link, coordinate=None):
-        a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
-        return self.omega(link, a)
+    def has_point(self, p):
+        return p in self.pts
 
-    def omega(self, body, a):
-        pq = self.mech.topology.angle_points(body)
-        if pq is None:
-            return 0.0
-        return self._dphi(pq, a)
-
-    def _dphi(self, pq, a):
-        (px, py), (qx, qy) = self.point(pq[0]), self.point(pq[1])
-        (pxa, pya), (qxa, qya) = self.jet(pq[0], a), self.jet(pq[1], a)
-        dx, dy = qx - px, qy - py
-        return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
-
-    # outputs
-    def coord_index(self, args, fn):
-        if len(args) > 1:
-            if args[1] not in self.mech.coordinates:
-                raise ModelError(f"output {fn}{args}: {args[1]!r} is not a coordinate "
-                                 f"{self.mech.coordinates}")
-            return self.mech.coordinates.index(args[1])
-        if self.k > 1:
-            raise ModelError(f"output {fn}({args[0]}): name the coordinate, e.g. "
-                             f"{fn}({args[0]}, {self.mech.coordinates[0]})")
-        return 0
-
-    def angle_points(self, link):
-        for lk in self.mech.links:
-            if lk.name == link:
-                return lk.tail, lk.head
-        pq = self.mech.topology.angle_points(link) if link in self.mech.topology.bodies \
-            else None
-        if pq is None:
-            raise ModelError(f"no link {link!r} with an angle; links: "
-                             f"{[l.name for l in self.mech.links]}")
-        return pq
-
-    def cylinder(self, name):
+    def cylinder_terms(self, name):
         cyls = {c.name: c for c in self.mech.cylinders}
         c = cyls.get(name)
         if c is None:
@@ -215,63 +179,8 @@ class _JetContext(ReactionContextBase):
             area = 0.25 * np.pi * (bore * bore - rod2 * rod2)
         kAeta = v(c.count) * area * v(c.eta_hyd)
         pmax = v(c.p_relief) - (v(c.dp_throttle) + v(c.dp_line))
-        return c, v(c.eta_mech), kAeta, pmax
-
-    def output(self, fn, args):
-        if fn in ("X", "Y", "dX", "dY", "I") and args[0] not in self.pts:
-            raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
-        if fn in ("X", "Y"):
-            return self.point(args[0])[fn == "Y"]
-        if fn in ("dX", "dY", "I"):
-            return self.jet(args[0], self.coord_index(args, fn))[fn != "dX"]
-        if fn == "phi":
-            P, Q = self.angle_points(args[0])
-            (px, py), (qx, qy) = self.point(P), self.point(Q)
-            return np.arctan2(qy - py, qx - px)
-        if fn == "dphi":
-            return self._dphi(self.angle_points(args[0]), self.coord_index(args, fn))
-        if fn == "length":
-            dd = [x for x in self.mech.distances if x.name == args[0]]
-            if not dd:
-                raise ModelError(f"no distance {args[0]!r}")
-            (ax, ay), (bx, by) = self.point(dd[0].a), self.point(dd[0].b)
-            return np.hypot(bx - ax, by - ay)
-        if fn in ("F", "Fr"):
-            if args[0] not in self.mech.coordinates:
-                raise ModelError(f"output {fn}({args[0]}): not a coordinate "
-                                 f"{self.mech.coordinates}")
-            if fn == "F":
-                return -self.vw[self.mech.coordinates.index(args[0])]
-            if args[0] not in self.act:
-                raise ModelError(f"output Fr({args[0]}): no actuator in the reactions")
-            return self.act[args[0]]
-        if fn in ("Rx", "Ry", "R", "Rm"):
-            key = (args[0], args[1])
-            if key not in self.joints:
-                raise ModelError(f"output {fn}({args[0]}, {args[1]}): no joint of link "
-                                 f"{args[0]!r} on link {args[1]!r}; joints: "
-                                 f"{sorted(self.joints)}")
-            _, fx, fy, mz = self.joints[key]
-            return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
-        c, eta_mech, kAeta, pmax = self.cylinder(args[0])
-        j = self.mech.coordinates.index(c.coordinate)
-        if fn == "p":  # seed 003: Pgc = Fgc/(k_gc·S_gc·η)
-            return -self.vw[j] / (eta_mech * kAeta)
-        if args[1] not in self.pts:
-            raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
-        G = kAeta * pmax * eta_mech / self.jet(args[1], j)[1]  # seed 003 G56, GS6
-        if fn == "G":
-            return G
-        load = self.value(float(args[2]) if _is_float(args[2]) else args[2])
-        return (G - load) / load * 100.0  # seed 003 ΔGS65
-
-
-def _is_float(s):
-    try:
-        float(s)
-        return True
-    except ValueError:
-        return False
+        eta_mech = v(c.eta_mech)
+        return c, eta_mech, kAeta, kAeta * pmax * eta_mech
 
 
 @dataclass(frozen=True)
@@ -488,7 +397,6 @@ def sensitivities(source, q=None, params=None, outputs=(), *, values=None, g=Non
     if check:
         mech.solve(q, values, check_continuity=False)
     res, q3, shape, m2 = jet_outputs(mech, q, params, outputs, g=g, values=values)
-    m, n = q3.shape[1], q3.shape[2]
     val = np.stack([r[0] for r in res], axis=-1)  # (m, n, O)
     jac = np.stack([r[1] for r in res], axis=-2)  # (m, n, O, P)
     for name, arr in (("value", val), ("derivative", jac)):
