@@ -40,8 +40,8 @@ def escape(lines: list[str]) -> list[str]:
             doctest = True
             out.append(line)
             continue
-        table_row = s.startswith("|") and s.endswith("|") and s.count("|") >= 3
-        if (table_row or s.startswith(("| ", "+", "..")) or s == "|"
+        # "| " opens a grid-table row or a line block; "+" a table border
+        if (s.startswith(("| ", "+", "..")) or s == "|"
                 or re.match(r"^[=\-+ ]+$", s or "x")):
             out.append(line)
         else:
