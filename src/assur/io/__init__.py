@@ -270,6 +270,37 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
         without a root (or with several) in its bracket; with ``extends``, a
         missing base file or a cycle, and any problem of a key a base file gives
         (located in that file).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> text = '''
+    ... [model]
+    ... name = "lever"
+    ... coordinates = ["S"]
+    ... [range]
+    ... S = { from = "0.36 m", to = "0.52 m", count = 5 }
+    ... [frame]
+    ... "01" = [0, 0]
+    ... "03" = ["400 mm", "250 mm"]
+    ... [[groups]]
+    ... type = "cylinder_lever"
+    ... name = "I (2,3)"
+    ... base = "01"
+    ... pivot = "03"
+    ... out = "23"
+    ... lever = "0.22 m"
+    ... s = "S"
+    ... branch = -1
+    ... '''
+    >>> model = io.loads(text, name="lever.toml")
+    >>> model.mechanism.points
+    ('01', '03', '23')
+    >>> try:
+    ...     io.loads(text.replace('"0.22 m"', '"22 deg"'), name="lever.toml")
+    ... except io.ModelFileError as e:
+    ...     print(e)
+    lever.toml:16: groups[0].lever: expected a length (e.g. "0.48 m"), found "22 deg"
     """
     if not isinstance(text, str):
         raise TypeError(f"loads() takes the file's text as str, got {type(text).__name__}")
@@ -320,6 +351,17 @@ def load(path, *, warn: bool = False) -> Model:
     ModelError
         If ``path`` is not a regular file (a directory, a FIFO, a device), cannot
         be read, or is larger than :data:`MAX_FILE_BYTES`.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> model = io.load(io.bundled("hitch_003"))   # solves its three [[solve]] conditions
+    >>> [s.condition.unknown for s in model.solved]
+    ['L4', 'Sp', 'L7']
+    >>> round(model.mechanism.params["L4"], 6)     # [m]
+    0.661283
+    >>> model.range.shape                          # the [range] positions of S [m]
+    (10,)
     """
     p = Path(path)
     data = read_model_bytes(p, str(path))
