@@ -33,6 +33,7 @@ test-fast: $(STAMP)
 bench: $(STAMP)
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/simulate.py
+	$(PY) benchmarks/design.py
 
 # The documentation site, offline, warnings as errors; a broken gallery example fails it.
 $(DOCS_STAMP): pyproject.toml | $(PY)

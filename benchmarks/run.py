@@ -58,6 +58,7 @@ import importlib.util
 import math
 import os
 import platform
+import subprocess
 import sys
 import time
 
@@ -470,6 +471,65 @@ def print_checks(title, checks):
                   f"{'ok' if ok else 'MISMATCH'}")
 
 
+TARGET_CHECK = 0.5  # s, issue 7: a warm `assur check` of a bundled model
+#: modules a check of a bundled model should not import (each costs 0.1–0.6 s)
+HEAVY = ("numba", "pint", "scipy", "matplotlib", "pandas", "jinja2", "openpyxl")
+_CHECK_MODULES = """
+import sys
+from assur.cli import app
+sys.argv = ["assur", "check", sys.argv[1]]
+try:
+    app()
+except SystemExit:
+    pass
+print(" ".join(m for m in {heavy!r} if m in sys.modules) or "none", file=sys.stderr)
+"""
+
+
+def run_child(cmd, env):
+    """Wall and CPU (user + system) seconds of one child process; its exit status."""
+    t0 = time.perf_counter()
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
+    _, status, ru = os.wait4(p.pid, 0)
+    wall = time.perf_counter() - t0
+    err = p.stderr.read().decode()
+    p.stderr.close()
+    return wall, ru.ru_utime + ru.ru_stime, os.waitstatus_to_exitcode(status), err
+
+
+def startup_section(reps):
+    """Warm `assur check` of a bundled model and the CLI's import, each in fresh
+    processes (hyperfine-like: one warm-up run, then the best and median of ``reps``)."""
+    from assur import io
+    model = str(io.bundled("hitch_003"))
+    # as a user's shell runs it: Python caches bytecode (this session may have set
+    # PYTHONDONTWRITEBYTECODE, which makes every import compile its module again)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    cmds = {"assur check hitch_003.toml": [sys.executable, "-m", "assur", "check", model],
+            "python -c 'import assur.cli'": [sys.executable, "-c", "import assur.cli"],
+            "python -c 'import assur'": [sys.executable, "-c", "import assur"],
+            "python -c 'import numpy' (floor)": [sys.executable, "-c", "import numpy"]}
+    print(f"command start-up (fresh processes: one warm-up run, then best / median of {reps}; "
+          f"wall and CPU = user + system)")
+    for label, cmd in cmds.items():
+        code, _ = run_child(cmd, env)[2:]
+        if code != 0:
+            print(f"    {label:<34} FAILED (exit {code})")
+            continue
+        runs = sorted(run_child(cmd, env)[:2] for _ in range(reps))
+        walls = [r[0] for r in runs]
+        cpus = sorted(r[1] for r in runs)
+        tail = ""
+        if label.startswith("assur check"):
+            tail = (f"   target ≤ {TARGET_CHECK:.1f} s  "
+                    f"{'yes' if walls[0] <= TARGET_CHECK else 'no'}")
+        print(f"    {label:<34} best {walls[0]:6.3f} s  median {walls[len(walls) // 2]:6.3f} s"
+              f"  CPU {cpus[0]:6.3f} s{tail}")
+    err = run_child([sys.executable, "-c", _CHECK_MODULES.format(heavy=HEAVY), model], env)[3]
+    print(f"    heavy modules a check imports ({', '.join(HEAVY)}): "
+          f"{err.strip().splitlines()[-1] if err.strip() else '?'}")
+
+
 def compile_section(sizes):
     """Cold compile time of the kinematics kernel against the number of groups (issue
     7), one fresh process and kernel cache per structure (``compile_time.py``)."""
@@ -507,6 +567,9 @@ def main(argv=None):
                     help="seconds to spend per callable and size before stopping repeats")
     ap.add_argument("--spread-procs", type=int, default=5,
                     help="fresh processes of the spread section (default 5; 0: skip it)")
+    ap.add_argument("--startup-reps", type=int, default=7,
+                    help="fresh processes of the command start-up section (default 7; 0: "
+                         "skip it)")
     ap.add_argument("--compile-sizes", default="5,10,20,50,100,200",
                     help="group counts of the compile-time section (default "
                          "5,10,20,50,100,200; empty: skip it)")
@@ -777,6 +840,9 @@ def main(argv=None):
         print(f"    {k + '(S = 0.5)':<22} {best[k] * 1e6:9.1f} µs   target ≤ {tgt * 1e6:.0f} µs  "
               f"{'yes' if best[k] <= tgt else 'no'}")
     print()
+    if args.startup_reps:
+        startup_section(args.startup_reps)
+        print()
     if args.spread_procs:
         spread_section(args.spread_procs, 0.3 * args.budget)
         print()

@@ -76,7 +76,7 @@ def test_components_refuse_bad_values():
     with pytest.raises(ModelError, match="regulation_range"):
         registry()["relief_valve"](16e6, 0.0)
     with pytest.raises(ModelError, match="position must be one of"):
-        registry()["directional_valve"]("lower")
+        registry()["directional_valve"]("float")
     with pytest.raises(ModelError, match="shares"):
         FlowDivider((0.7, 0.7))
     with pytest.raises(ValueError, match="component type must be one of"):

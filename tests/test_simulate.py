@@ -193,3 +193,133 @@ def test_cli_simulate_without_a_drive_fails_with_one_message(tmp_path):
                                  str(tmp_path)])
     assert r.exit_code == 1
     assert "no hydraulic drive" in r.output and "Traceback" not in r.output
+
+
+# ---- k = 1 through the general code -------------------------------------------------
+
+def test_k1_is_the_lab6_result_of_the_one_coordinate_code():
+    """The k-coordinate simulation reproduces, for lab 6, the events of the former
+    one-coordinate implementation (main at cb713dc, before the generalisation; the
+    trajectories agreed to 1e-14 m and 1e-6 Pa) to 1e-9."""
+    r = simulate_model(io.load(io.bundled("adapter_lab6")))
+    assert r.events["lift-off"][0] == pytest.approx(0.0828490749116, rel=1e-9)
+    assert r.events["end of stroke"][0] == pytest.approx(3.63494141456, rel=1e-9)
+    assert r.events["relief opens"][0] == pytest.approx(4.02055380189, rel=1e-9)
+
+
+def test_k1_exact_equations_equal_the_table(model, result):
+    """nodes=None evaluates M, ∂M/∂q, Q exactly at every state (the k > 1 path): the
+    lift equals the tabulated one (801 nodes) to the table's interpolation error."""
+    r = simulate(model.mechanism, model.drive, 4.5, t_eval=result.t, nodes=None)
+    assert r.status == 0, r.message
+    for name in ("lift-off", "end of stroke"):
+        assert r.events[name][0] == pytest.approx(result.events[name][0], rel=1e-5)
+    np.testing.assert_allclose(r.q, result.q, atol=1e-6 * 0.25)
+    np.testing.assert_allclose(r.p1, result.p1, atol=2e-4 * result.p1.max())
+    assert abs(r.energy["residual"]) <= 1e-6 * r.energy["pump"]
+
+
+# ---- the crane (seed 004): two cylinders through a flow divider ----------------------
+
+#: seed 004 (004_4ff0af19c30e8a3a.txt), after eq. (66): ЛВ-184А with the divider,
+#: V1 = 0.085 m/s, V2 = 0.13 m/s (piston side), 0.22 m/s (rod side)
+V1_PRINTED, V2_ROD_PRINTED = 0.085, 0.22
+
+
+@pytest.fixture(scope="module")
+def crane():
+    return io.load(io.bundled("crane_lv184a"), warn=True)
+
+
+@pytest.fixture(scope="module")
+def swing(crane):
+    """3 s of the swing: the stick reaches its stop at ≈ 2.6 s, the boom moves on."""
+    return simulate_model(crane, t_end=3.0, t_eval=np.linspace(0.0, 3.0, 301))
+
+
+def _printed(value, printed):
+    digits = len(f"{printed}".split(".")[1])
+    return abs(value - printed) <= 0.5 * 10 ** -digits
+
+
+def test_crane_drive_is_the_papers_divider(crane):
+    """Eqs. (63)–(65) with the file's bores: V1 = Q/(2·f1), V2 = Q/(2·f2m) (the stick
+    fed on its rod side: S2 shrinks) at the printed precision."""
+    d = crane.drive
+    assert d.pump_flow() * 60e3 == pytest.approx(80.0, rel=1e-9)
+    V = d.steady_speeds()
+    assert V[0] > 0 > V[1]
+    assert _printed(V[0], V1_PRINTED) and _printed(-V[1], V2_ROD_PRINTED)
+    f1, f2m = (b.area for b in d.branches)
+    assert V[0] * f1 == pytest.approx(-V[1] * f2m, rel=1e-12)  # (63): V1/V2 = f2/f1
+
+
+def test_crane_energy_balance(swing):
+    """k = 2: W_pump = relief + divider + lines + impacts + kinetic + loads + oil to
+    1e-3 of the pump's work, through the stick's impact on its stop."""
+    assert swing.status == 0, swing.message
+    assert swing.q.shape == (301, 2) and swing.coordinates == ("S1", "S2")
+    e = swing.energy
+    assert abs(e["residual"]) <= 1e-3 * e["pump"], e
+    assert e["divider"] > 0 and e["impact"] > 0 and e["loads"] > 0
+    assert [c for _, name, c in swing.event_log if name == "end of stroke"][0] == "S2"
+    # the pump works at the higher branch pressure
+    np.testing.assert_allclose(swing.pump_pressure, swing.p1.max(axis=1))
+
+
+@pytest.mark.slow
+def test_crane_steady_speeds_are_the_dividers_split(crane):
+    """With stiff oil (E_pr × 100: the compression flow V·ṗ/E, ≈ 5 % of a branch's
+    flow at 2e8 Pa as the loads grow along the swing, becomes negligible) the
+    simulated mean rod speeds over the swing's middle are the divider's split at
+    the paper's printed precision: V1 = 0.085 m/s, |V2| = 0.22 m/s."""
+    stiff = Circuit(tuple(dataclasses.replace(c, bulk_modulus=100 * c.bulk_modulus)
+                          if c.role == "volume" else c for c in crane.drive.components))
+    t = np.linspace(0.0, 2.0, 201)
+    r = simulate_model(dataclasses.replace(crane, drive=stiff), t_end=2.0, t_eval=t)
+    assert r.status == 0, r.message
+    win = (t >= 0.5) & (t <= 2.0)
+    i0, i1 = np.flatnonzero(win)[[0, -1]]
+    V = (r.q[i1] - r.q[i0]) / (t[i1] - t[i0])
+    assert _printed(V[0], V1_PRINTED), V
+    assert _printed(-V[1], V2_ROD_PRINTED), V
+    assert V == pytest.approx(stiff.steady_speeds(), rel=5e-3)
+
+
+def test_crane_impact_acts_through_the_mass_matrix(crane):
+    """A plastic impact on one coordinate: its speed becomes 0, the other's changes
+    by the impulse through M + diag(a1·A) (no impulse along it), energy is lost."""
+    from assur.dynamics.simulate import ExactEquations, _Machine
+    mach = _Machine(ExactEquations(crane.mechanism, 9.81), crane.drive, 9.81)
+    y = np.zeros(mach.n)
+    y[:2] = (1.3, 1.5)
+    y[2:4] = (0.08, -0.2)
+    before = y.copy()
+    lost = mach.impact(y, np.array([True, True]), 1)
+    assert y[3] == 0.0 and lost > 0
+    M, _, _ = mach.mech.mechanics(y[:2, None])
+    impulse = (M[0] + mach.A1) @ (y[2:4] - before[2:4])
+    assert abs(impulse[0]) < 1e-9 * abs(impulse[1])
+    T = lambda v: 0.5 * v @ (M[0] + mach.A1) @ v  # noqa: E731
+    assert lost == pytest.approx(T(before[2:4]) - T(y[2:4]), rel=1e-12)
+
+
+def test_hold_refuses_an_overrunning_start(crane):
+    """At Φ1p0 the loads pull the stick's rod in, its fed sense: p0 = "hold" cannot
+    hold it (the drained side is not modelled) and says so."""
+    p = crane.mechanism.params
+    with pytest.raises(ModelError, match="cannot hold"):
+        simulate(crane.mechanism, crane.drive, 1.0, p0="hold",
+                 s0={"S2": float(p["S2_53"]) - 0.01})
+
+
+def test_k_cylinders_need_a_divider_and_their_branches(crane):
+    comps = crane.drive.components
+    with pytest.raises(ModelError, match="flow_divider"):
+        Circuit(tuple(c for c in comps if c.role != "divider"))
+    with pytest.raises(ModelError, match="must name its branch"):
+        Circuit(tuple(dataclasses.replace(c, coordinate=None) if c.role == "line" else c
+                      for c in comps))
+    with pytest.raises(ModelError, match="3 shares for 2 cylinders"):
+        Circuit(tuple(dataclasses.replace(c, shares=(0.2, 0.3, 0.5))
+                      if c.role == "divider" else c for c in comps))

@@ -1,5 +1,6 @@
 """Command-line interface: ``assur check``, ``assur analyze``, ``assur tables``,
-``assur fit``, ``assur simulate``, ``assur demo``.
+``assur fit``, ``assur simulate``, ``assur cycles``, ``assur sweep``, ``assur optimize``,
+``assur tolerance``, ``assur serve``, ``assur dxf``, ``assur demo``.
 
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
@@ -19,7 +20,6 @@ from pathlib import Path
 
 import typer
 from rich.console import Console
-from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 from rich.text import Text
 
@@ -209,6 +209,8 @@ def _positions(analysis, draw_at):
 
 
 def _run_report(model, output: str, lang: str, fmts, draw_at=None):
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
     from .errors import AssemblyError, ModelError, SingularPositionError
     from .report import report_steps, write_report
 
@@ -414,6 +416,353 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
     for f in files:
         by_format.setdefault(f.suffix.lstrip("."), []).append(f)
     _summary(by_format, output)
+
+
+@app.command()
+def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylinder "
+                                                 "coordinates with [[drive]]."),
+           output: str = typer.Option("assur-cycles", "-o", "--output",
+                                      help="Output directory."),
+           lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+    """Seed 004's work cycles: max cylinder forces with their static and dynamic parts
+    for combined and separate motion, cycle times 4–20 s (CSV, XLSX, PNG) and an HTML
+    report that sets them against the paper's conclusions."""
+    from .errors import AssemblyError, ModelError
+    from .report.cycles import verdict_word, write_cycles_report
+
+    _check_lang(lang)
+    model = _load(file)
+    out = _output_dir(output)
+    try:
+        _, verdicts, files = write_cycles_report(model, out, lang)
+    except (ModelError, AssemblyError, ValueError) as e:
+        _fail(f"{file}: {e}")
+    except OSError as e:
+        _fail(f"{output}: cannot write the report: {e.strerror or e}")
+    for v in verdicts:
+        console.print(Text.assemble((f"{verdict_word(v.agrees, lang)}: ",
+                                     "green" if v.agrees else "yellow"), v.claim, " (", v.model,
+                                    ")"), soft_wrap=True)
+    by_format = {}
+    for f in files:
+        by_format.setdefault(f.suffix.lstrip("."), []).append(f)
+    _summary(by_format, output)
+
+
+# ---- synthesis (issue 12): assur sweep, assur optimize ---------------------------------
+def _design_problem(file: Path, var, positions):
+    """The design problem of a model file (+ --var); user errors exit 1."""
+    from .design import load_problem
+    from .errors import AssemblyError, ModelError
+
+    _load(file)  # the file's own errors and warnings, as every command shows them
+    try:
+        return load_problem(file, variables=tuple(var), positions=positions)
+    except (ModelError, AssemblyError) as e:
+        _fail(str(e))
+
+
+def _executor(scheduler, workers, chunk, progress):
+    from .design.scale import Executor
+    from .errors import ModelError
+    try:
+        return Executor(scheduler=scheduler, workers=workers, chunk=chunk, progress=progress)
+    except ModelError as e:
+        _fail(str(e), 2)
+
+
+_VAR = typer.Option([], "--var", help='A design variable: NAME=LOW:HIGH or NAME=±DELTA, units '
+                                      'as in files (e.g. "L4=0.6 m:0.72 m", "X01=±30 mm"); '
+                                      'repeat. Adds to (or replaces) the file\'s [design].')
+_WORKERS = typer.Option(2, "--workers", help="Worker processes of a Dask LocalCluster "
+                                             "(0: in this process).")
+_SCHED = typer.Option(None, "--scheduler", help="An existing Dask scheduler, "
+                                                "e.g. tcp://host:8786 (instead of --workers).")
+
+
+def _bar():
+    return Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
+                    TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(),
+                    console=err, transient=True)
+
+
+@app.command()
+def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
+          samples: int = typer.Option(10000, "--samples", help="Designs drawn uniformly "
+                                      "within the bounds."),
+          seed: int = typer.Option(0, "--seed"),
+          var: list[str] = _VAR,
+          positions: int = typer.Option(None, "--positions", help="Positions over the range "
+                                        "(default: [design] positions, else the range)."),
+          workers: int = _WORKERS, scheduler: str = _SCHED,
+          chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
+          output: str = typer.Option("assur-sweep.parquet", "-o", "--output",
+                                     help="The results table (Parquet).")):
+    """Evaluate many designs (on Dask) and write every design's criteria, feasibility
+    and reason to Parquet."""
+    from .design.scale import sweep as run_sweep, write_parquet
+    from .errors import AssemblyError, ModelError
+
+    if samples < 1:
+        _fail(f"--samples must be ≥ 1, got {samples}", 2)
+    pb = _design_problem(file, var, positions)
+    t0 = time.perf_counter()
+    with _bar() as bar:
+        task = bar.add_task("designs", total=samples)
+        ex = _executor(scheduler, workers, chunk,
+                       lambda done, total: bar.update(task, completed=done))
+        try:
+            with ex:
+                batch = run_sweep(pb, samples=samples, seed=seed, executor=ex)
+        except (ModelError, AssemblyError, OSError) as e:
+            _fail(str(e))
+    try:
+        write_parquet(batch, output)
+    except (OSError, ValueError) as e:
+        _fail(f"{output}: cannot write the table: {e}")
+    nf = int(batch.feasible.sum())
+    _ok(f"{samples} designs × {len(pb.positions)} positions on {ex.describe()} in "
+        f"{time.perf_counter() - t0:.1f} s; {nf} feasible; table: {output}")
+    i = batch.best()
+    if i >= 0:
+        c = pb.objectives[0]
+        console.print(Text(f"best sampled design: {c.sense} {c.name} = "
+                           f"{c.show(batch.objectives[i, 0])}"))
+    counts: dict = {}
+    for r in batch.reasons:
+        if r:
+            key = r.split(" at position")[0].split(" = ")[0]
+            counts[key] = counts.get(key, 0) + 1
+    for k, n in sorted(counts.items(), key=lambda kv: -kv[1])[:5]:
+        console.print(Text(f"  {n} infeasible: {k}"))
+
+
+@app.command()
+def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
+             var: list[str] = _VAR,
+             positions: int = typer.Option(None, "--positions"),
+             popsize: int = typer.Option(15, "--popsize", help="Population per variable "
+                                         "(differential evolution)."),
+             maxiter: int = typer.Option(150, "--maxiter", help="Generations at most."),
+             seed: int = typer.Option(0, "--seed"),
+             workers: int = _WORKERS,
+             scheduler: str = _SCHED,
+             chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
+             output: str = typer.Option("assur-optimize", "-o", "--output",
+                                        help="Output directory.")):
+    """Search for the best design (differential evolution over whole populations; with
+    two or more objectives, NSGA-II's Pareto front); write it as a model file that
+    extends the original, and an HTML report comparing the two."""
+    from .design.search import optimize as run_de, pareto
+    from .errors import AssemblyError, ModelError
+    from .io import load
+    from .io._design import write_design_file
+    from .quantities import display_units
+    from .report.design import pareto_figure, write_comparison
+
+    pb = _design_problem(file, var, positions)
+    if not pb.objectives:
+        _fail(f"{file}: no objective: add [[design.objectives]] (maximize = … or minimize = …)")
+    out = _output_dir(output)
+    t0 = time.perf_counter()
+    with _bar() as bar:
+        task = bar.add_task("generations", total=maxiter)
+        ex = _executor(scheduler, workers, chunk, None)
+        try:
+            with ex:
+                def run(X):
+                    return ex.evaluate(pb, X)
+                if len(pb.objectives) > 1:
+                    res = pareto(pb, pop_size=popsize * len(pb.variables), generations=maxiter,
+                                 seed=seed, evaluate=run,
+                                 callback=lambda g, n: bar.update(task, completed=g))
+                else:
+                    res = run_de(pb, popsize=popsize, maxiter=maxiter, seed=seed, evaluate=run,
+                                 callback=lambda g, v: bar.update(task, completed=g))
+        except (ModelError, AssemblyError) as e:
+            _fail(str(e))
+    dt = time.perf_counter() - t0
+    if len(pb.objectives) > 1:
+        fig = pareto_figure(pb, res, out / "pareto.png")
+        if res.batch is not None:
+            from .design.scale import write_parquet
+            write_parquet(res.batch, out / "pareto.parquet")
+        _ok(f"Pareto front of {len(res.X)} feasible designs ({res.evaluations} evaluated, "
+            f"{dt:.1f} s): {fig}")
+        return
+    c = pb.objectives[0]
+    if not res.feasible:
+        _fail(f"no feasible design found ({res.evaluations} evaluated): the best one "
+              f"{res.batch.reason(0)}")
+    name = f"{file.stem}_best.toml"
+    units = display_units(pb.original)
+    values = {v.name: float(x) for v, x in zip(pb.variables, res.x)}
+    path = write_design_file(out / name, file, values, units, header=(
+        f"The best design of {file.name} found by assur optimize: {c.sense} {c.name} = "
+        f"{c.show(res.value)} (original {c.show(res.original.objectives[0, 0])}).",))
+    try:
+        best = load(path)  # the file written must load and assemble
+        best.mechanism.solve(pb.positions)
+    except (ModelError, AssemblyError) as e:
+        _fail(f"{path}: the written model does not load: {e}")
+    rep = write_comparison(out / "design.html", pb, res)
+    rt = Table(title="best design", header_style="bold", title_justify="left")
+    for h in ("variable", "original", "best", "bounds"):
+        rt.add_column(h, justify="right")
+    for j, v in enumerate(pb.variables):
+        rt.add_row(v.name, v.show(pb.x0[j]), v.show(res.x[j]),
+                   f"{v.show(v.low)} … {v.show(v.high)}")
+    console.print(rt)
+    console.print(Text(f"{c.sense} {c.name}: {c.show(res.original.objectives[0, 0])} → "
+                       f"{c.show(res.value)}"))
+    _ok(f"{res.evaluations} designs in {res.calls} batches, {res.generations} generations on "
+        f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
+
+
+@app.command()
+def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tolerances]."),
+              output: str = typer.Option("assur-tolerance", "-o", "--output",
+                                         help="Output directory."),
+              samples: int = typer.Option(2000, "--samples", help="Machines drawn."),
+              seed: int = typer.Option(0, "--seed", help="Seed of the random generator."),
+              lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+    """Monte Carlo over the model's manufacturing tolerances: distributions of pressure
+    and capacity (P1…P99), machines that do not assemble, and the first-order stack-up
+    from the exact sensitivities; tables (CSV, XLSX), histograms and an HTML report."""
+    import numpy as np
+
+    from .errors import AssemblyError, ModelError, SingularPositionError
+    from .report.tolerance import display_scale, write_tolerance
+    from .tolerance import _worst, monte_carlo
+
+    _check_lang(lang)
+    if samples < 2:
+        _fail(f"--samples must be at least 2; got {samples}", 2)
+    model = _load(file)
+    if not model.tolerances:
+        _fail(f"{file}: no [tolerances] section (docs/tolerance.md)")
+    out = _output_dir(output)
+    try:
+        r = monte_carlo(model, None, model.tolerances, samples=samples, seed=seed)
+    except (AssemblyError, ModelError, SingularPositionError) as e:
+        _fail(f"{file}: {e}")
+    files = write_tolerance(r, model.mechanism, out, lang)
+    tab = Table(title=f"{model.mechanism.name}: {samples} machines, seed {seed}",
+                show_header=True, header_style="bold")
+    for col in ("output", "unit", "nominal", "P5", "P50", "P95", "σ MC", "σ lin"):
+        tab.add_column(col)
+    for o in r.outputs:  # each machine's worst value over the range
+        j = r.outputs.index(o)
+        k, u = display_scale(r, o)
+        how = _worst(o)
+        nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
+        p = r.worst_percentiles(o) if r.assembled.any() else [float("nan")] * 5
+        iw = int(np.argmin(r.nominal[:, j]) if how == "min" else np.argmax(r.nominal[:, j]))
+        sd = r.std(o)[iw] if r.assembled.sum() > 1 else float("nan")
+        tab.add_row(f"{o} {how}", u, *(f"{v / k:.5g}" for v in (nom, p[1], p[2], p[3], sd,
+                                                              r.linear_sigma[iw, j])))
+    console.print(tab)
+    console.print(f"does not assemble: {100 * r.failure_share:.3g} % of the machines")
+    for d, _g, msg in r.reasons[:5]:
+        console.print(f"  machine {d}: {msg}", soft_wrap=True)
+    _summary({"tolerance": [f for f in files if not str(f).endswith(".html")],
+              "html": [f for f in files if str(f).endswith(".html")]}, output)
+
+
+@app.command()
+def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
+          port: int = typer.Option(8000, "--port", help="TCP port (0: any free port)."),
+          host: str = typer.Option("127.0.0.1", "--host",
+                                   help="Address to bind (default: loopback only)."),
+          no_browser: bool = typer.Option(False, "--no-browser",
+                                          help="Do not open the page in a browser."),
+          lang: str = typer.Option("en", "--lang", help="The page's language: ru or en.")):
+    """Serve an interactive page for a model: parameters as sliders, the mechanism's
+    drawing moved by a stroke slider, live plots and tables (docs/page.md)."""
+    _check_lang(lang)
+    if not 0 <= port <= 65535:
+        _fail(f"--port must be in 0…65535, got {port}", 2)
+    _load(file)  # one message for a bad file, before the server starts
+    from .app.server import create_app
+    from .errors import ModelError
+
+    try:
+        application = create_app(file, lang=lang)
+    except (ModelError, OSError) as e:
+        _fail(str(e))
+    import socket
+
+    import uvicorn
+
+    try:  # the port first, so that a busy one is one message and the URL is known
+        sock = socket.socket(socket.AF_INET6 if ":" in host else socket.AF_INET)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((host, port))
+    except OSError as e:
+        _fail(f"cannot listen on {host}:{port}: {e.strerror or e}")
+    port = sock.getsockname()[1]
+    shown = f"[{host}]" if ":" in host else host
+    url = f"http://{shown}:{port}/?lang={lang}"
+    if host not in ("127.0.0.1", "::1", "localhost"):
+        err.print(Text.assemble(("warning:", "bold yellow"), " ", f"serving on {host}: "
+                                "anyone who can reach this address can use the page"))
+    console.print(f"assur: serving {file} at {url} (Ctrl+C stops)")
+    if not no_browser:
+        import threading
+        import webbrowser
+        threading.Timer(0.8, lambda: webbrowser.open(url)).start()
+    config = uvicorn.Config(application, log_level="warning")
+    uvicorn.Server(config).run(sockets=[sock])
+
+
+@app.command()
+def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
+        at: str = typer.Option("", "--at", help="Coordinate values to draw: cylinder "
+                               "lengths in m (0.42,0.67), crank angles in degrees; "
+                               "default: first and last."),
+        output: str = typer.Option("", "-o", "--output",
+                                   help="The DXF file (default: <model>.dxf).")):
+    """Write the mechanism's drawing at chosen positions as DXF (millimetres, one layer
+    per link, pivots as points; docs/page.md)."""
+    import numpy as np
+
+    from .app.dxf import write_dxf
+    from .errors import AssemblyError, ModelError, SingularPositionError
+
+    model = _load(file)
+    out = Path(output or (file.stem + ".dxf"))
+    if out.exists() and out.is_dir():
+        _fail(f"{out}: is a directory; expected a .dxf file name")
+    mech = model.mechanism
+    kin, idx = None, None
+    if at and len(mech.coordinates) == 1 and mech.coordinate_kind(mech.coordinates[0]) != \
+            "angle":
+        try:
+            values = [float(v) for v in at.split(",") if v.strip()]
+        except ValueError:
+            _fail(f"--at must be comma-separated numbers (m), got {at!r}")
+        r = np.asarray(model.range, dtype=float)
+        lo, hi = float(r.min()), float(r.max())
+        bad = [v for v in values if not lo <= v <= hi]
+        if bad or not values:
+            _fail(f"--at {bad or at!r}: give values in the range {lo:.6g} … {hi:.6g} m")
+        # a fine grid through the values keeps the assembly mode continuous between them
+        q = np.unique(np.concatenate([np.linspace(r[0], r[-1], 201), values]))
+        q = q if r[-1] >= r[0] else q[::-1]
+        try:
+            kin = mech.solve(q)
+        except (AssemblyError, ModelError, SingularPositionError) as e:
+            _fail(f"{file}: {e}")
+        idx = [int(np.abs(q - v).argmin()) for v in values]
+    else:
+        analysis = _assemble(model)
+        kin = analysis.kinematics
+        idx = _positions(analysis, at) or sorted({0, kin.shape[-1] - 1})
+    try:
+        write_dxf(kin, out, positions=idx)
+    except OSError as e:
+        _fail(f"{out}: cannot write the DXF file: {e.strerror or e}")
+    _ok(f"wrote {out} ({len(idx)} positions)")
 
 
 def main(argv=None):  # pragma: no cover - console entry

@@ -25,6 +25,7 @@ from .groups import group_type
 from .groups.base import is_number, ref_value, signed_name
 from .kernel import emit as KE
 from .kernel import run as KR
+from .kernel import vector as KV
 from .kernel.compose import checks_continuity, load_kernel
 
 __all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_table"]
@@ -188,15 +189,17 @@ class Program:
             ptab[len(rows) + j] = v
         return ptab
 
-    def kernel(self, out_pts=None, out_sca=None):
-        """The compiled kernel writing ``out_pts``/``out_sca`` (default: the program's)."""
+    def kernel(self, out_pts=None, out_sca=None, vector=False):
+        """The compiled kernel writing ``out_pts``/``out_sca`` (default: the program's);
+        with ``vector``, its numpy evaluation (:mod:`assur.kernel.vector`)."""
         op = tuple(self.out_pts if out_pts is None else out_pts)
         os_ = tuple(self.out_sca if out_sca is None else out_sca)
-        key = (op, os_)
+        key = (op, os_, vector)
         fn = self._kernels.get(key)
         if fn is None:
             fn = _kernel_for(self.rows, self.measures, self.k,
-                             tuple(self.slot[p] for p in op), tuple(self.scal[s] for s in os_))
+                             tuple(self.slot[p] for p in op), tuple(self.scal[s] for s in os_),
+                             vector)
             self._kernels[key] = fn
         return fn
 
@@ -204,11 +207,12 @@ class Program:
 _KERNELS: dict = {}
 
 
-def _kernel_for(rows, measures, k, out_pts, out_sca):
-    key = (rows, measures, k, out_pts, out_sca)
+def _kernel_for(rows, measures, k, out_pts, out_sca, vector=False):
+    key = (rows, measures, k, out_pts, out_sca, vector)
     fn = _KERNELS.get(key)
     if fn is None:
-        fn = _KERNELS[key] = load_kernel(rows, measures, k, out_pts, out_sca)
+        load = KV.load_vector if vector else load_kernel
+        fn = _KERNELS[key] = load(rows, measures, k, out_pts, out_sca)
     return fn
 
 
@@ -345,13 +349,15 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     part of the program (pre-passes at a pose, refinements of the continuity check).
     """
     k, E = qarr.shape
+    # the first small calls of a process: numpy evaluates the same code (no numba start-up)
+    vector = KV.wanted(E)
     if rows is None:
         names_p = prog.out_pts if out_pts is None else tuple(out_pts)
         names_s = prog.out_sca if out_pts is None else tuple(out_sca)
-        kern = prog.kernel(names_p, names_s)
+        kern = prog.kernel(names_p, names_s, vector=vector)
     else:
         names_p, names_s = tuple(out_pts), tuple(out_sca)
-        kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), ())
+        kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), (), vector)
     npo, nso = len(names_p), len(names_s)
     ang = [i for i, s in enumerate(names_s) if prog.kinds[s] == "angle"]
     sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k)

@@ -1,36 +1,109 @@
-"""A circuit: the components of one hydraulic drive, checked to fit together."""
+"""A circuit: the components of one hydraulic drive, checked to fit together, and
+its branches (one per cylinder)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import ModelError
 from .base import ROLES
 
-__all__ = ["Circuit"]
+__all__ = ["Circuit", "Branch"]
 
-#: how many components of each role a circuit takes: (least, most)
-_COUNTS = {"pump": (1, 1), "relief": (0, 1), "valve": (0, 1), "line": (0, None),
-           "volume": (1, 1), "cylinder": (1, 1), "divider": (0, 0)}
+#: how many components of each role a circuit takes: (least, most); per branch for
+#: the roles of :data:`BRANCH_ROLES`
+_COUNTS = {"pump": (1, 1), "relief": (0, None), "valve": (0, None), "line": (0, None),
+           "volume": (1, None), "cylinder": (1, None), "divider": (0, 1)}
+#: the roles a branch has one of (a line: any number)
+BRANCH_ROLES = {"volume": (1, 1), "valve": (0, 1), "relief": (0, 1)}
+
+
+@dataclass(frozen=True)
+class Branch:
+    """The part of a circuit that feeds one cylinder: its lines and valve, its
+    lumped oil volume and relief valve, and its share of the pump's flow.
+
+    Attributes
+    ----------
+    coordinate : str
+        The cylinder's generalized coordinate S [m].
+    cylinder, volume : component
+    valve, relief : component or None
+    lines : tuple of component
+        The lines (and the valve) in series to the cylinder.
+    share : float
+        The branch's share of the pump's flow [-] (1 without a divider).
+    sense : int
+        +1: the piston side is fed and the force pushes S up; −1: the rod side
+        (the valve's ``lower`` position) [-].
+    area : float
+        The pressurised area of the branch's cylinders [m²].
+    stop : float
+        The stop where the fed chamber is smallest (s_min when raising, s_max
+        when lowering): V = V0 there [m].
+    """
+
+    coordinate: str
+    cylinder: object
+    volume: object
+    valve: object
+    relief: object
+    lines: tuple
+    share: float
+
+    @property
+    def sense(self) -> int:
+        return 1 if self.valve is None else self.valve.sense
+
+    @property
+    def area(self) -> float:
+        c = self.cylinder
+        return c.area if self.sense > 0 else c.count * c.rod_side_area
+
+    @property
+    def stop(self) -> float:
+        return self.cylinder.s_min if self.sense > 0 else self.cylinder.s_max
+
+    def flow(self, pump_flow) -> float:
+        """The branch's supply share·Q [m³/s] of the pump's flow ``pump_flow``."""
+        return self.share * pump_flow
+
+    def loss_coefficients(self, pump_flow):
+        """(a1, a2, a3) of lab 6 eq. (3) summed over the branch's lines and valve,
+        referred to the rod's speed at the branch's working flow [Pa·s²/m, Pa·s/m,
+        Pa·s²/m²]."""
+        a = [0.0, 0.0, 0.0]
+        for c in self.lines:
+            for i, v in enumerate(c.loss_coefficients(self.area, self.flow(pump_flow))):
+                a[i] += v
+        return tuple(a)
 
 
 @dataclass(frozen=True)
 class Circuit:
-    """The open circuit of seed 001 lab 6 (fig. 6.1): a pump, optionally a relief
+    """The open circuit of seed 001 lab 6 (fig. 6.1) — a pump, optionally a relief
     valve and a directional valve, lines, the lumped oil volume and the working
-    cylinder(s) on one generalized coordinate.
+    cylinder(s) on one generalized coordinate — or several such branches, one per
+    cylinder coordinate, fed by one pump through a flow divider (seed 004 eqs.
+    63–68: the crane's boom and stick).
+
+    With more than one cylinder every volume, valve and line names its branch by
+    ``coordinate``; a relief valve without one guards every branch (port relief
+    valves of one setting). The divider's ``shares`` follow the cylinders' order.
 
     Parameters
     ----------
     components : tuple
-        Component objects (:func:`assur.drive.registry`), at most one of each role
-        except lines.
+        Component objects (:func:`assur.drive.registry`).
 
     Raises
     ------
     ModelError
-        A role missing or given twice, or a component the circuit does not take (a
-        flow divider: the two-cylinder crane's drive is not simulated yet).
+        A role missing or given twice, a component on no branch or on an unknown
+        one, two cylinders on one coordinate, several cylinders without a flow
+        divider, or a divider whose shares do not match the cylinders.
     """
 
     components: tuple
@@ -48,61 +121,135 @@ class Circuit:
                 names = [c.type_name for c in by[role]]
                 raise ModelError(f"drive: expected {want} component(s) of role {role!r}, "
                                  f"found {n} {names}")
+        object.__setattr__(self, "_branches", self._build_branches(by))
+
+    def _build_branches(self, by):
+        cyls = by["cylinder"]
+        coords = [c.coordinate for c in cyls]
+        if len(set(coords)) != len(coords):
+            raise ModelError(f"drive: two cylinders on one coordinate: {coords}")
+        k = len(cyls)
+        div = by["divider"][0] if by["divider"] else None
+        if k > 1 and div is None:
+            raise ModelError(f"drive: {k} cylinders ({', '.join(coords)}) need a flow_divider "
+                             f"to share the pump's flow (seed 004 eqs. 63–68)")
+        if div is not None and len(div.shares) != k:
+            raise ModelError(f"drive: the flow_divider has {len(div.shares)} shares for {k} "
+                             f"cylinders ({', '.join(coords)})")
+        shares = (1.0,) if div is None else tuple(float(s) for s in div.shares)
+        members = {c: {"line": [], "valve": [], "volume": [], "relief": []} for c in coords}
+        for role in ("line", "valve", "volume", "relief"):
+            for comp in by[role]:
+                at = comp.coordinate
+                if at is None:
+                    if k == 1 or role == "relief":
+                        for c in coords:
+                            members[c][role].append(comp)
+                        continue
+                    raise ModelError(f"drive: the {comp.type_name} "
+                                     f"{comp.name or ''} must name its branch with coordinate"
+                                     f" = one of {coords} (the circuit has {k} "
+                                     f"cylinders)".replace("  ", " "))
+                if at not in members:
+                    raise ModelError(f"drive: the {comp.type_name} {comp.name or ''} is on "
+                                     f"coordinate {at!r}, which no cylinder moves (cylinders:"
+                                     f" {coords})".replace("  ", " "))
+                members[at][role].append(comp)
+        out = []
+        for cyl, share in zip(cyls, shares):
+            m = members[cyl.coordinate]
+            for role, (lo, hi) in BRANCH_ROLES.items():
+                n = len(m[role])
+                if not lo <= n <= hi:
+                    want = f"exactly {lo}" if lo == hi else f"at most {hi}"
+                    raise ModelError(f"drive: the branch of {cyl.coordinate!r} needs {want} "
+                                     f"component(s) of role {role!r}, found {n}")
+            valve = m["valve"][0] if m["valve"] else None
+            lines = tuple(c for c in self.components
+                          if c in m["line"] or (valve is not None and c is valve))
+            out.append(Branch(cyl.coordinate, cyl, m["volume"][0], valve,
+                              m["relief"][0] if m["relief"] else None, lines, share))
+        return tuple(out)
+
+    @property
+    def branches(self) -> tuple:
+        """The :class:`Branch` of each cylinder, in the cylinders' order."""
+        return self._branches
+
+    @property
+    def coordinates(self) -> tuple:
+        """The coordinates the cylinders move."""
+        return tuple(b.coordinate for b in self._branches)
 
     def _one(self, role):
         return next((c for c in self.components if c.role == role), None)
+
+    def _single(self, what):
+        if len(self._branches) != 1:
+            raise ValueError(f"the circuit has {len(self._branches)} branches "
+                             f"({', '.join(self.coordinates)}): use .branches for its {what}")
+        return self._branches[0]
 
     @property
     def pump(self):
         return self._one("pump")
 
     @property
+    def divider(self):
+        """The flow divider, or None."""
+        return self._one("divider")
+
+    @property
     def relief(self):
-        """The relief valve, or None."""
-        return self._one("relief")
+        """The relief valve of a one-cylinder circuit, or None."""
+        return self._single("relief valve").relief
 
     @property
     def valve(self):
-        return self._one("valve")
+        return self._single("valve").valve
 
     @property
     def volume(self):
-        return self._one("volume")
+        return self._single("oil volume").volume
 
     @property
     def cylinder(self):
-        return self._one("cylinder")
+        return self._single("cylinder").cylinder
 
     @property
     def lines(self):
         """The components in series between the pump and the cylinder whose pressure
         losses make up a1, a2, a3: the lines and the directional valve."""
-        return tuple(c for c in self.components if c.role in ("line", "valve"))
+        return self._single("lines").lines
 
     @property
     def area(self) -> float:
-        """Pressurised area of the cylinders [m²]."""
-        return self.cylinder.area
+        """Pressurised area of the cylinders of a one-cylinder circuit [m²]."""
+        return self._single("area").area
 
     def pump_flow(self) -> float:
         """Q of the pump [m³/s]."""
         return self.pump.flow()
 
+    def steady_speeds(self):
+        """The rod speeds the pump's flow sets, s_j·Q/A_j [m/s] (lab 6: "the steady
+        speed is set by the pump's flow and the area of the cylinders"; seed 004
+        eqs. 65–66 with a divider), signed along the coordinates, shape (k,)."""
+        Q = self.pump_flow()
+        return np.array([b.sense * b.flow(Q) / b.area for b in self._branches])
+
     def steady_speed(self) -> float:
-        """The rod speed the pump's flow sets, Q/A [m/s] (lab 6: "the steady speed is
-        set by the pump's flow and the area of the cylinders")."""
-        return self.pump_flow() / self.area
+        """The rod speed Q/A of a one-cylinder circuit [m/s]."""
+        self._single("steady speed")
+        return float(abs(self.steady_speeds()[0]))
 
     def relief_flow(self, p):
-        """Flow through the relief valve at the pressure p [m³/s] (0 without one)."""
-        rv = self.relief
-        return 0.0 * p if rv is None else rv.flow(p, self.pump_flow())
+        """Flow through the relief valve of a one-cylinder circuit at the pressure p
+        [m³/s] (0 without one)."""
+        b = self._single("relief valve")
+        return 0.0 * p if b.relief is None else b.relief.flow(p, b.flow(self.pump_flow()))
 
     def loss_coefficients(self):
-        """(a1, a2, a3) of lab 6 eq. (3), summed over the lines and the valve at the
-        pump's flow [Pa·s²/m, Pa·s/m, Pa·s²/m²]."""
-        a = [0.0, 0.0, 0.0]
-        for c in self.lines:
-            for i, v in enumerate(c.loss_coefficients(self.area, self.pump_flow())):
-                a[i] += v
-        return tuple(a)
+        """(a1, a2, a3) of lab 6 eq. (3) of a one-cylinder circuit, summed over the
+        lines and the valve at the pump's flow [Pa·s²/m, Pa·s/m, Pa·s²/m²]."""
+        return self._single("loss coefficients").loss_coefficients(self.pump_flow())

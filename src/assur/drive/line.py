@@ -30,12 +30,16 @@ class LineLosses:
         Laminar loss [Pa·s/m].
     a3 : float
         Turbulent and local losses [Pa·s²/m²].
+    coordinate : str, optional
+        The generalized coordinate of the cylinder whose branch this line is in
+        (needed when the circuit drives more than one coordinate).
     name : str, optional
     """
 
     a1: float = 0.0
     a2: float = 0.0
     a3: float = 0.0
+    coordinate: str | None = None
     name: str | None = None
 
     type_name: ClassVar[str] = "line_losses"
@@ -83,6 +87,9 @@ class Line:
         Absolute roughness ε [m] (a hose: 1.5e-6... 1e-5).
     fittings : float
         Sum of the local loss coefficients ΣK [-].
+    coordinate : str, optional
+        The generalized coordinate of the cylinder whose branch this line is in
+        (needed when the circuit drives more than one coordinate).
     name : str, optional
 
     Examples
@@ -101,6 +108,7 @@ class Line:
     viscosity: float = 46e-6
     roughness: float = 1.5e-6
     fittings: float = 0.0
+    coordinate: str | None = None
     name: str | None = None
 
     type_name: ClassVar[str] = "line"

@@ -32,12 +32,17 @@ class ReliefValve:
         Δp_reg [Pa] (> 0).
     nominal_flow : float, optional
         Q_nom [m³/s]; by default the pump's flow (:class:`assur.drive.Circuit`).
+    coordinate : str, optional
+        The generalized coordinate of the cylinder whose branch this relief valve is in
+        (without it the valve guards every branch: port relief valves of
+        one setting).
     name : str, optional
     """
 
     setting: float
     regulation_range: float
     nominal_flow: float | None = None
+    coordinate: str | None = None
     name: str | None = None
 
     type_name: ClassVar[str] = "relief_valve"

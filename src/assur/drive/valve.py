@@ -10,42 +10,54 @@ from .base import nonneg, positive, register
 
 __all__ = ["DirectionalValve", "POSITIONS"]
 
-#: the valve's positions this version simulates (lab 6: the right section raises)
-POSITIONS = ("raise",)
+#: the valve's working positions: ``raise`` feeds the piston side (lab 6: the right
+#: section raises; S grows), ``lower`` the rod side (the flow reversed; S shrinks)
+POSITIONS = ("raise", "lower")
 
 
 @register
 @dataclass(frozen=True)
 class DirectionalValve:
-    """A directional valve in its *raise* position: the pump's line is connected to
-    the cylinder's piston side, with a pressure loss of an orifice
+    """A directional valve in a working position: in *raise* the pump's line is
+    connected to the cylinder's piston side (the rod extends, S grows), in *lower*
+    to its rod side (the flow reversed: the rod retracts, S shrinks; the annulus
+    π·(D² − d²)/4 is pressurised), the other side drained; with the pressure loss
+    of an orifice
 
     ``Δp = Δp_nom·(Q/Q_nom)·|Q/Q_nom|`` [Pa]
 
     (Δp_nom at the catalogue's nominal flow Q_nom). Lab 6 takes the valve as
-    inertia-free; its loss joins the line's turbulent term a3·Ṡ|Ṡ| (with Q = A·Ṡ:
-    ``a3 += Δp_nom·(A/Q_nom)²``).
+    inertia-free; its loss joins the line's turbulent term a3·u|u| (u the rod's
+    speed in the driven sense, Q = A·u: ``a3 += Δp_nom·(A/Q_nom)²``).
 
     Parameters
     ----------
-    position : {"raise"}
-        The valve's position during the simulation (lowering, through the rod side
-        and a throttle, is not simulated yet).
+    position : {"raise", "lower"}
+        The valve's position during the simulation.
     dp_nominal : float
         Pressure loss at the nominal flow Δp_nom [Pa] (≥ 0).
     nominal_flow : float
         Q_nom [m³/s] (> 0).
+    coordinate : str, optional
+        The generalized coordinate of the cylinder whose branch this valve is in
+        (needed when the circuit drives more than one coordinate).
     name : str, optional
     """
 
     position: str = "raise"
     dp_nominal: float = 0.0
     nominal_flow: float = 1.0e-3
+    coordinate: str | None = None
     name: str | None = None
 
     type_name: ClassVar[str] = "directional_valve"
     role: ClassVar[str] = "valve"
     quantities: ClassVar = {"dp_nominal": "pressure", "nominal_flow": "flow"}
+
+    @property
+    def sense(self) -> int:
+        """+1 (``raise``: the force pushes S up) or −1 (``lower``) [-]."""
+        return 1 if self.position == "raise" else -1
 
     def __post_init__(self):
         if self.position not in POSITIONS:

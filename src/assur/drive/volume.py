@@ -32,11 +32,15 @@ class OilVolume:
         V0 [m³]: lines, valve and the cylinder's dead volume at S0.
     bulk_modulus : float
         E_pr [Pa] (default :data:`BULK_MODULUS`).
+    coordinate : str, optional
+        The generalized coordinate of the cylinder whose branch this oil volume is in
+        (needed when the circuit drives more than one coordinate).
     name : str, optional
     """
 
     volume: float
     bulk_modulus: float = BULK_MODULUS
+    coordinate: str | None = None
     name: str | None = None
 
     type_name: ClassVar[str] = "oil_volume"

@@ -36,9 +36,31 @@ import numpy as np
 
 from .eom import equations_of_motion
 
-__all__ = ["SCENARIOS", "Cycle", "cycle", "cycle_forces", "sweep"]
+__all__ = ["SCENARIOS", "PERIODS", "Cycle", "cycle", "cycle_forces", "sweep", "strokes"]
 
 SCENARIOS = ("combined_equal", "combined_ideal", "separate_second", "separate_first")
+#: seed 004's cycle times: 4 to 20 s by 1 s [s]
+PERIODS = tuple(float(T) for T in range(4, 21))
+
+
+def strokes(circuit):
+    """``(start, end)`` [m] of the work cycle a drive sets: every cylinder from the
+    stop where its fed chamber is smallest to the other one (a ``raise`` valve:
+    s_min → s_max; ``lower``: s_max → s_min), in the circuit's order of coordinates
+    (seed 004's crane: the boom S01 → S_max1, the stick from Φ1p0 to Φ1pmax).
+
+    Parameters
+    ----------
+    circuit : assur.drive.Circuit
+
+    Returns
+    -------
+    tuple of ndarray, shape (k,)
+    """
+    start = np.array([b.stop for b in circuit.branches])
+    end = np.array([b.cylinder.s_max if b.sense > 0 else b.cylinder.s_min
+                    for b in circuit.branches])
+    return start, end
 
 
 @dataclass(frozen=True)
@@ -135,18 +157,20 @@ def cycle_forces(mechanism, cycles, g=None):
     return out
 
 
-def sweep(mechanism, start, end, periods=range(4, 21), scenarios=SCENARIOS, g=None,
+def sweep(mechanism, start, end, periods=PERIODS, scenarios=SCENARIOS, g=None,
           samples=41):
-    """Largest |F_j| and |F_d,j| of every scenario and cycle time (seed 004: T_c from
-    4 to 20 s by 1 s), a pandas DataFrame with columns ``scenario``, ``T`` [s],
-    ``F1_max``, ``F2_max``, ``Fd1_max``, ``Fd2_max`` [N] and ``duration`` [s] (when the
-    last rod arrives)."""
+    """Largest |F_j|, |F_s,j| and |F_d,j| of every scenario and cycle time (seed 004:
+    T_c from 4 to 20 s by 1 s), a pandas DataFrame with columns ``scenario``, ``T``
+    [s], ``F1_max``, ``F2_max`` (the force), ``Fs1_max``, ``Fs2_max`` (its static part
+    −Q), ``Fd1_max``, ``Fd2_max`` (its dynamic part h) [N] and ``duration`` [s] (when
+    the last rod arrives)."""
     import pandas as pd
     cycles = [cycle(start, end, float(T), s, samples) for s in scenarios for T in periods]
     rows = []
     for c, (F, Fs) in zip(cycles, cycle_forces(mechanism, cycles, g)):
         Fd = F - Fs
         rows.append(dict(scenario=c.scenario, T=c.period, F1_max=np.abs(F[:, 0]).max(),
-                         F2_max=np.abs(F[:, 1]).max(), Fd1_max=np.abs(Fd[:, 0]).max(),
+                         F2_max=np.abs(F[:, 1]).max(), Fs1_max=np.abs(Fs[:, 0]).max(),
+                         Fs2_max=np.abs(Fs[:, 1]).max(), Fd1_max=np.abs(Fd[:, 0]).max(),
                          Fd2_max=np.abs(Fd[:, 1]).max(), duration=c.t[-1]))
     return pd.DataFrame(rows)

@@ -92,7 +92,11 @@ def ref_value(params, ref):
         return float(ref)
     base = signed_name(ref)
     if base is not None:
-        return -np.asarray(params[base], dtype=float)
+        v = params[base]
+        if isinstance(v, (int, float, np.floating, np.integer, list, tuple)) or (
+                isinstance(v, np.ndarray) and not np.iscomplexobj(v)):
+            return -np.asarray(v, dtype=float)
+        return -v  # a complex step or a jet (assur.sensitivity) keeps its derivatives
     return params[ref]
 
 

@@ -84,6 +84,12 @@ class Model:
         (:mod:`assur.io._drive`, docs/simulation.md), None without them.
     simulation : SimulationSpec or None
         The ``[simulation]`` section, None without one.
+    design : DesignSpec or None
+        The ``[design]`` section: design variables, constraints and objectives
+        (:mod:`assur.io._design`, docs/design.md), None without one.
+    tolerances : tuple of Tolerance
+        The ``[tolerances]`` section (:mod:`assur.io._tolerances`,
+        :mod:`assur.tolerance`), empty without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -106,6 +112,8 @@ class Model:
     paired: bool = False
     drive: object = None
     simulation: object = None
+    design: object = None
+    tolerances: tuple = ()
 
     @property
     def shape(self) -> tuple:
@@ -311,10 +319,14 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
         data, index = resolve_extends(data, index, name, source, _parse_toml)
     builder = Builder(name, data, index)
     mech, grid, axes, solved = builder.build()
+    design = None
+    if "design" in data:  # [design]: io/_design.py (imported only for files that have one)
+        from ._design import build_design
+        design = build_design(builder, mech)
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
                  tuple(builder.warnings), builder.lift_test, builder.paired, builder.drive,
-                 builder.simulation)
+                 builder.simulation, design, tuple(builder.tolerances))
 
 
 def _warn(model: Model) -> Model:

@@ -1046,6 +1046,8 @@ class Builder:
         self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
         from ._lift_test import build_lift_test
         self.lift_test = build_lift_test(self, mech)  # [lift_test]: io/_lift_test.py
+        from ._tolerances import build_tolerances
+        self.tolerances = build_tolerances(self, mech)  # [tolerances]: io/_tolerances.py
         self.drive = self.simulation = None
         if "drive" in self.data or "simulation" in self.data:  # [[drive]]: io/_drive.py
             from ._drive import build_drive

@@ -19,7 +19,8 @@ s_max = "Smax"
 
 [simulation]
 duration = "4.5 s"
-p0 = "0 MPa"                       # pressure in the line at t = 0
+p0 = "0 MPa"                       # pressure in the line at t = 0 (or "hold")
+# start = { S2 = "1.8 m" }         # coordinates at t = 0 (default: on the stops)
 method = "Radau"                   # Radau | BDF | LSODA
 outputs = 2001                     # output times, evenly spaced
 ```
@@ -66,6 +67,7 @@ class SimulationSection(BaseModel):
 
     duration: S.Value
     p0: S.Value = 0.0
+    start: dict[str, S.Value] = {}
     method: typing.Literal[METHODS] = "Radau"
     outputs: StrictInt = Field(2001, ge=2, le=1_000_000)
 
@@ -78,8 +80,11 @@ class SimulationSpec:
     ----------
     duration : float
         t_end [s].
-    p0 : float
-        Pressure in the line at t = 0 [Pa].
+    p0 : float or "hold"
+        Pressure in the lines at t = 0 [Pa], or ``"hold"``: in each branch the
+        pressure that holds its rod against the loads.
+    start : dict of str to float
+        Coordinates at t = 0 [m] (the others start on their stops).
     method : str
         solve_ivp method (:data:`assur.dynamics.simulate.METHODS`).
     outputs : int
@@ -87,9 +92,10 @@ class SimulationSpec:
     """
 
     duration: float
-    p0: float
+    p0: object
     method: str
     outputs: int
+    start: dict = dataclasses.field(default_factory=dict)
 
 
 def build_drive(builder, mech):
@@ -121,8 +127,16 @@ def build_drive(builder, mech):
             path, problem = errors[0]
             raise builder.error(path, problem)
         dur = _si(builder, mech, ("simulation", "duration"), sec.duration, TIME, "positive")
-        p0 = _si(builder, mech, ("simulation", "p0"), sec.p0, PRESSURE, "nonneg")
-        spec = SimulationSpec(dur, p0, sec.method, sec.outputs)
+        p0 = "hold" if sec.p0 == "hold" else _si(builder, mech, ("simulation", "p0"), sec.p0,
+                                                   PRESSURE, "nonneg")
+        start = {}
+        for c, v in sec.start.items():
+            if c not in mech.coordinates:
+                raise builder.error(("simulation", "start", c),
+                                    f'expected a generalized coordinate (one of: '
+                                    f'{", ".join(mech.coordinates)}), found "{c}"')
+            start[c] = _si(builder, mech, ("simulation", "start", c), v, LENGTH)
+        spec = SimulationSpec(dur, p0, sec.method, sec.outputs, start)
     return circuit, spec
 
 

@@ -525,9 +525,13 @@ class FileSpec(_Table):
     dynamics: Optional[dict[str, Any]] = None
     #: [lift_test]: checked by :mod:`assur.io._lift_test` (ISO 789-2 lift test)
     lift_test: Optional[dict[str, Any]] = None
+    #: [tolerances]: checked by :mod:`assur.io._tolerances` (manufacturing tolerances)
+    tolerances: Optional[Any] = None
     #: [[drive]] and [simulation]: checked by :mod:`assur.io._drive` (hydraulic drive)
     drive: Optional[Any] = None
     simulation: Optional[dict[str, Any]] = None
+    #: [design]: checked by :mod:`assur.io._design` (design variables and criteria)
+    design: Optional[dict[str, Any]] = None
     motion: dict[str, MotionSpec] = {}
 
 

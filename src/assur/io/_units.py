@@ -10,6 +10,13 @@ unit. A plain number is taken as SI, except for angles, where it is degrees.
 No expression is ever evaluated: the number is matched by a regular expression,
 and the unit, restricted to letters, digits, ``* / ^ ( )``, spaces, ``%`` and
 ``°·²³``, is handed to pint's unit parser.
+
+The units model files use most (m, mm, deg, kN, MPa, kg, N*m, l/min, rpm, …) are
+read from a small table, :data:`COMMON_UNITS`, holding for each its factor to SI
+base units and its dimension, bitwise as pint gives them
+(``tests/test_units_table.py`` compares every entry with pint): building pint's
+registry costs about 0.2 s of every command's start, so it is built only for a
+unit outside the table.
 """
 
 from __future__ import annotations
@@ -18,6 +25,7 @@ import math
 import re
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import NamedTuple
 
 _NUMBER = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 _UNIT_CHARS = re.compile(r"^[A-Za-zµμΩ°%·²³0-9*/^(). _-]*$")
@@ -62,6 +70,96 @@ KINDS[TIME.name] = TIME
 #: the speed of a cylinder's rod ([motion] of a length coordinate)
 VELOCITY = Kind("velocity", "a velocity", "m/s", '"0.05 m/s"')
 KINDS[VELOCITY.name] = VELOCITY
+
+
+class _Common(NamedTuple):
+    """A unit of :data:`COMMON_UNITS`: ``factor`` to SI base units and the exponents of
+    length, mass, time and of the radian in its base units."""
+
+    factor: float
+    length: int = 0
+    mass: int = 0
+    time: int = 0
+    radian: int = 0
+
+    @property
+    def dimension(self) -> tuple:
+        """pint's dimensionality (the radian is dimensionless)."""
+        return (self.length, self.mass, self.time)
+
+    @property
+    def is_angle(self) -> bool:
+        """Whose root unit is the radian (pint's test of an angle)."""
+        return (self.length, self.mass, self.time, self.radian) == (0, 0, 0, 1)
+
+    @property
+    def is_number(self) -> bool:
+        """Whose root unit is dimensionless."""
+        return (self.length, self.mass, self.time, self.radian) == (0, 0, 0, 0)
+
+
+_DEG = 0.017453292519943295  # pint's degree in radians (= math.radians(1.0))
+
+#: the common units, keyed as written after :func:`_normalise` with no spaces around
+#: ``*`` and ``/``: factor to SI base units and dimension, bitwise those of pint
+#: (the odd last digits of l, cm³, l/min are pint's own rounding)
+COMMON_UNITS: dict[str, _Common] = {
+    # length
+    "m": _Common(1.0, length=1), "mm": _Common(0.001, length=1),
+    "cm": _Common(0.01, length=1), "km": _Common(1000.0, length=1),
+    # angle
+    "deg": _Common(_DEG, radian=1), "degree": _Common(_DEG, radian=1),
+    "degrees": _Common(_DEG, radian=1), "rad": _Common(1.0, radian=1),
+    "radian": _Common(1.0, radian=1),
+    # force, pressure, moment, spring rate
+    "N": _Common(1.0, 1, 1, -2), "kN": _Common(1000.0, 1, 1, -2),
+    "MN": _Common(1000000.0, 1, 1, -2),
+    "Pa": _Common(1.0, -1, 1, -2), "kPa": _Common(1000.0, -1, 1, -2),
+    "MPa": _Common(1000000.0, -1, 1, -2), "bar": _Common(100000.0, -1, 1, -2),
+    "N*m": _Common(1.0, 2, 1, -2), "kN*m": _Common(1000.0, 2, 1, -2),
+    "N/m": _Common(1.0, 0, 1, -2), "kN/m": _Common(1000.0, 0, 1, -2),
+    "N/mm": _Common(1000.0, 0, 1, -2),
+    # mass, moment of inertia, density
+    "kg": _Common(1.0, mass=1), "g": _Common(0.001, mass=1), "t": _Common(1000.0, mass=1),
+    "kg*m**2": _Common(1.0, 2, 1), "kg/m**3": _Common(1.0, -3, 1),
+    # time, velocity, acceleration, angular velocity
+    "s": _Common(1.0, time=1), "ms": _Common(0.001, time=1), "min": _Common(60.0, time=1),
+    "m/s": _Common(1.0, 1, 0, -1), "mm/s": _Common(0.001, 1, 0, -1),
+    "m/s**2": _Common(1.0, 1, 0, -2),
+    "rad/s": _Common(1.0, time=-1, radian=1), "rpm": _Common(0.10471975511965977, time=-1, radian=1),
+    # area, volume, flow, kinematic viscosity
+    "m**2": _Common(1.0, length=2), "mm**2": _Common(1e-06, length=2),
+    "cm**2": _Common(0.0001, length=2),
+    "m**3": _Common(1.0, length=3), "cm**3": _Common(1.0000000000000002e-06, length=3),
+    "l": _Common(0.0010000000000000002, length=3), "L": _Common(0.0010000000000000002, length=3),
+    "l/min": _Common(1.666666666666667e-05, 3, 0, -1),
+    "L/min": _Common(1.666666666666667e-05, 3, 0, -1),
+    "m**3/s": _Common(1.0, 3, 0, -1), "mm**2/s": _Common(1e-06, 2, 0, -1),
+    "m**2/s": _Common(1.0, 2, 0, -1),
+    # hydraulic line coefficients (inertance, laminar and turbulent loss)
+    "Pa*s**2/m": _Common(1.0, -2, 1, 0), "Pa*s/m": _Common(1.0, -2, 1, -1),
+    "Pa*s**2/m**2": _Common(1.0, -3, 1, 0),
+    # plain numbers
+    "%": _Common(0.01), "percent": _Common(0.01),
+}
+
+_AROUND_OPS = re.compile(r"\s*([*/])\s*")
+
+
+def _key(unit: str) -> str:
+    return _AROUND_OPS.sub(r"\1", _normalise(unit).strip())
+
+
+def common_unit(unit: str) -> _Common | None:
+    """``unit``'s entry in :data:`COMMON_UNITS`, or None (then pint reads it)."""
+    return COMMON_UNITS.get(_key(unit))
+
+
+def _is_degree(unit: str) -> bool:
+    c = common_unit(unit)
+    if c is not None:
+        return c.is_angle and c.factor == _DEG
+    return _parse_units(unit) == registry().degree
 
 
 @lru_cache(maxsize=1)
@@ -138,6 +236,8 @@ def parse(value) -> Raw | str:
 def _unit_problem(unit: str) -> str | None:
     """Why pint cannot use ``unit`` (unknown, or a scale to SI beyond a float), or None;
     cached: a file repeats the same few units (loading stays linear in its size)."""
+    if common_unit(unit) is not None:
+        return None
     try:
         u = _parse_units(unit)
     except Exception:  # pint raises several types for unknown or malformed units
@@ -183,6 +283,14 @@ def unit_kind(raw: Raw) -> Kind | None:
 
 @lru_cache(maxsize=4096)
 def _compatible_unit(unit: str, kind: Kind) -> bool:
+    c = common_unit(unit)
+    k = common_unit(kind.si) if kind.si else None
+    if c is not None and (kind is ANGLE or kind is NUMBER or k is not None):
+        if kind is ANGLE:
+            return c.is_angle
+        if kind is NUMBER:
+            return c.is_number
+        return not c.is_angle and c.dimension == k.dimension
     ureg = registry()
     root = _root(unit)
     if kind is ANGLE:
@@ -210,17 +318,16 @@ def to_si(raw: Raw, kind: Kind | None):
         if kind is None or kind is NUMBER:
             return raw.magnitude  # an integer count stays an integer
         return float(raw.magnitude)
-    ureg = registry()
     unit = _normalise(raw.unit)
     if kind is None:
         factor = _base_factor(unit)
         if factor is None:  # an offset unit (°C…): pint converts the value itself
-            q = ureg.Quantity(raw.magnitude, unit).to_base_units()
+            q = registry().Quantity(raw.magnitude, unit).to_base_units()
             return _finite(float(q.magnitude), raw)
         return _finite(raw.magnitude * factor, raw)
     if not _compatible(raw, kind):
         raise UnitError(f"expected {kind.article} (e.g. {kind.example})")
-    if kind is ANGLE and _parse_units(raw.unit) == ureg.degree:
+    if kind is ANGLE and _is_degree(raw.unit):
         return math.radians(raw.magnitude)  # the same rounding as a plain number
     return _finite(raw.magnitude * _factor(raw.unit, kind.si or "dimensionless"), raw)
 
@@ -235,7 +342,7 @@ def display_unit(raw: Raw, kind: Kind | None):
                                                if raw.unit and unit_kind(raw) else None)
     if raw.unit is None:
         return DEFAULT_UNITS.get(name, Unit("-"))
-    if kind is ANGLE and _parse_units(raw.unit) == registry().degree:
+    if kind is ANGLE and _is_degree(raw.unit):
         return Unit(unit_text(raw.unit), math.pi / 180)
     if kind is not None:
         return Unit(unit_text(raw.unit), _factor(raw.unit, kind.si or "dimensionless"))
@@ -247,6 +354,9 @@ def display_unit(raw: Raw, kind: Kind | None):
 def _base_factor(unit: str):
     """The base-unit value of 1 ``unit``, or None for an offset unit; cached per unit
     (loading is linear in the number of values, not in pint's parsing)."""
+    c = common_unit(unit)
+    if c is not None:
+        return c.factor
     q = registry().Quantity(1.0, unit)
     if not q._is_multiplicative:
         return None
@@ -256,6 +366,10 @@ def _base_factor(unit: str):
 @lru_cache(maxsize=4096)
 def _factor(unit: str, si: str) -> float:
     """The SI value of 1 ``unit`` (the kinds have no offset units), cached."""
+    c = common_unit(unit)
+    k = common_unit(si) if si != "dimensionless" else _Common(1.0)
+    if c is not None and k is not None and k.factor == 1.0:
+        return c.factor
     return float(registry().Quantity(1.0, _parse_units(unit)).to(si).magnitude)
 
 

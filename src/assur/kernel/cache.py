@@ -15,7 +15,7 @@ import sys
 import threading
 from pathlib import Path
 
-__all__ = ["cache_dir", "set_cache_dir", "load_source"]
+__all__ = ["cache_dir", "set_cache_dir", "load_source", "load_keyed"]
 
 _lock = threading.RLock()  # a driver's import loads its group functions
 _loaded: dict[str, object] = {}
@@ -48,13 +48,62 @@ def load_source(src: str, name: str = "kernel"):
         if mod is None:
             path = cache_dir() / f"k_{key}.py"
             if not path.exists() or path.read_text() != src:
-                tmp = path.with_suffix(f".{os.getpid()}.tmp")
-                tmp.write_text(src)
-                os.replace(tmp, path)
-            modname = f"assur_kernel_{key}"
-            spec = importlib.util.spec_from_file_location(modname, path)
-            mod = importlib.util.module_from_spec(spec)
-            sys.modules[modname] = mod
-            spec.loader.exec_module(mod)
-            _loaded[key] = mod
+                _write(path, src)
+            mod = _loaded[key] = _import(path, f"assur_kernel_{key}")
         return getattr(mod, name)
+
+
+def load_keyed(what: str, make, name: str = "kernel"):
+    """Import the module cached under the description ``what`` (which must name
+    everything its source depends on), writing it from ``make()`` (the source) on
+    the first use on this machine; returns ``module.<name>``."""
+    key = hashlib.sha1(what.encode()).hexdigest()[:20]
+    with _lock:
+        mod = _loaded.get(key)
+        if mod is None:
+            path = cache_dir() / f"v_{key}.py"
+            if not path.exists():
+                _write(path, make())
+            mod = _loaded[key] = _import_code(path, f"assur_vector_{key}")
+        return getattr(mod, name)
+
+
+def _import_code(path: Path, modname: str):
+    """Import ``path`` through its code object, cached beside it (marshal, per Python
+    version) even where Python writes no bytecode (``PYTHONDONTWRITEBYTECODE``)."""
+    import marshal
+    import types
+
+    src = path.read_text()
+    tag = hashlib.sha1(src.encode() + importlib.util.MAGIC_NUMBER).hexdigest()[:12]
+    cpath = path.with_suffix(f".{tag}.code")
+    code = None
+    if cpath.exists():
+        try:
+            code = marshal.loads(cpath.read_bytes())
+        except (EOFError, ValueError, TypeError):  # a damaged file: compiled again
+            code = None
+    if code is None:
+        code = compile(src, str(path), "exec")
+        tmp = cpath.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_bytes(marshal.dumps(code))
+        os.replace(tmp, cpath)
+    mod = types.ModuleType(modname)
+    mod.__file__ = str(path)
+    sys.modules[modname] = mod
+    exec(code, mod.__dict__)
+    return mod
+
+
+def _write(path: Path, src: str) -> None:
+    tmp = path.with_suffix(f".{os.getpid()}.tmp")
+    tmp.write_text(src)
+    os.replace(tmp, path)
+
+
+def _import(path: Path, modname: str):
+    spec = importlib.util.spec_from_file_location(modname, path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[modname] = mod
+    spec.loader.exec_module(mod)
+    return mod

@@ -270,7 +270,7 @@ def checks_continuity(kernel) -> bool:
     """True for a kernel that checks continuity itself (a fused kernel: its 7th
     argument is the depth array ``amount``), False for one that stages the squared
     heights in ``gout`` for :func:`assur.kernel.run.check_continuity` (composed)."""
-    return bool(kernel.py_func.__globals__.get("CHECKS_CONTINUITY", False))
+    return bool(getattr(kernel, "py_func", kernel).__globals__.get("CHECKS_CONTINUITY", False))
 
 
 def load_kernel(rows, measures, K, out_pts, out_sca):

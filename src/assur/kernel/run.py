@@ -13,6 +13,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from .emit import CONTINUITY_TOL
 from .source import CHUNK
+from .vector import SMALL
 
 __all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "unwrap_rows",
            "pool", "MIN_ELEMENTS_PER_THREAD"]
@@ -145,6 +146,9 @@ def _continuity():
 def unwrap_rows(sv, rows, n):
     """Make angles continuous along positions, in place: ``sv`` shape (ns, E), E = m·n;
     each run of n positions (one design) starts at its principal value [rad]."""
+    if sv.shape[1] <= SMALL:  # numpy: the same additions in the same order
+        _unwrap_small(sv, rows, n)
+        return
     fn = _compiled.get("unwrap")
     if fn is None:
         from numba import njit
@@ -170,3 +174,19 @@ def unwrap_rows(sv, rows, n):
 
         fn = _compiled["unwrap"] = unwrap
     fn(sv, rows, n)
+
+
+def _unwrap_small(sv, rows, n):
+    """:func:`unwrap_rows` in numpy, for a few elements (no numba start-up): the offset
+    of each position is the running sum of the ±2π steps, as the compiled loop adds
+    them."""
+    import numpy as np
+
+    two_pi = 2.0 * math.pi
+    m = sv.shape[1] // n
+    for r in rows:
+        a = sv[r].reshape(m, n)
+        step = np.diff(a, axis=1)
+        jump = np.where(step > math.pi, -two_pi, np.where(step < -math.pi, two_pi, 0.0))
+        a[:, 1:] += np.cumsum(jump, axis=1)
+        sv[r] = a.reshape(-1)

@@ -13,7 +13,9 @@ figure             what
 ``reduced_mass``   m(S) [kg] and m'(S) [kg/m] over the stroke
 =================  ===============================================================
 
-Pressures are shown in MPa, lengths in m, as lab 6 prints them.
+Pressures are shown in MPa, lengths in m, as lab 6 prints them. With k > 1
+coordinates (seed 004's crane) every figure has a curve per branch, the pressure
+figure the pump's pressure too, and ``reduced_mass`` shows the diagonal of M(q(t)).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..texts import Text, localize
 from .figures import new_figure, titled_axes
 from .labels import check_lang, t, unit
 
@@ -34,10 +37,31 @@ FIGURES = ("pressure", "pressure_rate", "coordinate", "speed", "acceleration", "
 MPA = 1e6
 
 
+#: texts of the k-coordinate simulation (the lab-6 ones are in :mod:`.labels`)
+_TEXT = {
+    "divider": Text("lost in the flow divider", ru="потери в делителе потока"),
+    "pump": Text("pump pressure p_p = max p1", ru="давление насоса p_p = max p1"),
+    "mass": Text("Diagonal of the mass matrix M_jj", ru="Диагональ матрицы масс M_jj"),
+    "steady": Text("steady rod speed s·Q/A of {0} = {1:.4g} m/s",
+                   ru="установившаяся скорость штока s·Q/A {0} = {1:.4g} м/с"),
+    "evals": Text("{0} evaluations of the right-hand side",
+                  ru="{0} вычислений правой части"),
+}
+
+
+def _tx(key, lang, *args):
+    s = localize(_TEXT[key], lang)
+    return s.format(*args) if args else s
+
+
 def figures(result, lang="en"):
-    """``{name: Figure}`` of :data:`FIGURES` for a simulation result."""
+    """``{name: Figure}`` of :data:`FIGURES` for a simulation result (with k > 1
+    coordinates every branch's curve, labelled by its coordinate)."""
     check_lang(lang)
-    c = result.coordinate
+    cs = result.coordinates
+    k = len(cs)
+    col = result.column
+    tag = (lambda j: "") if k == 1 else (lambda j: f" ({cs[j]})")
     tx = f"{t('sim_time', lang)} [{unit('s', lang)}]"
     out = {}
 
@@ -47,27 +71,52 @@ def figures(result, lang="en"):
         return titled_axes(f, title, tx, ylabel)
 
     ax = fig("pressure", t("sim_p", lang), f"p [{unit('MPa', lang)}]")
-    ax.plot(result.t, result.p1 / MPA, label="p1")
-    ax.plot(result.t, result.p2 / MPA, "--", label="p2")
+    for j in range(k):
+        ax.plot(result.t, col(result.p1, j) / MPA, label="p1" + tag(j))
+        ax.plot(result.t, col(result.p2, j) / MPA, "--", label="p2" + tag(j))
+    if k > 1:
+        ax.plot(result.t, result.pump_pressure / MPA, ":", color="k", lw=0.8,
+                label=_tx("pump", lang))
     ax.legend()
     ax = fig("pressure_rate", t("sim_dp", lang), f"dp1/dt [{unit('MPa/s', lang)}]")
-    ax.plot(result.t, result.p1dot / MPA)
-    ax = fig("coordinate", t("sim_s", lang, c), f"{c} [{unit('m', lang)}]")
-    ax.plot(result.t, result.q)
-    ax = fig("speed", t("sim_v", lang, c), f"d{c}/dt [{unit('m/s', lang)}]")
-    ax.plot(result.t, result.qdot, label=f"d{c}/dt")
-    ax.axhline(result.steady_speed, color="k", lw=0.8, ls=":", label=t("sim_steady", lang))
+    for j in range(k):
+        ax.plot(result.t, col(result.p1dot, j) / MPA, label="dp1/dt" + tag(j))
+    if k > 1:
+        ax.legend()
+    names = ", ".join(cs)
+    ax = fig("coordinate", t("sim_s", lang, names), f"{names} [{unit('m', lang)}]")
+    for j, c in enumerate(cs):
+        ax.plot(result.t, col(result.q, j), label=c)
+    if k > 1:
+        ax.legend()
+    ax = fig("speed", t("sim_v", lang, names), f"d{names}/dt [{unit('m/s', lang)}]")
+    steady = np.atleast_1d(result.steady_speed)
+    for j, c in enumerate(cs):
+        ax.plot(result.t, col(result.qdot, j), label=f"d{c}/dt")
+        ax.axhline(steady[j], color=f"C{j}", lw=0.8, ls=":", label=t("sim_steady", lang)
+                   + tag(j))
     ax.legend()
-    ax = fig("acceleration", t("sim_a", lang, c), f"d²{c}/dt² [{unit('m/s²', lang)}]")
-    ax.plot(result.t, result.qddot)
+    ax = fig("acceleration", t("sim_a", lang, names), f"d²{names}/dt² [{unit('m/s²', lang)}]")
+    for j, c in enumerate(cs):
+        ax.plot(result.t, col(result.qddot, j), label=f"d²{c}/dt²")
+    if k > 1:
+        ax.legend()
     f = new_figure()
-    ax = titled_axes(f, t("sim_m", lang, c), f"{c} [{unit('m', lang)}]", f"m [{unit('kg', lang)}]")
-    order = np.argsort(result.q, kind="stable")
-    ax.plot(result.q[order], result.reduced_mass[order], label="m")
-    ax2 = ax.twinx()
-    ax2.plot(result.q[order], result.reduced_mass_derivative[order], "--", color="C1",
-             label="m'")
-    ax2.set_ylabel(f"m' [{unit('kg/m', lang)}]")
+    if k == 1:
+        c = cs[0]
+        ax = titled_axes(f, t("sim_m", lang, c), f"{c} [{unit('m', lang)}]",
+                         f"m [{unit('kg', lang)}]")
+        order = np.argsort(result.q, kind="stable")
+        ax.plot(result.q[order], result.reduced_mass[order], label="m")
+        ax2 = ax.twinx()
+        ax2.plot(result.q[order], result.reduced_mass_derivative[order], "--", color="C1",
+                 label="m'")
+        ax2.set_ylabel(f"m' [{unit('kg/m', lang)}]")
+    else:
+        ax = titled_axes(f, _tx("mass", lang), tx, f"M_jj [{unit('kg', lang)}]")
+        for j, c in enumerate(cs):
+            ax.plot(result.t, result.reduced_mass[:, j], label=f"M ({c}, {c})")
+        ax.legend()
     out["reduced_mass"] = f
     return out
 
@@ -75,31 +124,56 @@ def figures(result, lang="en"):
 def time_series(result):
     """The time series as a pandas DataFrame with units in the column names (t [s],
     S [m], dS/dt [m/s], d²S/dt² [m/s²], p1, p2 [MPa], dp1/dt [MPa/s], flows [l/min],
-    force and load [kN], m [kg], m' [kg/m])."""
+    force and load [kN], m [kg], m' [kg/m]); with k > 1 coordinates a branch's
+    columns carry its coordinate (``p1 S2 [MPa]``), and the pump's pressure
+    ``p_pump [MPa]`` is added."""
     import pandas as pd
-    c = result.coordinate
-    cols = {"t [s]": result.t, f"{c} [m]": result.q, f"d{c}/dt [m/s]": result.qdot,
-            f"d2{c}/dt2 [m/s2]": result.qddot, "p1 [MPa]": result.p1 / MPA,
-            "p2 [MPa]": result.p2 / MPA, "dp1/dt [MPa/s]": result.p1dot / MPA,
-            "F [kN]": result.force / 1e3, "P_load [kN]": result.load / 1e3,
-            "m [kg]": result.reduced_mass, "m' [kg/m]": result.reduced_mass_derivative,
-            "phase": result.phase}
-    cols.update({f"Q_{k} [l/min]": v * 60e3 for k, v in result.flows.items()})
+    cs = result.coordinates
+    k = len(cs)
+    cols = {"t [s]": result.t}
+    for j, c in enumerate(cs):
+        col = (lambda a: result.column(a, j))  # noqa: E731
+        b = "" if k == 1 else f" {c}"
+        cols.update({f"{c} [m]": col(result.q), f"d{c}/dt [m/s]": col(result.qdot),
+                     f"d2{c}/dt2 [m/s2]": col(result.qddot),
+                     f"p1{b} [MPa]": col(result.p1) / MPA, f"p2{b} [MPa]": col(result.p2) / MPA,
+                     f"dp1/dt{b} [MPa/s]": col(result.p1dot) / MPA,
+                     f"F{b} [kN]": col(result.force) / 1e3,
+                     f"P_load{b} [kN]": col(result.load) / 1e3,
+                     f"m{b} [kg]": col(result.reduced_mass),
+                     f"m'{b} [kg/m]": col(result.reduced_mass_derivative),
+                     f"phase{b}": col(result.phase)})
+        cols.update({f"Q_{n}{b} [l/min]": col(v) * 60e3 for n, v in result.flows.items()
+                     if n != "pump"})
+    cols["Q_pump [l/min]"] = result.flows["pump"] * 60e3
+    if k > 1:
+        cols["p_pump [MPa]"] = result.pump_pressure / MPA
     # + 0.0: never a -0.0 in a table
-    return pd.DataFrame({k: v if k == "phase" else np.asarray(v, float) + 0.0
-                         for k, v in cols.items()})
+    return pd.DataFrame({n: v if n.startswith("phase") else np.asarray(v, float) + 0.0
+                         for n, v in cols.items()})
 
 
 def summary(result, lang="en"):
     """Rows ``(label, value, unit)`` of the status, events and energy balance."""
-    rows = [(t("sim_status", lang, result.message), "", ""),
-            (t("sim_steady_line", lang, result.steady_speed, result.nfev), "", "")]
-    for name, times in result.events.items():
-        for x in times:
-            rows.append((t(f"sim_ev_{name}", lang), f"{x:.4f}", unit("s", lang)))
-    for key in ("pump", "relief", "line", "impact", "mechanism_kinetic", "line_kinetic",
-                "loads", "oil", "residual"):
-        rows.append((t(f"sim_en_{key}", lang), f"{result.energy[key]:.6g}", unit("J", lang)))
+    rows = [(t("sim_status", lang, result.message), "", "")]
+    if len(result.coordinates) == 1:
+        rows.append((t("sim_steady_line", lang, result.steady_speed, result.nfev), "", ""))
+        for name, times in result.events.items():
+            for x in times:
+                rows.append((t(f"sim_ev_{name}", lang), f"{x:.4f}", unit("s", lang)))
+    else:
+        for c, v in zip(result.coordinates, result.steady_speed):
+            rows.append((_tx("steady", lang, c, v), "", ""))
+        rows.append((_tx("evals", lang, result.nfev), "", ""))
+        for x, name, c in result.event_log:
+            rows.append((f"{t(f'sim_ev_{name}', lang)} ({c})", f"{x:.4f}", unit("s", lang)))
+    keys = ["pump", "relief", "line", "impact", "mechanism_kinetic", "line_kinetic", "loads",
+            "oil", "residual"]
+    if len(result.coordinates) > 1:
+        keys.insert(2, "divider")
+    for key in keys:
+        label = _tx(key, lang) if key == "divider" else t(f"sim_en_{key}", lang)
+        rows.append((label, f"{result.energy[key]:.6g}", unit("J", lang)))
     return rows
 
 
@@ -146,8 +220,10 @@ def write_simulation_report(result, outdir, title="", lang="en",
     if "gif" in formats and mechanism is not None:
         from .drawing import render_frames, write_gif
         ts = np.arange(0.0, result.t[-1] + 1e-9, frame_step)
-        frames = render_frames(mechanism.analyze(np.interp(ts, result.t, result.q)), frames=0,
-                               lang=lang)
+        q = np.asarray(result.q)
+        qf = np.interp(ts, result.t, q) if q.ndim == 1 else np.column_stack(
+            [np.interp(ts, result.t, q[:, j]) for j in range(q.shape[1])])
+        frames = render_frames(mechanism.analyze(qf), frames=0, lang=lang)
         p = write_gif(frames, out / "simulation.gif", duration=int(round(frame_step * 1e3)),
                       bounce=False)
         files.append(p)

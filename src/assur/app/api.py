@@ -1,0 +1,68 @@
+"""What the page may send: bounded pydantic models of the API's requests.
+
+Every request body is JSON of at most :data:`MAX_BODY` bytes (the server refuses
+a longer one with 413 before parsing it). A request names parameters of the
+model file and gives finite numbers in the unit the file writes each one; names
+are short identifiers, at most :data:`~assur.app.session.MAX_PARAMS` of them;
+the number of positions is bounded by
+:data:`~assur.app.session.MAX_POSITIONS`. Nothing is executed: the values are
+written into the model's TOML text and read back by :func:`assur.io.loads`,
+whose pydantic schema (:mod:`assur.io._schema`) and builder validate the result
+as they validate a file on disk.
+
+Examples
+--------
+>>> AnalyzeRequest(params={"L5": 0.48}, positions=51).positions
+51
+>>> AnalyzeRequest(params={"L5": float("nan")})
+Traceback (most recent call last):
+...
+pydantic_core._pydantic_core.ValidationError: 1 validation error for AnalyzeRequest
+...
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal, Optional
+
+from pydantic import BaseModel, ConfigDict, Field, StringConstraints
+
+from .session import MAX_PARAMS, MAX_POSITIONS
+
+__all__ = ["AnalyzeRequest", "ExportRequest", "DxfRequest", "MAX_BODY"]
+
+#: largest request body [bytes]
+MAX_BODY = 64 * 1024
+
+#: a parameter's name as a model file writes it (a TOML bare key, at most 64 characters)
+Name = Annotated[str, StringConstraints(pattern=r"^[A-Za-z_][A-Za-z0-9_\-]{0,63}$")]
+#: a finite number of a sane magnitude (a model's value in its file's unit)
+Number = Annotated[float, Field(allow_inf_nan=False, ge=-1e12, le=1e12)]
+
+
+class _Request(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    params: dict[Name, Number] = Field(default_factory=dict, max_length=MAX_PARAMS)
+    lang: Literal["en", "ru"] = "en"
+
+
+class AnalyzeRequest(_Request):
+    """``POST /api/analyze``: the parameters changed, the positions to draw."""
+
+    positions: int = Field(101, ge=2, le=MAX_POSITIONS)
+
+
+class ExportRequest(_Request):
+    """``POST /api/export/{csv,xlsx,toml}``: the tables of the edited model over its
+    file's range (``csv``: the table ``table``, default the first), or its file."""
+
+    table: Optional[Annotated[str, StringConstraints(max_length=16)]] = None
+
+
+class DxfRequest(_Request):
+    """``POST /api/export/dxf``: the drawing at the coordinate values ``at`` (in the
+    coordinate's unit: m, or degrees for a crank), one layer per link."""
+
+    at: list[Number] = Field(default_factory=list, max_length=64)
+    positions: int = Field(101, ge=2, le=MAX_POSITIONS)

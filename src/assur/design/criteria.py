@@ -1,0 +1,396 @@
+"""Constraints and objectives of a design search: one registry, one contract.
+
+A criterion turns the reductions over the positions of every design of a batch
+(minimum and maximum of fused-kernel outputs, :mod:`assur.fused`) into one number
+per design. A **constraint** holds when that number is at least (``at_least``) or at
+most (``at_most``) its limit; an **objective** is that number maximised or
+minimised. Every criterion declares the outputs it reads (:attr:`Criterion.outputs`)
+so that a batch asks the kernel for all of them in one call, and the distances it
+needs added to the mechanism (:attr:`Criterion.distances`, for transmission angles).
+
+Kinds (the ``type`` of a ``[[design.constraints]]`` entry; docs/design.md):
+
+=====================  ===========================================================
+``bound``              ``of`` (``min``, ``max`` or ``span`` = max − min over the
+                       range) of any output, e.g. ``Y(56)`` [its unit]
+``capacity``           minimum lift capacity ``G(cylinder, point)`` over the range [N]
+``pressure``           maximum pressure ``p(cylinder)`` over the range, at most the
+                       relief setting by default [Pa]
+``transmission_angle`` the smallest angle between two links at their common joint
+                       over the range (both links rigid) [rad]
+``box``                the point stays in ``x = [low, high]``, ``y = [low, high]`` over
+                       the range: the smallest distance inside the box [m]
+=====================  ===========================================================
+
+Every criterion that reads a capacity (``G(c, p)`` or ``reserve(c, p, P)``) also
+requires the point to rise with the coordinate over the whole range, ``I(p) > 0``:
+a capacity through a transmission number of 0 or below means the cylinder cannot
+lift there (:func:`assur.capacity.check_lifts` says the same for one design).
+
+The gradient of a criterion with respect to the design variables is not computed
+here: :attr:`Criterion.gradient` is the hook (None) where exact parameter
+sensitivities plug in.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ModelError
+from ..fused import OUTPUT_UNITS, parse_output
+
+__all__ = ["Criterion", "Limit", "CRITERIA", "REDUCTIONS", "criterion", "Reductions",
+           "lift_outputs"]
+
+#: what a criterion may take of an output over the range
+REDUCTIONS = ("min", "max", "span")
+
+
+@dataclass(frozen=True)
+class Limit:
+    """The bound of a constraint: a number [SI], a parameter name (its value per
+    design), or ``"original"`` (the value of the file's own design)."""
+
+    value: object
+    sense: str  # "at_least" | "at_most"
+
+    def __post_init__(self):
+        if self.sense not in ("at_least", "at_most"):
+            raise ModelError(f"a limit is at_least or at_most, got {self.sense!r}")
+
+
+class Reductions:
+    """Minimum, maximum and where over the positions of each design of a batch.
+
+    Parameters
+    ----------
+    mins, maxs, argmins, argmaxs : dict of str to ndarray, shape (m,)
+        Per output (SI units; positions as indices into the range).
+    params : callable
+        ``params(ref)`` → the value of a parameter name or number per design,
+        shape (m,) [SI].
+    """
+
+    def __init__(self, mins, maxs, argmins, argmaxs, params):
+        self.mins, self.maxs = mins, maxs
+        self.argmins, self.argmaxs = argmins, argmaxs
+        self.param = params
+
+    def subset(self, mask) -> "Reductions":
+        """The reductions of the designs where ``mask`` is True."""
+        mask = np.asarray(mask)
+        param = self.param
+
+        def value(ref):
+            return np.broadcast_to(param(ref), mask.shape)[mask]
+        return Reductions(*({o: v[mask] for o, v in d.items()} for d in
+                            (self.mins, self.maxs, self.argmins, self.argmaxs)), value)
+
+    def of(self, output, how):
+        """``min``, ``max`` or ``span`` of ``output`` per design [its unit]."""
+        if how == "min":
+            return self.mins[output]
+        if how == "max":
+            return self.maxs[output]
+        return self.maxs[output] - self.mins[output]
+
+    def where(self, output, how):
+        """Position index of the ``min`` or ``max`` (``span``: of the max) per design."""
+        return self.argmins[output] if how == "min" else self.argmaxs[output]
+
+
+@dataclass(frozen=True)
+class Criterion:
+    """One constraint or objective (see the module docstring for the kinds).
+
+    Attributes
+    ----------
+    kind : str
+        A key of :data:`CRITERIA`.
+    name : str
+        How results and messages name it (e.g. ``"min reserve(ГЦ, S6, P6)"``).
+    outputs : tuple of str
+        Fused-kernel outputs it reads (reduced over the positions).
+    distances : tuple of (name, a, b)
+        Distances the mechanism must have for its outputs (added by the problem).
+    args : dict
+        Kind-specific settings (quantity, reduction, points, links).
+    limit : Limit or None
+        For a constraint; None for an objective.
+    sense : str or None
+        ``"maximize"`` or ``"minimize"`` for an objective.
+    unit : assur.quantities.Unit or None
+        The unit to show its values in (the one the file wrote the limit in).
+    gradient : callable or None
+        Hook for exact sensitivities d(value)/d(variables); not implemented here.
+    """
+
+    kind: str
+    name: str
+    outputs: tuple
+    args: dict
+    distances: tuple = ()
+    limit: Limit | None = None
+    sense: str | None = None
+    unit: object = None
+    gradient: object = field(default=None, compare=False)
+
+    def value(self, red: Reductions) -> np.ndarray:
+        """The criterion's value per design, shape (m,) [SI]."""
+        return CRITERIA[self.kind].value(self, red)
+
+    def where(self, red: Reductions) -> np.ndarray:
+        """Position index where the value is taken, per design (−1: not one position)."""
+        return CRITERIA[self.kind].where(self, red)
+
+    def bound(self, red: Reductions, original=None) -> np.ndarray:
+        """The limit per design [SI] (``original``: this criterion's value for the
+        file's own design, used by ``"original"``)."""
+        v = self.limit.value
+        if isinstance(v, str) and v == "original":
+            if original is None:
+                raise ModelError(f"constraint {self.name}: 'original' needs the value of the "
+                                 f"file's own design")
+            return np.asarray(original, float)
+        if v is None:
+            return CRITERIA[self.kind].default_limit(self, red)
+        return np.asarray(red.param(v), float)
+
+    def margin(self, red: Reductions, original=None) -> np.ndarray:
+        """Value − limit (``at_least``) or limit − value (``at_most``), shape (m,):
+        the constraint holds where ≥ 0 [SI]."""
+        val, lim = self.value(red), self.bound(red, original)
+        return val - lim if self.limit.sense == "at_least" else lim - val
+
+    def scale(self, red: Reductions, original=None) -> np.ndarray:
+        """A positive size to normalise violations by: |limit|, or 1 where it is 0."""
+        b = np.abs(self.bound(red, original))
+        return np.where(b > 0, b, 1.0)
+
+    def show(self, si) -> str:
+        """A value in the criterion's unit, e.g. ``"27.5 kN"``."""
+        u = self.unit
+        if u is None:
+            return f"{float(si):.6g}"
+        return f"{float(u.of(si)):.6g} {u.text}"
+
+
+class _Kind:
+    """The contract of a criterion kind."""
+
+    name = ""
+    quantity = None  # the unit family of its values ("length", "force", …)
+
+    def make(self, args: dict, mech) -> tuple:
+        """``(name, outputs, distances, quantity)`` of a criterion of this kind."""
+        raise NotImplementedError
+
+    def value(self, c, red):
+        raise NotImplementedError
+
+    def where(self, c, red):
+        return np.full(len(next(iter(red.mins.values()))), -1)
+
+    def default_limit(self, c, red):
+        raise ModelError(f"{c.kind} {c.name}: give at_least or at_most")
+
+
+def _check_output(text, mech):
+    return parse_output(text)
+
+
+_QUANTITY = {"m": "length", "rad": "angle", "N": "force", "Pa": "pressure", "N·m": "moment",
+             "%": "number"}
+
+
+class _Bound(_Kind):
+    name = "bound"
+
+    def make(self, args, mech):
+        q = args.get("quantity")
+        how = args.get("of", "min")
+        if not isinstance(q, str):
+            raise ModelError("a bound needs quantity = an output, e.g. \"Y(56)\"")
+        if how not in REDUCTIONS:
+            raise ModelError(f"bound of {q}: of must be one of {list(REDUCTIONS)}, got {how!r}")
+        fn, _ = _check_output(q, mech)
+        return f"{how} {q}", (q,), (), _QUANTITY.get(OUTPUT_UNITS[fn])
+
+    def value(self, c, red):
+        return red.of(c.args["quantity"], c.args.get("of", "min"))
+
+    def where(self, c, red):
+        how = c.args.get("of", "min")
+        if how == "span":
+            return super().where(c, red)
+        return red.where(c.args["quantity"], how)
+
+
+class _Capacity(_Kind):
+    name = "capacity"
+
+    def make(self, args, mech):
+        cyl, point = _cylinder(args, mech), args.get("point")
+        if not isinstance(point, str):
+            raise ModelError("a capacity needs point = the point the load hangs at")
+        q = f"G({cyl}, {point})"
+        return f"min {q}", (q,), (), "force"
+
+    def value(self, c, red):
+        return red.mins[c.outputs[0]]
+
+    def where(self, c, red):
+        return red.argmins[c.outputs[0]]
+
+
+class _Pressure(_Kind):
+    name = "pressure"
+
+    def make(self, args, mech):
+        cyl = _cylinder(args, mech)
+        q = f"p({cyl})"
+        return f"max {q}", (q,), (), "pressure"
+
+    def value(self, c, red):
+        return red.maxs[c.outputs[0]]
+
+    def where(self, c, red):
+        return red.argmaxs[c.outputs[0]]
+
+    def default_limit(self, c, red):
+        return np.asarray(red.param(c.args["relief"]), float)
+
+
+class _TransmissionAngle(_Kind):
+    """μ between two rigid links i, j meeting at a joint, from the distance d between
+    their far ends (law of cosines, d² = a² + b² − 2ab·cos μ): μ grows with d, so the
+    smallest and largest μ over the range come from the smallest and largest d, which
+    the kernel reduces without storing the positions. The criterion's value is
+    min(μ_min, 180° − μ_max), the angle's worst distance from a straight line."""
+
+    name = "transmission_angle"
+
+    def make(self, args, mech):
+        links = args.get("links")
+        if not (isinstance(links, (list, tuple)) and len(links) == 2):
+            raise ModelError("a transmission angle needs links = [two links meeting at a joint]")
+        byname = {lk.name: lk for lk in mech.links}
+        for ln in links:
+            if ln not in byname:
+                raise ModelError(f"transmission angle: no link {ln!r}; links: {sorted(byname)}")
+        la, lb = byname[links[0]], byname[links[1]]
+        common = {la.tail, la.head} & {lb.tail, lb.head}
+        if len(common) != 1:
+            raise ModelError(f"transmission angle: links {la.name!r} ({la.tail}–{la.head}) and "
+                             f"{lb.name!r} ({lb.tail}–{lb.head}) do not meet at one joint")
+        j = common.pop()
+        fa = la.head if la.tail == j else la.tail
+        fb = lb.head if lb.tail == j else lb.tail
+        tag = f"__mu_{la.name}_{lb.name}"
+        dists = ((tag + "_a", fa, j), (tag + "_b", fb, j), (tag + "_d", fa, fb))
+        outs = tuple(f"length({d[0]})" for d in dists)
+        return f"transmission angle {la.name}–{lb.name} at {j}", outs, dists, "angle"
+
+    def value(self, c, red):
+        oa, ob, od = c.outputs
+        a, b = red.mins[oa], red.mins[ob]
+        for o, v in ((oa, a), (ob, b)):
+            if not np.allclose(red.maxs[o], v, rtol=1e-9, atol=1e-12):
+                raise ModelError(f"{c.name}: a link changes length over the range (a cylinder "
+                                 f"or a slider): the transmission angle needs two rigid links")
+        # |cos μ| ≤ 1 wherever the joint assembled; clip the rounding only
+        cmin = np.clip((a * a + b * b - red.mins[od] ** 2) / (2 * a * b), -1.0, 1.0)
+        cmax = np.clip((a * a + b * b - red.maxs[od] ** 2) / (2 * a * b), -1.0, 1.0)
+        mu_min, mu_max = np.arccos(cmin), np.arccos(cmax)
+        return np.minimum(mu_min, math.pi - mu_max)
+
+
+class _Box(_Kind):
+    name = "box"
+
+    def make(self, args, mech):
+        p = args.get("point")
+        if not isinstance(p, str):
+            raise ModelError("a box needs point = a point of the model")
+        if args.get("x") is None and args.get("y") is None:
+            raise ModelError(f"box of {p}: give x = [low, high] and/or y = [low, high]")
+        outs = tuple(f"{ax.upper()}({p})" for ax in ("x", "y") if args.get(ax) is not None)
+        return f"box of {p}", outs, (), "length"
+
+    def value(self, c, red):
+        m = None
+        for o in c.outputs:
+            lo, hi = c.args[o[0].lower()]
+            mm = np.minimum(red.mins[o] - lo, hi - red.maxs[o])
+            m = mm if m is None else np.minimum(m, mm)
+        return m
+
+    def default_limit(self, c, red):
+        return np.zeros_like(self.value(c, red))
+
+
+def _cylinder(args, mech):
+    names = [c.name for c in mech.cylinders]
+    cyl = args.get("cylinder")
+    if cyl is None:
+        if len(names) != 1:
+            raise ModelError(f"name the cylinder (cylinder = one of {names})")
+        cyl = names[0]
+    if cyl not in names:
+        raise ModelError(f"no cylinder {cyl!r}; cylinders: {names}")
+    return cyl
+
+
+#: the criterion kinds by their ``type``
+CRITERIA = {k.name: k for k in (_Bound(), _Capacity(), _Pressure(), _TransmissionAngle(),
+                                 _Box())}
+
+
+def criterion(kind, args, mech, *, limit=None, sense=None, unit=None):
+    """Make a :class:`Criterion` of ``kind`` (a key of :data:`CRITERIA`).
+
+    Parameters
+    ----------
+    kind : str
+    args : dict
+        Its settings in SI (``quantity``/``of`` for a bound, ``cylinder``/``point``
+        for a capacity, ``cylinder`` for a pressure, ``links`` for a transmission
+        angle, ``point``/``x``/``y`` [m] for a box).
+    mech : Mechanism
+    limit : Limit, optional
+        For a constraint.
+    sense : {"maximize", "minimize"}, optional
+        For an objective.
+    unit : assur.quantities.Unit, optional
+    """
+    if kind not in CRITERIA:
+        raise ModelError(f"unknown criterion type {kind!r}: one of {sorted(CRITERIA)}")
+    if (limit is None) == (sense is None):
+        raise ModelError("a criterion is a constraint (a limit) or an objective (a sense)")
+    if sense is not None and sense not in ("maximize", "minimize"):
+        raise ModelError(f"an objective is maximize or minimize, got {sense!r}")
+    args = dict(args)
+    if kind == "pressure":
+        cyl = next(c for c in mech.cylinders if c.name == _cylinder(args, mech))
+        args["relief"] = cyl.p_relief
+    name, outs, dists, quantity = CRITERIA[kind].make(args, mech)
+    if unit is None:
+        from ..quantities import DEFAULT_UNITS, Unit
+        unit = DEFAULT_UNITS.get(quantity, Unit("-")) if quantity else Unit("-")
+    return Criterion(kind, name, tuple(outs), args, tuple(dists), limit, sense, unit)
+
+
+def lift_outputs(outputs, mech):
+    """The transmission-number outputs whose positivity the capacity outputs among
+    ``outputs`` need, ``{"I(S6)": "S6"}`` (``"I(S6, S)"`` for k > 1 coordinates)."""
+    out = {}
+    cyls = {c.name: c for c in mech.cylinders}
+    for o in outputs:
+        fn, args = parse_output(o)
+        if fn in ("G", "reserve") and args[0] in cyls:
+            tail = f", {cyls[args[0]].coordinate}" if len(mech.coordinates) > 1 else ""
+            out[f"I({args[1]}{tail})"] = args[1]
+    return out

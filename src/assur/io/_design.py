@@ -1,0 +1,335 @@
+"""The ``[design]`` section of a model file: design variables, constraints and
+objectives of a search (:mod:`assur.design`, docs/design.md).
+
+```toml
+[design]
+positions = 50                              # over [range] (default: the range's own)
+
+[design.variables]                          # parameters of [params] and their bounds
+X01 = { within = "30 mm" }                  # ± around the file's value
+L4 = ["0.60 m", "0.72 m"]                   # [low, high]
+
+[[design.constraints]]
+quantity = "Y(56)"                          # type = "bound" (the default): an output
+of = "min"                                  # min | max | span over the range
+at_most = "0.2 m"                           # or at_least; a number with its unit, a
+                                            # parameter name, or "original"
+[[design.constraints]]
+type = "pressure"                           # at most the relief setting by default
+cylinder = "ГЦ"
+
+[[design.objectives]]
+maximize = "reserve(ГЦ, S6, P6)"            # or minimize = …
+of = "min"
+```
+
+Kept apart from the rest of the schema like ``[lift_test]``: :mod:`assur.io._schema`
+only admits the table; :func:`build_design` checks it against the loaded mechanism.
+Every error names the file, line and key. Command-line variables
+(``--var "L4=0.6 m:0.72 m"``) are read by :func:`parse_var` with the same units.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal, Optional, Union
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, StrictInt, StrictStr
+
+from ..errors import ModelError
+from . import _schema as S
+from ._units import (ANGLE, FORCE, LENGTH, NUMBER, PRESSURE, KINDS, Raw, UnitError,
+                     display_unit, parse, to_si)
+
+__all__ = ["DesignSection", "DesignSpec", "build_design", "parse_var", "write_design_file"]
+
+
+class _Within(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+    within: S.Value
+
+
+class _Criterion(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+    type: Literal["bound", "capacity", "pressure", "transmission_angle", "box"] = "bound"
+    quantity: Optional[StrictStr] = None
+    of: Literal["min", "max", "span"] = "min"
+    cylinder: Optional[StrictStr] = None
+    point: Optional[S.Name] = None
+    links: Optional[list[S.Name]] = Field(None, min_length=2, max_length=2)
+    x: Optional[list[S.Value]] = Field(None, min_length=2, max_length=2)
+    y: Optional[list[S.Value]] = Field(None, min_length=2, max_length=2)
+
+
+class _Constraint(_Criterion):
+    at_least: Optional[S.Value] = None
+    at_most: Optional[S.Value] = None
+
+
+class _Objective(_Criterion):
+    maximize: Optional[StrictStr] = None
+    minimize: Optional[StrictStr] = None
+
+
+class DesignSection(BaseModel):
+    """The ``[design]`` table as written."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+    positions: Optional[StrictInt] = Field(None, ge=2)
+    variables: dict[str, Union[list[S.Value], _Within]] = {}
+    constraints: list[_Constraint] = []
+    objectives: list[_Objective] = []
+
+
+class DesignSpec:
+    """The checked ``[design]`` section: variables and criteria in SI.
+
+    Attributes
+    ----------
+    variables : tuple of assur.design.Variable
+    constraints, objectives : tuple of assur.design.criteria.Criterion
+    positions : int or None
+        Number of positions over the range (None: the range's own).
+    """
+
+    def __init__(self, variables, constraints, objectives, positions):
+        self.variables = tuple(variables)
+        self.constraints = tuple(constraints)
+        self.objectives = tuple(objectives)
+        self.positions = positions
+
+
+def _kind_of_output(text):
+    from ..fused import OUTPUT_UNITS, parse_output
+    fn, _ = parse_output(text)
+    return {"m": LENGTH, "N": FORCE, "Pa": PRESSURE, "rad": ANGLE, "%": NUMBER}.get(
+        OUTPUT_UNITS[fn])
+
+
+_CRITERION_KIND = {"capacity": FORCE, "pressure": PRESSURE, "transmission_angle": ANGLE,
+                   "box": LENGTH}
+
+
+def _param_kind(mech, name):
+    from ..quantities import parameter_quantities
+    q = parameter_quantities(mech).get(name)
+    return KINDS.get(q) if q else None
+
+
+def _si(text, kind, problem):
+    """``(SI value, Unit)`` of a value string, or raise ValueError(problem)."""
+    try:
+        raw = parse(text)
+    except UnitError as e:
+        raise ValueError(f"{problem}: {e}" if str(e) else problem) from None
+    if not isinstance(raw, Raw):
+        raise ValueError(f"{problem}, found the name {raw!r}")
+    try:
+        return float(to_si(raw, kind)), display_unit(raw, kind)
+    except UnitError as e:
+        raise ValueError(f"{problem}: {e}") from None
+
+
+def build_design(builder, mech, path_prefix=("design",)):
+    """The :class:`DesignSpec` of the ``[design]`` section of the file ``builder``
+    reads (None without one); ``mech`` is the mechanism built from it.
+
+    Raises
+    ------
+    ModelFileError
+        Naming the file, line and key of the problem.
+    """
+    raw = builder.data.get("design")
+    if raw is None:
+        return None
+    err = builder.error
+    spec, errors = S.validate(DesignSection, raw, path_prefix)
+    if errors:
+        path, problem = errors[0]
+        raise err(path, problem)
+    from ..design.criteria import Limit, criterion
+    from ..design.problem import Variable
+    from ..quantities import display_units
+    units = display_units(mech)
+    variables = []
+    for name, b in spec.variables.items():
+        p = path_prefix + ("variables", name)
+        if name not in mech.params:
+            raise err(p, f'expected a parameter of [params], found "{name}"'
+                         f"{S.did_you_mean(name, list(mech.params))}")
+        value = float(np.asarray(mech.params[name]))
+        kind = _param_kind(mech, name)
+        try:
+            if isinstance(b, _Within):
+                d, _ = _si(b.within, kind, f"within: expected {_article(kind)}")
+                if d <= 0:
+                    raise ValueError(f"within must be positive, found {b.within}")
+                lo, hi = value - d, value + d
+            else:
+                if len(b) != 2:
+                    raise ValueError(f"expected [low, high], found {len(b)} values")
+                lo, _ = _si(b[0], kind, f"expected {_article(kind)}")
+                hi, _ = _si(b[1], kind, f"expected {_article(kind)}")
+            variables.append(Variable(name, lo, hi, units.get(name)))
+        except (ValueError, ModelError) as e:
+            raise err(p, str(e)) from None
+    crits = []
+    for key, entries in (("constraints", spec.constraints), ("objectives", spec.objectives)):
+        for i, c in enumerate(entries):
+            p = path_prefix + (key, i)
+            try:
+                crits.append((key, _criterion(c, key, mech, criterion, Limit)))
+            except (ValueError, ModelError) as e:
+                raise err(p, str(e)) from None
+    positions = spec.positions
+    return DesignSpec(variables, [c for k, c in crits if k == "constraints"],
+                      [c for k, c in crits if k == "objectives"], positions)
+
+
+def _article(kind):
+    return f"{kind.article} (e.g. {kind.example})" if kind is not None else "a number"
+
+
+def _criterion(c, key, mech, criterion, Limit):
+    args = {k: getattr(c, k) for k in ("quantity", "of", "cylinder", "point", "links")
+            if getattr(c, k) is not None}
+    for ax in ("x", "y"):
+        v = getattr(c, ax)
+        if v is not None:
+            args[ax] = tuple(_si(s, LENGTH, f"{ax}: expected a length (e.g. \"0.4 m\")")[0]
+                             for s in v)
+    if c.type == "bound" and c.quantity is None and key == "constraints":
+        raise ValueError('a bound needs quantity = an output, e.g. "Y(56)" (or give type = '
+                         '"capacity", "pressure", "transmission_angle" or "box")')
+    if key == "objectives":
+        if (c.maximize is None) == (c.minimize is None):
+            raise ValueError("an objective has maximize = … or minimize = …")
+        sense = "maximize" if c.maximize is not None else "minimize"
+        if c.type == "bound":
+            args["quantity"] = c.maximize or c.minimize
+        kind = _kind_of_output(args["quantity"]) if c.type == "bound" else \
+            _CRITERION_KIND[c.type]
+        unit = _percent(args.get("quantity")) or _default_unit(kind)
+        return criterion(c.type, args, mech, sense=sense, unit=unit)
+    if c.at_least is not None and c.at_most is not None:
+        raise ValueError("give at_least or at_most, not both")
+    sense = "at_least" if c.at_least is not None else "at_most" if c.at_most is not None \
+        else None
+    kind = _kind_of_output(c.quantity) if c.type == "bound" else _CRITERION_KIND[c.type]
+    if sense is None:
+        if c.type == "pressure":
+            return criterion(c.type, args, mech, limit=Limit(None, "at_most"),
+                             unit=_default_unit(kind))
+        if c.type == "box":
+            return criterion(c.type, args, mech, limit=Limit(None, "at_least"),
+                             unit=_default_unit(kind))
+        raise ValueError("a constraint needs at_least = … or at_most = …")
+    text = getattr(c, sense)
+    if isinstance(text, str) and text.strip() == "original":
+        return criterion(c.type, args, mech, limit=Limit("original", sense),
+                         unit=_percent(c.quantity) or _default_unit(kind))
+    raw = parse(text) if not isinstance(text, str) or text.strip() else None
+    if isinstance(raw, str):  # a parameter name
+        if raw not in mech.params:
+            raise ValueError(f'{sense}: "{raw}" is not a parameter'
+                             f"{S.did_you_mean(raw, list(mech.params))}")
+        return criterion(c.type, args, mech, limit=Limit(raw, sense), unit=_default_unit(kind))
+    v, unit = _si(text, kind, f"{sense}: expected {_article(kind)}")
+    return criterion(c.type, args, mech, limit=Limit(v, sense), unit=unit)
+
+
+def _percent(quantity):
+    """Unit("%") for an output in percent (a reserve), else None."""
+    from ..fused import OUTPUT_UNITS, parse_output
+    from ..quantities import Unit
+    if quantity and OUTPUT_UNITS[parse_output(quantity)[0]] == "%":
+        return Unit("%")
+    return None
+
+
+def _default_unit(kind):
+    from ..quantities import DEFAULT_UNITS, Unit
+    return DEFAULT_UNITS.get(kind.name, Unit("-")) if kind is not None else Unit("-")
+
+
+def parse_var(text, mech):
+    """A command-line design variable ``"NAME=LOW:HIGH"`` (``"L4=0.6 m:0.72 m"``,
+    ``"X01=±30 mm"`` for ± around the model's value), units as in model files.
+
+    Returns
+    -------
+    assur.design.Variable
+
+    Raises
+    ------
+    ModelError
+        Naming the option and what is wrong.
+    """
+    from ..design.problem import Variable
+    from ..quantities import display_units
+    name, sep, rest = str(text).partition("=")
+    name = name.strip()
+    if not sep or not name:
+        raise ModelError(f'--var {text!r}: expected NAME=LOW:HIGH (e.g. "L4=0.6 m:0.72 m") '
+                         f'or NAME=±DELTA (e.g. "X01=±30 mm")')
+    if name not in mech.params:
+        raise ModelError(f"--var {text!r}: {name!r} is not a parameter of {mech.name!r}"
+                         f"{S.did_you_mean(name, list(mech.params))}")
+    kind = _param_kind(mech, name)
+    unit = display_units(mech).get(name)
+    try:
+        rest = rest.strip()
+        if rest.startswith(("±", "+-")):
+            d, _ = _si(rest.lstrip("±+-").strip(), kind, f"expected {_article(kind)}")
+            v = float(np.asarray(mech.params[name]))
+            return Variable(name, v - d, v + d, unit)
+        lo, colon, hi = rest.partition(":")
+        if not colon:
+            raise ValueError("expected LOW:HIGH or ±DELTA")
+        return Variable(name, _si(lo, kind, f"expected {_article(kind)}")[0],
+                        _si(hi, kind, f"expected {_article(kind)}")[0], unit)
+    except (ValueError, ModelError) as e:
+        raise ModelError(f"--var {text!r}: {e}") from None
+
+
+def write_design_file(path, base, values, units, header=()):
+    """Write a model file that ``extends`` ``base`` with ``values`` overriding its
+    parameters.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file to write.
+    base : pathlib.Path
+        The original model file (written relative to ``path``'s directory).
+    values : mapping of str to float
+        Parameter values [SI].
+    units : mapping of str to assur.quantities.Unit
+        The unit to write each value in (the original file's).
+    header : sequence of str
+        Comment lines at the top.
+    """
+    import os
+    from pathlib import Path
+    path, base = Path(path), Path(base)
+    rel = os.path.relpath(base.resolve(), path.resolve().parent)
+    lines = [f"# {h}" for h in header]
+    lines += [f"extends = {_toml_str(Path(rel).as_posix())}", "", "[params]"]
+    for k, v in values.items():
+        u = units.get(k)
+        if u is None or u.text in ("-", ""):
+            lines.append(f"{_toml_key(k)} = {float(v)!r}")
+        else:
+            txt = "deg" if u.is_degrees else u.text.replace("·", "*").replace("²", "^2")
+            lines.append(f"{_toml_key(k)} = \"{float(u.of(v))!r} {txt}\"")
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+def _toml_str(s):
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _toml_key(k):
+    import re
+    return k if re.match(r"^[A-Za-z0-9_-]+$", k) else _toml_str(k)

@@ -1,0 +1,274 @@
+"""The kernel of a structure evaluated by numpy, for the first small calls of a process.
+
+A compiled kernel (:mod:`assur.kernel.source`) needs numba, and numba's first use in a
+process costs about half a second whatever the work: its import, and the set-up of
+its target (every implementation registry, scipy's BLAS) before even a cached kernel
+can be loaded. A command that solves a few positions (``assur check``: the design
+conditions, then the model's range) or a page's first slider move would spend
+nearly all its time there.
+
+So the first calls of a process with at most :data:`SMALL` elements run the *same*
+emitted code — each group type's :meth:`~assur.groups.base.Group.emit` lines,
+conditional expressions as selects — as numpy expressions over all elements at once
+(``np.where`` for the selects, ``np.minimum``/``np.maximum`` for ``min``/``max``).
+It is a straight-line evaluation of arrays, no loop over positions. After
+:data:`CALLS` such calls (a simulation, a sweep of single positions: the process
+evaluates the mechanism often) or as soon as numba is in the process (a compiled
+kernel was loaded, or anything else imported it), the compiled kernels take over: the numpy evaluation never costs more than about the
+start-up it saves (the rent-or-buy rule), and a long run pays it once.
+
+The results are those of the compiled kernel to rounding: the same operations in the
+same order (``tests/test_kernel_vector.py`` compares the two on random mechanisms
+of every group type, and the one-position path with the array path); the status
+codes and the continuity check (:func:`assur.kernel.source.continuity_check`) are
+the same.
+
+Like the compiled kernels (``error_model="numpy"``), the evaluation computes both
+operands of every select: 1/0 and sqrt(−1) at an element that does not assemble
+give inf and NaN there, which the select discards and the status code reports
+(an :class:`~assur.errors.AssemblyError` naming the group, its links and values);
+numpy's floating-point warnings are therefore off inside the kernel only, exactly
+as they are in the compiled code.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+
+from ..groups import group_type
+from .emit import CODES_PER_OP, CONTINUITY_TOL, FAIL_CONTINUITY, Emitter
+from .select import branchless
+from .source import FORMAT, emit_measure, quantities
+
+__all__ = ["SMALL", "CALLS", "wanted", "generate_vector", "load_vector", "calls_left",
+           "set_calls"]
+
+#: elements (designs × positions) of a call that the numpy evaluation takes at most
+SMALL = 256
+
+#: calls evaluated by numpy in a process before the compiled kernels take over; each
+#: costs about 1–3 ms for a ten-group structure, the compiled kernels' first use in a
+#: process about 0.5 s
+CALLS = 200
+
+_state = {"calls": 0, "limit": None}
+_VECTORS: dict = {}
+
+
+def set_calls(n: int | None) -> None:
+    """Evaluate at most ``n`` more small calls of this process with numpy (0: always
+    compiled; None: back to :data:`CALLS` in all)."""
+    if n is None:
+        _state["calls"], _state["limit"] = 0, None
+    else:
+        if int(n) < 0:
+            raise ValueError(f"calls must be ≥ 0, got {n!r}")
+        _state["calls"], _state["limit"] = 0, int(n)
+
+
+def calls_left() -> int:
+    """Small calls this process may still evaluate with numpy."""
+    if "numba" in sys.modules:  # its import is paid: the compiled kernels are cheap now
+        return 0
+    limit = CALLS if _state["limit"] is None else _state["limit"]
+    return max(0, limit - _state["calls"])
+
+
+def wanted(elements: int) -> bool:
+    """True if a call over ``elements`` elements is to be evaluated by numpy (and
+    counts it)."""
+    if elements > SMALL or calls_left() <= 0:
+        return False
+    _state["calls"] += 1
+    return True
+
+
+def _body(lines):
+    """The emitted element code as numpy statements: per-design reads and the
+    coordinates become whole-row locals, conditional expressions selects."""
+    prows, trows, qrows = set(), set(), set()
+    out = []
+    for line in lines:
+        prows.update(int(m) for m in re.findall(r"params\[(\d+), d\]", line))
+        trows.update(int(m) for m in re.findall(r"trig\[(\d+), d\]", line))
+        qrows.update(int(m) for m in re.findall(r"q\[(\d+), e\]", line))
+        line = re.sub(r"params\[(\d+), d\]", r"P\1", line)
+        line = re.sub(r"trig\[(\d+), d\]", r"T\1", line)
+        line = re.sub(r"q\[(\d+), e\]", r"Q\1", line)
+        out.append("        " + branchless(line).strip())
+    head = [f"        P{r} = params[{r}, D]" for r in sorted(prows)]
+    head += [f"        T{r} = trig[{r}, D]" for r in sorted(trows)]
+    head += [f"        Q{r} = q[{r}]" for r in sorted(qrows)]
+    return head, out
+
+
+def generate_vector(rows, measures, K, out_pts, out_sca) -> str:
+    """Python source of the numpy evaluation of a structure (the arguments of
+    :func:`assur.kernel.source.generate`); its ``kernel`` has the compiled kernel's
+    signature and results."""
+    E = Emitter(K)
+    cont = []
+    for i, row in enumerate(rows):
+        gt = group_type(row[0])
+        E(f"# group {i}: {gt.type_name}")
+        gt.emit(E, i, tuple(int(v) for v in row[1:]))
+        if gt.continuity and K == 1:
+            cont.append(i)
+    n = len(rows)
+    for j, (kind, s_, P, Q) in enumerate(measures):
+        E(f"# measure {j}: {kind}")
+        emit_measure(E, n + j, kind, s_, P, Q)
+    head, body = _body(E.lines)
+    qs = quantities(K, out_pts, out_sca)
+    ind = "        "
+    outs = [ind + "ok_ = st < 0"]
+    outs += [ind + f"out[{qi}] = _sel(ok_, {v}, 0.0)" for qi, v in enumerate(qs)]
+    outs.append(ind + "status[:] = st")
+    groups = ", ".join(f"({i * CODES_PER_OP + FAIL_CONTINUITY}, g{i}, gd{i})" for i in cont)
+    check = (f"{ind}if check:\n{ind}    nfail = _continuity(q[0], npd, status, amount, ok_, "
+             f"[{groups}])\n") if cont else ""
+    return f'''"""Generated by assur.kernel.vector (format {FORMAT}); do not edit."""
+import numpy as np
+from assur.kernel.vector import _continuity, _sel, math, max, min
+
+CHECKS_CONTINUITY = True  # see assur.kernel.compose.checks_continuity
+VECTOR = True
+
+
+def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
+    """All elements at once, as numpy arrays (c_start, c_end: the whole range; the
+    compiled kernel's signature). out: (NQ, E) outputs in the order of
+    assur.kernel.source.quantities; with ``check`` the continuity of every dyad
+    between consecutive positions: failures get the group's code in ``status`` and
+    the depth in ``amount``; returns their number."""
+    E = q.shape[1]
+    if out.shape[0] != {len(qs)} or out.shape[1] != E or (check and amount.shape[0] != E):
+        raise ValueError("assur kernel: output arrays do not match the program")
+    D = 0 if params.shape[1] == 1 else np.arange(E) // npd
+    nfail = 0
+    # as the compiled kernels' error_model="numpy": a select discards the inf/NaN of an
+    # element that does not assemble, its status code reports it
+    with np.errstate(all="ignore"):
+        st = -1
+''' + "\n".join(head + body + outs) + "\n" + check + "    return nfail\n"
+
+
+def load_vector(rows, measures, K, out_pts, out_sca):
+    """The numpy-evaluated kernel of a structure (cached per process, and on disk by
+    the structure and the code that emits it: a later process imports it — bytecode
+    cached — without generating it again)."""
+    key = (rows, measures, K, out_pts, out_sca)
+    fn = _VECTORS.get(key)
+    if fn is None:
+        from .cache import load_keyed
+        fn = _VECTORS[key] = load_keyed(
+            f"vector {FORMAT} {_code_version()} {key!r}",
+            lambda: generate_vector(rows, measures, K, out_pts, out_sca))
+    return fn
+
+
+_version: list = []
+
+
+def _code_version() -> str:
+    """Hash of the source of every module that shapes the emitted code (the group
+    types, :mod:`assur.kernel.emit`, ``source``, ``select`` and this one): a change
+    to any of them is a new cache entry."""
+    if not _version:
+        import hashlib
+        from pathlib import Path
+
+        from .. import groups
+        from . import emit, select, source
+        mods = {sys.modules[c.__module__] for c in groups.registry().values()}
+        mods |= {sys.modules[__name__], emit, select, source, sys.modules["assur.groups.base"]}
+        h = hashlib.sha1()
+        for f in sorted(str(m.__file__) for m in mods):
+            h.update(Path(f).read_bytes())
+        _version.append(h.hexdigest()[:16])
+    return _version[0]
+
+
+# ---- the namespace of the generated code -------------------------------------------
+
+def _np():
+    import numpy as np
+    return np
+
+
+class _Math:
+    """``math`` of the emitted code, elementwise (numpy's ufuncs)."""
+
+    def __getattr__(self, name):
+        np = _np()
+        fn = {"sqrt": np.sqrt, "copysign": np.copysign, "sin": np.sin, "cos": np.cos,
+              "tan": np.tan, "atan2": np.arctan2, "acos": np.arccos, "asin": np.arcsin,
+              "atan": np.arctan, "hypot": np.hypot, "exp": np.exp, "log": np.log,
+              "fabs": np.fabs, "pi": np.pi, "inf": np.inf}.get(name)
+        if fn is None:
+            raise AttributeError(f"assur.kernel.vector: math.{name} has no elementwise form")
+        setattr(self, name, fn)
+        return fn
+
+
+math = _Math()
+
+
+def _sel(cond, a, b):
+    """``a if cond else b`` elementwise."""
+    return _np().where(cond, a, b)
+
+
+def min(a, b):  # noqa: A001 — the emitted code's min, elementwise
+    """Elementwise minimum."""
+    return _np().minimum(a, b)
+
+
+def max(a, b):  # noqa: A001
+    """Elementwise maximum."""
+    return _np().maximum(a, b)
+
+
+def _continuity(q0, npd, status, amount, ok, groups):
+    """The continuity check of :func:`assur.kernel.source.continuity_check` over all
+    elements (at most one run of positions per design, as :data:`SMALL` ensures):
+    every interval between consecutive assembled positions of a design and every
+    group ``(code, g, gd)`` in order; the interval's right-hand element gets the
+    first failing group's code and the depth [m²] in ``amount``. An element so marked
+    is not the left end of a checked interval. Returns the number of failures."""
+    np = _np()
+    E = status.shape[0]
+    if E < 2 or not groups:
+        return 0
+    e = np.arange(1, E)
+    both = (e % npd != 0) & (status[1:] < 0) & (status[:-1] < 0)
+    hs = q0[1:] - q0[:-1]
+    h = np.abs(hs)
+    first = np.full(E - 1, -1, dtype=np.int64)
+    depth = np.zeros(E - 1)
+    for code, g, gd in groups:
+        g = np.where(ok, g, 0.0) * np.ones(E)  # staged as the compiled kernel stages them
+        gd = np.where(ok, gd, 0.0) * np.ones(E)
+        g0, g1, d0, d1 = g[:-1], g[1:], gd[:-1], gd[1:]
+        mn = np.minimum(g0, g1)
+        quick = mn - (4.0 / 27.0) * h * (np.abs(d0) + np.abs(d1)) > 0.0
+        for ii in range(1, 16):
+            t = ii / 16.0
+            t2 = t * t
+            t3 = t2 * t
+            v = ((2.0 * t3 - 3.0 * t2 + 1.0) * g0
+                 + (t3 - 2.0 * t2 + t) * hs * d0
+                 + (-2.0 * t3 + 3.0 * t2) * g1 + (t3 - t2) * hs * d1)
+            mn = np.where(v < mn, v, mn)
+        bad = both & ~quick & (mn < -CONTINUITY_TOL * np.maximum(g0, g1)) & (first < 0)
+        first[bad] = code
+        depth[bad] = mn[bad]
+    nfail = 0
+    for j in np.flatnonzero(first >= 0):  # the few failing intervals, in order
+        if status[j] >= 0:  # its left end failed in this pass
+            continue
+        status[j + 1] = first[j]
+        amount[j + 1] = depth[j]
+        nfail += 1
+    return nfail

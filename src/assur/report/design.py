@@ -1,0 +1,138 @@
+"""Reports of a design search: the best design against the original (HTML with
+tables and curves) and the Pareto front's figure. Figures only here (matplotlib);
+the numbers come from :mod:`assur.design`.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import io as _io
+
+import numpy as np
+
+__all__ = ["curves", "comparison_html", "pareto_figure", "write_comparison"]
+
+
+def curves(problem, x):
+    """The outputs the criteria read, over the problem's positions, for the design
+    ``x`` [SI]: ``{output: array (n,)}`` (SI)."""
+    mech = problem.mechanism.with_params(**{v.name: float(xi)
+                                            for v, xi in zip(problem.variables, x)})
+    f = mech.evaluate(problem.positions, outputs=list(problem.outputs))
+    return {o: np.asarray(f[o]) for o in problem.outputs if not o.startswith("length(__")}
+
+
+def _figure(w, h):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+    fig = Figure(figsize=(w, h))
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def _png(fig):
+    buf = _io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    return base64.b64encode(buf.getvalue()).decode("ascii")
+
+
+def _unit_of(problem, output):
+    for c in problem.constraints + problem.objectives:
+        if output in c.outputs and c.unit is not None:
+            return c.unit
+    from ..fused import OUTPUT_UNITS, parse_output
+    from ..quantities import Unit
+    return Unit(OUTPUT_UNITS[parse_output(output)[0]])
+
+
+def comparison_html(problem, result, title=None):
+    """HTML comparing the best design of ``result`` (an
+    :class:`~assur.design.search.OptimizeResult`) with the original: the variables,
+    the objective, the constraints, and the curves of both over the positions."""
+    esc = html.escape
+    best, orig = result.batch, result.original
+    rows_v = "".join(
+        f"<tr><td>{esc(v.name)}</td><td>{esc(v.show(v.low))} … {esc(v.show(v.high))}</td>"
+        f"<td>{esc(v.show(problem.x0[j]))}</td><td>{esc(v.show(result.x[j]))}</td></tr>"
+        for j, v in enumerate(problem.variables))
+    rows_o = "".join(
+        f"<tr><td>{esc(c.sense)} {esc(c.name)}</td><td>{esc(c.show(orig.objectives[0, j]))}</td>"
+        f"<td>{esc(c.show(best.objectives[0, j]))}</td></tr>"
+        for j, c in enumerate(problem.objectives))
+
+    def lim(c, b):
+        val, mg = b.values[0, j_], b.margins[0, j_]
+        return val - mg if c.limit.sense == "at_least" else val + mg
+
+    rows_c = ""
+    for j_, c in enumerate(problem.constraints):
+        rel = "≥" if c.limit.sense == "at_least" else "≤"
+        rows_c += (f"<tr><td>{esc(c.name)} {rel} {esc(c.show(lim(c, orig)))}</td>"
+                   f"<td>{esc(c.show(orig.values[0, j_]))}</td>"
+                   f"<td>{esc(c.show(best.values[0, j_]))}</td>"
+                   f"<td>{'yes' if best.margins[0, j_] >= 0 else 'no'}</td></tr>")
+    c0, c1 = curves(problem, problem.x0), curves(problem, result.x)
+    mech = problem.mechanism
+    coord = mech.coordinates[0]
+    q = problem.positions if problem.positions.ndim == 1 else np.arange(len(problem.positions))
+    figs = ""
+    for o in c0:
+        u = _unit_of(problem, o)
+        fig = _figure(5.5, 3.2)
+        ax = fig.add_subplot()
+        ax.plot(q, u.of(c0[o]), label="original", color="0.4")
+        ax.plot(q, u.of(c1[o]), label="best", color="C0")
+        ax.set_xlabel(f"{coord} [m]" if mech.coordinate_kind(coord) != "angle" else
+                      f"{coord} [rad]")
+        ax.set_ylabel(f"{o} [{u.text}]")
+        ax.grid(alpha=0.3)
+        ax.legend()
+        figs += f'<figure><img alt="{esc(o)}" src="data:image/png;base64,{_png(fig)}"></figure>'
+    ttl = esc(title or f"{problem.name}: best design against the original")
+    status = "feasible" if result.feasible else f"infeasible: {best.reason(0)}"
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>{ttl}</title>
+<style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}
+table{{border-collapse:collapse;margin:1em 0}}td,th{{border:1px solid #bbb;padding:.2em .6em}}
+figure{{display:inline-block;margin:.5em}}</style></head><body>
+<h1>{ttl}</h1>
+<p>The best design is {esc(status)}. {result.evaluations} designs evaluated in
+{result.calls} batches over {result.generations} generations; {len(problem.positions)}
+positions each.</p>
+<h2>Variables</h2><table><tr><th>variable</th><th>bounds</th><th>original</th><th>best</th></tr>
+{rows_v}</table>
+<h2>Objective</h2><table><tr><th>objective</th><th>original</th><th>best</th></tr>{rows_o}</table>
+<h2>Constraints</h2><table><tr><th>constraint</th><th>original</th><th>best</th><th>holds</th></tr>
+{rows_c}</table>
+<h2>Curves</h2>{figs}
+</body></html>
+"""
+
+
+def write_comparison(path, problem, result, title=None):
+    """Write :func:`comparison_html` to ``path``; returns the path."""
+    from pathlib import Path
+    p = Path(path)
+    p.write_text(comparison_html(problem, result, title), encoding="utf-8")
+    return p
+
+
+def pareto_figure(problem, result, path):
+    """The Pareto front (two first objectives, in their units) with the original
+    design, saved to ``path`` (PNG or SVG)."""
+    a, b = problem.objectives[:2]
+    fig = _figure(5.5, 4)
+    ax = fig.add_subplot()
+    if result.batch is not None:
+        F = result.batch.objectives
+        order = np.argsort(F[:, 0])
+        ax.plot(a.unit.of(F[order, 0]), b.unit.of(F[order, 1]), "o-", ms=4, label="Pareto front")
+    O = result.original.objectives
+    ax.plot(a.unit.of(O[:, 0]), b.unit.of(O[:, 1]), "s", color="C3", label="original")
+    ax.set_xlabel(f"{a.sense} {a.name} [{a.unit.text}]")
+    ax.set_ylabel(f"{b.sense} {b.name} [{b.unit.text}]")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.savefig(path, bbox_inches="tight")
+    return path

@@ -1,0 +1,508 @@
+"""Exact sensitivities: derivatives of any output with respect to any parameter.
+
+:func:`sensitivities` gives ∂(output)/∂(parameter) over the positions for the
+outputs of :mod:`assur.fused` (``Y(56)``, ``dY(S6)``, ``phi(6)``, ``F(S)``,
+``p(ГЦ)``, ``G(ГЦ, 56)``, ``reserve(ГЦ, S6, P6)``, ``Rx(0, 5)``, ``R(5, 6)``…) and
+the numeric parameters of the model (pivot coordinates, link lengths, angles, bores,
+loads, efficiencies, the pose of a point fixed at a pose).
+
+How (the choice and why)
+------------------------
+Forward-mode jets in the parameters carried through the engine's own group code:
+every parameter is a dual number (:mod:`assur.sensitivity.dual`) whose parts are
+themselves duals in the generalized coordinates, and the plain-numpy position
+formulas of each group (:meth:`assur.groups.base.Group.evaluate`, the same code the
+kernel's analogs are tested against), the loads' ``apply`` and each group's
+``reactions`` (the code :mod:`assur.fused` traces into its kernel) run on them.
+The result carries, exactly to rounding, the value, the kinematic analogs ∂/∂q, the
+sensitivities ∂/∂p and the mixed ∂²/∂q∂p — which is what the derivative of a
+cylinder force F = −Σ F_load·∂r/∂q, of a pressure and of a capacity
+G = k·p_max·A·η_h·η_m/(∂Y/∂q) needs.
+
+Why not the alternatives:
+
+* *Symbolic differentiation in the generated kernel* would need a third jet order
+  in every group's hand-written ``emit`` (the kernel's analog code is written per
+  group, not traced) — a change to every group type and to the kernel's speed
+  that the sweeps depend on, for a quantity needed at one design at a time.
+* *The implicit-function theorem on the closure equations* needs the partials of
+  every group's closure with respect to its inputs and references, which the group
+  contract does not expose, and a second application for the analogs.
+* Duals through the group code need nothing new from a group: a group type that
+  evaluates in plain numpy (the contract; complex step already relies on it) has
+  exact sensitivities, and the reactions and loads are the very code of the
+  kernel. Arrays stay vectorized over designs and positions; the P parameters are a
+  trailing axis. The Monte Carlo of :mod:`assur.tolerance` runs through the compiled
+  kernel; the jets serve gradients and first-order stack-ups at a design.
+
+The tests hold every derivative against complex step of the same formulas
+(random mechanisms of every group type and the seed 003 hitch).
+
+Parameters held fixed: the ``[[solve]]`` roots of a model file (L4, Sp, L7 of
+seed 003) are parameters like the others — a derivative with respect to X01 keeps
+L4 as built (a manufactured length does not re-solve itself); ask for L4 to see
+its own effect.
+
+Examples
+--------
+>>> from assur import examples
+>>> from assur.sensitivity import sensitivities
+>>> m = examples.hitch_003()
+>>> s = sensitivities(m, [0.45, 0.6], params=["X01", "Dgc"], outputs=["Y(56)", "p(ГЦ)"])
+>>> s.jacobian.shape
+(2, 2, 2)
+>>> round(float(s.d("Y(56)", "Dgc")[0]), 12)
+0.0
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ModelError
+from ..fused import OUTPUT_UNITS, parse_output
+from ..groups.base import is_number, signed_name
+from ..statics import GRAVITY, ReactionContextBase, gravity_unit
+from .dual import Dual, base, variables
+
+__all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs"]
+
+_SI = {"length": "m", "angle": "rad", "force": "N", "pressure": "Pa", "mass": "kg",
+       "moment": "N·m", "stiffness": "N/m", "inertia": "kg·m²", "number": "-",
+       "acceleration": "m/s²", "angular_velocity": "rad/s"}
+
+
+def numeric_parameters(mech) -> tuple:
+    """The parameters of ``mech`` the groups, loads, cylinders or machine use, in the
+    model's order (those a sensitivity may be taken with respect to)."""
+    from ..quantities import parameter_quantities
+    used = parameter_quantities(mech)
+    return tuple(p for p in mech.params if p in used)
+
+
+def _param_unit(mech, name) -> str:
+    from ..quantities import parameter_quantities
+    q = parameter_quantities(mech).get(name)
+    return _SI.get(q, "-")
+
+
+def _unit_of(fn, mech, args):
+    u = OUTPUT_UNITS[fn]
+    if "q" in u:
+        c = args[1] if len(args) > 1 else mech.coordinates[0]
+        qu = "rad" if mech.coordinate_kind(c) == "angle" else "m"
+        u = u.replace("q", qu)
+    if fn == "F" and mech.coordinate_kind(args[0]) == "angle":
+        u = "N·m"
+    return u
+
+
+def _qderiv(x, a):
+    """∂x/∂q_a of a dual in the parameters whose parts are duals in q (0 if constant)."""
+    if not isinstance(x, Dual):
+        return 0.0
+
+    def inner(v):
+        return v.der[..., a] if isinstance(v, Dual) else 0.0
+
+    return Dual(inner(x.val), inner(x.der))
+
+
+class _JetContext(ReactionContextBase):
+    """Load and reaction context over jets (the array twin of :mod:`assur.fused`'s
+    symbolic one): the loads' virtual work, the reverse-order pass and the outputs,
+    with the formulas of :mod:`assur.fused` (its docstring lists them)."""
+
+    def __init__(self, mech, pts, value, g, rod_ends):
+        super().__init__(mech, rod_ends)
+        self.pts = pts
+        self._value = value
+        self.g = g
+        self.gravity_unit = gravity_unit(mech)
+        self.moving = False
+        self.k = len(mech.coordinates)
+        self.vw = [0.0] * self.k
+
+    def point(self, p):
+        return self.pts[p]
+
+    def jet(self, p, a):
+        x, y = self.pts[p]
+        return _qderiv(x, a), _qderiv(y, a)
+
+    def value(self, ref):
+        return self._value(ref)
+
+    def inv(self, x):
+        return 1.0 / x
+
+    def record(self, i, j, pt, fx, fy, mz=0.0):
+        self.joints[(i, j)] = (pt, fx, fy, mz)
+
+    # loads (assur.loads contract)
+    def force(self, link, point, fx, fy):
+        self.apply(link, point, fx, fy)
+        for a in range(self.k):
+            jx, jy = self.jet(point, a)
+            self.vw[a] = self.vw[a] + fx * jx + fy * jy
+
+    def couple(self, link, M):
+        self.apply_moment(link, M)
+        for a in range(self.k):
+            self.vw[a] = self.vw[a] + M * self.omega(link, a)
+
+    def nonzero(self, L, what):
+        if np.any(base(L) == 0):
+            raise ModelError(f"{what}: its direction is undefined at some position")
+
+    def spring(self, load, T, L):
+        pass
+
+    def rate(self, link, coordinate=None):
+        a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
+        return self.omega(link, a)
+
+    def omega(self, body, a):
+        pq = self.mech.topology.angle_points(body)
+        if pq is None:
+            return 0.0
+        return self._dphi(pq, a)
+
+    def _dphi(self, pq, a):
+        (px, py), (qx, qy) = self.point(pq[0]), self.point(pq[1])
+        (pxa, pya), (qxa, qya) = self.jet(pq[0], a), self.jet(pq[1], a)
+        dx, dy = qx - px, qy - py
+        return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
+
+    # outputs
+    def coord_index(self, args, fn):
+        if len(args) > 1:
+            if args[1] not in self.mech.coordinates:
+                raise ModelError(f"output {fn}{args}: {args[1]!r} is not a coordinate "
+                                 f"{self.mech.coordinates}")
+            return self.mech.coordinates.index(args[1])
+        if self.k > 1:
+            raise ModelError(f"output {fn}({args[0]}): name the coordinate, e.g. "
+                             f"{fn}({args[0]}, {self.mech.coordinates[0]})")
+        return 0
+
+    def angle_points(self, link):
+        for lk in self.mech.links:
+            if lk.name == link:
+                return lk.tail, lk.head
+        pq = self.mech.topology.angle_points(link) if link in self.mech.topology.bodies \
+            else None
+        if pq is None:
+            raise ModelError(f"no link {link!r} with an angle; links: "
+                             f"{[l.name for l in self.mech.links]}")
+        return pq
+
+    def cylinder(self, name):
+        cyls = {c.name: c for c in self.mech.cylinders}
+        c = cyls.get(name)
+        if c is None:
+            raise ModelError(f"no cylinder {name!r}; cylinders: {sorted(cyls)}")
+        if c.supply is not None or c.side == "auto" or c.coordinate is None:
+            raise ModelError(f"cylinder {name!r} is on a supply line or picks its chamber "
+                             f"(side = \"auto\"): its sensitivities are not available")
+        v = self.value
+        bore, rod, rod2 = v(c.bore), v(c.rod), v(c.rod2)
+        if c.side == "rod":
+            area = 0.25 * np.pi * (bore * bore - rod * rod)
+        else:
+            area = 0.25 * np.pi * (bore * bore - rod2 * rod2)
+        kAeta = v(c.count) * area * v(c.eta_hyd)
+        pmax = v(c.p_relief) - (v(c.dp_throttle) + v(c.dp_line))
+        return c, v(c.eta_mech), kAeta, pmax
+
+    def output(self, fn, args):
+        if fn in ("X", "Y", "dX", "dY", "I") and args[0] not in self.pts:
+            raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
+        if fn in ("X", "Y"):
+            return self.point(args[0])[fn == "Y"]
+        if fn in ("dX", "dY", "I"):
+            return self.jet(args[0], self.coord_index(args, fn))[fn != "dX"]
+        if fn == "phi":
+            P, Q = self.angle_points(args[0])
+            (px, py), (qx, qy) = self.point(P), self.point(Q)
+            return np.arctan2(qy - py, qx - px)
+        if fn == "dphi":
+            return self._dphi(self.angle_points(args[0]), self.coord_index(args, fn))
+        if fn == "length":
+            dd = [x for x in self.mech.distances if x.name == args[0]]
+            if not dd:
+                raise ModelError(f"no distance {args[0]!r}")
+            (ax, ay), (bx, by) = self.point(dd[0].a), self.point(dd[0].b)
+            return np.hypot(bx - ax, by - ay)
+        if fn in ("F", "Fr"):
+            if args[0] not in self.mech.coordinates:
+                raise ModelError(f"output {fn}({args[0]}): not a coordinate "
+                                 f"{self.mech.coordinates}")
+            if fn == "F":
+                return -self.vw[self.mech.coordinates.index(args[0])]
+            if args[0] not in self.act:
+                raise ModelError(f"output Fr({args[0]}): no actuator in the reactions")
+            return self.act[args[0]]
+        if fn in ("Rx", "Ry", "R", "Rm"):
+            key = (args[0], args[1])
+            if key not in self.joints:
+                raise ModelError(f"output {fn}({args[0]}, {args[1]}): no joint of link "
+                                 f"{args[0]!r} on link {args[1]!r}; joints: "
+                                 f"{sorted(self.joints)}")
+            _, fx, fy, mz = self.joints[key]
+            return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
+        c, eta_mech, kAeta, pmax = self.cylinder(args[0])
+        j = self.mech.coordinates.index(c.coordinate)
+        if fn == "p":  # seed 003: Pgc = Fgc/(k_gc·S_gc·η)
+            return -self.vw[j] / (eta_mech * kAeta)
+        if args[1] not in self.pts:
+            raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
+        G = kAeta * pmax * eta_mech / self.jet(args[1], j)[1]  # seed 003 G56, GS6
+        if fn == "G":
+            return G
+        load = self.value(float(args[2]) if _is_float(args[2]) else args[2])
+        return (G - load) / load * 100.0  # seed 003 ΔGS65
+
+
+def _is_float(s):
+    try:
+        float(s)
+        return True
+    except ValueError:
+        return False
+
+
+@dataclass(frozen=True)
+class Sensitivities:
+    """Values and exact sensitivities of outputs over the positions.
+
+    Attributes
+    ----------
+    outputs : tuple of str
+        The outputs, as asked for (:mod:`assur.fused` names).
+    params : tuple of str
+        The parameters differentiated with respect to.
+    value : ndarray, shape (*shape, outputs)
+        The outputs [their units, SI].
+    jacobian : ndarray, shape (*shape, outputs, params)
+        ∂output/∂parameter [output unit / parameter unit, SI].
+    q : ndarray
+        The positions [m or rad].
+    units : mapping of str to str
+        The SI unit of each output.
+    param_units : mapping of str to str
+        The SI unit of each parameter.
+    """
+
+    outputs: tuple
+    params: tuple
+    value: np.ndarray
+    jacobian: np.ndarray
+    q: np.ndarray
+    units: dict = field(default_factory=dict)
+    param_units: dict = field(default_factory=dict)
+
+    def _o(self, output):
+        if output in self.outputs:
+            return self.outputs.index(output)
+        norm = [o.replace(" ", "") for o in self.outputs]
+        key = str(output).replace(" ", "")
+        if key not in norm:
+            raise KeyError(f"{output!r} is not an output; outputs: {list(self.outputs)}")
+        return norm.index(key)
+
+    def d(self, output, param):
+        """∂output/∂param over the positions [output unit / parameter unit]."""
+        if param not in self.params:
+            raise KeyError(f"{param!r} is not among the parameters {list(self.params)}")
+        return self.jacobian[..., self._o(output), self.params.index(param)]
+
+    def values(self, output):
+        """The output itself over the positions [its unit]."""
+        return self.value[..., self._o(output)]
+
+    def unit(self, output, param) -> str:
+        """The unit of ∂output/∂param, e.g. ``"Pa/m"``."""
+        return f"{self.units[self.outputs[self._o(output)]]}/{self.param_units[param]}"
+
+    def __repr__(self):
+        return (f"Sensitivities({len(self.outputs)} outputs × {len(self.params)} params, "
+                f"positions {self.value.shape[:-1]})")
+
+
+def jet_outputs(mech, q, params, outputs, g=None, values=None, step=None):
+    """The outputs as duals in ``params`` (the engine of :func:`sensitivities`).
+
+    Parameters
+    ----------
+    mech : Mechanism
+    q : array_like
+        Positions as for :meth:`Mechanism.solve` [m or rad].
+    params : sequence of str
+        Parameters to differentiate with respect to.
+    outputs : sequence of str
+        :mod:`assur.fused` output names.
+    g : float, optional
+        Gravity [m/s²] (default: the model's).
+    values : mapping, optional
+        Values of the parameters (overrides, arrays over designs) [SI].
+    step : (str, callable), optional
+        Replace one parameter's value v by ``fn(v)`` (the complex-step references of
+        the tests give it an imaginary step: the outputs are then complex).
+
+    Returns
+    -------
+    list of Dual
+        One per output: ``.val`` the values (any nesting of duals in q consumed:
+        plain arrays), ``.der`` the derivatives, trailing axis over ``params``.
+    qarr : ndarray, shape (k, m, n)
+    shape : tuple
+    """
+    from .. import inputs
+    from ..analysis import gravity_of
+
+    params = tuple(params)
+    unknown = [p for p in params if p not in mech.params]
+    if unknown:
+        raise ModelError(f"{mech.name}: {unknown} are not parameters; parameters: "
+                         f"{list(mech.params)}")
+    specs = [parse_output(o) for o in outputs]
+    if values:
+        inputs.check_params(mech, values)
+        mech = mech.with_params(**values)
+    g = gravity_of(mech) if g is None else float(g)
+    raw = {p: np.asarray(mech.value_of(p), float) for p in mech.params}
+    m = max([v.size for v in raw.values()] + [1])
+
+    def per_design(v):
+        v = np.asarray(v, float)
+        return v.reshape(-1, 1) if v.ndim == 1 and v.size > 1 else (v[0] if v.ndim == 1 else v)
+
+    qarr, shape, m, n = mech.coordinate_array(q, m)
+    k = len(mech.coordinates)
+    q3 = qarr.reshape(k, m, n)
+    eye = np.eye(k)
+    qd = {c: Dual(Dual(q3[j], np.broadcast_to(eye[j], (m, n, k))), 0.0)
+          for j, c in enumerate(mech.coordinates)}
+    pvals = dict(zip(params, variables([per_design(raw[p]) for p in params])))
+    allp = {p: pvals.get(p, per_design(raw[p])) for p in mech.params}
+    if step is not None:
+        allp[step[0]] = step[1](allp[step[0]])
+
+    def value(ref):
+        if ref is None:
+            return 0.0
+        if is_number(ref):
+            return float(ref)
+        if ref in qd:
+            return qd[ref]
+        if ref == "__gravity__":
+            return g
+        s = signed_name(ref)
+        if s is not None:
+            return -allp[s]
+        return allp[ref]
+
+    pts = mech.evaluate_positions(qd, allp)
+    topo = mech.topology
+
+    def is_coord(ref):
+        return isinstance(ref, str) and ref in mech.coordinates
+
+    rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
+                                                               is_coord)}
+    ctx = _JetContext(mech, pts, value, g, rod_ends)
+    for ld in mech.loads:
+        ld.apply(ctx)
+    need_reactions = any(fn in ("Rx", "Ry", "R", "Rm", "Fr") for fn, _ in specs)
+    if need_reactions:
+        for g_ in reversed(mech.groups):
+            ctx.links = topo.group_links[g_.name]
+            g_.reactions(ctx)
+    P = len(params)
+    res = []
+    for fn, args in specs:
+        v = ctx.output(fn, args)
+        res.append(_plain(v, (m, n), P))
+    return res, q3, shape, mech
+
+
+def _plain(v, shape, P):
+    """(value, derivatives) of an output as arrays of ``shape`` and ``shape + (P,)``
+    (the parts in q, if any, are the value's own: their derivatives are dropped)."""
+    if not isinstance(v, Dual):
+        return np.broadcast_to(np.asarray(base(v)), shape), np.zeros(shape + (P,))
+    return (np.broadcast_to(np.asarray(base(v.val)), shape),
+            np.broadcast_to(np.asarray(base(v.der)), shape + (P,)))
+
+
+def sensitivities(source, q=None, params=None, outputs=(), *, values=None, g=None,
+                  check=True):
+    """Exact derivatives of outputs with respect to parameters over the positions.
+
+    Parameters
+    ----------
+    source : Mechanism or assur.io.Model
+        The mechanism (a loaded model gives its mechanism and, without ``q``, its range).
+    q : array_like, optional
+        Positions as for :meth:`Mechanism.solve` [m or rad]: shape (n,) or (m, n) for
+        one coordinate, (..., k) for k.
+    params : sequence of str, optional
+        Parameters to differentiate with respect to (default: every numeric
+        parameter the model uses, :func:`numeric_parameters`).
+    outputs : sequence of str
+        Outputs in :mod:`assur.fused` notation, e.g. ``["G(ГЦ, S6)", "p(ГЦ)",
+        "Y(56)", "Rx(0, 5)"]``.
+    values : mapping, optional
+        Parameter values to evaluate at (arrays over designs) [SI].
+    g : float, optional
+        Gravity [m/s²] (default: the model's).
+    check : bool
+        Solve the positions with the kernel first, so that a position that cannot
+        assemble raises :class:`~assur.errors.AssemblyError` naming the group
+        (the jets themselves do not check assembly).
+
+    Returns
+    -------
+    Sensitivities
+        ``jacobian`` of shape (n, outputs, params) for one design, (m, n, outputs,
+        params) for a batch.
+
+    Raises
+    ------
+    ModelError
+        Unknown outputs or parameters.
+    AssemblyError
+        A position does not assemble (``check=True``).
+    """
+    mech = getattr(source, "mechanism", source)
+    if q is None:
+        if not hasattr(source, "range"):
+            raise ModelError("sensitivities: give the positions q (a Mechanism has no range)")
+        q = source.range
+    if not outputs:
+        raise ModelError("sensitivities: name at least one output, e.g. outputs=['Y(56)']")
+    params = numeric_parameters(mech) if params is None else tuple(params)
+    if check:
+        mech.solve(q, values, check_continuity=False)
+    res, q3, shape, m2 = jet_outputs(mech, q, params, outputs, g=g, values=values)
+    m, n = q3.shape[1], q3.shape[2]
+    val = np.stack([r[0] for r in res], axis=-1)  # (m, n, O)
+    jac = np.stack([r[1] for r in res], axis=-2)  # (m, n, O, P)
+    for name, arr in (("value", val), ("derivative", jac)):
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            idx = tuple(int(i) for i in np.argwhere(bad)[0])
+            raise ModelError(f"sensitivities: {name} of {outputs[idx[2]]} at position "
+                             f"{idx[1]} is not finite (a singular position)")
+    out_shape = tuple(shape)
+    val = val.reshape(out_shape + (len(outputs),))
+    jac = jac.reshape(out_shape + (len(outputs), len(params)))
+    qs = q3[0].reshape(out_shape) if len(m2.coordinates) == 1 else \
+        np.moveaxis(q3, 0, -1).reshape(out_shape + (len(m2.coordinates),))
+    units = {o: _unit_of(fn, m2, args) for o, (fn, args) in
+             zip(outputs, (parse_output(o) for o in outputs))}
+    return Sensitivities(tuple(outputs), params, val, jac, qs, units,
+                         {p: _param_unit(m2, p) for p in params})

@@ -1,0 +1,161 @@
+"""Local refinement of a design with exact gradients: scipy's SLSQP on the epigraph
+form of a max–min problem.
+
+Maximising the smallest value of an output over the positions (the capacity at the
+weakest position) is not smooth — the weakest position changes. Written in epigraph
+form it is: maximise t subject to ``output(x, q_i) ≥ t`` at every position q_i, a
+smooth problem whose constraint gradients are the exact sensitivities of
+:func:`assur.sensitivity.sensitivities` (one call gives all positions and all
+parameters). Limits ``output(x, q_i) ≤ c`` or ``≥ c`` (a pressure at most the relief
+setting, a height kept) are constraints of the same kind.
+
+This is the local step after a global search (differential evolution) has found
+the basin; it does not search the design space itself.
+
+Examples
+--------
+>>> from assur import examples
+>>> from assur.sensitivity.refine import local_refine
+>>> m = examples.hitch_003()
+>>> r = local_refine(m, m.solve([0.42]).q().ravel().tolist() + [0.67], "G(ГЦ, 56)",
+...                  {"X01": (0.40, 0.43)})
+>>> r.success and r.value >= r.start_value
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ModelError
+from . import sensitivities
+
+__all__ = ["local_refine", "Refined"]
+
+
+@dataclass(frozen=True)
+class Refined:
+    """Result of :func:`local_refine`.
+
+    Attributes
+    ----------
+    params : dict of str to float
+        The refined values [SI].
+    value, start_value : float
+        The smallest output over the positions after and before [its unit].
+    success : bool
+    message : str
+    nit : int
+        SLSQP iterations.
+    evaluations : int
+        Calls of :func:`sensitivities` (each: all positions, value and gradient).
+    """
+
+    params: dict
+    value: float
+    start_value: float
+    success: bool
+    message: str
+    nit: int
+    evaluations: int
+
+
+def local_refine(mech, q, maximize, bounds, limits=(), *, maxiter=100, ftol=1e-10):
+    """Maximise the smallest ``maximize`` over the positions ``q`` by SLSQP with exact
+    gradients.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    q : array_like, shape (n,)
+        Positions [m or rad].
+    maximize : str
+        An output (:mod:`assur.fused` notation), e.g. ``"G(ГЦ, S6)"``.
+    bounds : mapping of str to (float, float)
+        The design parameters and their bounds [SI].
+    limits : sequence of (str, str, float)
+        ``(output, "<=" or ">=", value)`` at every position [SI].
+    maxiter : int
+    ftol : float
+        SLSQP's tolerance on the objective (scaled by the start value).
+
+    Returns
+    -------
+    Refined
+
+    Raises
+    ------
+    ModelError
+        An unknown parameter, output or relation.
+    """
+    from scipy.optimize import minimize
+
+    names = tuple(bounds)
+    if not names:
+        raise ModelError("local_refine: give at least one parameter with its bounds")
+    for o, rel, _ in limits:
+        if rel not in ("<=", ">="):
+            raise ModelError(f"local_refine: a limit's relation must be one of: ['<=', '>='], "
+                             f"got {rel!r}")
+    outputs = [maximize] + [o for o, _, _ in limits]
+    lo = np.array([bounds[p][0] for p in names], float)
+    hi = np.array([bounds[p][1] for p in names], float)
+    span = np.where(hi > lo, hi - lo, 1.0)
+    x0 = np.array([float(mech.params[p]) for p in names])
+    count = [0]
+    cache = {}
+
+    def ev(z):
+        key = z.tobytes()
+        if key not in cache:
+            x = lo + z * span
+            count[0] += 1
+            s = sensitivities(mech, q, params=names, outputs=outputs,
+                              values=dict(zip(names, x)))
+            cache.clear()
+            cache[key] = (s.value, s.jacobian * span)  # d/dz
+        return cache[key]
+
+    v0, _ = ev((x0 - lo) / span)
+    scale = float(np.abs(v0[:, 0]).max()) or 1.0
+    nv = len(names)
+
+    # variables (z, t): z the scaled parameters in [0, 1], t the bound on the output
+    def obj(w):
+        return -w[-1] / scale
+
+    def obj_jac(w):
+        g = np.zeros_like(w)
+        g[-1] = -1.0 / scale
+        return g
+
+    def cons(w):
+        val, _ = ev(w[:nv])
+        parts = [(val[:, 0] - w[-1]) / scale]
+        for k, (_, rel, c) in enumerate(limits, start=1):
+            d = val[:, k] - c
+            parts.append((-d if rel == "<=" else d) / (abs(c) or 1.0))
+        return np.concatenate(parts)
+
+    def cons_jac(w):
+        _, jac = ev(w[:nv])
+        n = jac.shape[0]
+        rows = [np.hstack([jac[:, 0, :] / scale, -np.ones((n, 1)) / scale])]
+        for k, (_, rel, c) in enumerate(limits, start=1):
+            j = jac[:, k, :] * (-1.0 if rel == "<=" else 1.0) / (abs(c) or 1.0)
+            rows.append(np.hstack([j, np.zeros((n, 1))]))
+        return np.vstack(rows)
+
+    w0 = np.append((x0 - lo) / span, v0[:, 0].min())
+    res = minimize(obj, w0, jac=obj_jac, method="SLSQP",
+                   bounds=[(0.0, 1.0)] * nv + [(None, None)],
+                   constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
+                   options={"maxiter": maxiter, "ftol": ftol})
+    z = np.clip(res.x[:nv], 0.0, 1.0)
+    val, _ = ev(z)
+    x = lo + z * span
+    return Refined(dict(zip(names, (float(v) for v in x))), float(val[:, 0].min()),
+                   float(v0[:, 0].min()), bool(res.success), str(res.message), int(res.nit),
+                   count[0])

@@ -1,0 +1,33 @@
+"""Scale-out (issue 12): a sweep on a Dask LocalCluster of 2 workers gives the same
+results as the in-process run."""
+
+import numpy as np
+import pytest
+
+from assur import io
+from assur.design import load_problem
+from assur.design.scale import Executor, sweep
+
+
+@pytest.mark.slow
+def test_local_cluster_equals_in_process():
+    pb = load_problem(io.bundled("hitch_003_design"))
+    X = pb.sample(3000, seed=4)
+    X[::7, pb.names.index("X03")] += 0.8  # some designs that do not assemble
+    here = sweep(pb, X)
+    seen = []
+    from assur.design.search import optimize
+    de_here = optimize(pb, popsize=5, maxiter=8, seed=6)
+    with Executor(workers=2, chunk=700, progress=lambda d, t: seen.append(d)) as ex:
+        there = sweep(pb, X, executor=ex)
+        # differential evolution with its populations on the cluster: the same search
+        de_there = optimize(pb, popsize=5, maxiter=8, seed=6,
+                            evaluate=lambda Xp: ex.evaluate(pb, Xp))
+    np.testing.assert_array_equal(de_here.x, de_there.x)
+    assert de_here.evaluations == de_there.evaluations
+    assert seen[-1] == len(X)
+    np.testing.assert_array_equal(here.status, there.status)
+    np.testing.assert_array_equal(here.objectives, there.objectives)
+    np.testing.assert_array_equal(here.values, there.values)
+    assert here.reasons == there.reasons
+    assert (~here.feasible).sum() >= len(X) // 7
