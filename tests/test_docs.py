@@ -101,7 +101,7 @@ def test_optional_pages_only_when_present(tmp_path):
     assert gen_optional.render(tmp_path) == ""
     (tmp_path / "tolerance.md").write_text("# Tolerances\n", encoding="utf-8")
     text = gen_optional.render(tmp_path)
-    assert "tolerance\n" in text and "design" not in text and "page" not in text
+    assert "/tolerance\n" in text and "design" not in text and "page" not in text
 
 
 @pytest.mark.parametrize("line,expected", [
