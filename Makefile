@@ -34,6 +34,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/run.py
 	$(PY) benchmarks/simulate.py
 	$(PY) benchmarks/design.py
+	$(PY) benchmarks/sensitivity.py
 
 # The documentation site, offline, warnings as errors; a broken gallery example fails it.
 $(DOCS_STAMP): pyproject.toml | $(PY)

@@ -168,10 +168,11 @@ def test_cli_cycles_writes_tables_figures_and_report(tmp_path, lang, crane):
     assert (tmp_path / "cycles.xlsx").stat().st_size > 0
     conc = pd.read_csv(tmp_path / "cycles_conclusions.csv")
     assert list(conc["key"]) == ["boom_excess", "stick_excess", "dynamic_fall",
-                                 "effective_below"]
+                                 "effective_below", "pump_forces", "pump_dynamic"]
     page = (tmp_path / "cycles.html").read_text(encoding="utf-8")
     if lang == "ru":
         assert "согласуется" in page and "12,666e-3" in page and "S_max2" in page
+        assert "3,335 м" not in page  # ЛВ-185's own notes, not ЛВ-184А's (extends)
         assert "Выводы статьи и модель" in page
     else:
         assert "does not agree" in page and "agrees" in page and "S_max2" in page
@@ -186,3 +187,28 @@ def test_cli_cycles_without_a_drive_fails_with_one_message(tmp_path):
                                  str(tmp_path)])
     assert r.exit_code == 1
     assert "no hydraulic drive" in r.output and "Traceback" not in r.output
+
+
+def test_pump_verdicts_follow_the_drives_speeds():
+    """The paper's conclusion 3: the standard pump with the divider (V = Q/(2f))
+    against the whole flow to one cylinder at a time (V = Q/f). The cycles run at the
+    drive's speeds, and the verdicts rest on their forces' ratios."""
+    from assur.dynamics.cycles import drive_cycles
+    from assur.report.cycles import drive_sweep, pump_conclusions
+    model = io.load(io.bundled("crane_lv184a"))
+    cs = drive_cycles(model.drive)
+    Q = model.drive.pump_flow()
+    speeds = [Q / (2 * b.area) for b in model.drive.branches]
+    np.testing.assert_allclose(np.abs(cs["divider"].qdot[0]), speeds, rtol=1e-12)
+    assert np.count_nonzero(cs["pump_first"].qdot[0]) == 1
+    assert abs(cs["pump_first"].qdot[0, 0]) == pytest.approx(2 * speeds[0], rel=1e-12)
+    dd = drive_sweep(model)
+    v = {x.key: x for x in pump_conclusions(dd)}
+    d = dd.set_index("scenario")
+    r = d.loc["pump_second", "F1_max"] / d.loc["divider", "F1_max"]
+    assert v["pump_forces"].numbers["ratios"]["pump_second"][0] == pytest.approx(r, rel=1e-12)
+    assert v["pump_forces"].agrees == any(all(1.16 <= round(x, 2) <= 2.0 for x in rs)
+                                          for rs in v["pump_forces"].numbers["ratios"].values())
+    # a claimed fall of 10 times is not what the model gives
+    paper = {"pump_forces": (1.16, 2.0), "pump_dynamic": 10.0}
+    assert not {x.key: x for x in pump_conclusions(dd, paper=paper)}["pump_dynamic"].agrees

@@ -70,16 +70,25 @@ def test_many_infeasible_designs_in_one_batch(problem):
     assert len(set(b.reasons)) >= 1 and all("does not assemble" in r for r in b.reasons)
 
 
-def test_engine_refusal_is_isolated(problem):
-    """A design the engine refuses as a whole is split off; the rest is evaluated."""
+def test_engine_refusal_is_isolated():
+    """A design the engine refuses as a whole — the implement's centre of mass fixed at
+    a pose S = Sp where the cylinder cannot reach — is split off the batch with the
+    engine's message; the rest of the batch is evaluated (and the problem needs no
+    constraint)."""
+    from assur.design import Problem, Variable, criterion
     from assur.design.problem import ENGINE
-    X = np.repeat(problem.x0[None], 5, axis=0)
-    # lever pivot on top of the cylinder's frame pivot: the engine refuses that design
-    X[3, problem.names.index("X03")] = X[3, problem.names.index("X01")]
-    X[3, problem.names.index("Y03")] = X[3, problem.names.index("Y01")]
-    b = problem.evaluate(X)
-    assert b.feasible[[0, 1, 2, 4]].all()
-    assert b.status[3] in (ENGINE, ASSEMBLY) and b.reasons[3]
+    mech = io.load(io.bundled("hitch_003")).mechanism
+    obj = criterion("bound", {"quantity": "Y(S6)", "of": "max"}, mech, sense="maximize")
+    S = np.linspace(0.42, 0.67, 8)
+    pb = Problem(mech, S, [Variable("Sp", 0.1, 0.6)], [], [obj])
+    X = np.array([[0.469], [0.1], [0.5], [0.2], [0.55]])
+    b = pb.evaluate(X)
+    assert list(b.status) == [FEASIBLE, ENGINE, FEASIBLE, ENGINE, FEASIBLE]
+    assert b.reasons[1].startswith("refused by the engine: rigid point fixed at a pose "
+                                   "'centre of mass S6' is defined at the pose S = 0.1")
+    for i in (0, 2, 4):
+        y = pb.with_design(X[i]).solve(S).y("S6")
+        assert b.objectives[i, 0] == pytest.approx(y.max(), rel=1e-12)
 
 
 def test_differential_evolution_beats_the_seed(problem):
@@ -89,7 +98,7 @@ def test_differential_evolution_beats_the_seed(problem):
     res = optimize(problem, popsize=10, maxiter=60, seed=1)
     print(f"\nminimum capacity reserve: seed 8.9 %, optimum {res.value:.2f} % "
           f"({res.evaluations} designs in {res.calls} batches)")
-    assert res.feasible
+    assert res.feasible and res.verified == ""
     assert res.value > 8.9 + 5.0
     assert np.all(res.x >= problem.bounds[:, 0]) and np.all(res.x <= problem.bounds[:, 1])
     # one batch per generation (and the start), not one call per design
@@ -114,6 +123,9 @@ def test_nsga2_pareto_front():
         p.write_text(text, encoding="utf-8")
         pb = load_problem(p)
         res = pareto(pb, pop_size=24, generations=8, seed=2)
+        from assur.report.design import pareto_figure
+        png = pareto_figure(pb, res, Path(d) / "front.png")
+        assert png.stat().st_size > 1000
     assert len(res.X) >= 1 and res.batch.feasible.all()
     F = res.batch.scores()
     for i in range(len(F)):
@@ -200,6 +212,11 @@ def test_cli_optimize_writes_a_loadable_best_design(tmp_path):
     assert b.feasible[0] and b.objectives[0, 0] > 8.95
     html = (tmp_path / "design.html").read_text(encoding="utf-8")
     assert "Variables" in html and "X01" in html and "data:image/png;base64" in html
+    from assur.report.design import comparison_html
+    from assur.design.search import optimize
+    res = optimize(pb, popsize=4, maxiter=3, seed=0)
+    ru = comparison_html(pb, res, lang="ru")
+    assert "Переменные проектирования" in ru and "максимизировать" in ru
 
 
 def test_cli_sweep_in_process_to_parquet(tmp_path):
@@ -232,3 +249,95 @@ def test_reductions_equal_the_array_pass(problem):
             y = a.kinematics.y("56")
             np.testing.assert_allclose(b.values[i, :3], [y.min(), y.max(), cyl.pressure.max()],
                                        rtol=1e-10)
+
+
+def test_cli_refuses_a_bad_var_with_one_message(tmp_path):
+    from typer.testing import CliRunner
+    from assur.cli import app
+    r = CliRunner().invoke(app, ["sweep", str(HITCH), "--var", "L44=1:2", "--workers", "0",
+                                 "-o", str(tmp_path / "x.parquet")])
+    assert r.exit_code == 1
+    assert "--var 'L44=1:2': 'L44' is not a parameter" in r.output
+    assert "Traceback" not in r.output
+
+
+def test_capacity_constraint_and_a_point_that_does_not_rise():
+    """A capacity at the lever's point 23 (Python API): where 23 goes down with S
+    (I(23) ≤ 0) the design is infeasible with that reason; elsewhere the minimum
+    capacity equals the array pass's."""
+    from assur.design import Limit, Problem, Variable, criterion
+    from assur.design.problem import LIFT
+    mech = io.load(io.bundled("hitch_003")).mechanism
+    cap = criterion("capacity", {"cylinder": "ГЦ", "point": "23"}, mech,
+                    limit=Limit(60e3, "at_least"))
+    span = criterion("bound", {"quantity": "Y(23)", "of": "span"}, mech, sense="minimize")
+    S = np.linspace(0.42, 0.67, 50)
+    pb = Problem(mech, S, [Variable("X03", 0.0, 0.6), Variable("Y03", 0.6, 1.3)], [cap],
+                 [span])
+    X = np.array([[0.15967816, 0.97725409], [0.25, 1.112]])
+    b = pb.evaluate(X)
+    assert b.status[0] == LIFT
+    kin = pb.with_design(X[0]).solve(S)
+    I = kin.transmission("23")
+    assert I.min() <= 0 and b.where[0] == int(np.argmin(I))
+    assert b.reasons[0] == ("point 23 does not rise with the coordinate: its transmission "
+                            f"number I(23) ≤ 0 at position {b.where[0]} (S = {S[b.where[0]]:.6g})")
+    a = pb.with_design(X[1]).analyze(S)
+    G = a.cylinder("ГЦ").capacity("23")
+    assert b.values[1, 0] == pytest.approx(G.min(), rel=1e-10)
+    assert b.status[1] == (FEASIBLE if G.min() >= 60e3 else CONSTRAINT)
+    y = a.kinematics.y("23")
+    assert b.objectives[1, 0] == pytest.approx(y.max() - y.min(), rel=1e-10)
+
+
+def test_written_design_file_loads_with_the_values(tmp_path):
+    """The best design's file extends the original, writes each value in the file's
+    own unit (an angle in degrees, a length in m or mm, a plain number) and loads
+    back to the same values."""
+    from assur.io._design import write_design_file
+    from assur.quantities import display_units
+    base = io.bundled("hitch_003")
+    mech = io.load(base).mechanism
+    values = {"phiBD": 0.40123456789, "X01": 0.4123456789, "eta": 0.8512345, "Dgc": 0.0812345}
+    p = write_design_file(tmp_path / "best.toml",
+                          base, values, display_units(mech), header=("a header",))
+    text = p.read_text(encoding="utf-8")
+    assert text.startswith("# a header\nextends = ") and ' deg"' in text and ' mm"' in text
+    got = io.load(p).mechanism.params
+    for k, v in values.items():
+        assert got[k] == pytest.approx(v, rel=1e-14)
+
+
+def test_bore_and_relief_as_variables():
+    """--var on the cylinder's bore and relief setting (units as in files): the
+    capacity scales with D² and p_max (k·p_max·A·η/I, seed 003 §4), the pressure with
+    1/D², and the pressure limit follows the relief setting of each design."""
+    pb = load_problem(HITCH, variables=("Dgc=70 mm:90 mm", "Pgc_max=15 MPa:20 MPa"))
+    assert pb.names[-2:] == ("Dgc", "Pgc_max")
+    X = np.repeat(pb.x0[None], 4, axis=0)
+    X[1, -2] = 0.09
+    X[2, -1] = 20e6
+    X[3, -1] = 15e6          # below the working pressure of 16.06 MPa: infeasible
+    b = pb.evaluate(X)
+    G = 1 + b.objectives[:, 0] / 100  # GS6/P6
+    assert G[1] / G[0] == pytest.approx((0.09 / 0.08) ** 2, rel=1e-12)
+    assert G[2] / G[0] == pytest.approx(20 / 17.5, rel=1e-12)
+    assert b.values[1, 2] == pytest.approx(b.values[0, 2] * (0.08 / 0.09) ** 2, rel=1e-12)
+    assert list(b.status[:3]) == [FEASIBLE] * 3 and b.status[3] == CONSTRAINT
+    assert b.reasons[3].startswith("constraint max p(ГЦ) ≤ Pgc_max does not hold")
+    assert b.reason(3).startswith("constraint max p(ГЦ) ≤ 15 MPa does not hold")
+
+
+def test_chunks_and_order_do_not_change_results(problem):
+    """The same designs in chunks of 37 and in another order give the same results
+    (the reasons, made once per batch, included)."""
+    X = problem.sample(500, seed=21)
+    X[::5, problem.names.index("X03")] += 0.8
+    b = problem.evaluate(X)
+    small = load_problem(HITCH, chunk=37)
+    perm = np.random.default_rng(0).permutation(len(X))
+    c = small.evaluate(X[perm])
+    np.testing.assert_array_equal(c.status, b.status[perm])
+    np.testing.assert_array_equal(c.objectives, b.objectives[perm])
+    np.testing.assert_array_equal(c.margins, b.margins[perm])
+    assert c.reasons == [b.reasons[i] for i in perm]

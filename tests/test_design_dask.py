@@ -23,9 +23,14 @@ def test_local_cluster_equals_in_process():
         # differential evolution with its populations on the cluster: the same search
         de_there = optimize(pb, popsize=5, maxiter=8, seed=6,
                             evaluate=lambda Xp: ex.evaluate(pb, Xp))
+        # an existing cluster by its scheduler's address: the same code path
+        with Executor(scheduler=ex.client.scheduler.address, chunk=500) as ex2:
+            assert ex2.describe().startswith("Dask scheduler tcp://")
+            remote = sweep(pb, X[:1000], executor=ex2)
+    assert remote.reasons == here.reasons[:1000]
     np.testing.assert_array_equal(de_here.x, de_there.x)
     assert de_here.evaluations == de_there.evaluations
-    assert seen[-1] == len(X)
+    assert len(X) in seen  # the progress of the sweep reached every design
     np.testing.assert_array_equal(here.status, there.status)
     np.testing.assert_array_equal(here.objectives, there.objectives)
     np.testing.assert_array_equal(here.values, there.values)

@@ -68,8 +68,9 @@ def _cs_call(ufunc, args):
         y, x = args
         yr, xr = re
         off = np.arctan2(yr, xr)
-        a = np.arctan(y / np.where(xr == 0, 1.0, x)) + (off - np.arctan(yr / np.where(xr == 0, 1.0, xr)))
-        b = -np.arctan(x / np.where(yr == 0, 1.0, y)) + (off + np.arctan(xr / np.where(yr == 0, 1.0, yr)))
+        xs, ys = np.where(xr == 0, 1.0, x), np.where(yr == 0, 1.0, y)  # the other branch
+        a = np.arctan(y / xs) + (off - np.arctan(yr / np.real(xs)))
+        b = -np.arctan(x / ys) + (off + np.arctan(xr / np.real(ys)))
         return np.where(np.abs(xr) >= np.abs(yr), a, b)
     if ufunc is np.hypot:
         return np.sqrt(args[0] * args[0] + args[1] * args[1])

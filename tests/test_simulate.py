@@ -323,3 +323,53 @@ def test_k_cylinders_need_a_divider_and_their_branches(crane):
     with pytest.raises(ModelError, match="3 shares for 2 cylinders"):
         Circuit(tuple(dataclasses.replace(c, shares=(0.2, 0.3, 0.5))
                       if c.role == "divider" else c for c in comps))
+
+
+def test_simulation_start_and_hold_in_the_file(crane):
+    """[simulation] start names coordinates (an unknown one is refused at its line);
+    p0 = "hold" starts every branch at the pressure that holds its rod."""
+    text = io.bundled("crane_lv184a").read_text(encoding="utf-8")
+    assert crane.simulation.p0 == "hold"
+    assert crane.simulation.start == {"S2": pytest.approx(1.80)}
+    bad = text.replace('start = { S2 = "S2_start" }', 'start = { S9 = "1.8 m" }')
+    with pytest.raises(ModelFileError, match=r":\d+: simulation\.start\.S9"):
+        io.loads(bad, "crane.toml")
+    r = simulate_model(crane, t_end=0.05, t_eval=[0.0, 0.05])
+    b = crane.drive.branches[1]  # the stick's rod held by its rod side: σ·A·p = −Q
+    assert b.sense * b.area * r.p1[0, 1] == pytest.approx(r.load[0, 1], rel=1e-12)
+    assert r.p1[0, 1] > 0
+
+
+def test_cli_simulate_the_crane(tmp_path):
+    """Two coordinates through the report: a curve per branch, per-branch columns and
+    events with their coordinate, the divider's loss in the balance."""
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    from assur.report.simulation import FIGURES
+    for lang, word in (("ru", "потери в делителе потока"),):
+        out = tmp_path / lang
+        r = CliRunner().invoke(app, ["simulate", str(io.bundled("crane_lv184a")), "-o",
+                                     str(out), "--lang", lang, "--duration", "0.6"])
+        assert r.exit_code == 0, r.output
+        for name in FIGURES:
+            assert (out / f"sim_{name}.png").stat().st_size > 0
+        df = pd.read_csv(out / "simulation.csv")
+        assert {"S1 [m]", "S2 [m]", "p1 S1 [MPa]", "p1 S2 [MPa]", "p_pump [MPa]",
+                "Q_relief S2 [l/min]"} <= set(df.columns)
+        np.testing.assert_allclose(df["p_pump [MPa]"],
+                                   df[["p1 S1 [MPa]", "p1 S2 [MPa]"]].max(axis=1))
+        summary = (out / "simulation_summary.csv").read_text(encoding="utf-8")
+        assert word in summary and "(S1)" in summary
+        assert (out / "simulation.gif").stat().st_size > 0
+
+
+def test_an_overrunning_load_is_reported(crane):
+    """Started at rest near Φ1p0 with no pressure, the stick's load pulls its rod in:
+    the fed chamber's pressure falls below zero, and the result says so."""
+    r = simulate_model(crane, t_end=1.0, s0={"S2": 2.1}, p0=0.0,
+                       t_eval=np.linspace(0.0, 1.0, 101))
+    assert r.status == 0
+    assert r.p1[:, 1].min() < 0
+    assert "S2 falls to" in r.message and "overruns" in r.message

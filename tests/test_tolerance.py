@@ -104,7 +104,7 @@ def test_bundled_file_reads_its_tolerances():
     assert m.mechanism.params["L4"] == pytest.approx(0.661283167, abs=1e-9)
 
 
-def test_sigma_form():
+def test_stdform():
     m = _hitch_with('X01 = { sigma = "0.1 mm" }\nL5 = "+-0.2 mm"\n')
     assert [t.sigma for t in m.tolerances] == pytest.approx([1e-4, 0.2e-3 / 3])
 
@@ -128,6 +128,7 @@ def test_errors_name_the_key_and_line(section, key, problem):
     assert f"t.toml:{line}:" in msg and key in msg and problem in msg, msg
 
 
+@pytest.mark.slow
 def test_cli_writes_tables_histograms_and_report(tmp_path):
     from typer.testing import CliRunner
 

@@ -388,8 +388,9 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
              duration: float = typer.Option(0.0, "--duration",
                                             help="Simulated time in s (default: the "
                                                  "file's [simulation] duration).")):
-    """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6): time
-    series (CSV), figures (PNG), the mechanism's motion (GIF) and an HTML report."""
+    """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6; seed
+    004's crane, two cylinders through a flow divider): time series (CSV), figures
+    (PNG), the mechanism's motion (GIF) and an HTML report."""
     from .dynamics import simulate_model
     from .errors import AssemblyError, ModelError
     from .report.simulation import write_simulation_report
@@ -481,7 +482,8 @@ _SCHED = typer.Option(None, "--scheduler", help="An existing Dask scheduler, "
 
 
 def _bar():
-    return Progress(SpinnerColumn(), TextColumn("{task.description}"), BarColumn(),
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+    return Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False), BarColumn(),
                     TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(),
                     console=err, transient=True)
 
@@ -549,7 +551,8 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
              scheduler: str = _SCHED,
              chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
              output: str = typer.Option("assur-optimize", "-o", "--output",
-                                        help="Output directory.")):
+                                        help="Output directory."),
+             lang: str = typer.Option("en", "--lang", help="Report labels: ru or en.")):
     """Search for the best design (differential evolution over whole populations; with
     two or more objectives, NSGA-II's Pareto front); write it as a model file that
     extends the original, and an HTML report comparing the two."""
@@ -560,6 +563,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
     from .quantities import display_units
     from .report.design import pareto_figure, write_comparison
 
+    _check_lang(lang)
     pb = _design_problem(file, var, positions)
     if not pb.objectives:
         _fail(f"{file}: no objective: add [[design.objectives]] (maximize = … or minimize = …)")
@@ -605,7 +609,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
         best.mechanism.solve(pb.positions)
     except (ModelError, AssemblyError) as e:
         _fail(f"{path}: the written model does not load: {e}")
-    rep = write_comparison(out / "design.html", pb, res)
+    rep = write_comparison(out / "design.html", pb, res, lang=lang)
     rt = Table(title="best design", header_style="bold", title_justify="left")
     for h in ("variable", "original", "best", "bounds"):
         rt.add_column(h, justify="right")
@@ -633,7 +637,7 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
 
     from .errors import AssemblyError, ModelError, SingularPositionError
     from .report.tolerance import display_scale, write_tolerance
-    from .tolerance import _worst, monte_carlo
+    from .tolerance import monte_carlo, worst_kind
 
     _check_lang(lang)
     if samples < 2:
@@ -654,7 +658,7 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
     for o in r.outputs:  # each machine's worst value over the range
         j = r.outputs.index(o)
         k, u = display_scale(r, o)
-        how = _worst(o)
+        how = worst_kind(o)
         nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
         p = r.worst_percentiles(o) if r.assembled.any() else [float("nan")] * 5
         iw = int(np.argmin(r.nominal[:, j]) if how == "min" else np.argmax(r.nominal[:, j]))

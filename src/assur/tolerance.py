@@ -47,6 +47,7 @@ import numpy as np
 from .errors import AssemblyError, ModelError
 
 __all__ = ["Tolerance", "ToleranceResult", "monte_carlo", "first_order", "default_outputs",
+           "worst_kind",
            "PERCENTILES", "DISTRIBUTIONS"]
 
 #: the percentiles reported [%]
@@ -69,32 +70,32 @@ class Tolerance:
         Half-width ±t [SI unit of the parameter]: ±3σ of a normal distribution, or
         the bounds of a uniform one.
     dist : {"normal", "uniform"}
-    sigma : float, optional
-        Standard deviation [SI] of a normal distribution, instead of ``pm``.
+    std : float, optional
+        Standard deviation σ [SI] of a normal distribution, instead of ``pm``.
     """
 
     param: str
     pm: float = 0.0
     dist: str = "normal"
-    sigma_: float | None = None
+    std: float | None = None
 
     def __post_init__(self):
         if self.dist not in DISTRIBUTIONS:
             raise ModelError(f"tolerance of {self.param!r}: dist must be one of: "
                              f"{list(DISTRIBUTIONS)}, got {self.dist!r}")
-        if self.dist == "uniform" and self.sigma_ is not None:
+        if self.dist == "uniform" and self.std is not None:
             raise ModelError(f"tolerance of {self.param!r}: a uniform tolerance is given "
                              f"by its half-width ±t, not by σ")
         s = self.sigma
         if not (math.isfinite(s) and s >= 0.0):
             raise ModelError(f"tolerance of {self.param!r}: the scatter must be finite and "
-                             f"not negative, got ±{self.pm!r}, σ = {self.sigma_!r}")
+                             f"not negative, got ±{self.pm!r}, σ = {self.std!r}")
 
     @property
     def sigma(self) -> float:
         """Standard deviation σ [SI]: t/3 (normal), t/√3 (uniform) or as given."""
-        if self.sigma_ is not None:
-            return float(self.sigma_)
+        if self.std is not None:
+            return float(self.std)
         return float(self.pm) / (3.0 if self.dist == "normal" else math.sqrt(3.0))
 
     def draw(self, rng, n) -> np.ndarray:
@@ -125,9 +126,10 @@ def default_outputs(mech) -> tuple:
     return tuple(out)
 
 
-def _worst(output) -> str:
-    """How a machine's output over the range is summarised: its minimum for a capacity
-    or a reserve (the weakest position), its maximum otherwise (the peak pressure)."""
+def worst_kind(output) -> str:
+    """How a machine's output over the range is summarised, ``"min"`` or ``"max"``:
+    its minimum for a capacity or a reserve (the weakest position), its maximum
+    otherwise (the peak pressure)."""
     return "min" if output.strip().startswith(("G(", "reserve(")) else "max"
 
 
@@ -198,7 +200,7 @@ class ToleranceResult:
         """Each assembled machine's worst value over the range (minimum of a capacity,
         maximum otherwise), shape (N_ok,) [SI]."""
         v = self.values(output)
-        return v.min(axis=1) if _worst(output) == "min" else v.max(axis=1)
+        return v.min(axis=1) if worst_kind(output) == "min" else v.max(axis=1)
 
     def worst_percentiles(self, output, q=PERCENTILES) -> np.ndarray:
         """Percentiles of :meth:`worst`, shape (len(q),) [SI]."""

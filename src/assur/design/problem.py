@@ -143,6 +143,10 @@ class Problem:
         for c in self.objectives:
             if c.sense is None:
                 raise ModelError(f"objective {c.name}: maximize or minimize?")
+        # bounds outside a parameter's physical span (a length ≤ 0, a count < 1) are
+        # refused here, once, rather than design by design
+        from ..inputs import check_params
+        check_params(mechanism, {v.name: np.array([v.low, v.high]) for v in self.variables})
         mech = mechanism
         have = {d.name for d in mech.distances}
         for c in self.constraints + self.objectives:
@@ -200,6 +204,16 @@ class Problem:
         return self.original.with_params(**{v.name: float(xi)
                                             for v, xi in zip(self.variables, x)})
 
+    def verify(self, x) -> str:
+        """Check one design [SI] the way a single analysis does — every position, the
+        branches kept continuous *between* positions too (the batches check the
+        positions only): "" when it holds, else the :class:`AssemblyError` message."""
+        try:
+            self.with_design(x).solve(self.positions)
+        except AssemblyError as e:
+            return str(e)
+        return ""
+
     # ---- evaluation ------------------------------------------------------------------
     def reference(self):
         """The criteria's values for the original design (used by ``"original"``
@@ -226,7 +240,7 @@ class Problem:
         Batch
         """
         X = np.atleast_2d(np.asarray(X, float))
-        if X.ndim != 2 or X.shape[1] != len(self.variables):
+        if X.ndim != 2 or X.shape[1] != len(self.variables) or not len(X):
             raise ModelError(f"design problem {self.name!r}: designs must have shape "
                              f"(m, {len(self.variables)}) for the variables {list(self.names)}, "
                              f"got {X.shape}")
@@ -253,9 +267,9 @@ class Problem:
                                         reduce=True, on_failure="report")
         except (ModelError, AssemblyError) as e:
             if m == 1:
-                nan = {o: np.zeros(1) for o in self.outputs}
+                zero = {o: np.zeros(1) for o in self.outputs}
                 neg = {o: np.full(1, -1) for o in self.outputs}
-                return (Reductions(nan, dict(nan), neg, dict(neg), self._param_fn(X)),
+                return (Reductions(zero, dict(zero), neg, dict(neg), self._param_fn(X)),
                         np.full(1, self.n_positions), [str(e)])
             h = m // 2
             a, b = self._reduce(X[:h]), self._reduce(X[h:])
@@ -339,7 +353,7 @@ class Problem:
         bad_rows = ~ok
         margins[bad_rows] = -1.0
         violated = margins < 0
-        first = np.argmax(violated, axis=1)
+        first = np.argmax(violated, axis=1) if nc else np.zeros(m, np.int64)
         viol = ok & violated.any(axis=1)
         status[viol], detail[viol] = CONSTRAINT, first[viol]
         amount[viol] = margins[viol, first[viol]]
@@ -451,17 +465,19 @@ class Batch:
                     f"its transmission number {list(pb.lifts)[det]} ≤ 0{at}")
         c = pb.constraints[det]
         rel = "≥" if c.limit.sense == "at_least" else "≤"
-        bound = f" {rel} {c.show(lim)}" if lim is not None else f" ({c.limit.sense})"
+        bound = f" {rel} {lim}" if isinstance(lim, str) else \
+            f" {rel} {c.show(lim)}" if lim is not None else f" ({c.limit.sense})"
         return f"constraint {c.name}{bound} does not hold{at}"
 
     def _limits(self):
         """Each constraint's limit when it is the same for every design (a number,
-        ``"original"``, a parameter that is not a variable) [SI], else None."""
+        ``"original"``, a parameter that is not a variable) [SI]; the name of the
+        variable it is; None when no design of the batch violates it."""
         out = []
         for j, c in enumerate(self.problem.constraints):
-            v = c.limit.value
+            v = c.limit.value if c.limit.value is not None else c.args.get("relief")
             if isinstance(v, str) and v in self.problem.names:
-                out.append(None)
+                out.append(v)  # a design variable: named, its value differs per design
                 continue
             ev = np.flatnonzero(self.status == CONSTRAINT)
             ev = ev[self.detail[ev] == j]

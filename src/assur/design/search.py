@@ -45,6 +45,9 @@ class OptimizeResult:
     generations : int
     message : str
         scipy's.
+    verified : str
+        :meth:`Problem.verify` of the best design: "" when it assembles continuously
+        between the positions too, else why not.
     """
 
     x: np.ndarray
@@ -54,6 +57,7 @@ class OptimizeResult:
     calls: int
     generations: int
     message: str
+    verified: str = ""
 
     @property
     def feasible(self) -> bool:
@@ -160,7 +164,8 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
                                  x0=problem.x0 if x0 else None)
     best = problem.evaluate(res.x[None])
     return OptimizeResult(np.asarray(res.x), best, problem.evaluate(problem.x0[None]),
-                          cache.evaluations, cache.calls, int(res.nit), str(res.message))
+                          cache.evaluations, cache.calls, int(res.nit), str(res.message),
+                          problem.verify(res.x) if best.feasible[0] else "")
 
 
 @dataclass

@@ -36,7 +36,8 @@ import numpy as np
 
 from .eom import equations_of_motion
 
-__all__ = ["SCENARIOS", "PERIODS", "Cycle", "cycle", "cycle_forces", "sweep", "strokes"]
+__all__ = ["SCENARIOS", "PERIODS", "Cycle", "cycle", "cycle_forces", "sweep", "strokes",
+           "drive_cycles"]
 
 SCENARIOS = ("combined_equal", "combined_ideal", "separate_second", "separate_first")
 #: seed 004's cycle times: 4 to 20 s by 1 s [s]
@@ -121,6 +122,12 @@ def cycle(start, end, period, scenario, samples=41) -> Cycle:
             v = np.zeros(2)
             v[j] = V * sense[j]
             segs.append((stroke[j] / V, v))
+    return _sampled(scenario, period, a, b, segs, samples)
+
+
+def _sampled(scenario, period, a, b, segs, samples):
+    """The :class:`Cycle` of segments ``(duration, velocity)`` from ``a`` to ``b``."""
+    sense = np.sign(b - a)
     t0, q0 = 0.0, a.copy()
     ts, qs, vs, ss = [], [], [], []
     for i, (dur, v) in enumerate(segs):
@@ -138,6 +145,47 @@ def cycle(start, end, period, scenario, samples=41) -> Cycle:
     q = np.where(sense > 0, np.minimum(q, b), np.maximum(q, b))
     return Cycle(scenario, float(period), np.concatenate(ts), q, np.concatenate(vs),
                  np.concatenate(ss))
+
+
+def drive_cycles(circuit, samples=41):
+    """The work cycle at the rod speeds a drive's pump sets (seed 004, §Г: the
+    standard pump with a flow divider against separate motion), between the drive's
+    stops (:func:`strokes`):
+
+    * ``divider``: both rods from the start at V_j = s_j·Q/f_j (eqs. 65–66; f_j the
+      fed area), each stopping at its end;
+    * ``pump_second``, ``pump_first``: one rod at a time with the whole flow,
+      V_j = Q/f_j (eqs. 67–68), the second coordinate (the stick) first or the
+      first (the boom) first.
+
+    Returns
+    -------
+    dict of str to Cycle
+        ``period`` is the time the cycle takes [s].
+    """
+    a, b = strokes(circuit)
+    if a.shape != (2,):
+        raise ValueError("a drive's cycle moves two coordinates")
+    sense = np.sign(b - a)
+    stroke = np.abs(b - a)
+    Q = circuit.pump_flow()
+    Vc = np.array([br.share * Q / br.area for br in circuit.branches])
+    Vs = np.array([Q / br.area for br in circuit.branches])
+    t = stroke / Vc
+    slow = int(np.argmax(t))
+    rest = np.zeros(2)
+    rest[slow] = Vc[slow] * sense[slow]
+    out = {"divider": _sampled("divider", float(t.max()), a, b,
+                               [(float(t.min()), Vc * sense), (float(t.max() - t.min()), rest)],
+                               samples)}
+    for name, order in (("pump_second", (1, 0)), ("pump_first", (0, 1))):
+        segs = []
+        for j in order:
+            v = np.zeros(2)
+            v[j] = Vs[j] * sense[j]
+            segs.append((float(stroke[j] / Vs[j]), v))
+        out[name] = _sampled(name, float(sum(d for d, _ in segs)), a, b, segs, samples)
+    return out
 
 
 def cycle_forces(mechanism, cycles, g=None):

@@ -88,6 +88,8 @@ METHODS = ("Radau", "BDF", "LSODA")
 #: piston that has just left a stop with zero speed and force may creep back by
 #: rounding, which must not count as a new impact
 CONTACT = 1e-9
+#: a chamber pressure below −NEGATIVE [Pa] is reported in the result's message
+NEGATIVE = 1e3
 #: phase changes (lift-off, impact) after which a simulation is stopped as chattering
 MAX_SWITCHES = 100
 
@@ -358,18 +360,21 @@ class _Machine:
         self.col = {n: getattr(self, n)[:, None] for n in ("sigma", "A", "a1", "a2", "a3",
                                                              "E", "Qin", "p_set", "g_r")}
         self.col["sA"] = self.col["sigma"] * self.col["A"]
+        self.col["V0"], self.col["q0"] = self.V0[:, None], self.q0[:, None]
         self._sum = (lambda a: a[0]) if k == 1 else (lambda a: a.sum(0))
 
     def volume(self, q):
         """V_j [m³] at the coordinates q (k, m)."""
         return self.V0[:, None] + (self.A * self.sigma)[:, None] * (q - self.q0[:, None])
 
-    def _dynamics(self, y, free):
+    def _dynamics(self, y, free, idx=None):
         """q, q̇, p, M, ∂M/∂q, Q, h, u, the line loss and q̈ at the states ``y``
-        (shape (n, m)) with the coordinates ``free`` (bool (k,)) moving."""
+        (shape (n, m)) with the coordinates ``free`` (bool (k,)) moving (their
+        indices ``idx``)."""
         k, col = self.k, self.col
         q, p = y[:k], y[2 * k:3 * k]
-        v = y[k:2 * k] if free.all() else y[k:2 * k] * free[:, None]
+        idx = np.flatnonzero(free) if idx is None else idx
+        v = y[k:2 * k] if idx.size == k else y[k:2 * k] * free[:, None]
         M, dM, Q = self.mech.mechanics(q)
         Q = Q.T
         if k == 1:
@@ -381,7 +386,6 @@ class _Machine:
         u = col["sigma"] * v
         loss = col["a2"] * u + col["a3"] * u * np.abs(u)
         rhs = Q - h + col["sA"] * (p - loss)
-        idx = np.flatnonzero(free)
         if idx.size == k == 1:
             acc = rhs / (M[:, 0, 0] + self.A1[0, 0])
         else:
@@ -395,7 +399,7 @@ class _Machine:
     def _pdot(self, q, p, u):
         """ṗ, V, Q_r [Pa/s, m³, m³/s] (eq. 2 of every branch)."""
         col = self.col
-        V = self.volume(q)
+        V = col["V0"] + col["sA"] * (q - col["q0"])
         if V.min() <= 0:
             j, i = np.argwhere(V <= 0)[0]
             raise ModelError(f"drive: the lumped oil volume V0 + A·σ·(q − q0) of "
@@ -429,17 +433,18 @@ class _Machine:
     def rhs(self, free):
         """f(t, y) for solve_ivp (vectorized: y of shape (n, m))."""
         col, sm = self.col, self._sum
-        A, E2, a2, a3 = col["A"], 2 * col["E"], col["a2"], col["a3"]
+        Aa2, Aa3, AE = col["A"] * col["a2"], col["A"] * col["a3"], col["A"] / (2 * col["E"])
         Qin, Qp, div = col["Qin"], self.Qp, self.divider
+        idx = np.flatnonzero(free)
 
         def f(t, y):
             self.nfev += 1
-            q, v, p, M, dM, Q, h, u, loss, acc = self._dynamics(y, free)
+            q, v, p, M, dM, Q, h, u, loss, acc = self._dynamics(y, free, idx)
             pdot, V, Qr = self._pdot(q, p, u)
             pp = p.max(axis=0) if div else p[0]
             uu = u * u
-            P = [pp * Qp, sm(p * Qr), sm(A * (a2 * uu + a3 * uu * np.abs(u))),
-                 sm(p * p * A * u / E2), -sm(Q * v)]
+            P = [pp * Qp, sm(p * Qr), sm(uu * (Aa2 + Aa3 * np.abs(u))), sm(p * p * u * AE),
+                 -sm(Q * v)]
             if div:
                 P.append(sm((pp - p) * Qin))
             return np.concatenate([v, acc, pdot, P])
@@ -662,6 +667,11 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
         "relief", "divider", "line", "impact", "mechanism_kinetic", "line_kinetic", "loads",
         "oil"))
     log.sort()
+    P = Y[2 * k:3 * k]
+    for j in np.flatnonzero(P.min(axis=1) < -NEGATIVE):
+        i = int(np.argmin(P[j]))
+        message += (f"; p1 of {coords[j]} falls to {P[j, i] / 1e6:.4g} MPa at t = {tt[i]:.4g} "
+                    f"s: a load overruns the rod (its drained side is not modelled)")
     for v in events_log.values():
         v.sort()
 

@@ -217,9 +217,13 @@ def _criterion(c, key, mech, criterion, Limit):
         else None
     kind = _kind_of_output(c.quantity) if c.type == "bound" else _CRITERION_KIND[c.type]
     if sense is None:
-        if c.type == "pressure":
+        if c.type == "pressure":  # the relief setting, shown in the unit the file gave it
+            from ..quantities import display_units
+            cyl = [x for x in mech.cylinders if x.name == (c.cylinder or mech.cylinders[0].name)]
+            relief = cyl[0].p_relief if cyl else None
+            unit = display_units(mech).get(relief) if isinstance(relief, str) else None
             return criterion(c.type, args, mech, limit=Limit(None, "at_most"),
-                             unit=_default_unit(kind))
+                             unit=unit or _default_unit(kind))
         if c.type == "box":
             return criterion(c.type, args, mech, limit=Limit(None, "at_least"),
                              unit=_default_unit(kind))

@@ -87,7 +87,10 @@ def _whole(mpath) -> bool:
     coordinate's ``[range]`` (values, or from/to/count, or from/to/step) and the
     ω(t) table of a ``[motion]`` speed."""
     return ((len(mpath) == 2 and mpath[0] == "range")
-            or (len(mpath) == 3 and mpath[0] == "motion" and mpath[2] == "speed"))
+            or (len(mpath) == 3 and mpath[0] == "motion" and mpath[2] == "speed")
+            # a list of texts replaces the base's, also when its texts are tables of
+            # languages ({ en = "…", ru = "…" }, which look like an array of tables)
+            or (bool(mpath) and mpath[-1] in ("notes", "flags")))
 
 
 def _merge(base, bsrc, bpath, child, csrc, cpath, mpath, out):
@@ -107,7 +110,7 @@ def _merge(base, bsrc, bpath, child, csrc, cpath, mpath, out):
                 _record(cv, csrc, cpath + (k,), mpath + (k,), out)
         out[mpath] = csrc.loc(cpath)
         return merged
-    if _is_table_array(base) and _is_table_array(child):
+    if _is_table_array(base) and _is_table_array(child) and not _whole(mpath):
         key = MATCH_KEYS.get(mpath, "name")
         merged = []
         where = {}  # match value -> merged index

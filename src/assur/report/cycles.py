@@ -8,7 +8,10 @@ The paper (004_4ff0af19c30e8a3a.txt, after eq. 68 and its conclusions) states:
    (stick) higher than combined motion;
 2. with combined motion the dynamic components fall 3–8 times "depending on the
    cycle time";
-3. combined motion is most effective for cycles under 11 s.
+3. combined motion is most effective for cycles under 11 s;
+4. (its conclusion 3) with the standard pump (Q_h = 80 l/min) and a flow divider the
+   max cylinder forces fall 1.16–2.00 times for the various manipulators, and their
+   dynamic components 4 times.
 
 Each becomes a :class:`Verdict` computed from the sweep's numbers
 (:func:`conclusions`): *agrees* or *does not agree*, with the model's figures and
@@ -16,7 +19,10 @@ why. The criteria, stated in the report too: "about x %" holds within ±25 % of 
 (:data:`ABOUT`); "3–8 times" holds when every ratio of the dynamic maxima (both
 cylinders, every T_c) rounds into [3, 8]; "effective" means that separate motion
 needs at least 10 % more force (:data:`EFFECTIVE`), and claim 3 holds when the
-longest such cycle time is within 1 s of 11 s. The paper does not say in which
+longest such cycle time is within 1 s of 11 s; claim 4 compares the drive's own
+speeds (:func:`assur.dynamics.cycles.drive_cycles`: through the divider against
+the whole flow to one cylinder at a time) — the forces' ratios of both cylinders
+must round into [1.16, 2.00], the dynamic parts' be about 4. The paper does not say in which
 order its separate motion runs: both orders are computed and a claim agrees when
 one of them does, which the verdict names. "Combined" is ``combined_equal``
 (eq. 60, V1 = V2); ``combined_ideal`` is tabulated and drawn beside it.
@@ -48,7 +54,8 @@ from .figures import new_figure, titled_axes, to_png_bytes
 from .labels import check_lang, unit
 from .tables import Column, Table, write_csv, write_xlsx
 
-__all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "Verdict", "conclusions", "tables",
+__all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "Verdict", "conclusions",
+           "drive_sweep", "pump_conclusions", "tables",
            "figures", "drive_speeds", "verdict_word", "write_cycles_report"]
 
 FIGURES = ("max_F1", "max_F2", "dynamic_F1", "dynamic_F2", "static")
@@ -56,7 +63,8 @@ FIGURES = ("max_F1", "max_F2", "dynamic_F1", "dynamic_F2", "static")
 #: the paper's conclusions as numbers: the cycle time of claim 1 [s], the excess of
 #: separate over combined max forces (boom, stick) [-], the range of the fall of the
 #: dynamic parts [-], the cycle time under which combined motion is most effective [s]
-PAPER = {"period": 6.0, "excess": (0.90, 0.30), "dynamic": (3.0, 8.0), "effective_below": 11.0}
+PAPER = {"period": 6.0, "excess": (0.90, 0.30), "dynamic": (3.0, 8.0), "effective_below": 11.0,
+         "pump_forces": (1.16, 2.00), "pump_dynamic": 4.0}
 #: "about x": within this share of x [-]
 ABOUT = 0.25
 #: combined motion is "effective" while separate needs this much more force [-]
@@ -95,6 +103,8 @@ _T = {
     "table": Text("Max cylinder forces over the cycle: {0}",
                   ru="Максимальные усилия гидроцилиндров за цикл: {0}"),
     "ratios": Text("Separate ÷ combined (V1 = V2)", ru="Раздельное ÷ совмещённое (V1 = V2)"),
+    "pump_table": Text("At the drive's speeds: through the divider; separate (a), (b)",
+                       ru="При скоростях привода: через делитель; раздельно (а), (б)"),
     "drive": Text("Rod speeds of the drive (eqs. 63–68)",
                   ru="Скорости штоков привода (ур. 63–68)"),
     "conclusions": Text("The paper's conclusions against the model",
@@ -179,6 +189,34 @@ _T = {
                   ru="выигрыш падает ниже {0:.0f} % не при {1:g} с: это зависит от отношения "
                      "динамической составляющей к статической, т. е. от ходов и масс (ходы "
                      "статьи неопределённы)"),
+    "c4_claim": Text("With the standard pump (Q_h = 80 l/min) and a flow divider the max "
+                     "cylinder forces fall {0:.2f}–{1:.2f} times (for the various manipulators).",
+                     ru="При установке штатного насоса (Q_h = 80 л/мин) и делителя потока "
+                        "максимальные усилия гидроцилиндров снижаются в {0:.2f}–{1:.2f} раза "
+                        "(для различных манипуляторов)."),
+    "c5_claim": Text("… and the dynamic components of the forces fall {0:g} times.",
+                     ru="… а динамические составляющие усилий снижаются в {0:g} раза."),
+    "c4_model": Text("separate (the whole flow, V = Q/f) ÷ divider (V = Q/(2f)): (a) {0:.2f} "
+                     "(boom), {1:.2f} (stick); (b) {2:.2f}, {3:.2f}; the cycle takes {4:.2f} s "
+                     "with the divider, {5:.2f} s separate",
+                     ru="раздельное (весь поток, V = Q/f) ÷ с делителем (V = Q/(2f)): (а) "
+                        "{0:.2f} (стрела), {1:.2f} (рукоять); (б) {2:.2f}, {3:.2f}; цикл длится "
+                        "{4:.2f} с с делителем, {5:.2f} с раздельно"),
+    "c4_yes": Text("order {0}: both ratios within {1:g}–{2:g}", ru="порядок {0}: оба отношения "
+                   "в пределах {1:g}–{2:g}"),
+    "c4_no": Text("no order keeps both ratios within {0:g}–{1:g}: the gain depends on the "
+                  "crane's static loads, which the divider does not change",
+                  ru="ни при одном порядке оба отношения не лежат в {0:g}–{1:g}: выигрыш "
+                     "зависит от статических нагрузок крана, которых делитель не меняет"),
+    "c5_yes": Text("order {0}: both ratios within ±{1:.0f} % of {2:g}",
+                   ru="порядок {0}: оба отношения в пределах ±{1:.0f} % от {2:g}"),
+    "c5_no": Text("no order keeps both ratios within ±{0:.0f} % of {1:g}: with the whole flow "
+                  "a rod moves 1/s_j times faster, its dynamic terms (∝ V²) 1/s_j² = 4 times "
+                  "larger at the same position, but the maxima fall where the paths differ",
+                  ru="ни при одном порядке оба отношения не лежат в пределах ±{0:.0f} % от "
+                     "{1:g}: при всём потоке шток движется в 1/s_j раз быстрее, его "
+                     "динамические составляющие (∝ V²) в 1/s_j² = 4 раза больше в том же "
+                     "положении, но максимумы приходятся на разные положения"),
     "speed_row": Text("{0}: f = {1:.4g} m², rod side {2:.4g} m²",
                       ru="{0}: f = {1:.4g} м², штоковая полость {2:.4g} м²"),
     "combined": Text("combined, divider", ru="совмещённое, делитель"),
@@ -291,6 +329,53 @@ def conclusions(df, lang="en", paper=PAPER, about=ABOUT, effective=EFFECTIVE):
                         else _t("c3_no", lang, 100 * effective, Tb)),
                        {"T_star": T_star, "gain": dict(zip(Ts.tolist(), gain.tolist()))}))
     return out
+
+
+def drive_sweep(model, g=None):
+    """Max |F_j| and |F_d,j| [N] of the cycles at the drive's own speeds
+    (:func:`assur.dynamics.cycles.drive_cycles`), a DataFrame with columns
+    ``scenario`` (``divider``, ``pump_second``, ``pump_first``), ``duration`` [s],
+    ``F1_max``, ``F2_max``, ``Fd1_max``, ``Fd2_max``."""
+    import pandas as pd
+
+    from ..dynamics.cycles import cycle_forces, drive_cycles
+    cs = drive_cycles(model.drive)
+    rows = []
+    for (name, c), (F, Fs) in zip(cs.items(), cycle_forces(model.mechanism, list(cs.values()),
+                                                            g)):
+        Fd = np.abs(F - Fs).max(axis=0)
+        Fm = np.abs(F).max(axis=0)
+        rows.append(dict(scenario=name, duration=c.period, F1_max=Fm[0], F2_max=Fm[1],
+                         Fd1_max=Fd[0], Fd2_max=Fd[1]))
+    return pd.DataFrame(rows)
+
+
+def pump_conclusions(dd, lang="en", paper=PAPER, about=ABOUT):
+    """The paper's conclusion 3 (the standard pump with a divider against separate
+    motion) against :func:`drive_sweep`'s ``dd``: two :class:`Verdict` (``pump_forces``,
+    ``pump_dynamic``)."""
+    check_lang(lang)
+    d = dd.set_index("scenario")
+    names = {"pump_second": "a" if lang == "en" else "а",
+             "pump_first": "b" if lang == "en" else "б"}
+    r = {s: [float(d.loc[s, f"F{j}_max"] / d.loc["divider", f"F{j}_max"]) for j in (1, 2)]
+         for s in names}
+    rd = {s: [float(d.loc[s, f"Fd{j}_max"] / d.loc["divider", f"Fd{j}_max"]) for j in (1, 2)]
+          for s in names}
+    lo, hi = paper["pump_forces"]
+    target = paper["pump_dynamic"]
+    model = _t("c4_model", lang, *r["pump_second"], *r["pump_first"],
+               float(d.loc["divider", "duration"]), float(d.loc["pump_second", "duration"]))
+    ok = [s for s in names if all(lo <= round(x, 2) <= hi for x in r[s])]
+    okd = [s for s in names if all(abs(x - target) <= about * target for x in rd[s])]
+    model_d = _t("c4_model", lang, *rd["pump_second"], *rd["pump_first"],
+                 float(d.loc["divider", "duration"]), float(d.loc["pump_second", "duration"]))
+    return [Verdict("pump_forces", _t("c4_claim", lang, lo, hi), model, bool(ok),
+                    _t("c4_yes", lang, names[ok[0]], lo, hi) if ok
+                    else _t("c4_no", lang, lo, hi), {"ratios": r}),
+            Verdict("pump_dynamic", _t("c5_claim", lang, target), model_d, bool(okd),
+                    _t("c5_yes", lang, names[okd[0]], 100 * about, target) if okd
+                    else _t("c5_no", lang, 100 * about, target), {"ratios": rd})]
 
 
 def tables(df, lang="en"):
@@ -446,8 +531,16 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
                          f"its cylinders' stops (add [[drive]] entries, docs/simulation.md)")
     start, end = strokes(model.drive)
     df = sweep(model.mechanism, start, end, periods=periods, g=g)
-    verdicts = conclusions(df, lang)
+    dd = drive_sweep(model, g)
+    verdicts = conclusions(df, lang) + pump_conclusions(dd, lang)
     tabs = tables(df, lang)
+    cols = [Column("duration", "s", dd["duration"].to_numpy(float),
+                   {"en": "the cycle's time", "ru": "время цикла"})]
+    cols += [Column(c, "N", dd[c].to_numpy(float), {"en": f"max |{c[:-4]}|",
+                                                     "ru": f"max |{c[:-4]}|"})
+             for c in ("F1_max", "F2_max", "Fd1_max", "Fd2_max")]
+    tabs.append(Table("pump", {lg: localize(_T["pump_table"], lg) for lg in ("en", "ru")},
+                      tuple(cols)))
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files = []

@@ -11,7 +11,35 @@ import io as _io
 
 import numpy as np
 
-__all__ = ["curves", "comparison_html", "pareto_figure", "write_comparison"]
+__all__ = ["curves", "comparison_html", "pareto_figure", "write_comparison", "TEXT"]
+
+#: the report's words: key -> {lang: text}
+TEXT = {
+    "title": {"en": "{name}: best design against the original",
+              "ru": "{name}: лучший вариант в сравнении с исходным"},
+    "feasible": {"en": "The best design is feasible.",
+                 "ru": "Лучший вариант допустим."},
+    "infeasible": {"en": "The best design is infeasible: {why}",
+                   "ru": "Лучший вариант недопустим: {why}"},
+    "work": {"en": "{n} designs evaluated in {calls} batches over {gens} generations; "
+                   "{pos} positions each.",
+             "ru": "Рассчитано вариантов: {n} ({calls} пакетов, {gens} поколений); "
+                   "положений в каждом: {pos}."},
+    "variables": {"en": "Variables", "ru": "Переменные проектирования"},
+    "objective": {"en": "Objective", "ru": "Целевая функция"},
+    "constraints": {"en": "Constraints", "ru": "Ограничения"},
+    "curves": {"en": "Curves", "ru": "Графики"},
+    "variable": {"en": "variable", "ru": "переменная"},
+    "bounds": {"en": "bounds", "ru": "границы"},
+    "original": {"en": "original", "ru": "исходный"},
+    "best": {"en": "best", "ru": "лучший"},
+    "holds": {"en": "holds", "ru": "выполнено"},
+    "constraint": {"en": "constraint", "ru": "ограничение"},
+    "yes": {"en": "yes", "ru": "да"},
+    "no": {"en": "no", "ru": "нет"},
+    "maximize": {"en": "maximize", "ru": "максимизировать"},
+    "minimize": {"en": "minimize", "ru": "минимизировать"},
+}
 
 
 def curves(problem, x):
@@ -43,13 +71,26 @@ def _unit_of(problem, output):
             return c.unit
     from ..fused import OUTPUT_UNITS, parse_output
     from ..quantities import Unit
-    return Unit(OUTPUT_UNITS[parse_output(output)[0]])
+    fn, args = parse_output(output)
+    text = OUTPUT_UNITS[fn]
+    if "/q" in text:  # an analog: per metre of a cylinder, per radian of a crank
+        mech = problem.mechanism
+        c = args[1] if len(args) > 1 else mech.coordinates[0]
+        text = text.replace("/q", "/rad" if mech.coordinate_kind(c) == "angle" else "/m")
+    return Unit(text)
 
 
-def comparison_html(problem, result, title=None):
+def comparison_html(problem, result, title=None, lang="en"):
     """HTML comparing the best design of ``result`` (an
     :class:`~assur.design.search.OptimizeResult`) with the original: the variables,
-    the objective, the constraints, and the curves of both over the positions."""
+    the objective, the constraints, and the curves of both over the positions;
+    labels in ``lang`` ("en" or "ru")."""
+    if lang not in ("en", "ru"):
+        raise ValueError("lang must be one of: ['en', 'ru']")
+
+    def t(key, **kw):
+        return TEXT[key][lang].format(**kw)
+
     esc = html.escape
     best, orig = result.batch, result.original
     rows_v = "".join(
@@ -57,7 +98,7 @@ def comparison_html(problem, result, title=None):
         f"<td>{esc(v.show(problem.x0[j]))}</td><td>{esc(v.show(result.x[j]))}</td></tr>"
         for j, v in enumerate(problem.variables))
     rows_o = "".join(
-        f"<tr><td>{esc(c.sense)} {esc(c.name)}</td><td>{esc(c.show(orig.objectives[0, j]))}</td>"
+        f"<tr><td>{esc(t(c.sense))} {esc(c.name)}</td><td>{esc(c.show(orig.objectives[0, j]))}</td>"
         f"<td>{esc(c.show(best.objectives[0, j]))}</td></tr>"
         for j, c in enumerate(problem.objectives))
 
@@ -71,7 +112,7 @@ def comparison_html(problem, result, title=None):
         rows_c += (f"<tr><td>{esc(c.name)} {rel} {esc(c.show(lim(c, orig)))}</td>"
                    f"<td>{esc(c.show(orig.values[0, j_]))}</td>"
                    f"<td>{esc(c.show(best.values[0, j_]))}</td>"
-                   f"<td>{'yes' if best.margins[0, j_] >= 0 else 'no'}</td></tr>")
+                   f"<td>{t('yes') if best.margins[0, j_] >= 0 else t('no')}</td></tr>")
     c0, c1 = curves(problem, problem.x0), curves(problem, result.x)
     mech = problem.mechanism
     coord = mech.coordinates[0]
@@ -81,40 +122,43 @@ def comparison_html(problem, result, title=None):
         u = _unit_of(problem, o)
         fig = _figure(5.5, 3.2)
         ax = fig.add_subplot()
-        ax.plot(q, u.of(c0[o]), label="original", color="0.4")
-        ax.plot(q, u.of(c1[o]), label="best", color="C0")
+        ax.plot(q, u.of(c0[o]), label=t("original"), color="0.4")
+        ax.plot(q, u.of(c1[o]), label=t("best"), color="C0")
         ax.set_xlabel(f"{coord} [m]" if mech.coordinate_kind(coord) != "angle" else
                       f"{coord} [rad]")
         ax.set_ylabel(f"{o} [{u.text}]")
         ax.grid(alpha=0.3)
         ax.legend()
         figs += f'<figure><img alt="{esc(o)}" src="data:image/png;base64,{_png(fig)}"></figure>'
-    ttl = esc(title or f"{problem.name}: best design against the original")
-    status = "feasible" if result.feasible else f"infeasible: {best.reason(0)}"
+    ttl = esc(title or t("title", name=problem.name))
+    status = t("feasible") if result.feasible else t("infeasible", why=best.reason(0))
+    work = t("work", n=result.evaluations, calls=result.calls, gens=result.generations,
+             pos=len(problem.positions))
     return f"""<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>{ttl}</title>
+<html lang="{lang}"><head><meta charset="utf-8"><title>{ttl}</title>
 <style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}
 table{{border-collapse:collapse;margin:1em 0}}td,th{{border:1px solid #bbb;padding:.2em .6em}}
 figure{{display:inline-block;margin:.5em}}</style></head><body>
 <h1>{ttl}</h1>
-<p>The best design is {esc(status)}. {result.evaluations} designs evaluated in
-{result.calls} batches over {result.generations} generations; {len(problem.positions)}
-positions each.</p>
-<h2>Variables</h2><table><tr><th>variable</th><th>bounds</th><th>original</th><th>best</th></tr>
+<p>{esc(status)} {esc(work)}</p>
+<h2>{t("variables")}</h2><table><tr><th>{t("variable")}</th><th>{t("bounds")}</th>
+<th>{t("original")}</th><th>{t("best")}</th></tr>
 {rows_v}</table>
-<h2>Objective</h2><table><tr><th>objective</th><th>original</th><th>best</th></tr>{rows_o}</table>
-<h2>Constraints</h2><table><tr><th>constraint</th><th>original</th><th>best</th><th>holds</th></tr>
+<h2>{t("objective")}</h2><table><tr><th>{t("objective")}</th><th>{t("original")}</th>
+<th>{t("best")}</th></tr>{rows_o}</table>
+<h2>{t("constraints")}</h2><table><tr><th>{t("constraint")}</th><th>{t("original")}</th>
+<th>{t("best")}</th><th>{t("holds")}</th></tr>
 {rows_c}</table>
-<h2>Curves</h2>{figs}
+<h2>{t("curves")}</h2>{figs}
 </body></html>
 """
 
 
-def write_comparison(path, problem, result, title=None):
+def write_comparison(path, problem, result, title=None, lang="en"):
     """Write :func:`comparison_html` to ``path``; returns the path."""
     from pathlib import Path
     p = Path(path)
-    p.write_text(comparison_html(problem, result, title), encoding="utf-8")
+    p.write_text(comparison_html(problem, result, title, lang), encoding="utf-8")
     return p
 
 

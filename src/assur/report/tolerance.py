@@ -5,6 +5,7 @@ report; bilingual through :class:`assur.texts.Text`."""
 
 from __future__ import annotations
 
+import base64
 import html as _html
 from pathlib import Path
 
@@ -12,10 +13,10 @@ import numpy as np
 
 from ..texts import Text, localize
 from .figures import new_figure, save, to_png_bytes
-from .html import _data_uri
 from .labels import check_lang
 
-__all__ = ["display_scale", "tolerance_tables", "tolerance_histogram", "tolerance_html", "write_tolerance"]
+__all__ = ["display_scale", "tolerance_tables", "tolerance_histogram", "tolerance_html",
+           "write_tolerance"]
 
 _T = {
     "title": Text("Tolerance analysis", ru="Анализ допусков"),
@@ -60,12 +61,12 @@ def tolerance_tables(r, lang="en"):
     units shown (MPa, kN, mm)."""
     import pandas as pd
     lang = check_lang(lang)
-    from ..tolerance import _worst
+    from ..tolerance import worst_kind
     rows = []
     for o in r.outputs:
         k, u = display_scale(r, o)
         j = r.outputs.index(o)
-        how = _worst(o)
+        how = worst_kind(o)
         nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
         w = r.worst(o)
         row = {_l("output", lang): f"{o} ({_l(how, lang)})", "unit": u,
@@ -90,11 +91,11 @@ def tolerance_histogram(r, output, lang="en"):
     """Histogram of each machine's worst value of ``output`` over the range, with the
     nominal value and P5/P95 marked (a matplotlib Figure)."""
     lang = check_lang(lang)
-    from ..tolerance import _worst
+    from ..tolerance import worst_kind
     k, u = display_scale(r, output)
     w = r.worst(output) / k
     j = r.outputs.index(output)
-    how = _worst(output)
+    how = worst_kind(output)
     nom = (r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()) / k
     fig = new_figure()
     ax = fig.add_subplot()
@@ -138,8 +139,8 @@ def tolerance_html(r, mech, lang="en", figures=None):
     parts.append("</table>")
     parts.append(f"<h2>{e(_l('worst', lang))}</h2>{_table_html(tabs['tolerance_worst'])}")
     for o, fig in (figures or {}).items():
-        parts.append(f"<figure><img alt='{e(o)}' src='{_data_uri(to_png_bytes(fig))}'>"
-                     f"</figure>")
+        png = base64.b64encode(to_png_bytes(fig)).decode()
+        parts.append(f"<figure><img alt='{e(o)}' src='data:image/png;base64,{png}'></figure>")
     parts.append(f"<h2>{e(_l('position', lang))}</h2>"
                  f"{_table_html(tabs['tolerance_positions'])}")
     if r.reasons:

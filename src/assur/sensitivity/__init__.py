@@ -64,7 +64,7 @@ import numpy as np
 from ..errors import ModelError
 from ..fused import OUTPUT_UNITS, parse_output
 from ..groups.base import is_number, signed_name
-from ..statics import GRAVITY, ReactionContextBase, gravity_unit
+from ..statics import ReactionContextBase, gravity_unit
 from .dual import Dual, base, variables
 
 __all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs"]
