@@ -282,33 +282,15 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     Examples
     --------
     >>> from assur import io
-    >>> text = '''
-    ... [model]
-    ... name = "lever"
-    ... coordinates = ["S"]
-    ... [range]
-    ... S = { from = "0.36 m", to = "0.52 m", count = 5 }
-    ... [frame]
-    ... "01" = [0, 0]
-    ... "03" = ["400 mm", "250 mm"]
-    ... [[groups]]
-    ... type = "cylinder_lever"
-    ... name = "I (2,3)"
-    ... base = "01"
-    ... pivot = "03"
-    ... out = "23"
-    ... lever = "0.22 m"
-    ... s = "S"
-    ... branch = -1
-    ... '''
-    >>> model = io.loads(text, name="lever.toml")
-    >>> model.mechanism.points
-    ('01', '03', '23')
+    >>> text = io.bundled("hitch_003").read_text(encoding="utf-8")
+    >>> model = io.loads(text, name="hitch_003.toml")
+    >>> model.mechanism.frame_points
+    ('01', '03', '05', '07')
     >>> try:
-    ...     io.loads(text.replace('"0.22 m"', '"22 deg"'), name="lever.toml")
+    ...     io.loads(text.replace('L5 = "0.480 m"', 'L5 = "22 deg"'), name="hitch_003.toml")
     ... except io.ModelFileError as e:
-    ...     print(e)
-    lever.toml:16: groups[0].lever: expected a length (e.g. "0.48 m"), found "22 deg"
+    ...     print(e.line, e.key_path)
+    32 params.L5
     """
     if not isinstance(text, str):
         raise TypeError(f"loads() takes the file's text as str, got {type(text).__name__}")
