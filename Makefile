@@ -1,12 +1,17 @@
-# assur — the two commands of the README (`make demo`, `make test`) and `make bench`.
+# assur — the two commands of the README (`make demo`, `make test`), `make bench`,
+# `make docs` (the documentation site) and `make wheel-check` (the release artefacts).
 # Each target creates .venv when missing and installs the project with the extras it needs.
 
 PYTHON ?= python3
 VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.assur-installed
+DOCS_STAMP := $(VENV)/.assur-docs-installed
+RELEASE_STAMP := $(VENV)/.assur-release-installed
+#: bundled models that must fail `assur check` (the seeds as printed cannot assemble)
+EXPECTED_FAIL := header_000 combine_002_printed
 
-.PHONY: demo test test-fast bench clean serve chromium
+.PHONY: demo test test-fast bench docs wheel-check clean serve chromium
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -40,6 +45,57 @@ bench: $(STAMP)
 serve: $(STAMP)
 	$(VENV)/bin/assur serve examples/hitch_003.toml
 
+# The documentation site, offline, warnings as errors; a broken gallery example fails it.
+$(DOCS_STAMP): pyproject.toml | $(PY)
+	$(PY) -m pip install -q -e '.[docs]'
+	@touch $(DOCS_STAMP)
+
+docs: $(DOCS_STAMP)
+	MPLBACKEND=Agg $(PY) -m sphinx -b html -W --keep-going -q docs docs/_build/html
+	@echo "docs: docs/_build/html/index.html"
+
+# Wheel and sdist built (python -m build), the wheel installed into a fresh venv
+# outside the checkout, and `assur check` run there on every bundled model (package
+# data): the seeds that cannot assemble must fail with one message, the others pass.
+$(RELEASE_STAMP): pyproject.toml | $(PY)
+	$(PY) -m pip install -q -e '.[release]'
+	@touch $(RELEASE_STAMP)
+
+wheel-check: $(RELEASE_STAMP)
+	rm -rf dist
+	$(PY) -m build --outdir dist . > dist.log 2>&1 || (cat dist.log; exit 1)
+	@if grep -Ei "deprecat|SetuptoolsWarning|BuildBackendWarning" dist.log; then \
+		echo "wheel-check: the build printed a setuptools warning"; exit 1; fi
+	@rm -f dist.log
+	@tar -tzf dist/assur-*.tar.gz | grep -q "src/assur/models/hitch_003.toml" \
+		|| (echo "wheel-check: the sdist lacks the bundled models"; exit 1)
+	@tar -tzf dist/assur-*.tar.gz | grep -q "/LICENSE$$" \
+		|| (echo "wheel-check: the sdist lacks LICENSE"; exit 1)
+	@set -e; tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	$(PYTHON) -m venv "$$tmp/venv"; \
+	"$$tmp/venv/bin/python" -m pip install -q dist/assur-*.whl; \
+	cd "$$tmp"; \
+	"$$tmp/venv/bin/assur" --version; \
+	"$$tmp/venv/bin/python" -m assur --version; \
+	models=$$("$$tmp/venv/bin/python" -c "import importlib.resources as r; print(' '.join(sorted(p.name[:-5] for p in r.files('assur.models').iterdir() if p.name.endswith('.toml'))))"); \
+	test -n "$$models"; n=0; \
+	for name in $$models; do \
+		file=$$("$$tmp/venv/bin/python" -c "from assur.io import bundled; print(bundled('$$name'))"); \
+		case "$$file" in "$$tmp"/*) ;; *) echo "wheel-check: $$name is not in the installed wheel: $$file"; exit 1;; esac; \
+		if echo " $(EXPECTED_FAIL) " | grep -q " $$name "; then \
+			if "$$tmp/venv/bin/assur" check "$$file" > out.txt 2>&1; then \
+				echo "wheel-check: $$name should not assemble"; cat out.txt; exit 1; fi; \
+			grep -q "cannot" out.txt && ! grep -q Traceback out.txt \
+				|| (echo "wheel-check: $$name failed without its message"; cat out.txt; exit 1); \
+			echo "ok: $$name cannot assemble (as the seed prints it)"; \
+		else \
+			"$$tmp/venv/bin/assur" check "$$file" > out.txt 2>&1 || (cat out.txt; exit 1); \
+			echo "ok: $$name"; \
+		fi; n=$$((n + 1)); \
+	done; \
+	echo "wheel-check: $$n bundled models checked from the installed wheel"
+
 clean:
-	rm -rf $(VENV) assur-demo .pytest_cache .hypothesis build dist src/*.egg-info
+	rm -rf $(VENV) assur-demo .pytest_cache .hypothesis build dist src/*.egg-info \
+		docs/_build docs/_generated docs/api docs/api.md docs/auto_gallery docs/auto_tutorials
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +

@@ -62,6 +62,14 @@ gen_groups_drawn.write(GENERATED / "groups.md", GENERATED / "groups")
 gen_optional.write(GENERATED / "optional.md", HERE)
 gen_api.write(HERE)
 
+# every bundled model file has a gallery page that loads it (tests/test_docs.py too)
+_scripts = [p.read_text(encoding="utf-8") for p in (HERE / "gallery").glob("plot_*.py")]
+_missing = [p.stem for p in sorted((HERE.parent / "src" / "assur" / "models").glob("*.toml"))
+            if not any(f'bundled("{p.stem}")' in t or f"examples.{p.stem}(" in t
+                       for t in _scripts)]
+if _missing:
+    raise RuntimeError(f"docs/gallery: no page loads the bundled model(s) {_missing}")
+
 # --- MyST ------------------------------------------------------------------------
 myst_enable_extensions = ["dollarmath", "colon_fence", "deflist"]
 myst_heading_anchors = 3

@@ -1,12 +1,15 @@
 """Absolute values in docstrings: ``|A–B|`` means a distance, not a reST
-substitution. Escape the bars of prose lines before docutils reads them; leave
-tables, literal blocks, doctests and inline literals alone."""
+substitution, and ``(*shape, n)`` unpacks a shape, not emphasis. Escape those bars
+and stars of prose lines before docutils reads them; leave tables, literal blocks,
+doctests and inline literals alone."""
 
 from __future__ import annotations
 
 import re
 
 _LITERAL = re.compile(r"(``.*?``|`[^`]*`)")
+#: a star that unpacks, "(*shape, n)": not the start of emphasis
+_STAR = re.compile(r"([(\[,] ?)\*(?=\w)")
 
 
 def _indent(line: str) -> int:
@@ -15,7 +18,8 @@ def _indent(line: str) -> int:
 
 def _escape_prose(line: str) -> str:
     parts = _LITERAL.split(line)
-    return "".join(p if i % 2 else re.sub(r"(?<!\\)\|", r"\\|", p) for i, p in enumerate(parts))
+    return "".join(p if i % 2 else _STAR.sub(r"\1\\*", re.sub(r"(?<!\\)\|", r"\\|", p))
+                   for i, p in enumerate(parts))
 
 
 def escape(lines: list[str]) -> list[str]:
@@ -40,8 +44,8 @@ def escape(lines: list[str]) -> list[str]:
             doctest = True
             out.append(line)
             continue
-        table_row = s.startswith("|") and s.endswith("|") and s.count("|") >= 3
-        if (table_row or s.startswith(("| ", "+", "..")) or s == "|"
+        # "| " opens a grid-table row or a line block; "+" a table border
+        if (s.startswith(("| ", "+", "..")) or s == "|"
                 or re.match(r"^[=\-+ ]+$", s or "x")):
             out.append(line)
         else:

@@ -18,6 +18,9 @@ SECTIONS = [
         ("assur.io", "model files: TOML, units, validation"),
         ("assur.synthesis", "design conditions (Given/Find)"),
         ("assur.fitting", "parameters fitted to a printed table"),
+        ("assur.design", "synthesis: searching the design space"),
+        ("assur.sensitivity", "exact sensitivities to the parameters"),
+        ("assur.tolerance", "tolerance analysis"),
     ]),
     ("Forces, cylinders, machines", [
         ("assur.analysis", "one call for the whole worksheet"),
@@ -44,6 +47,7 @@ SECTIONS = [
         ("assur.columns", "extra table columns: formulas and sign maps"),
         ("assur.texts", "English and Russian user text"),
         ("assur.cli", "the command line"),
+        ("assur.app", "the interactive page, inline displays, DXF drawings"),
     ]),
 ]
 

@@ -276,7 +276,8 @@ def _fields_table(cls) -> list[str]:
     rows = ["| field | role | unit (plain numbers) | meaning |", "|---|---|---|---|"]
     for f in cls.fields:
         unit = {"length": "m", "angle": "°"}.get(f.quantity or "", "")
-        rows.append(f"| `{f.name}` | {f.role} | {unit} | {' '.join(str(f.doc).split())} |")
+        doc = " ".join(str(f.doc).split()).replace("|", "\\|")
+        rows.append(f"| `{f.name}` | {f.role} | {unit} | {doc} |")
     return rows
 
 
@@ -311,8 +312,8 @@ def write(page: Path, folder: Path) -> None:
         plt.close(fig)
         kind = " ".join(str(cls.kind).split())
         lines += [f"## `{name}` — {kind} ({cls.kind_ru})", ""]
-        doc = (cls.__doc__ or "").strip().split("\n\n")[0]
-        lines += [" ".join(doc.split()), ""]
+        doc = " ".join((cls.__doc__ or "").strip().split("\n\n")[0].split())
+        lines += [doc[:-1] if doc.endswith("::") else doc, ""]
         lines += _fields_table(cls) + [""]
         lines += ["```toml", model_text(name).strip(), "```", ""]
         lines += [f"![{name}](groups/{name}.png)", ""]

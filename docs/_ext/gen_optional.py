@@ -14,7 +14,7 @@ def render(docs: Path) -> str:
     present = [name[:-3] for name in OPTIONAL if (docs / name).is_file()]
     if not present:
         return ""
-    return "```{toctree}\n:maxdepth: 1\n\n" + "".join(f"{p}\n" for p in present) + "```\n"
+    return "```{toctree}\n:maxdepth: 1\n\n" + "".join(f"/{p}\n" for p in present) + "```\n"
 
 
 def write(path: Path, docs: Path) -> None:

@@ -93,6 +93,12 @@ for D in (0.080, 0.063, 0.050):
 transmission_figure = figures.transmission(a)
 
 # %%
+# With the seed's P = 1500 kgf the 80 mm pair uses about half its maximum force —
+# what the real parts of the seed's complex table 5 suggest (0.34 … 0.52):
+share80 = cyl.share(bore=0.080)
+assert 0.3 < share80.min() and share80.max() < 0.6
+
+# %%
 # The seed's other slips (the file's notes): FIS6 is overwritten by hand, delI lacks
 # the factor U54, and P = 1500 is in kgf.
 for note in model.mechanism.notes:

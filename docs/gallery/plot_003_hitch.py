@@ -140,7 +140,28 @@ for i, p in zip((0, -1), GS6MAX_PRINTED):
 stability_figure = figures.stability(a)
 
 # %%
-# The seed's other slips, and where the model resolves them (``notes`` of the file,
-# printed with every report):
+# The seed's other slips (BRIEF.md), and where the model resolves them:
+#
+# * ``k_gc := 2 [м]`` is a count of cylinders, not a length (``count = 2`` of the
+#   file's cylinder);
+# * ``φBD … [м]`` is an angle, 22° (the rigid point ``arm 34``);
+# * in table 3.1 the columns named φ41…φ71 are the angular-velocity analogs
+#   dφ3·U43, dφ3·U53, dφ3·U65·U53, dφ3·U75·U53 — the engine's ``dphi("4")`` …
+#   ``dphi("7")`` — not the angles of the same names; "l56, lS6" of the last table
+#   are I56, IS6;
+# * the "check" X23s, Y23s of table 2.2 uses φ12 = φ13 − acos(…); the cylinder's
+#   angle is π − φ13 − acos(…), and the printed check is off by up to 0.37 m while
+#   the engine's loop closes to 1e-9 m;
+# * δ1 is printed in degrees and δ2 in radians; φS6 is fixed at S = Sp (the pose
+#   point ``centre of mass S6``).
+#
+# Table 3.1's analogs, named as the seed names them:
+dphi = {k: kin.dphi(k) for k in ("4", "5", "6", "7")}
+PHI41_PRINTED = np.array([-0.155, 0.034, 0.158, 0.266, 0.375, 0.498, 0.647, 0.839, 1.098, 1.467])
+assert agrees(dphi["4"], PHI41_PRINTED, 3).all()
+print("'φ41' = dφ4/dS:", np.round(dphi["4"], 3))
+
+# %%
+# The file's notes, printed with every report:
 for note in m.notes:
     print("-", note["en"] if isinstance(note, dict) else note)

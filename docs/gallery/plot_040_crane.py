@@ -86,8 +86,8 @@ assert 1.7 < sep6.F1_max / comb6.F1_max < 1.9 and 3 < sep6.Fd1_max / comb6.Fd1_m
 # ``crane_lv185.toml`` and ``crane_lv215.toml`` extend the first file with their
 # table-1 columns (f2 = 12.266e-3 m², not the printed 12.666e-3: a digit swap that
 # the paper's own V2 = 0.054 m/s confirms):
-for name in ("crane_lv185", "crane_lv215"):
-    other = io.load(io.bundled(name))
+for other in (io.load(io.bundled("crane_lv185")), io.load(io.bundled("crane_lv215"))):
+    name = other.name
     q = other.mechanism.params
     s0 = (float(q["S01"]), float(q["S2_53"]))
     s1 = (float(q["Smax1"]), float(q["S2_146"]))

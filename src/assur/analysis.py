@@ -102,6 +102,14 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
 
     Parameters are those of :meth:`Mechanism.solve` and :func:`assur.statics.solve`;
     ``g`` [m/s²] defaults to the model's gravity (:func:`gravity_of`).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.analysis import analyze
+    >>> a = analyze(examples.hitch_003(), [0.42, 0.67])
+    >>> [round(float(v)) for v in a.cylinder("ГЦ").capacity("S6")]   # GS6, table 4.1 [N]
+    [31354, 29959]
     """
     if g is None:
         g = gravity_of(mech)

@@ -291,6 +291,13 @@ class Kinematics:
 
         Seed 003 §3.1: I56 = dφ3·U53·L56·cos φ5 = dY56/dS; IS6 = dY_S6/dS.
         A vertical load P [N] at the point needs the rod force P·I (before efficiency).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.transmission("S6")]   # seed 003 table 3.1
+        [4.713, 4.933]
         """
         if axis not in ("x", "y"):
             raise ValueError("axis must be one of: ['x', 'y']")

@@ -207,11 +207,28 @@ class Mechanism:
         the frame point ``origin`` (``length`` [m], ``angle`` [rad] from +x; seed 002:
         ``.frame("O3", origin="O1", length="l10", angle="j10")``). Values are numbers
         or parameter names; the polar form is evaluated per design, like any
-        parameter (:class:`assur.groups.Frame`)."""
+        parameter (:class:`assur.groups.Frame`).
+
+        Examples
+        --------
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("m", coordinates=("j1",), params={"l10": 1.209, "j10": -0.124})
+        ...      .frame("O1", 0.0, 0.0).frame("O3", origin="O1", length="l10", angle="j10"))
+        >>> m.frame_points
+        ('O1', 'O3')
+        """
         return self.add(Frame(name=name, x=x, y=y, origin=origin, length=length, angle=angle))
 
     def link(self, name, tail, head) -> "Mechanism":
-        """Name the link whose angle φ_name is the direction ``tail → head``."""
+        """Name the link whose angle φ_name is the direction ``tail → head``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42])
+        >>> round(float(r.phi("3", degrees=True)[0]), 1)   # link 3 = 03 → 23, table 2.1
+        -40.2
+        """
         return self._with(links=self.links + (Link(name, tail, head),))
 
     def distance(self, name, a, b, angle=None) -> "Mechanism":
@@ -231,7 +248,15 @@ class Mechanism:
 
     # ---- loads and actuators ---------------------------------------------------
     def weight(self, point, P, link=None, name=None) -> "Mechanism":
-        """Add a weight ``P`` [N] acting downward at ``point`` (see :mod:`assur.loads`)."""
+        """Add a weight ``P`` [N] acting downward at ``point`` (see :mod:`assur.loads`).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_loads().weight("S6", 27500.0)
+        >>> round(float(m.analyze([0.42]).statics.actuator_force("S")[0]))  # P6·IS6 [N]
+        129614
+        """
         from .loads import Weight
         return self._with(loads=self.loads + (Weight(point, P, link, name),))
 
@@ -289,7 +314,15 @@ class Mechanism:
         return self._with(loads=tuple(loads))
 
     def with_params(self, **values) -> "Mechanism":
-        """Return a copy with some parameters replaced (scalars or arrays over designs)."""
+        """Return a copy with some parameters replaced (scalars or arrays over designs).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_params(L4=0.6613)   # the printed, rounded root
+        >>> float(m.params["L4"])
+        0.6613
+        """
         unknown = sorted(set(values) - set(self.params))
         if unknown:
             raise ModelError(f"mechanism {self.name!r}: unknown parameter(s) {unknown}; "
@@ -669,6 +702,27 @@ class Mechanism:
         Returns
         -------
         Kinematics
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> r = m.solve(np.linspace(0.42, 0.67, 10))      # S [m]
+        >>> np.round(r.phi("6", degrees=True)[[0, -1]], 1)  # seed 003 table 2.1 [°]
+        array([ 88.5, 110.3])
+        >>> np.round(r.transmission("56")[[0, -1]], 3)     # I56 = dY56/dS, table 3.1
+        array([4.459, 2.621])
+
+        A batch of designs, and failures reported instead of raised:
+
+        >>> b = m.solve([0.42, 0.67], params={"L4": [0.60, 0.66, 0.95]}, on_failure="report")
+        >>> b.ok
+        array([[ True,  True],
+               [ True,  True],
+               [False,  True]])
+        >>> print(b.failures[0].split(":")[0])  # the first failure: group, links, where
+        RRR dyad 'III (6,7)' (links 6, 7) cannot assemble at position 0 (S = 0.42) of design 2
         """
         from .kinematics import Kinematics
 
@@ -707,7 +761,19 @@ class Mechanism:
         call; returns :class:`assur.analysis.Analysis` (see :func:`assur.analysis.analyze`).
 
         With ``outputs=[…]`` only those are computed, by the fused kinematics + statics
-        kernel, and a :class:`assur.fused.Fused` is returned (see :meth:`evaluate`)."""
+        kernel, and a :class:`assur.fused.Fused` is returned (see :meth:`evaluate`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> a = examples.hitch_003().analyze(np.linspace(0.42, 0.67, 10))
+        >>> cyl = a.cylinder("ГЦ")
+        >>> round(float(cyl.force[0])), round(float(cyl.capacity("56")[0]))  # table 4.1 [N]
+        (129614, 33139)
+        >>> np.round(a.stability.share("A")[[0, -1]], 1)                   # table 6.1 [%]
+        array([23.8, 26.2])
+        """
         if outputs is not None:
             if qdot is not None or qddot is not None:
                 raise ModelError("analyze(outputs=…) computes static loads only; leave out "
@@ -721,7 +787,19 @@ class Mechanism:
         computed by one fused kinematics + statics kernel per structure; with
         ``reduce=True`` their minimum, maximum and where over the positions of each
         design, without storing the positions. See :mod:`assur.fused` for the
-        output functions and their units."""
+        output functions and their units.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> f = examples.hitch_003().evaluate(np.linspace(0.42, 0.67, 10),
+        ...                                   outputs=["G(ГЦ, 56)", "p(ГЦ)"])
+        >>> round(float(f["G(ГЦ, 56)"][0]))      # lift capacity at 56 [N]
+        33139
+        >>> round(float(f["p(ГЦ)"][-1] / 1e6), 2)  # pressure [MPa]
+        16.06
+        """
         from .fused import evaluate
         return evaluate(self, q, params, outputs, reduce=reduce, on_failure=on_failure, g=g)
 

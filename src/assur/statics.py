@@ -131,7 +131,15 @@ class Statics:
         return c
 
     def reaction(self, i, j):
-        """Force of link ``i`` on link ``j`` at their joint, shape (..., 2) [N]."""
+        """Force of link ``i`` on link ``j`` at their joint, shape (..., 2) [N].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42]).statics
+        >>> [round(float(v)) for v in st.reaction("5", "6")[0]]   # R56, seed 003 table 5.1
+        [45683, 16228]
+        """
         i, j = str(i), str(j)
         if (i, j) in self._joints:
             _, fx, fy, _ = self._joints[(i, j)]

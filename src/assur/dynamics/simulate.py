@@ -779,6 +779,16 @@ def simulate_model(model, **options):
     ------
     ModelError
         The model has no ``[[drive]]`` or no duration.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate_model
+    >>> r = simulate_model(io.load(io.bundled("adapter_lab6")))   # seed 001 lab 6
+    >>> round(r.steady_speed, 4)                  # Q/A [m/s], the lab's 0.0704
+    0.0704
+    >>> round(r.events["lift-off"][0], 3)         # [s]
+    0.083
     """
     if model.drive is None:
         raise ModelError(f"model {model.name!r} has no hydraulic drive: add [[drive]] entries "

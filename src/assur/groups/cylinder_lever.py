@@ -25,6 +25,16 @@ class CylinderLever(Group):
     """Input group: lever ``pivot–out`` turned by the cylinder ``base–out`` of length ``s``.
 
     ``links = (cylinder, lever)``.
+
+    Examples
+    --------
+    >>> from assur import Mechanism
+    >>> m = (Mechanism("lift", coordinates=("S",))
+    ...      .frame("01", 0.0, 0.0).frame("03", 0.40, 0.25)
+    ...      .cylinder_lever("I", base="01", pivot="03", out="23", lever=0.22, s="S",
+    ...                      branch=-1, links=("2", "3")))
+    >>> m.group("I").inputs(), m.group("I").outputs()
+    (('01', '03'), ('23',))
     """
 
     base: str = ""

@@ -186,6 +186,17 @@ class Dyad(Group):
     ``a`` and ``b`` are already known. A radius may be a generalized coordinate,
     which makes this the dyad with a cylinder of variable length (RPR written with
     the cylinder's pin-to-pin length). See the module docstring for the formulas.
+
+    Examples
+    --------
+    >>> from assur import Mechanism
+    >>> m = (Mechanism("four-bar", coordinates=("j1",))
+    ...      .frame("A0", 0.0, 0.0).frame("B0", 0.4, 0.0)
+    ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+    ...      .dyad("II", a="A", b="B0", out="C", ra=0.40, rb=0.30, branch=1,
+    ...            links=("2", "3")))
+    >>> m.points
+    ('A0', 'B0', 'A', 'C')
     """
 
     a: str = ""

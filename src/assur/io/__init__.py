@@ -283,6 +283,19 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
         without a root (or with several) in its bracket; with ``extends``, a
         missing base file or a cycle, and any problem of a key a base file gives
         (located in that file).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> text = io.bundled("hitch_003").read_text(encoding="utf-8")
+    >>> model = io.loads(text, name="hitch_003.toml")
+    >>> model.mechanism.frame_points
+    ('01', '03', '05', '07')
+    >>> try:
+    ...     io.loads(text.replace('L5 = "0.480 m"', 'L5 = "22 deg"'), name="hitch_003.toml")
+    ... except io.ModelFileError as e:
+    ...     print(e.line, e.key_path)
+    32 params.L5
     """
     if not isinstance(text, str):
         raise TypeError(f"loads() takes the file's text as str, got {type(text).__name__}")
@@ -337,6 +350,17 @@ def load(path, *, warn: bool = False) -> Model:
     ModelError
         If ``path`` is not a regular file (a directory, a FIFO, a device), cannot
         be read, or is larger than :data:`MAX_FILE_BYTES`.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> model = io.load(io.bundled("hitch_003"))   # solves its three [[solve]] conditions
+    >>> [s.condition.unknown for s in model.solved]
+    ['L4', 'Sp', 'L7']
+    >>> round(model.mechanism.params["L4"], 6)     # [m]
+    0.661283
+    >>> model.range.shape                          # the [range] positions of S [m]
+    (10,)
     """
     p = Path(path)
     data = read_model_bytes(p, str(path))
