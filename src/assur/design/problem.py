@@ -33,7 +33,7 @@ from .. import diagnostics
 from ..errors import AssemblyError, ModelError
 from ..kernel.emit import CODES_PER_OP
 from ..program import execute
-from .criteria import Criterion, Reductions, lift_outputs
+from .criteria import Reductions, lift_outputs
 
 __all__ = ["Variable", "Problem", "Batch", "FEASIBLE", "ASSEMBLY", "ENGINE", "LIFT",
            "CONSTRAINT", "FAILURE_TEXT"]
