@@ -677,8 +677,7 @@ def statics_outputs(kin, g):
 
     joints_, specs, plan = mech.memo(("fused statics", g), make)
     m, n = kin.m, kin.n
-    qarr = np.ascontiguousarray(np.stack([np.reshape(kin.q(c), -1) for c in mech.coordinates]),
-                                dtype=float)
+    qarr = kin.q_table()
     out = _run(mech, plan, qarr, m, n, len(specs))[0]
     if not np.isfinite(out).all():  # one pass; name the output only when one is not
         _check_finite({f"{f}{tuple(a)}": v for (f, a), v in zip(specs, out)}, "value")

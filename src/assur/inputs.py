@@ -406,26 +406,27 @@ def check_finite(analysis) -> None:
             raise ModelError(f"{name}: the {bad[0]} is not finite (element {bad[1]}): the "
                              f"inputs are outside the range where it can be computed; check "
                              f"the sizes of lengths, loads, bores and efficiencies")
-    items = []
+    items = []   # (what, value or tuple of values)
     dyn = getattr(analysis, "dynamics", None)
     if dyn is not None:
         bad = dyn.statics.first_nonfinite()
         if bad is not None:
             raise ModelError(f"{name}: the {bad[0]} with inertia is not finite (element "
                              f"{bad[1]}): check the masses, speeds and lengths")
-        items.append(("reduced moment of inertia", lambda: dyn.reduced_inertia))
-        items.append(("reduced moment", lambda: dyn.reduced_moment))
+        items.append(("reduced moment of inertia", dyn.reduced_inertia))
+        items.append(("reduced moment", dyn.reduced_moment))
     for name_, cyl in analysis.cylinders.items():
-        items.append((f"pressure of cylinder {name_!r}", lambda c=cyl: c.pressure))
-        items.append((f"force of cylinder {name_!r}", lambda c=cyl: c.force_required))
-        items.append((f"largest force of cylinder {name_!r}", lambda c=cyl: c.force_max))
-    for what, get in items:
-        vals = get()
+        items.append(("pressure of cylinder", name_, cyl.pressure))
+        items.append(("force of cylinder", name_, cyl.force_required))
+        items.append(("largest force of cylinder", name_, cyl.force_max))
+    for what, *whose, vals in items:
         for v in (vals if isinstance(vals, tuple) else (vals,)):
-            a = np.asarray(v, dtype=float)
-            if not np.isfinite(a).all():
-                i = int(np.flatnonzero(~np.isfinite(a.ravel()))[0])
-                raise ModelError(f"mechanism {kin.mechanism.name!r}: the {what} is "
-                                 f"{float(a.ravel()[i])!r} (element {i}): the inputs are outside "
-                                 f"the range where it can be computed; check the sizes of "
-                                 f"lengths, loads, bores and efficiencies")
+            if np.isfinite(v).all():
+                continue
+            a = np.asarray(v, dtype=float).ravel()
+            i = int(np.flatnonzero(~np.isfinite(a))[0])
+            what = f"{what} {whose[0]!r}" if whose else what
+            raise ModelError(f"mechanism {kin.mechanism.name!r}: the {what} is "
+                             f"{float(a[i])!r} (element {i}): the inputs are outside "
+                             f"the range where it can be computed; check the sizes of "
+                             f"lengths, loads, bores and efficiencies")

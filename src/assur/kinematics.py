@@ -89,8 +89,9 @@ class Kinematics:
         self.shape = tuple(shape)
         self.ok = ok
         self.failures = []
-        self._pidx = {p: i for i, p in enumerate(raw["out_pts"])}
-        self._sidx = {s: i for i, s in enumerate(raw["out_sca"])}
+        # the index of each point and scalar among the outputs (shared, read only)
+        self._pidx = raw.get("pidx") or {p: i for i, p in enumerate(raw["out_pts"])}
+        self._sidx = raw.get("sidx") or {s: i for i, s in enumerate(raw["out_sca"])}
         self._kinds = prog.kinds
         k, m, n = self.k, self.m, self.n
         self._pv = raw["pv"].reshape(-1, 2, m, n)
@@ -101,6 +102,9 @@ class Kinematics:
         self._frame = _FramePoints(prog.frame_rows, params, (2, m, n))
         self._sd = raw["sd"].reshape(-1, k, m, n)
         self._sdd = raw["sdd"].reshape(-1, k, k, m, n)
+        #: the kernel's one output buffer that every array above is a view of (one
+        #: finiteness check for all of them); None if the arrays came otherwise
+        self._buffer = raw.get("out")
 
     def _positions(self, i0, i1):
         """The same result restricted to positions i0:i1 (views, no copies)."""
@@ -142,6 +146,8 @@ class Kinematics:
     def first_nonfinite(self):
         """``(what, element)`` of the first value that is NaN or infinite (positions,
         analogs, link angles and distances), or None — one pass over the arrays."""
+        if self._buffer is not None and np.isfinite(self._buffer).all():
+            return None   # the common case: one check of the buffer the arrays view
         for what, arr, names in (("position of point", self._pv, list(self._pidx)),
                                  ("first analog of point", self._pd, list(self._pidx)),
                                  ("second analog of point", self._pdd, list(self._pidx)),
@@ -257,6 +263,11 @@ class Kinematics:
         """Generalized coordinate values [m or rad]."""
         j = 0 if name is None and self.k == 1 else self.coordinates.index(name)
         return self._out(self._q[j])
+
+    def q_table(self):
+        """All generalized coordinates as one C-contiguous array, shape (k, m·n)
+        [m or rad], in the order of :attr:`coordinates` (a view: do not write to it)."""
+        return np.ascontiguousarray(self._q.reshape(self.k, self.m * self.n))
 
     def x(self, point):
         """X coordinate of a point [m]."""

@@ -168,6 +168,21 @@ class Program:
                 i for i, r in enumerate(self.rows) if group_type(r[0]).continuity)
         return c
 
+    def layout(self, out_pts: tuple, out_sca: tuple) -> tuple:
+        """What a run writing ``out_pts``/``out_sca`` needs besides its kernel (made
+        once per output set): the sizes of the six output blocks (points' values, first
+        and second analogs, then the scalars'), the rows of the angles among the
+        scalars (unwrapped along a range), and the index of each point and scalar."""
+        key = ("layout", out_pts, out_sca)
+        lay = self._kernels.get(key)
+        if lay is None:
+            k, npo, nso = self.k, len(out_pts), len(out_sca)
+            lay = self._kernels[key] = (
+                (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k),
+                tuple(i for i, s in enumerate(out_sca) if self.kinds[s] == "angle"),
+                {p: i for i, p in enumerate(out_pts)}, {s: i for i, s in enumerate(out_sca)})
+        return lay
+
     def param_row(self, ref) -> int:
         """Row of a number (literal) or a parameter name."""
         if is_number(ref):
@@ -359,8 +374,7 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         names_p, names_s = tuple(out_pts), tuple(out_sca)
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), (), vector)
     npo, nso = len(names_p), len(names_s)
-    ang = [i for i, s in enumerate(names_s) if prog.kinds[s] == "angle"]
-    sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k)
+    sizes, ang, pidx, sidx = prog.layout(names_p, names_s)
     out = np.empty((sum(sizes), E))
     parts, r0 = [], 0
     for size in sizes:
@@ -403,4 +417,4 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     return dict(pv=parts[0].reshape(npo, 2, E), pd=parts[1].reshape(npo, 2, k, E),
                 pdd=parts[2].reshape(npo, 2, k, k, E), sv=sv, sd=parts[4].reshape(nso, k, E),
                 sdd=parts[5].reshape(nso, k, k, E), status=status, amount=amount,
-                out_pts=names_p, out_sca=names_s)
+                out_pts=names_p, out_sca=names_s, out=out, pidx=pidx, sidx=sidx)

@@ -329,7 +329,9 @@ def _limit(r0: float, w0: float, c: np.ndarray, m: float) -> np.ndarray:
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
     den = m - c                   # m − ∂R_s/∂P [-]
     if excess >= 0:  # bounded where den > 0 (excess/den), unbounded where den ≤ 0
-        return np.divide(excess, den, out=np.full(np.shape(den), np.inf), where=den > 0)
+        out = np.empty(np.shape(den))
+        out.fill(np.inf)
+        return np.divide(excess, den, out=out, where=den > 0)
     # no weight where den ≥ 0 (0 at den > 0: max(excess, 0)/den), unbounded where den < 0
     return np.where(den < 0, np.inf, 0.0)
 
@@ -381,16 +383,24 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
     """
     p = np.asarray(implement_weight, dtype=float)
     x = np.asarray(implement_x, dtype=float)
-    if not np.isfinite(p).all():
-        raise ValueError("implement_weight [N] must be finite")
-    if (p < 0).any():
-        raise ValueError(f"implement_weight acts downward and must be ≥ 0 N; smallest is "
-                         f"{p.min()} N")
+    if p.ndim == 0:   # one weight (the common case): Python-float checks, no broadcasting
+        p = float(p)
+        if not math.isfinite(p):
+            raise ValueError("implement_weight [N] must be finite")
+        if p < 0:
+            raise ValueError(f"implement_weight acts downward and must be ≥ 0 N; it is {p} N")
+        shape = x.shape
+    else:
+        if not np.isfinite(p).all():
+            raise ValueError("implement_weight [N] must be finite")
+        if (p < 0).any():
+            raise ValueError(f"implement_weight acts downward and must be ≥ 0 N; smallest is "
+                             f"{p.min()} N")
+        shape = np.broadcast_shapes(p.shape, x.shape)
+        if p.shape != shape:
+            p = np.broadcast_to(p, shape)
     if not np.isfinite(x).all():
         raise ValueError("implement_x [m] must be finite")
-    shape = np.broadcast_shapes(p.shape, x.shape)
-    if p.shape != shape:
-        p = np.full(shape, p) if p.ndim == 0 else np.broadcast_to(p, shape)
     if x.shape != shape:
         x = np.broadcast_to(x, shape)
 
@@ -401,7 +411,7 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
     # moments about the other axle give R_s, about the steered axle R_o (module notes)
     r_s = (mom_o + p * (x - xo)) / span
     r_o = (mom_s + p * (xs - x)) / span
-    total = weight + p
+    total = weight + p if isinstance(p, np.ndarray) else np.full(shape, weight + p)
     reactions = {n: (r_s if n == s else r_o) for n in machine.axles}
     shares = {n: 100.0 * reactions[n] / total for n in machine.axles}
 

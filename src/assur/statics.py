@@ -507,13 +507,17 @@ def _solve_fused(kin, g):
 
     mech = kin.mechanism
     joints_, _, out = fused.statics_outputs(kin, g)
-    # the outputs' rows: Rx, Ry, Rm of each joint, then F, Fr of each coordinate
-    joints = {(i, j): (pt, out[3 * r], out[3 * r + 1], out[3 * r + 2])
-              for r, (i, j, pt) in enumerate(joints_)}
-    r0 = 3 * len(joints_)
-    vw = {c: out[r0 + 2 * a] for a, c in enumerate(mech.coordinates)}
-    act = {c: out[r0 + 2 * a + 1] for a, c in enumerate(mech.coordinates)
-           if fused.has_actuator(mech, c)}
+    actuated = mech.memo(("statics: fused actuators",), lambda: tuple(
+        (c, fused.has_actuator(mech, c)) for c in mech.coordinates))
+    # the outputs' rows, in order: Rx, Ry, Rm of each joint, then F, Fr of each coordinate
+    rows = iter(out)
+    joints = {(i, j): (pt, next(rows), next(rows), next(rows)) for i, j, pt in joints_}
+    vw, act = {}, {}
+    for c, has in actuated:
+        vw[c] = next(rows)
+        fr = next(rows)
+        if has:
+            act[c] = fr
 
     def residual():
         return _residual(kin, _applied(kin, None, None, g), joints)
