@@ -209,13 +209,12 @@ class Machine:
     @cached_property
     def _constants(self):
         """What :func:`axle_reactions` needs of the machine alone, made once: x of the
-        steered and the other axle [m], the moments of the weights and counterweights
-        about each [N·m], the steered axle's reaction and the weight with and without
-        the counterweights [N]."""
+        steered and the other axle [m], the moment of the weights and counterweights
+        about the other axle [N·m], the steered axle's reaction and the weight with
+        and without the counterweights [N]."""
         xs, xo = self.axles[self.steered], self.axles[self.other]
         fixed = self.weights + self.counterweights
         return (xs, xo, sum(pi * (xi - xo) for _, pi, xi in fixed),
-                sum(pi * (xs - xi) for _, pi, xi in fixed),
                 self._steered_reaction(fixed), self.weight,
                 self._steered_reaction(self.weights), sum(w[1] for w in self.weights))
 
@@ -324,16 +323,20 @@ class StabilityResult:
         return pd.DataFrame(cols, index=index)
 
 
-def _limit(r0: float, w0: float, c: np.ndarray, m: float) -> np.ndarray:
-    """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty."""
+def _limit(r0: float, w0: float, c: np.ndarray, m: float, masks=None) -> np.ndarray:
+    """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty.
+    ``masks``: ``(m − c, m − c > 0, m − c < 0)`` when the caller has them (both
+    limits of :func:`axle_reactions` share them)."""
+    den, pos, neg = masks if masks is not None else (m - c, None, None)
+    if pos is None:
+        pos, neg = den > 0, den < 0
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
-    den = m - c                   # m − ∂R_s/∂P [-]
     if excess >= 0:  # bounded where den > 0 (excess/den), unbounded where den ≤ 0
         out = np.empty(np.shape(den))
         out.fill(np.inf)
-        return np.divide(excess, den, out=out, where=den > 0)
+        return np.divide(excess, den, out=out, where=pos)
     # no weight where den ≥ 0 (0 at den > 0: max(excess, 0)/den), unbounded where den < 0
-    return np.where(den < 0, np.inf, 0.0)
+    return np.where(neg, np.inf, 0.0)
 
 
 def axle_reactions(machine: Machine, implement_weight: ArrayLike,
@@ -363,8 +366,10 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
 
     Notes
     -----
-    Moments about the other axle give each reaction (module notes; seed 003 §6,
-    ``R_A·L = P_гр·(a + L) + P_мсха·b − P6·XS6``; seed 001 lab 1 eq. 15, 17). The
+    Moments about the other axle give the steered axle's reaction and the vertical
+    balance the other's — the same as its moments about the steered axle (module
+    notes; seed 003 §6, ``R_A·L = P_гр·(a + L) + P_мсха·b − P6·XS6``; seed 001 lab 1
+    eq. 15, 17). The
     maximum implement weight solves ``R_s(P) = m·(W_0 + P)`` with the implement at
     ``implement_x``; it does not depend on ``implement_weight`` and is ``np.inf``
     when the implement loads the steered axle by at least ``m`` of its own weight
@@ -406,23 +411,27 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
 
     s = machine.steered
     # the machine's own numbers, made once per machine (Machine._constants)
-    xs, xo, mom_o, mom_s, r_cw, weight, r_bare, w_bare = machine._constants
+    xs, xo, mom_o, r_cw, weight, r_bare, w_bare = machine._constants
     span = xs - xo
-    # moments about the other axle give R_s, about the steered axle R_o (module notes)
-    r_s = (mom_o + p * (x - xo)) / span
-    r_o = (mom_s + p * (xs - x)) / span
-    total = weight + p if isinstance(p, np.ndarray) else np.full(shape, weight + p)
-    reactions = {n: (r_s if n == s else r_o) for n in machine.axles}
-    shares = {n: 100.0 * reactions[n] / total for n in machine.axles}
-
     c = (x - xo) / span                       # ∂R_s/∂P [-]
+    # moments about the other axle give R_s, the vertical balance R_o (module notes)
+    r_s = mom_o / span + p * c
+    total = weight + p                        # [N]: a number for one implement weight
+    r_o = total - r_s
+    reactions = {n: (r_s if n == s else r_o) for n in machine.axles}
+    per_cent = 100.0 / total
+    shares = {n: reactions[n] * per_cent for n in machine.axles}
     m = machine.min_share
-    g_cw = _limit(r_cw, weight, c, m)
-    g_bare = _limit(r_bare, w_bare, c, m)
+    steerable = r_s >= m * total
+    if not isinstance(total, np.ndarray):
+        total = np.full(shape, total)
+    den = m - c                               # m − ∂R_s/∂P [-]
+    masks = (den, den > 0, den < 0)
+    g_cw = _limit(r_cw, weight, c, m, masks)
+    g_bare = _limit(r_bare, w_bare, c, m, masks)
     return StabilityResult(
         reactions=reactions, shares=shares, steered=s, min_share=m,
-        total_weight=total, steered_share=shares[s],
-        steerable=r_s >= m * total,
+        total_weight=total, steered_share=shares[s], steerable=steerable,
         max_implement_weight=g_cw,
         max_implement_weight_without_counterweights=g_bare)
 
