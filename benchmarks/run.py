@@ -216,6 +216,29 @@ KIN_POINTS = ("23", "34", "45", "56", "67", "S6")
 KIN_RATIOS = (("4", "3"), ("5", "3"), ("6", "5"), ("7", "5"))
 
 
+def where_b(mech, n, budget):
+    """Where (b)'s time goes at N = n: the generated kernel alone writing into outputs
+    allocated once (no continuity check, no unwrap), against filling fresh memory of
+    the same size (the first touch of each page, which the OS zeroes) — the part of a
+    fresh result that no kernel can avoid."""
+    from assur.kernel import run as KR
+    from assur.program import execute
+
+    prog = mech.program()
+    ptab, trig, _ = mech.prepared(prog)
+    q = np.ascontiguousarray(np.linspace(S_MIN, S_MAX, n)[None, :])
+    raw = execute(prog, ptab, q, n)               # the outputs' layout, and a warm-up
+    out, status, amount = np.empty_like(raw["out"]), np.empty(n, np.int64), np.empty(n)
+    kern = prog.kernel()
+    funcs = {"kernel": lambda: KR.run(kern, ptab, trig, q, n, False, out, amount, status),
+             "fill": lambda: np.empty_like(out).fill(0.0)}
+    best, _, _ = time_interleaved(funcs, min_reps_for(n), 0.5 * budget)
+    print(f"    where the time goes at N={fmt_n(n)}: the kernel alone into outputs allocated "
+          f"once {best['kernel'] * 1e3:.1f} ms ({rate(n, best['kernel']):.3e} positions/s); "
+          f"filling fresh memory of the result's size ({out.nbytes / n:.0f} B/position) "
+          f"{best['fill'] * 1e3:.1f} ms (the OS zeroes each new page on first touch)")
+
+
 def assur_pipeline(mech, S, P6):
     """``mech.analyze(S)``, then every value ``seed003_numpy.pipeline`` computes, read
     through the public API (this is what is timed). Keys follow the peer's names;
@@ -694,6 +717,7 @@ def main(argv=None):
         checks.append((n, check_hitch(last["cc"], last["numpy"])))
         del last
     print_checks("hitch_003", checks)
+    where_b(hitch, sizes[-1], args.budget)
     ok_all &= all(c.ok for _, c in checks)
     print()
 

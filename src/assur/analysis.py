@@ -9,6 +9,7 @@ from __future__ import annotations
 from . import statics as _statics
 from .inputs import check_finite
 from .hydraulics import cylinder_results
+from .motion import rod_rates
 
 __all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics", "add_lift_test"]
 
@@ -116,7 +117,6 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     kin = mech.solve(q, params=params, **solve_kw)
     notes = []
     if qdot is None and qddot is None:
-        from .motion import rod_rates
         rates = rod_rates(kin)   # the rods' [motion]: inertia loads without Python
         if rates is not None:
             qdot, qddot = rates

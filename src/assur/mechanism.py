@@ -22,6 +22,7 @@ from . import diagnostics, inputs
 from .errors import AssemblyError, ModelError
 from .groups import Distance, Frame, Group, Link, registry
 from .groups.base import is_number, ref_value, signed_name
+from .kinematics import Kinematics
 from .program import compile_program, execute, trig_table
 from .topology import Topology, build_topology
 
@@ -724,8 +725,6 @@ class Mechanism:
         >>> print(b.failures[0].split(":")[0])  # the first failure: group, links, where
         RRR dyad 'III (6,7)' (links 6, 7) cannot assemble at position 0 (S = 0.42) of design 2
         """
-        from .kinematics import Kinematics
-
         if on_failure not in ("raise", "report"):
             raise ValueError("on_failure must be one of: ['raise', 'report']")
         inputs.check_params(self, params)
