@@ -117,11 +117,20 @@ class Kinematics:
         b.ok = self.ok[sl]
         b._pv, b._pd, b._pdd = self._pv[sl], self._pd[sl], self._pdd[sl]
         b._sv, b._sd, b._sdd = self._sv[sl], self._sd[sl], self._sdd[sl]
+        b._buffer = None   # the views are of part of the buffer
         b._frame = self._frame.sliced(sl) if hasattr(self._frame, "sliced") else \
             {k: v[sl] for k, v in self._frame.items()}
         return b
 
     # ---- helpers -----------------------------------------------------------------
+    @property
+    def output_buffer(self):
+        """The one array, shape (output rows, m·n), that the kernel wrote and every
+        position, analog, angle and distance of this result views — what
+        ``Mechanism.solve(..., out=result)`` writes into again; None for a part of a
+        result (:meth:`positions`)."""
+        return self._buffer
+
     @property
     def points(self):
         """Names of the moving points in this result (frame points are available too)."""

@@ -678,7 +678,7 @@ class Mechanism:
         return pts
 
     def solve(self, q, params: Mapping | None = None, *, outputs=None, on_failure="raise",
-              check_continuity=True):
+              check_continuity=True, out=None):
         """Positions and exact kinematic analogs over the generalized coordinate(s).
 
         Parameters
@@ -699,6 +699,12 @@ class Mechanism:
         check_continuity : bool
             For k = 1, check that no dyad opens or passes a dead point *between*
             consecutive positions (cubic Hermite of the squared triangle height).
+        out : Kinematics, optional
+            An earlier result of this mechanism with the same ``outputs`` and as many
+            designs × positions: this solve writes into its memory instead of new
+            memory (a sweep of one size repeated many times; fresh memory costs the
+            OS's zeroing of every page on first touch). The earlier result then
+            holds this solve's values; keep using only the one returned.
 
         Returns
         -------
@@ -738,7 +744,16 @@ class Mechanism:
             raise ModelError(f"mechanism {self.name!r}: parameters describe {ptab.shape[1]} "
                              f"designs but the coordinates {m}")
         check = bool(check_continuity and len(self.coordinates) == 1 and n > 1)
-        res = execute(prog, ptab, qarr, n, check, trig=trig)
+        buf = None
+        if out is not None:
+            if not isinstance(out, Kinematics):
+                raise ValueError(f"out must be a result of Mechanism.solve (Kinematics), got "
+                                 f"{type(out).__name__}")
+            if out.output_buffer is None:
+                raise ValueError("out must be a whole result of Mechanism.solve, not a part "
+                                 "of one (Kinematics.positions)")
+            buf = out.output_buffer
+        res = execute(prog, ptab, qarr, n, check, trig=trig, out_buffer=buf)
         status = res["status"]
         failed = status >= 0
         if pose_failures and not failed.any():

@@ -357,11 +357,13 @@ def _refine_continuity(prog, ptab, qarr, n, status, flagged, rows, depth):
 
 
 def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=(),
-            depth=0, trig=None):
+            depth=0, trig=None, out_buffer=None):
     """Run the kernel; returns the raw output arrays and the status per element.
 
     ``rows`` (a prefix of the program's groups) and ``out_pts``/``out_sca`` run a
     part of the program (pre-passes at a pose, refinements of the continuity check).
+    ``out_buffer``: the array to write the outputs into, shape (rows, k·E) as the
+    returned ``out`` (float64, C order), instead of a new one.
     """
     k, E = qarr.shape
     # the first small calls of a process: numpy evaluates the same code (no numba start-up)
@@ -375,7 +377,16 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), (), vector)
     npo, nso = len(names_p), len(names_s)
     sizes, ang, pidx, sidx = prog.layout(names_p, names_s)
-    out = np.empty((sum(sizes), E))
+    if out_buffer is None:
+        out = np.empty((sum(sizes), E))
+    elif (out_buffer.shape != (sum(sizes), E) or out_buffer.dtype != np.float64
+          or not out_buffer.flags.c_contiguous or not out_buffer.flags.writeable):
+        raise ValueError(f"out: this solve writes {sum(sizes)} output rows × {E} designs·"
+                         f"positions into one writeable C-ordered float64 array; the one given "
+                         f"is {out_buffer.dtype} of shape {out_buffer.shape}: give a result of "
+                         f"the same outputs and size")
+    else:
+        out = out_buffer
     parts, r0 = [], 0
     for size in sizes:
         parts.append(out[r0:r0 + size])
