@@ -30,33 +30,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .geometry import geometry, pose
+from .geometry import convex_hull, geometry, pose
 
 __all__ = ["write_dxf", "dxf_bytes"]
 
 #: AutoCAD colour indices given to the links in turn
 _COLORS = (1, 3, 5, 6, 4, 2, 30, 140, 200, 94)
-
-
-def _hull(pts):
-    """Convex hull, counter-clockwise (collinear points give their two ends)."""
-    pts = sorted(set(map(tuple, np.round(np.asarray(pts, dtype=float), 12))))
-    if len(pts) <= 2:
-        return pts
-
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower, upper = [], []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return lower[:-1] + upper[:-1]
 
 
 def _label(geo, i, mech):
@@ -103,7 +82,7 @@ def _document(kin, positions, design=None):
             layer = f"link_{b['name']}"
             if b["name"] == "0":
                 continue  # the frame is its pivots
-            hull = _hull(pts)
+            hull = convex_hull(pts)
             if len(hull) == 2 or (b["variable"] and len(pts) >= 2):
                 a, c = (pts[0], pts[1]) if b["variable"] else (hull[0], hull[1])
                 ents.append(msp.add_line(a, c, dxfattribs={"layer": layer}))

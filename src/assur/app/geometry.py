@@ -30,7 +30,32 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["geometry", "pose"]
+__all__ = ["geometry", "pose", "convex_hull"]
+
+
+def convex_hull(points) -> list:
+    """Convex hull of a body's points, counter-clockwise, as ``[(x, y), …]`` [m]
+    (Andrew's monotone chain; coordinates rounded to 1e-12 m so that coincident
+    points count once; collinear points give their two ends) — the outline the
+    page, the SVG, the DXF and the report's drawing give a body of three or more
+    points."""
+    pts = sorted(set(map(tuple, np.round(np.asarray(points, dtype=float), 12))))
+    if len(pts) <= 2:
+        return pts
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
 
 
 def _loads_weights(mech):

@@ -22,30 +22,12 @@ from html import escape
 
 import numpy as np
 
+from .geometry import convex_hull
+
 __all__ = ["svg"]
 
 _COLORS = ("#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
            "#bcbd22", "#17becf", "#ff7f0e")
-
-
-def _hull(pts):
-    pts = sorted(set(map(tuple, np.round(np.asarray(pts, dtype=float), 12))))
-    if len(pts) <= 2:
-        return pts
-
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower, upper = [], []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return lower[:-1] + upper[:-1]
 
 
 def _f(v):
@@ -93,7 +75,7 @@ def _pose(geo, i, cyl, span, ghost, labels):
                        f'vector-effect="non-scaling-stroke"/>')
             mid = a + u * 0.5 * min(barrel, L)
         else:
-            hull = _hull(pts)
+            hull = convex_hull(pts)
             if len(hull) >= 3:
                 ps = " ".join(f"{_f(x)},{_f(y)}" for x, y in hull)
                 out.append(f'<polygon points="{ps}" fill="{col}" fill-opacity="0.12" '

@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.patches import Polygon, Rectangle
 
+from ..app.geometry import convex_hull
 from ..loads import Weight
 from ..texts import localize
 from .figures import new_figure
@@ -88,27 +89,6 @@ class _Geometry:
                 self.cyl[b] = (barrel, rod)
 
 
-def _hull(pts):
-    """Convex hull of a few points, counter-clockwise (collinear points give 2)."""
-    pts = sorted(set(map(tuple, np.round(pts, 12))))
-    if len(pts) <= 2:
-        return np.array(pts)
-
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower, upper = [], []
-    for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return np.array(lower[:-1] + upper[:-1])
-
-
 def _ground(ax, x, y, h, color, alpha):
     """A hatched triangle under the frame pivot (x, y)."""
     tri = Polygon([(x, y), (x - 0.55 * h, y - h), (x + 0.55 * h, y - h)], closed=True,
@@ -148,7 +128,7 @@ def _pose(ax, geo, i, ghost=False, labels=True, colors=None):
                     alpha=alpha, zorder=2.5)
             mid = a + u * 0.5 * min(barrel, L)
         else:
-            hull = _hull(np.array(pts))
+            hull = np.array(convex_hull(pts))
             if len(hull) >= 3:
                 ax.add_patch(Polygon(hull, closed=True, facecolor=col, alpha=0.12 * alpha,
                                      edgecolor="none", zorder=1))
