@@ -223,6 +223,27 @@ def quantities(K, out_pts, out_sca):
     return qs
 
 
+def emit_program(rows, measures, K):
+    """The element code of a program structure: every group's positions and jets in
+    order, then the measures (the arguments of :func:`generate`). Returns the
+    :class:`~assur.kernel.emit.Emitter` holding the lines and the indices of the
+    groups checked for continuity (k = 1) — shared by the compiled kernel and its
+    numpy evaluation (:mod:`assur.kernel.vector`)."""
+    E = Emitter(K)
+    cont = []
+    for i, row in enumerate(rows):
+        gt = group_type(row[0])
+        E(f"# group {i}: {gt.type_name}")
+        gt.emit(E, i, tuple(int(v) for v in row[1:]))
+        if gt.continuity and K == 1:
+            cont.append(i)
+    n = len(rows)
+    for j, (kind, s_, P, Q) in enumerate(measures):
+        E(f"# measure {j}: {kind}")
+        emit_measure(E, n + j, kind, s_, P, Q)
+    return E, cont
+
+
 def generate(rows, measures, K, out_pts, out_sca):
     """Python source of the kernel of a program structure.
 
@@ -244,18 +265,7 @@ def generate(rows, measures, K, out_pts, out_sca):
     :func:`continuity_check`; the composed kernels of large structures leave that to
     :func:`assur.kernel.run.check_continuity`).
     """
-    E = Emitter(K)
-    cont = []
-    for i, row in enumerate(rows):
-        gt = group_type(row[0])
-        E(f"# group {i}: {gt.type_name}")
-        gt.emit(E, i, tuple(int(v) for v in row[1:]))
-        if gt.continuity and K == 1:
-            cont.append(i)
-    n = len(rows)
-    for j, (kind, s_, P, Q) in enumerate(measures):
-        E(f"# measure {j}: {kind}")
-        emit_measure(E, n + j, kind, s_, P, Q)
+    E, cont = emit_program(rows, measures, K)
     # per-design values are loaded once per run of positions of a design, before the
     # element loop (so the loop reads only q and can be vectorized)
     body, hoist = hoisted(E.lines)

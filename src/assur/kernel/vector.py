@@ -36,10 +36,9 @@ from __future__ import annotations
 import re
 import sys
 
-from ..groups import group_type
-from .emit import CODES_PER_OP, CONTINUITY_TOL, FAIL_CONTINUITY, Emitter
+from .emit import CODES_PER_OP, CONTINUITY_TOL, FAIL_CONTINUITY
 from .select import branchless
-from .source import FORMAT, emit_measure, quantities
+from .source import FORMAT, emit_program, quantities
 
 __all__ = ["SMALL", "CALLS", "wanted", "generate_vector", "load_vector", "calls_left",
            "set_calls"]
@@ -109,18 +108,7 @@ def generate_vector(rows, measures, K, out_pts, out_sca) -> str:
     """Python source of the numpy evaluation of a structure (the arguments of
     :func:`assur.kernel.source.generate`); its ``kernel`` has the compiled kernel's
     signature and results."""
-    E = Emitter(K)
-    cont = []
-    for i, row in enumerate(rows):
-        gt = group_type(row[0])
-        E(f"# group {i}: {gt.type_name}")
-        gt.emit(E, i, tuple(int(v) for v in row[1:]))
-        if gt.continuity and K == 1:
-            cont.append(i)
-    n = len(rows)
-    for j, (kind, s_, P, Q) in enumerate(measures):
-        E(f"# measure {j}: {kind}")
-        emit_measure(E, n + j, kind, s_, P, Q)
+    E, cont = emit_program(rows, measures, K)
     head, body = _body(E.lines)
     qs = quantities(K, out_pts, out_sca)
     ind = "        "
