@@ -197,7 +197,7 @@ def test_unused_coordinate_is_an_error():
 @pytest.mark.parametrize("edit, words", [
     (('L6 = "0.515 m"', 'L6 = "1e200 m"'), "at most 10000 m"),
     (("eta = 0.84", "eta = 5e-324"), "efficiency in [0.01, 1]"),
-    (("kgc = 2", "kgc = 5e-324"), "whole number of cylinders"),
+    (("kgc = 2", "kgc = 5e-324"), "whole number (a count) from 1 to"),
     (('Dgc = "80 mm"', 'Dgc = "1e-200 m"'), "at least 1e-06 m"),
     (('Dgc = "80 mm"', 'Dgc = "1e200 m"'), "at most 10000 m"),
     (('P6 = "27.5 kN"', "P6 = 1.7e308"), "force of at most 1e+12 N"),
@@ -315,3 +315,15 @@ def test_two_force_columns_agree_for_a_double_rod_cylinder():
     expect = -(100.0 * np.cos(0.3) - 40.0 * np.sin(0.3)) - (-25.0 * np.cos(-0.2)
                                                              + 60.0 * np.sin(-0.2))
     assert np.allclose(vw, expect)
+
+
+def test_a_spring_count_that_is_not_whole_is_called_a_count_not_cylinders():
+    # perturbed inputs: a spring's count of 2.01 names the spring, and no cylinders
+    from assur import io
+    model = io.load(io.bundled("conditioner_lab2"))
+    mech = model.mechanism
+    with pytest.raises(ModelError) as e:
+        mech.with_params(k_s=2.01).analyze(model.range)
+    msg = str(e.value)
+    assert "spring 'sp'.count" in msg and "whole number (a count) from 1 to" in msg
+    assert "cylinders" not in msg

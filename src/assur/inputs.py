@@ -256,7 +256,7 @@ def span_problem(kind: str, value: float, positive: bool = False) -> str | None:
         return None
     if kind == "count":
         if value != int(value) or not 1 <= value <= MAX_COUNT:
-            return f"expected a whole number of cylinders from 1 to {MAX_COUNT}"
+            return f"expected a whole number (a count) from 1 to {MAX_COUNT}"
         return None
     if kind not in SPANS:
         return None
