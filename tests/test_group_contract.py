@@ -385,4 +385,4 @@ def test_failure_names_default_and_carrier_links():
         base.rigid_point("T", origin="A0", toward="A", out="T", length=0.3, base=0.3,
                          opposite=1.0).solve([0.1])
     assert info.value.links == ("c:a",)
-    assert "(links c:a)" in str(info.value)
+    assert "(link c:a)" in str(info.value)

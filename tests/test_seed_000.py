@@ -27,7 +27,7 @@ def test_header_000_raises_the_triangle_error():
     assert "L3 = 0.17194" in msg and "L34 = 0.4804" in msg and "L4 = 0.657" in msg
     assert re.search(r"L4 exceeds L3 \+ L34 = 0\.65234 m by 4\.66 mm", msg), msg
     # the group, its link and the first failing position
-    assert "arm 46" in msg and "links 3" in msg
+    assert "arm 46" in msg and "(link 3)" in msg
     assert "S = 0.65" in msg and "16 of 16 positions fail" in msg
     assert err.group == "arm 46" and err.links == ("3",)
     assert err.coordinate == {"S": pytest.approx(0.65)}

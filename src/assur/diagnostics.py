@@ -58,7 +58,7 @@ def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
         return f"link {obj.name!r}: its two points coincide {where}", 0.0, obj
     g = mech.groups[opi]
     links = group_links(mech, g)
-    ltxt = f" (links {', '.join(links)})" if links else ""
+    ltxt = (f" (link{'s' if len(links) > 1 else ''} {', '.join(links)})" if links else "")
     if code == FAIL_CONTINUITY:
         c = mech.coordinates[0]
         amt = float(amount[e])
