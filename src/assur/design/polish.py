@@ -7,7 +7,8 @@ on the problem as its criteria define it —
 * the objective: the problem's (first) objective, negated when maximised, divided by
   its magnitude at the start;
 * one inequality per constraint: its margin (:meth:`Criterion.margin`, ≥ 0 where it
-  holds) divided by its scale (:meth:`Criterion.scale`, the limit's magnitude);
+  holds) divided by its scale (:meth:`Criterion.scale`, the limit's magnitude), at
+  least a small slack (1e-9) so that an active constraint is not lost to rounding;
 * the variables scaled to [0, 1] over their bounds, which are SLSQP's bounds (as in
   :func:`assur.sensitivity.refine.local_refine`) —
 
@@ -101,7 +102,8 @@ class _Stop(Exception):
     """SLSQP stepped to a design the sensitivities cannot evaluate."""
 
 
-def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-9):
+def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-9,
+           slack=1e-9):
     """Polish a design by SLSQP with the criteria's exact gradients.
 
     Parameters
@@ -119,6 +121,10 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
         SLSQP iterations at most.
     ftol : float
         SLSQP's tolerance on the scaled objective.
+    slack : float
+        SLSQP holds every constraint with this margin relative to its scale (a
+        constraint active at the optimum is met by rounding either way; the batch
+        evaluation counts a margin of −1e-16 as violated).
 
     Returns
     -------
@@ -179,7 +185,7 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
             for c in problem.constraints:
                 rf = ref.get(c.name)
                 sc = float(c.scale(red, rf)[0])
-                gs.append(float(c.margin(red, rf)[0]) / sc)
+                gs.append(float(c.margin(red, rf)[0]) / sc - slack)
                 gg.append(c.margin_gradient(s, red, names) * span / sc)
             cache.clear()
             cache[key] = (f, gf, np.array(gs), np.array(gg).reshape(len(gs), len(names)))
