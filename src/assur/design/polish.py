@@ -32,7 +32,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError, ModelError
-from .criteria import jet_reductions
 
 __all__ = ["polish", "Polished", "missing_gradients"]
 
@@ -137,8 +136,6 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
     """
     from scipy.optimize import minimize
 
-    from ..sensitivity import sensitivities
-
     if not problem.objectives:
         raise ModelError(f"design problem {problem.name!r}: no objective to polish")
     run = evaluate or problem.evaluate
@@ -160,7 +157,6 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
                         note=f"the start is not feasible: {b0.reason(0)}")
     lo, hi = problem.bounds.T
     span = hi - lo
-    outputs = [o for o in problem.outputs if o not in problem.lifts]
     ref = problem.reference() if any(
         isinstance(c.limit.value, str) and c.limit.value == "original"
         for c in problem.constraints) else {}
@@ -173,12 +169,10 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
         if key not in cache:
             xx = lo + np.clip(z, 0.0, 1.0) * span
             try:
-                s = sensitivities(problem.mechanism, problem.positions, params=names,
-                                  outputs=outputs, values=dict(zip(names, xx)))
+                s, red = problem.jet(xx)
             except (AssemblyError, ModelError) as e:
                 raise _Stop(str(e)) from e
             count["f"] += 1
-            red = jet_reductions(s, problem._param_fn(xx[None]))
             f = sign * float(obj.value(red)[0])
             gf = sign * obj.gradient(s, red) * span
             gs, gg = [], []

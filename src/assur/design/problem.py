@@ -214,6 +214,45 @@ class Problem:
             return str(e)
         return ""
 
+    # ---- exact gradients ---------------------------------------------------------------
+    def jet(self, x):
+        """Exact sensitivities of the criteria's outputs at one design.
+
+        Parameters
+        ----------
+        x : array_like, shape (number of variables,)
+            The design [SI].
+
+        Returns
+        -------
+        sens : assur.sensitivity.Sensitivities
+            The outputs the criteria read (:attr:`outputs` without the lift checks)
+            over :attr:`positions` and their derivatives with respect to the variables
+            (forward-mode dual numbers, :func:`assur.sensitivity.sensitivities`).
+        red : Reductions
+            Their minimum, maximum and positions (:func:`~.criteria.jet_reductions`):
+            ``c.value(red)`` and ``c.gradient(sens, red)`` give a criterion's value
+            [SI] and its gradient [SI per variable unit].
+
+        Raises
+        ------
+        AssemblyError
+            The design does not assemble at some position.
+        ModelError
+            A value or derivative is not finite there (a singular position).
+        """
+        from ..sensitivity import sensitivities
+        from .criteria import jet_reductions
+        x = np.asarray(x, float).reshape(-1)
+        if x.shape != (len(self.variables),):
+            raise ModelError(f"design problem {self.name!r}: a design has "
+                             f"{len(self.variables)} values ({list(self.names)}), got "
+                             f"shape {x.shape}")
+        outputs = [o for o in self.outputs if o not in self.lifts]
+        sens = sensitivities(self.mechanism, self.positions, params=self.names,
+                             outputs=outputs, values=dict(zip(self.names, x)))
+        return sens, jet_reductions(sens, self._param_fn(x[None]))
+
     # ---- evaluation ------------------------------------------------------------------
     def reference(self):
         """The criteria's values for the original design (used by ``"original"``
