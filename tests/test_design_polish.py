@@ -8,10 +8,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import io
-from assur.design import Limit, Problem, Variable, criterion, load_problem
+from assur.design import CRITERIA, Limit, Problem, Variable, criterion, load_problem
+from assur.design.criteria import _Kind
 from assur.design.problem import CONSTRAINT, FEASIBLE
 from assur.design.polish import missing_gradients, polish
 from assur.design.search import optimize
+from assur.errors import ModelError
 from conftest import examples as n_examples
 
 HITCH = io.bundled("hitch_003_design")
@@ -28,7 +30,8 @@ def problem():
 def wide(problem):
     """The hitch problem with one criterion of every kind that has a gradient: the
     file's (bounds min/max of Y(56), the pressure, the reserve objective) and a
-    capacity, a span, a box of a moving point and a box of a frame pivot; the relief
+    capacity, a span, a box of a moving point and a box of a frame pivot, two
+    transmission angles (rocker 4–5 at 45, links 6–7 at 67); the relief
     setting a variable too (the pressure limit's own gradient)."""
     mech = problem.original
     extra = [
@@ -42,6 +45,10 @@ def wide(problem):
                   limit=Limit(0.0, "at_least")),
         criterion("box", {"point": "01", "x": [0.3, 0.5], "y": [0.5, 0.6]}, mech,
                   limit=Limit(0.0, "at_least")),
+        criterion("transmission_angle", {"links": ["4", "5"]}, mech,
+                  limit=Limit(0.3, "at_least")),
+        criterion("transmission_angle", {"links": ["6", "7"]}, mech,
+                  limit=Limit(0.3, "at_least")),
     ]
     relief = problem.constraints[2].args["relief"]
     p0 = float(mech.params[relief])
@@ -87,7 +94,8 @@ def _close(got, ref, label, scale):
 @given(seed=st.integers(0, 2**31 - 1))
 def test_criteria_gradients_equal_central_differences(wide, seed):
     """Every criterion with a gradient (bound min/max/span, capacity, pressure, box of a
-    moving point and of a frame pivot, the reserve objective): the exact gradient (the
+    moving point and of a frame pivot, transmission angle, the reserve objective): the
+    exact gradient (the
     sensitivity at the active position) equals central differences of the value the
     batch evaluation gives, at random designs within the bounds that assemble and lift
     over the range; the
@@ -168,23 +176,57 @@ def test_polish_keeps_the_start_when_the_polished_design_fails(problem):
     assert "kept the start" in p.summary()
 
 
-def test_a_criterion_without_gradient_skips_the_polish():
-    """A transmission angle has no exact gradient: the polish is skipped with a note
-    naming it, not an exception, and the DE result stands."""
-    mech = io.load(io.bundled("hitch_003")).mechanism
-    mu = criterion("transmission_angle", {"links": ["4", "5"]}, mech,
-                   limit=Limit(0.01, "at_least"))
-    assert mu.gradient is None
+class _NoGradient(_Kind):
+    """A criterion kind without an exact gradient (the contract's default): the
+    smallest Y of a point over the range."""
+
+    name = "no_gradient"
+
+    def make(self, args, mech):
+        q = f"Y({args['point']})"
+        return f"min {q}", (q,), (), "length"
+
+    def value(self, c, red):
+        return red.mins[c.outputs[0]]
+
+
+def test_a_criterion_without_gradient_skips_the_polish(monkeypatch):
+    """A criterion of a kind without an exact gradient: the polish is skipped with a
+    note naming it, not an exception, and the DE result stands."""
+    monkeypatch.setitem(CRITERIA, "no_gradient", _NoGradient())
     base = load_problem(HITCH)
-    pb = Problem(mech, base.positions, base.variables, base.constraints + (mu,),
+    mech = base.original
+    low = criterion("no_gradient", {"point": "56"}, mech, limit=Limit(0.25, "at_most"))
+    assert low.gradient is None
+    pb = Problem(mech, base.positions, base.variables, base.constraints + (low,),
                  base.objectives)
-    assert missing_gradients(pb) == [f"transmission_angle {mu.name}"]
+    assert missing_gradients(pb) == [f"no_gradient {low.name}"]
     res = optimize(pb, popsize=4, maxiter=2, seed=0)
     p = res.polished
     assert not p.ran and not p.accepted
-    assert p.note == f"no exact gradient for transmission_angle {mu.name}"
+    assert p.note == "no exact gradient for no_gradient min Y(56)"
     assert p.summary() == f"polish skipped: {p.note}"
     np.testing.assert_array_equal(res.x, p.start)
+    with pytest.raises(ModelError, match="min Y\\(56\\): a no_gradient criterion has no "
+                                         "exact gradient"):
+        low.margin_gradient(*base.jet(base.x0), base.names)
+
+
+def test_transmission_angle_in_line_has_no_derivative():
+    """Links in line at the active position: the transmission angle's gradient is a
+    ModelError naming the criterion and the position, not an infinite number."""
+    from assur.design.criteria import Reductions
+    mech = io.load(io.bundled("hitch_003")).mechanism
+    mu = criterion("transmission_angle", {"links": ["4", "5"]}, mech,
+                   limit=Limit(0.3, "at_least"))
+    oa, ob, od = mu.outputs
+    one = {oa: np.array([0.3]), ob: np.array([0.4]), od: np.array([0.7])}
+    at = {o: np.array([3]) for o in one}
+    red = Reductions(one, dict(one), at, dict(at), lambda ref: np.zeros(1))
+    assert mu.value(red)[0] == pytest.approx(0.0, abs=1e-7)
+    with pytest.raises(ModelError, match="transmission angle 4–5 at 45: the links are in "
+                                         "line at position 3"):
+        mu.gradient(None, red)
 
 
 def test_cli_optimize_polish_and_no_polish(tmp_path):

@@ -31,16 +31,19 @@ Gradients
 ---------
 A criterion whose value is the minimum or maximum over the positions of fused
 outputs (``bound`` with ``of = "min"``, ``"max"`` or ``"span"``, ``capacity``,
-``pressure``, ``box``) has an exact gradient with respect to the design variables
-(:attr:`Criterion.gradient`): the derivative, by the forward-mode dual numbers of
+``pressure``, ``box``, ``transmission_angle``) has an exact gradient with respect to
+the design variables (:attr:`Criterion.gradient`): the derivative, by the forward-mode dual numbers of
 :mod:`assur.sensitivity`, of the output **at the position where the minimum or
 maximum is taken** (the active position). A min/max over positions is not
 differentiable where two positions tie; there the derivative at the arg-min/arg-max
 is one element of the Clarke subdifferential (Danskin's theorem: the gradient of the
 active piece), the usual subgradient of a max–min objective, and it is the gradient
-wherever the active position is unique. A ``transmission_angle`` has none
-(``gradient`` is None): its value clips ``arccos`` at the straight line, where the
-derivative is unbounded, and it is not provided by finite differences either.
+wherever the active position is unique. A ``transmission_angle`` is a function of
+the smallest or largest distance between the links' far ends (fused outputs too):
+its gradient is the chain rule through the law of cosines at that position, defined
+while the links are not in line. A kind without an exact gradient declares
+``gradient = None`` (the default of the contract): it is not replaced by finite
+differences, and a polish skips it with a note.
 """
 
 from __future__ import annotations
@@ -417,6 +420,41 @@ class _TransmissionAngle(_Kind):
         cmax = np.clip((a * a + b * b - red.maxs[od] ** 2) / (2 * a * b), -1.0, 1.0)
         mu_min, mu_max = np.arccos(cmin), np.arccos(cmax)
         return np.minimum(mu_min, math.pi - mu_max)
+
+    def gradient(self, c, sens, red):
+        """d(min(μ_min, 180° − μ_max))/d(variables) [rad / variable unit]: of the two
+        pieces the smaller, through μ = arccos(ĉ), ĉ = (a² + b² − d²)/(2ab), with d
+        the smallest (largest) distance between the far ends at its own position and
+        the link lengths a, b at that position (rigid: the same at all):
+        dμ = −(∂ĉ/∂a·da + ∂ĉ/∂b·db + ∂ĉ/∂d·dd)/√(1 − ĉ²),
+        ∂ĉ/∂a = (a² − b² + d²)/(2a²b), ∂ĉ/∂b = (b² − a² + d²)/(2ab²), ∂ĉ/∂d = −d/(ab).
+
+        Raises
+        ------
+        ModelError
+            The links are in line (|ĉ| = 1 to within 1e-12) at the active position:
+            the angle has no derivative there.
+        """
+        oa, ob, od = c.outputs
+        a, b = float(red.mins[oa][0]), float(red.mins[ob][0])
+        pieces = []
+        for how, sign in (("min", 1.0), ("max", -1.0)):
+            d = float(red.mins[od][0] if how == "min" else red.maxs[od][0])
+            cc = (a * a + b * b - d * d) / (2 * a * b)
+            mu = float(np.arccos(np.clip(cc, -1.0, 1.0)))
+            pieces.append((mu if how == "min" else math.pi - mu, how, d, cc, sign))
+        _, how, d, cc, sign = min(pieces, key=lambda t: t[0])
+        i = int(red.where(od, how)[0])
+        if 1.0 - abs(cc) <= 1e-12:
+            raise ModelError(f"{c.name}: the links are in line at position {i}: the "
+                             f"transmission angle has no derivative there")
+
+        def jac(o):
+            return np.array(sens.jacobian[i, sens._o(o), :], float)
+        dc = ((a * a - b * b + d * d) / (2 * a * a * b) * jac(oa)
+              + (b * b - a * a + d * d) / (2 * a * b * b) * jac(ob)
+              - d / (a * b) * jac(od))
+        return -sign * dc / math.sqrt(1.0 - cc * cc)
 
 
 class _Box(_Kind):
