@@ -32,16 +32,16 @@ Gradients
 A criterion whose value is the minimum or maximum over the positions of fused
 outputs (``bound`` with ``of = "min"``, ``"max"`` or ``"span"``, ``capacity``,
 ``pressure``, ``box``, ``transmission_angle``) has an exact gradient with respect to
-the design variables (:attr:`Criterion.gradient`): the derivative, by the forward-mode dual numbers of
-:mod:`assur.sensitivity`, of the output **at the position where the minimum or
-maximum is taken** (the active position). A min/max over positions is not
-differentiable where two positions tie; there the derivative at the arg-min/arg-max
-is one element of the Clarke subdifferential (Danskin's theorem: the gradient of the
-active piece), the usual subgradient of a max–min objective, and it is the gradient
-wherever the active position is unique. A ``transmission_angle`` is a function of
-the smallest or largest distance between the links' far ends (fused outputs too):
-its gradient is the chain rule through the law of cosines at that position, defined
-while the links are not in line. A kind without an exact gradient declares
+the design variables (:attr:`Criterion.gradient`): the derivative, by the
+forward-mode dual numbers of :mod:`assur.sensitivity`, of the output **at the
+position where the minimum or maximum is taken** (the active position). A min/max
+over positions is not differentiable where two positions tie; there the derivative at
+the arg-min/arg-max is one element of the Clarke subdifferential (Danskin's theorem:
+the gradient of the active piece), the usual subgradient of a max–min objective, and
+it is the gradient wherever the active position is unique. A ``transmission_angle``
+is a function of the smallest or largest distance between the links' far ends (fused
+outputs too): its gradient is the chain rule through the law of cosines at that
+position, defined while the links are not in line. A kind without an exact gradient declares
 ``gradient = None`` (the default of the contract): it is not replaced by finite
 differences, and a polish skips it with a note.
 """
