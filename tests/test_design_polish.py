@@ -256,3 +256,30 @@ def test_cli_optimize_polish_and_no_polish(tmp_path):
     assert "SLSQP" not in (tmp_path / "b" / "hitch_003_design_best.toml").read_text(
         encoding="utf-8")
     assert "SLSQP" not in (tmp_path / "b" / "design.html").read_text(encoding="utf-8")
+
+
+def test_design_polish_key_and_its_override(tmp_path):
+    """``[design] polish = false`` turns the polish off for ``optimize`` and for the
+    command; ``--polish`` and ``polish=True`` override it; a non-boolean value is an
+    error naming the key."""
+    from typer.testing import CliRunner
+
+    from assur.cli import app
+    text = HITCH.read_text(encoding="utf-8").replace(
+        'extends = "hitch_003.toml"', f'extends = "{(HITCH.parent / "hitch_003.toml").as_posix()}"')
+    f = tmp_path / "off.toml"
+    f.write_text(text.replace("[design]\n", "[design]\npolish = false\n"), encoding="utf-8")
+    pb = load_problem(f)
+    assert pb.polish is False and load_problem(HITCH).polish is True
+    assert optimize(pb, popsize=4, maxiter=2, seed=0).polished is None
+    assert optimize(pb, popsize=4, maxiter=2, seed=0, polish=True).polished.ran
+    args = ["optimize", str(f), "--popsize", "4", "--maxiter", "2", "--workers", "0"]
+    r = CliRunner().invoke(app, args + ["-o", str(tmp_path / "a")])
+    assert r.exit_code == 0 and "SLSQP" not in r.output, r.output
+    r = CliRunner().invoke(app, args + ["--polish", "-o", str(tmp_path / "b")])
+    assert r.exit_code == 0 and "SLSQP" in r.output, r.output
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace("[design]\n", "[design]\npolish = \"yes\"\n"),
+                   encoding="utf-8")
+    with pytest.raises(ModelError, match="design.polish"):
+        load_problem(bad)

@@ -552,11 +552,11 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
              chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
              output: str = typer.Option("assur-optimize", "-o", "--output",
                                         help="Output directory."),
-             polish: bool = typer.Option(True, "--polish/--no-polish",
-                                         help="Polish the differential-evolution optimum "
-                                              "by SLSQP with the criteria's exact "
-                                              "gradients (skipped, with a note, when a "
-                                              "criterion has none)."),
+             polish: bool = typer.Option(
+                 None, "--polish/--no-polish",
+                 help="Polish the differential-evolution optimum by SLSQP with the "
+                      "criteria's exact gradients (skipped, with a note, when a criterion "
+                      "has none). Default: [design] polish of the file, else on."),
              lang: str = typer.Option("en", "--lang", help="Report labels: ru or en.")):
     """Search for the best design (differential evolution over whole populations, then
     a polish by SLSQP with exact gradients; with two or more objectives, NSGA-II's

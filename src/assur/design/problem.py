@@ -107,6 +107,10 @@ class Problem:
         that recipe, so Dask workers rebuild it instead of receiving compiled kernels.
     chunk : int
         Designs per kernel call.
+    polish : bool
+        Whether :func:`~assur.design.search.optimize` polishes differential
+        evolution's optimum by SLSQP with exact gradients unless told otherwise
+        (``[design] polish`` of a model file).
 
     Examples
     --------
@@ -121,8 +125,9 @@ class Problem:
     """
 
     def __init__(self, mechanism, positions, variables, constraints=(), objectives=(), *,
-                 name=None, source=None, chunk=CHUNK):
+                 name=None, source=None, chunk=CHUNK, polish=True):
         self.variables = tuple(variables)
+        self.polish = bool(polish)
         self.constraints = tuple(constraints)
         self.objectives = tuple(objectives)
         self.name = name or mechanism.name

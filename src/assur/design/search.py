@@ -122,7 +122,7 @@ class _Cached:
 
 
 def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="latinhypercube",
-             callback=None, x0=True, evaluate=None, polish=True):
+             callback=None, x0=True, evaluate=None, polish=None):
     """Maximise or minimise the problem's (first) objective subject to its constraints.
 
     Parameters
@@ -147,10 +147,11 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
         ``evaluate(X) → Batch`` for a population (default: :meth:`Problem.evaluate`;
         ``lambda X: executor.evaluate(problem, X)`` sends it to a Dask cluster,
         :mod:`assur.design.scale`).
-    polish : bool
+    polish : bool, optional
         Polish differential evolution's best feasible design by SLSQP with the exact
         gradients of the criteria (:func:`assur.design.polish.polish`; skipped with a
         note when a criterion has none). The polished design is judged by ``evaluate``.
+        Default: :attr:`Problem.polish` (``[design] polish`` of a model file, else True).
 
     Returns
     -------
@@ -180,7 +181,7 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
     x = np.asarray(res.x)
     best = problem.evaluate(x[None])
     polished = None
-    if polish:
+    if problem.polish if polish is None else polish:
         polished = run_polish(problem, x, start_batch=best, evaluate=evaluate)
         if polished.accepted:
             x = polished.x
