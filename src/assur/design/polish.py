@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import AssemblyError, ModelError
+from ..sensitivity.refine import Scaled
 
 __all__ = ["polish", "Polished", "missing_gradients"]
 
@@ -156,36 +157,32 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
         return Polished(x0, x0, v0, float("nan"), False, False,
                         note=f"the start is not feasible: {b0.reason(0)}")
     lo, hi = problem.bounds.T
-    span = hi - lo
     ref = problem.reference() if any(
         isinstance(c.limit.value, str) and c.limit.value == "original"
         for c in problem.constraints) else {}
-    count = {"f": 0, "g": 0}
-    cache = {}
+    count = {"g": 0}
 
-    def ev(z):
-        """(objective, margins/scales, their gradients in z) at z, one jet call."""
-        key = np.asarray(z, float).tobytes()
-        if key not in cache:
-            xx = lo + np.clip(z, 0.0, 1.0) * span
-            try:
-                s, red = problem.jet(xx)
-            except (AssemblyError, ModelError) as e:
-                raise _Stop(str(e)) from e
-            count["f"] += 1
-            f = sign * float(obj.value(red)[0])
-            gf = sign * obj.gradient(s, red) * span
-            gs, gg = [], []
-            for c in problem.constraints:
-                rf = ref.get(c.name)
-                sc = float(c.scale(red, rf)[0])
-                gs.append(float(c.margin(red, rf)[0]) / sc - slack)
-                gg.append(c.margin_gradient(s, red, names) * span / sc)
-            cache.clear()
-            cache[key] = (f, gf, np.array(gs), np.array(gg).reshape(len(gs), len(names)))
-        return cache[key]
+    def criteria(xx):
+        """(objective, margins/scales, their gradients in z) at the design ``xx``
+        [SI]: one call of the sensitivities."""
+        try:
+            s, red = problem.jet(xx)
+        except (AssemblyError, ModelError) as e:
+            raise _Stop(str(e)) from e
+        span = ev.span
+        f = sign * float(obj.value(red)[0])
+        gf = sign * obj.gradient(s, red) * span
+        gs, gg = [], []
+        for c in problem.constraints:
+            rf = ref.get(c.name)
+            sc = float(c.scale(red, rf)[0])
+            gs.append(float(c.margin(red, rf)[0]) / sc - slack)
+            gg.append(c.margin_gradient(s, red, names) * span / sc)
+        return f, gf, np.array(gs), np.array(gg).reshape(len(gs), len(names))
 
-    z0 = (x0 - lo) / span
+    # the variables scaled to [0, 1], one evaluation per point (local_refine's machinery)
+    ev = Scaled(lo, hi, criteria, clip=True)
+    z0 = ev.z(x0)
     f0 = ev(z0)[0]
     fs = abs(f0) or 1.0
     iterates = [z0]
@@ -208,7 +205,7 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
         # a trial step left the designs that assemble: the last iterate is the result
         z, nit = iterates[-1], len(iterates) - 1
         message = stop = f"stopped: a trial design could not be evaluated ({e})"
-    xp = lo + z * span
+    xp = ev.x(z)
     bp = run(xp[None])
     vp = float(bp.objectives[0, 0])
     note = ""
@@ -224,5 +221,5 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
     if stop and note:
         note = f"{note} ({stop})"
     ok = not note
-    return Polished(xp if ok else x0, x0, v0, vp, ok, True, nit, count["f"], count["g"],
+    return Polished(xp if ok else x0, x0, v0, vp, ok, True, nit, ev.count, count["g"],
                     message, note)
