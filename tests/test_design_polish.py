@@ -283,3 +283,27 @@ def test_design_polish_key_and_its_override(tmp_path):
                    encoding="utf-8")
     with pytest.raises(ModelError, match="design.polish"):
         load_problem(bad)
+
+
+def test_polish_stops_at_the_last_iterate_when_a_trial_fails(monkeypatch):
+    """A trial design the sensitivities cannot evaluate (one that does not assemble;
+    here the 6th evaluation refuses) ends SLSQP: its last iterate is judged by the
+    batch evaluation like any polished design, and the message says it stopped."""
+    pb = load_problem(HITCH)
+    de = optimize(pb, popsize=5, maxiter=5, seed=0, polish=False)
+    jet, calls = pb.jet, [0]
+
+    def failing(x):
+        calls[0] += 1
+        if calls[0] > 5:
+            raise ModelError("a test refusal")
+        return jet(x)
+    monkeypatch.setattr(pb, "jet", failing)
+    p = polish(pb, de.x, start_batch=de.batch)
+    assert p.ran and p.message.startswith("stopped: a trial design could not be evaluated "
+                                          "(a test refusal)")
+    assert p.nfev == 5
+    b = pb.evaluate(p.x[None])
+    assert b.feasible[0] and b.objectives[0, 0] >= de.value, p.summary()
+    if p.accepted:
+        assert p.value >= de.value
