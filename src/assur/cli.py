@@ -552,10 +552,16 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
              chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
              output: str = typer.Option("assur-optimize", "-o", "--output",
                                         help="Output directory."),
+             polish: bool = typer.Option(
+                 None, "--polish/--no-polish",
+                 help="Polish the differential-evolution optimum by SLSQP with the "
+                      "criteria's exact gradients (skipped, with a note, when a criterion "
+                      "has none). Default: [design] polish of the file, else on."),
              lang: str = typer.Option("en", "--lang", help="Report labels: ru or en.")):
-    """Search for the best design (differential evolution over whole populations; with
-    two or more objectives, NSGA-II's Pareto front); write it as a model file that
-    extends the original, and an HTML report comparing the two."""
+    """Search for the best design (differential evolution over whole populations, then
+    a polish by SLSQP with exact gradients; with two or more objectives, NSGA-II's
+    Pareto front); write it as a model file that extends the original, and an HTML
+    report comparing the two."""
     from .design.search import optimize as run_de, pareto
     from .errors import AssemblyError, ModelError
     from .io import load
@@ -582,7 +588,8 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
                                  callback=lambda g, n: bar.update(task, completed=g))
                 else:
                     res = run_de(pb, popsize=popsize, maxiter=maxiter, seed=seed, evaluate=run,
-                                 callback=lambda g, v: bar.update(task, completed=g))
+                                 callback=lambda g, v: bar.update(task, completed=g),
+                                 polish=polish)
         except (ModelError, AssemblyError) as e:
             _fail(str(e))
     dt = time.perf_counter() - t0
@@ -603,7 +610,8 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
     values = {v.name: float(x) for v, x in zip(pb.variables, res.x)}
     path = write_design_file(out / name, file, values, units, header=(
         f"The best design of {file.name} found by assur optimize: {c.sense} {c.name} = "
-        f"{c.show(res.value)} (original {c.show(res.original.objectives[0, 0])}).",))
+        f"{c.show(res.value)} (original {c.show(res.original.objectives[0, 0])}).",)
+        + ((res.polished.summary(c.show) + ".",) if res.polished is not None else ()))
     try:
         best = load(path)  # the file written must load and assemble
         best.mechanism.solve(pb.positions)
@@ -619,6 +627,8 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
     console.print(rt)
     console.print(Text(f"{c.sense} {c.name}: {c.show(res.original.objectives[0, 0])} → "
                        f"{c.show(res.value)}"))
+    if res.polished is not None:
+        console.print(Text(res.polished.summary(c.show)))
     _ok(f"{res.evaluations} designs in {res.calls} batches, {res.generations} generations on "
         f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
 

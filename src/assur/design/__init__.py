@@ -3,9 +3,12 @@
 * :mod:`assur.design.problem` — design variables, a :class:`Problem` and the
   evaluation of whole batches of designs in the fused kernel (:class:`Batch`:
   values, feasibility, and for every infeasible design its reason);
-* :mod:`assur.design.criteria` — the constraints and objectives (one registry);
+* :mod:`assur.design.criteria` — the constraints and objectives (one registry),
+  their values and exact gradients;
 * :mod:`assur.design.search` — differential evolution over whole populations
   (scipy, ``vectorized=True``) and NSGA-II (pymoo) for several objectives;
+* :mod:`assur.design.polish` — the SLSQP polish of differential evolution's optimum
+  with the criteria's exact gradients (:mod:`assur.sensitivity`);
 * :mod:`assur.design.scale` — chunks of designs on Dask (a LocalCluster or an
   existing scheduler), results to Parquet.
 """

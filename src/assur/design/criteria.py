@@ -27,23 +27,39 @@ requires the point to rise with the coordinate over the whole range, ``I(p) > 0`
 a capacity through a transmission number of 0 or below means the cylinder cannot
 lift there (:func:`assur.capacity.check_lifts` says the same for one design).
 
-The gradient of a criterion with respect to the design variables is not computed
-here: :attr:`Criterion.gradient` is the hook (None) where exact parameter
-sensitivities plug in.
+Gradients
+---------
+A criterion whose value is the minimum or maximum over the positions of fused
+outputs (``bound`` with ``of = "min"``, ``"max"`` or ``"span"``, ``capacity``,
+``pressure``, ``box``, ``transmission_angle``) has an exact gradient with respect to
+the design variables (:attr:`Criterion.gradient`): the derivative, by the
+forward-mode dual numbers of :mod:`assur.sensitivity`, of the output **at the
+position where the minimum or maximum is taken** (the active position). A min/max
+over positions is not differentiable where two positions tie; there the derivative at
+the arg-min/arg-max is one element of the Clarke subdifferential (Danskin's theorem:
+the gradient of the active piece), the usual subgradient of a max–min objective, and
+it is the gradient wherever the active position is unique. A ``transmission_angle``
+is a function of the smallest or largest distance between the links' far ends (fused
+outputs too): its gradient is the chain rule through the law of cosines at that
+position, defined while the links are not in line. A kind without an exact gradient declares
+``gradient = None`` (the default of the contract): it is not replaced by finite
+differences, and a polish skips it with a note.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
 from ..errors import ModelError
 from ..fused import OUTPUT_UNITS, parse_output
+from ..groups.base import signed_name
 
 __all__ = ["Criterion", "Limit", "CRITERIA", "REDUCTIONS", "criterion", "Reductions",
-           "lift_outputs"]
+           "lift_outputs", "jet_reductions"]
 
 #: what a criterion may take of an output over the range
 REDUCTIONS = ("min", "max", "span")
@@ -125,7 +141,13 @@ class Criterion:
     unit : assur.quantities.Unit or None
         The unit to show its values in (the one the file wrote the limit in).
     gradient : callable or None
-        Hook for exact sensitivities d(value)/d(variables); not implemented here.
+        ``gradient(sens, red)`` → d(value)/d(variables), shape (number of variables,)
+        [value unit / variable unit, SI], from the exact sensitivities ``sens``
+        (:class:`assur.sensitivity.Sensitivities` of :attr:`outputs` at one design over
+        the positions, parameters = the design variables) and their reductions ``red``
+        (:func:`jet_reductions`); None for a kind without an exact gradient (see the
+        module docstring). A property: the kind's own ``gradient`` bound to this
+        criterion.
     """
 
     kind: str
@@ -136,7 +158,36 @@ class Criterion:
     limit: Limit | None = None
     sense: str | None = None
     unit: object = None
-    gradient: object = field(default=None, compare=False)
+
+    @property
+    def gradient(self):
+        g = CRITERIA[self.kind].gradient
+        return None if g is None else partial(g, self)
+
+    def bound_gradient(self, names) -> np.ndarray:
+        """d(limit)/d(variables) of a constraint, shape (len(names),) [SI]: ±1 for the
+        variable a limit names (``"p_relief"``, ``"-a"``), 0 for a number,
+        ``"original"`` or a parameter that is not a variable."""
+        v = self.limit.value
+        if v is None:
+            v = CRITERIA[self.kind].limit_ref(self)
+        g = np.zeros(len(names))
+        if isinstance(v, str) and v != "original":
+            base = signed_name(v)
+            name, sign = (base, -1.0) if base is not None else (v.strip(), 1.0)
+            if name in names:
+                g[list(names).index(name)] = sign
+        return g
+
+    def margin_gradient(self, sens, red, names) -> np.ndarray:
+        """d(:meth:`margin`)/d(variables) of a constraint at one design, shape
+        (len(names),) [SI]: the gradient of the value less (``at_least``) or minus
+        (``at_most``) that of the limit (:meth:`bound_gradient`)."""
+        if self.gradient is None:
+            raise ModelError(f"constraint {self.name}: a {self.kind} criterion has no exact "
+                             f"gradient")
+        g = self.gradient(sens, red) - self.bound_gradient(names)
+        return g if self.limit.sense == "at_least" else -g
 
     def value(self, red: Reductions) -> np.ndarray:
         """The criterion's value per design, shape (m,) [SI]."""
@@ -197,6 +248,47 @@ class _Kind:
     def default_limit(self, c, red):
         raise ModelError(f"{c.kind} {c.name}: give at_least or at_most")
 
+    def limit_ref(self, c):
+        """The number or parameter behind :meth:`default_limit` (for its gradient)."""
+        return None
+
+    #: ``gradient(c, sens, red)`` → d(value)/d(variables) at one design (see
+    #: :attr:`Criterion.gradient`), or None for a kind without an exact gradient
+    gradient = None
+
+
+def _active(sens, red, output, how):
+    """∂output/∂(variables) at the position where ``output`` takes its ``how``
+    (``min`` or ``max``) over the positions, shape (variables,) [SI]: the gradient of
+    the active piece of a min/max (Danskin), one design."""
+    i = int(np.asarray(red.where(output, how)).reshape(-1)[0])
+    return np.array(sens.jacobian[i, sens._o(output), :], float)
+
+
+def jet_reductions(sens, params) -> Reductions:
+    """:class:`Reductions` of one design from its exact sensitivities.
+
+    Parameters
+    ----------
+    sens : assur.sensitivity.Sensitivities
+        Outputs over the positions of one design (``value`` of shape (n, outputs)).
+    params : callable
+        ``params(ref)`` as for :class:`Reductions`.
+
+    Returns
+    -------
+    Reductions
+        Per output, arrays of shape (1,): the minimum, maximum [its unit] and their
+        positions (the first where several tie, as the kernel's reductions).
+    """
+    v = np.asarray(sens.value)
+    mins, maxs, amin, amax = {}, {}, {}, {}
+    for j, o in enumerate(sens.outputs):
+        col = v[:, j]
+        amin[o], amax[o] = np.array([np.argmin(col)]), np.array([np.argmax(col)])
+        mins[o], maxs[o] = col[amin[o]], col[amax[o]]
+    return Reductions(mins, maxs, amin, amax, params)
+
 
 def _check_output(text, mech):
     return parse_output(text)
@@ -228,6 +320,15 @@ class _Bound(_Kind):
             return super().where(c, red)
         return red.where(c.args["quantity"], how)
 
+    def gradient(self, c, sens, red):
+        """d(min, max or span of the quantity)/d(variables): the sensitivity at the
+        arg-min / arg-max position (the span: at the arg-max less at the arg-min)
+        [quantity unit / variable unit]."""
+        q, how = c.args["quantity"], c.args.get("of", "min")
+        if how == "span":
+            return _active(sens, red, q, "max") - _active(sens, red, q, "min")
+        return _active(sens, red, q, how)
+
 
 class _Capacity(_Kind):
     name = "capacity"
@@ -244,6 +345,11 @@ class _Capacity(_Kind):
 
     def where(self, c, red):
         return red.argmins[c.outputs[0]]
+
+    def gradient(self, c, sens, red):
+        """d(min G(cylinder, point))/d(variables): the capacity's sensitivity at the
+        weakest position [N / variable unit]."""
+        return _active(sens, red, c.outputs[0], "min")
 
 
 class _Pressure(_Kind):
@@ -262,6 +368,14 @@ class _Pressure(_Kind):
 
     def default_limit(self, c, red):
         return np.asarray(red.param(c.args["relief"]), float)
+
+    def limit_ref(self, c):
+        return c.args["relief"]
+
+    def gradient(self, c, sens, red):
+        """d(max p(cylinder))/d(variables): the pressure's sensitivity at the position
+        of the peak [Pa / variable unit]."""
+        return _active(sens, red, c.outputs[0], "max")
 
 
 class _TransmissionAngle(_Kind):
@@ -307,6 +421,41 @@ class _TransmissionAngle(_Kind):
         mu_min, mu_max = np.arccos(cmin), np.arccos(cmax)
         return np.minimum(mu_min, math.pi - mu_max)
 
+    def gradient(self, c, sens, red):
+        """d(min(μ_min, 180° − μ_max))/d(variables) [rad / variable unit]: of the two
+        pieces the smaller, through μ = arccos(ĉ), ĉ = (a² + b² − d²)/(2ab), with d
+        the smallest (largest) distance between the far ends at its own position and
+        the link lengths a, b at that position (rigid: the same at all):
+        dμ = −(∂ĉ/∂a·da + ∂ĉ/∂b·db + ∂ĉ/∂d·dd)/√(1 − ĉ²),
+        ∂ĉ/∂a = (a² − b² + d²)/(2a²b), ∂ĉ/∂b = (b² − a² + d²)/(2ab²), ∂ĉ/∂d = −d/(ab).
+
+        Raises
+        ------
+        ModelError
+            The links are in line (|ĉ| = 1 to within 1e-12) at the active position:
+            the angle has no derivative there.
+        """
+        oa, ob, od = c.outputs
+        a, b = float(red.mins[oa][0]), float(red.mins[ob][0])
+        pieces = []
+        for how, sign in (("min", 1.0), ("max", -1.0)):
+            d = float(red.mins[od][0] if how == "min" else red.maxs[od][0])
+            cc = (a * a + b * b - d * d) / (2 * a * b)
+            mu = float(np.arccos(np.clip(cc, -1.0, 1.0)))
+            pieces.append((mu if how == "min" else math.pi - mu, how, d, cc, sign))
+        _, how, d, cc, sign = min(pieces, key=lambda t: t[0])
+        i = int(red.where(od, how)[0])
+        if 1.0 - abs(cc) <= 1e-12:
+            raise ModelError(f"{c.name}: the links are in line at position {i}: the "
+                             f"transmission angle has no derivative there")
+
+        def jac(o):
+            return np.array(sens.jacobian[i, sens._o(o), :], float)
+        dc = ((a * a - b * b + d * d) / (2 * a * a * b) * jac(oa)
+              + (b * b - a * a + d * d) / (2 * a * b * b) * jac(ob)
+              - d / (a * b) * jac(od))
+        return -sign * dc / math.sqrt(1.0 - cc * cc)
+
 
 class _Box(_Kind):
     name = "box"
@@ -330,6 +479,23 @@ class _Box(_Kind):
 
     def default_limit(self, c, red):
         return np.zeros_like(self.value(c, red))
+
+    def limit_ref(self, c):
+        return 0.0
+
+    def gradient(self, c, sens, red):
+        """d(smallest distance inside the box)/d(variables): of the four pieces
+        ``min X − low``, ``high − max X`` (and Y's) the smallest, its sensitivity at
+        its own arg-min / arg-max position (a frame pivot: the same at every
+        position) [m / variable unit]."""
+        best, grad = None, None
+        for o in c.outputs:
+            lo, hi = c.args[o[0].lower()]
+            for v, g in ((float(red.mins[o][0]) - lo, lambda o=o: _active(sens, red, o, "min")),
+                         (hi - float(red.maxs[o][0]), lambda o=o: -_active(sens, red, o, "max"))):
+                if best is None or v < best:
+                    best, grad = v, g
+        return grad()
 
 
 def _cylinder(args, mech):

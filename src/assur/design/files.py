@@ -66,7 +66,8 @@ def _load(path, variables, positions, chunk):
         raise ModelError(f"{path}: no design variables: give a [design.variables] table or "
                          f"--var NAME=LOW:HIGH")
     count = positions if positions is not None else (spec.positions if spec else None)
+    polish = spec.polish if spec is not None and spec.polish is not None else True
     return Problem(model.mechanism, positions_of(model, count), vars_,
                    spec.constraints if spec else (), spec.objectives if spec else (),
                    name=model.name, source=(_load, (path, variables, positions, chunk)),
-                   chunk=chunk or CHUNK)
+                   chunk=chunk or CHUNK, polish=polish)

@@ -107,6 +107,10 @@ class Problem:
         that recipe, so Dask workers rebuild it instead of receiving compiled kernels.
     chunk : int
         Designs per kernel call.
+    polish : bool
+        Whether :func:`~assur.design.search.optimize` polishes differential
+        evolution's optimum by SLSQP with exact gradients unless told otherwise
+        (``[design] polish`` of a model file).
 
     Examples
     --------
@@ -121,8 +125,9 @@ class Problem:
     """
 
     def __init__(self, mechanism, positions, variables, constraints=(), objectives=(), *,
-                 name=None, source=None, chunk=CHUNK):
+                 name=None, source=None, chunk=CHUNK, polish=True):
         self.variables = tuple(variables)
+        self.polish = bool(polish)
         self.constraints = tuple(constraints)
         self.objectives = tuple(objectives)
         self.name = name or mechanism.name
@@ -213,6 +218,45 @@ class Problem:
         except AssemblyError as e:
             return str(e)
         return ""
+
+    # ---- exact gradients ---------------------------------------------------------------
+    def jet(self, x):
+        """Exact sensitivities of the criteria's outputs at one design.
+
+        Parameters
+        ----------
+        x : array_like, shape (number of variables,)
+            The design [SI].
+
+        Returns
+        -------
+        sens : assur.sensitivity.Sensitivities
+            The outputs the criteria read (:attr:`outputs` without the lift checks)
+            over :attr:`positions` and their derivatives with respect to the variables
+            (forward-mode dual numbers, :func:`assur.sensitivity.sensitivities`).
+        red : Reductions
+            Their minimum, maximum and positions (:func:`~.criteria.jet_reductions`):
+            ``c.value(red)`` and ``c.gradient(sens, red)`` give a criterion's value
+            [SI] and its gradient [SI per variable unit].
+
+        Raises
+        ------
+        AssemblyError
+            The design does not assemble at some position.
+        ModelError
+            A value or derivative is not finite there (a singular position).
+        """
+        from ..sensitivity import sensitivities
+        from .criteria import jet_reductions
+        x = np.asarray(x, float).reshape(-1)
+        if x.shape != (len(self.variables),):
+            raise ModelError(f"design problem {self.name!r}: a design has "
+                             f"{len(self.variables)} values ({list(self.names)}), got "
+                             f"shape {x.shape}")
+        outputs = [o for o in self.outputs if o not in self.lifts]
+        sens = sensitivities(self.mechanism, self.positions, params=self.names,
+                             outputs=outputs, values=dict(zip(self.names, x)))
+        return sens, jet_reductions(sens, self._param_fn(x[None]))
 
     # ---- evaluation ------------------------------------------------------------------
     def reference(self):

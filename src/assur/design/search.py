@@ -12,7 +12,10 @@
   Pareto front of the feasible designs.
 
 The objective is what the problem says (maximised ones are negated for the
-minimisers). Gradients are not used: :attr:`Criterion.gradient` is the hook.
+minimisers). After differential evolution, :func:`optimize` polishes its best design
+by SLSQP with the criteria's exact gradients (:mod:`assur.design.polish`; scipy's own
+finite-difference polish stays off) and keeps the polished design only if the same
+batch evaluation finds it feasible and not worse.
 """
 
 from __future__ import annotations
@@ -48,6 +51,11 @@ class OptimizeResult:
     verified : str
         :meth:`Problem.verify` of the best design: "" when it assembles continuously
         between the positions too, else why not.
+    polished : assur.design.polish.Polished or None
+        The exact-gradient polish (None: not asked for): differential evolution's
+        best (``polished.start``, ``polished.start_value``), the polished value, SLSQP's
+        iterations and gradient evaluations, and why the polished design was not kept
+        or the polish skipped. ``x`` and ``batch`` are the design kept.
     """
 
     x: np.ndarray
@@ -58,6 +66,7 @@ class OptimizeResult:
     generations: int
     message: str
     verified: str = ""
+    polished: object = None
 
     @property
     def feasible(self) -> bool:
@@ -113,7 +122,7 @@ class _Cached:
 
 
 def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="latinhypercube",
-             callback=None, x0=True, evaluate=None):
+             callback=None, x0=True, evaluate=None, polish=None):
     """Maximise or minimise the problem's (first) objective subject to its constraints.
 
     Parameters
@@ -138,12 +147,19 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
         ``evaluate(X) → Batch`` for a population (default: :meth:`Problem.evaluate`;
         ``lambda X: executor.evaluate(problem, X)`` sends it to a Dask cluster,
         :mod:`assur.design.scale`).
+    polish : bool, optional
+        Polish differential evolution's best feasible design by SLSQP with the exact
+        gradients of the criteria (:func:`assur.design.polish.polish`; skipped with a
+        note when a criterion has none). The polished design is judged by ``evaluate``.
+        Default: :attr:`Problem.polish` (``[design] polish`` of a model file, else True).
 
     Returns
     -------
     OptimizeResult
     """
     from scipy.optimize import NonlinearConstraint, differential_evolution
+
+    from .polish import polish as run_polish
 
     if not problem.objectives:
         raise ModelError(f"design problem {problem.name!r}: no objective to optimise")
@@ -162,10 +178,17 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
                                  vectorized=True, updating="deferred", polish=False,
                                  constraints=cons, callback=cb,
                                  x0=problem.x0 if x0 else None)
-    best = problem.evaluate(res.x[None])
-    return OptimizeResult(np.asarray(res.x), best, problem.evaluate(problem.x0[None]),
+    x = np.asarray(res.x)
+    best = problem.evaluate(x[None])
+    polished = None
+    if problem.polish if polish is None else polish:
+        polished = run_polish(problem, x, start_batch=best, evaluate=evaluate)
+        if polished.accepted:
+            x = polished.x
+            best = problem.evaluate(x[None])
+    return OptimizeResult(x, best, problem.evaluate(problem.x0[None]),
                           cache.evaluations, cache.calls, int(res.nit), str(res.message),
-                          problem.verify(res.x) if best.feasible[0] else "")
+                          problem.verify(x) if best.feasible[0] else "", polished)
 
 
 @dataclass

@@ -4,6 +4,8 @@ objectives of a search (:mod:`assur.design`, docs/design.md).
 ```toml
 [design]
 positions = 50                              # over [range] (default: the range's own)
+polish = true                               # SLSQP polish with exact gradients after
+                                            # differential evolution (the default)
 
 [design.variables]                          # parameters of [params] and their bounds
 X01 = { within = "30 mm" }                  # ± around the file's value
@@ -34,7 +36,7 @@ from __future__ import annotations
 from typing import Literal, Optional, Union
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, StrictInt, StrictStr
+from pydantic import BaseModel, ConfigDict, Field, StrictBool, StrictInt, StrictStr
 
 from ..errors import ModelError
 from . import _schema as S
@@ -76,6 +78,7 @@ class DesignSection(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=True)
     positions: Optional[StrictInt] = Field(None, ge=2)
+    polish: Optional[StrictBool] = None
     variables: dict[str, Union[list[S.Value], _Within]] = {}
     constraints: list[_Constraint] = []
     objectives: list[_Objective] = []
@@ -90,13 +93,17 @@ class DesignSpec:
     constraints, objectives : tuple of assur.design.criteria.Criterion
     positions : int or None
         Number of positions over the range (None: the range's own).
+    polish : bool or None
+        Polish the optimum of differential evolution by SLSQP with exact gradients
+        (None: not written, the default of :func:`assur.design.search.optimize`).
     """
 
-    def __init__(self, variables, constraints, objectives, positions):
+    def __init__(self, variables, constraints, objectives, positions, polish=None):
         self.variables = tuple(variables)
         self.constraints = tuple(constraints)
         self.objectives = tuple(objectives)
         self.positions = positions
+        self.polish = polish
 
 
 def _kind_of_output(text):
@@ -183,7 +190,7 @@ def build_design(builder, mech, path_prefix=("design",)):
                 raise err(p, str(e)) from None
     positions = spec.positions
     return DesignSpec(variables, [c for k, c in crits if k == "constraints"],
-                      [c for k, c in crits if k == "objectives"], positions)
+                      [c for k, c in crits if k == "objectives"], positions, spec.polish)
 
 
 def _article(kind):

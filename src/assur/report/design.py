@@ -25,6 +25,15 @@ TEXT = {
                    "{pos} positions each.",
              "ru": "Рассчитано вариантов: {n} ({calls} пакетов, {gens} поколений); "
                    "положений в каждом: {pos}."},
+    "polish": {"en": "Polish (SLSQP with exact gradients) from the differential-evolution "
+                     "optimum: {de} → {pol} ({nit} iterations, {njev} gradient evaluations)"
+                     "{kept}.",
+               "ru": "Уточнение (SLSQP с точными градиентами) от оптимума дифференциальной "
+                     "эволюции: {de} → {pol} (итераций: {nit}, вычислений градиента: {njev})"
+                     "{kept}."},
+    "polish_kept": {"en": "; kept the differential-evolution optimum: {why}",
+                    "ru": "; оставлен оптимум дифференциальной эволюции: {why}"},
+    "polish_skipped": {"en": "Polish skipped: {why}.", "ru": "Уточнение не выполнено: {why}."},
     "variables": {"en": "Variables", "ru": "Переменные проектирования"},
     "objective": {"en": "Objective", "ru": "Целевая функция"},
     "constraints": {"en": "Constraints", "ru": "Ограничения"},
@@ -134,6 +143,15 @@ def comparison_html(problem, result, title=None, lang="en"):
     status = t("feasible") if result.feasible else t("infeasible", why=best.reason(0))
     work = t("work", n=result.evaluations, calls=result.calls, gens=result.generations,
              pos=len(problem.positions))
+    pol = getattr(result, "polished", None)
+    if pol is not None:
+        c = problem.objectives[0]
+        if not pol.ran:
+            work += " " + t("polish_skipped", why=pol.note)
+        else:
+            kept = "" if pol.accepted else t("polish_kept", why=pol.note)
+            work += " " + t("polish", de=c.show(pol.start_value), pol=c.show(pol.value),
+                            nit=pol.nit, njev=pol.njev, kept=kept)
     return f"""<!DOCTYPE html>
 <html lang="{lang}"><head><meta charset="utf-8"><title>{ttl}</title>
 <style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}

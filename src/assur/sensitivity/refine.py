@@ -32,7 +32,57 @@ import numpy as np
 from ..errors import ModelError
 from . import sensitivities
 
-__all__ = ["local_refine", "Refined"]
+__all__ = ["local_refine", "Refined", "Scaled"]
+
+
+class Scaled:
+    """Design variables scaled to [0, 1] over their bounds, and one evaluation per
+    point shared by SLSQP's objective, constraints and their gradients (SLSQP asks
+    for each at the same point): the machinery of :func:`local_refine` and of
+    :func:`assur.design.polish.polish`.
+
+    Parameters
+    ----------
+    lo, hi : array_like, shape (variables,)
+        Bounds [SI]; a variable with ``hi == lo`` is scaled by 1.
+    fn : callable
+        ``fn(x)`` at the unscaled design ``x`` [SI] → anything (the values and
+        gradients of one sensitivity call); evaluated once per distinct point.
+    clip : bool
+        Clip ``z`` to [0, 1] before unscaling (SLSQP may step a rounding outside its
+        bounds).
+
+    Attributes
+    ----------
+    span : ndarray
+        ``hi − lo`` (1 where 0): d x / d z, the factor of every gradient in z.
+    count : int
+        Evaluations of ``fn``.
+    """
+
+    def __init__(self, lo, hi, fn, clip=False):
+        self.lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+        self.span = np.where(hi > self.lo, hi - self.lo, 1.0)
+        self.fn, self.clip = fn, clip
+        self.count = 0
+        self._key = self._value = None
+
+    def x(self, z):
+        """The design [SI] at the scaled point ``z``."""
+        z = np.asarray(z, float)
+        return self.lo + (np.clip(z, 0.0, 1.0) if self.clip else z) * self.span
+
+    def z(self, x):
+        """The scaled point of the design ``x`` [SI]."""
+        return (np.asarray(x, float) - self.lo) / self.span
+
+    def __call__(self, z):
+        key = np.asarray(z, float).tobytes()
+        if key != self._key:
+            self._value = self.fn(self.x(z))
+            self._key = key
+            self.count += 1
+        return self._value
 
 
 @dataclass(frozen=True)
@@ -102,23 +152,14 @@ def local_refine(mech, q, maximize, bounds, limits=(), *, maxiter=100, ftol=1e-1
     outputs = [maximize] + [o for o, _, _ in limits]
     lo = np.array([bounds[p][0] for p in names], float)
     hi = np.array([bounds[p][1] for p in names], float)
-    span = np.where(hi > lo, hi - lo, 1.0)
     x0 = np.array([float(mech.params[p]) for p in names])
-    count = [0]
-    cache = {}
 
-    def ev(z):
-        key = z.tobytes()
-        if key not in cache:
-            x = lo + z * span
-            count[0] += 1
-            s = sensitivities(mech, q, params=names, outputs=outputs,
-                              values=dict(zip(names, x)))
-            cache.clear()
-            cache[key] = (s.value, s.jacobian * span)  # d/dz
-        return cache[key]
+    def jets(x):
+        s = sensitivities(mech, q, params=names, outputs=outputs, values=dict(zip(names, x)))
+        return s.value, s.jacobian * ev.span  # d/dz
 
-    v0, _ = ev((x0 - lo) / span)
+    ev = Scaled(lo, hi, jets)
+    v0, _ = ev(ev.z(x0))
     scale = float(np.abs(v0[:, 0]).max()) or 1.0
     nv = len(names)
 
@@ -148,14 +189,14 @@ def local_refine(mech, q, maximize, bounds, limits=(), *, maxiter=100, ftol=1e-1
             rows.append(np.hstack([j, np.zeros((n, 1))]))
         return np.vstack(rows)
 
-    w0 = np.append((x0 - lo) / span, v0[:, 0].min())
+    w0 = np.append(ev.z(x0), v0[:, 0].min())
     res = minimize(obj, w0, jac=obj_jac, method="SLSQP",
                    bounds=[(0.0, 1.0)] * nv + [(None, None)],
                    constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
                    options={"maxiter": maxiter, "ftol": ftol})
     z = np.clip(res.x[:nv], 0.0, 1.0)
     val, _ = ev(z)
-    x = lo + z * span
+    x = ev.x(z)
     return Refined(dict(zip(names, (float(v) for v in x))), float(val[:, 0].min()),
                    float(v0[:, 0].min()), bool(res.success), str(res.message), int(res.nit),
-                   count[0])
+                   ev.count)
