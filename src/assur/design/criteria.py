@@ -262,7 +262,7 @@ def _active(sens, red, output, how):
     (``min`` or ``max``) over the positions, shape (variables,) [SI]: the gradient of
     the active piece of a min/max (Danskin), one design."""
     i = int(np.asarray(red.where(output, how)).reshape(-1)[0])
-    return np.array(sens.jacobian[i, sens._o(output), :], float)
+    return np.array(sens.gradient(output)[i], float)
 
 
 def jet_reductions(sens, params) -> Reductions:
@@ -450,7 +450,7 @@ class _TransmissionAngle(_Kind):
                              f"transmission angle has no derivative there")
 
         def jac(o):
-            return np.array(sens.jacobian[i, sens._o(o), :], float)
+            return np.array(sens.gradient(o)[i], float)
         dc = ((a * a - b * b + d * d) / (2 * a * a * b) * jac(oa)
               + (b * b - a * a + d * d) / (2 * a * b * b) * jac(ob)
               - d / (a * b) * jac(od))

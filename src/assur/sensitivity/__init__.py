@@ -228,6 +228,11 @@ class Sensitivities:
             raise KeyError(f"{param!r} is not among the parameters {list(self.params)}")
         return self.jacobian[..., self._o(output), self.params.index(param)]
 
+    def gradient(self, output):
+        """∂output/∂(every parameter) over the positions, shape (*shape, params)
+        [output unit / parameter unit], in the order of :attr:`params`."""
+        return self.jacobian[..., self._o(output), :]
+
     def values(self, output):
         """The output itself over the positions [its unit]."""
         return self.value[..., self._o(output)]
