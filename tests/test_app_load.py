@@ -1,7 +1,9 @@
 """A bounded load test of the page's server on loopback (issue 13): 50 requests/s for
 30 s, open loop (each request is sent at its scheduled time, whether the earlier ones
-have been answered or not), no error allowed; the latencies' p50, p99 and maximum are
-printed (measured, not asserted).
+have been answered or not), no error allowed — a request that meets a keep-alive
+connection the server has just closed is sent again once on a new connection, as
+browsers do, and counted; the latencies' p50, p99 and maximum are printed (measured,
+not asserted).
 
 The server is ``assur serve`` in its own process, on 127.0.0.1 and a free port. The
 requests are what a page sends while a slider moves: ``POST /api/analyze`` of
@@ -31,6 +33,9 @@ pytestmark = pytest.mark.slow
 
 RATE = 50        # requests per second
 DURATION = 30    # seconds
+
+#: how a request fails on a keep-alive connection the server has just closed
+STALE = (BrokenPipeError, ConnectionResetError, http.client.RemoteDisconnected)
 
 
 @contextlib.contextmanager
@@ -64,27 +69,46 @@ def served(path):
 
 def test_fifty_requests_per_second_for_thirty_seconds(request):
     local = threading.local()
-    conns, lock = [], threading.Lock()
+    conns, stale, lock = [], [], threading.Lock()
 
     with served(bundled("hitch_003")) as url:
         host, port = urlparse(url).hostname, urlparse(url).port
 
-        def call(i):
+        def connection():
             conn = getattr(local, "conn", None)
             if conn is None:
                 conn = local.conn = http.client.HTTPConnection(host, port, timeout=60)
                 with lock:
                     conns.append(conn)
+            return conn
+
+        def send(conn, i):
+            if i % 10 == 9:
+                conn.request("GET", "/api/model")
+            else:
+                body = json.dumps({"params": {"P6": 25.0 + (i % 5)}, "positions": 101})
+                conn.request("POST", "/api/analyze", body=body,
+                             headers={"Content-Type": "application/json"})
+            r = conn.getresponse()
+            return r, r.read()
+
+        def call(i):
             t0 = time.perf_counter()
+            reused = getattr(local, "conn", None) is not None
             try:
-                if i % 10 == 9:
-                    conn.request("GET", "/api/model")
-                else:
-                    body = json.dumps({"params": {"P6": 25.0 + (i % 5)}, "positions": 101})
-                    conn.request("POST", "/api/analyze", body=body,
-                                 headers={"Content-Type": "application/json"})
-                r = conn.getresponse()
-                data = r.read()
+                try:
+                    r, data = send(connection(), i)
+                except STALE:
+                    # the server closed this thread's idle keep-alive connection (uvicorn
+                    # after 5 s) as the request went out: a client retries an idempotent
+                    # request once on a new connection, as browsers and urllib3 do — a
+                    # failure on a new connection is an error
+                    if not reused:
+                        raise
+                    local.conn = None
+                    with lock:
+                        stale.append(i)
+                    r, data = send(connection(), i)
             except (OSError, http.client.HTTPException) as e:
                 local.conn = None
                 return time.perf_counter() - t0, f"{type(e).__name__}: {e}"
@@ -112,7 +136,8 @@ def test_fifty_requests_per_second_for_thirty_seconds(request):
     lat = np.array([r[0] for r in results]) * 1e3
     errors = [r[1] for r in results if r[1]]
     _log(request, f"\nload test: {n} requests in {elapsed:.1f} s ({n / elapsed:.1f}/s), "
-              f"{len(errors)} errors; latency p50 {np.percentile(lat, 50):.1f} ms, "
+              f"{len(errors)} errors, {len(stale)} retried on a new connection after the "
+              f"server closed an idle one; latency p50 {np.percentile(lat, 50):.1f} ms, "
               f"p99 {np.percentile(lat, 99):.1f} ms, max {lat.max():.1f} ms")
     assert not errors, errors[:5]
     assert elapsed < DURATION + 30  # the schedule was kept (not a latency bound)
