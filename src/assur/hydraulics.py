@@ -114,11 +114,18 @@ class CylinderResult:
             self.area = np.where(self.sign > 0, areas["piston"], areas["rod"])
             self.pressure = np.abs(self.force_required) / (self.count * self.area
                                                            * self.eta_hyd)
+            self.force_max = self.count * self.p_max * self.area * self.eta_hyd
         else:
             self.sign = 1.0 if cyl.side == "piston" else -1.0
             self.area = areas[cyl.side]
-            self.pressure = self.force_required / (self.count * self.area * self.eta_hyd)
-        self.force_max = self.count * self.p_max * self.area * self.eta_hyd
+            # k·A·η_h and the largest force k·p_max·A·η_h do not depend on the positions
+            hit = mech.memo(("hydraulics: one chamber",) + key, lambda: (
+                cyl, self.count * self.area * self.eta_hyd,
+                self.count * self.p_max * self.area * self.eta_hyd))
+            kae, self.force_max = hit[1:] if hit[0] is cyl else (
+                self.count * self.area * self.eta_hyd,
+                self.count * self.p_max * self.area * self.eta_hyd)
+            self.pressure = self.force_required / kae
 
     def _constants(self):
         """count, η_m, η_h and p_max [Pa] from the mechanism's parameters."""

@@ -400,9 +400,9 @@ def check_finite(analysis) -> None:
     ModelError
     """
     kin = analysis.kinematics
-    name = f"mechanism {kin.mechanism.name!r}"
     for bad in (kin.first_nonfinite(), analysis.statics.first_nonfinite()):
         if bad is not None:
+            name = f"mechanism {kin.mechanism.name!r}"
             raise ModelError(f"{name}: the {bad[0]} is not finite (element {bad[1]}): the "
                              f"inputs are outside the range where it can be computed; check "
                              f"the sizes of lengths, loads, bores and efficiencies")
@@ -411,13 +411,15 @@ def check_finite(analysis) -> None:
     if dyn is not None:
         bad = dyn.statics.first_nonfinite()
         if bad is not None:
+            name = f"mechanism {kin.mechanism.name!r}"
             raise ModelError(f"{name}: the {bad[0]} with inertia is not finite (element "
                              f"{bad[1]}): check the masses, speeds and lengths")
         items.append(("reduced moment of inertia", dyn.reduced_inertia))
         items.append(("reduced moment", dyn.reduced_moment))
     for name_, cyl in analysis.cylinders.items():
+        # the force F_req = ±p·k·A·η_h is finite where the pressure is (k, A, η_h are
+        # finite and positive within SPANS): its own check would repeat this one
         items.append(("pressure of cylinder", name_, cyl.pressure))
-        items.append(("force of cylinder", name_, cyl.force_required))
         items.append(("largest force of cylinder", name_, cyl.force_max))
     for what, *whose, vals in items:
         for v in (vals if isinstance(vals, tuple) else (vals,)):

@@ -31,8 +31,9 @@ SINGULAR_RTOL = 1e-9
 class _FramePoints(dict):
     """Frame points' (2, m, n) positions from the parameter table, made on first use."""
 
-    def __init__(self, rows, params, shape):
-        super().__init__()
+    __slots__ = ("_rows", "_params", "_shape")
+
+    def __init__(self, rows, params, shape):   # starts empty (dict.__new__)
         self._rows, self._params, self._shape = rows, params, shape
 
     def __contains__(self, name):

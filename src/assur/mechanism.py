@@ -879,9 +879,13 @@ class Mechanism:
     def coordinate_array(self, q, m_params, per_position=None):
         """The coordinates ``q`` as a (k, m·n) array, their result shape, m and n;
         checked (:func:`assur.inputs.coordinates_array`) before anything is allocated."""
+        k = len(self.coordinates)
+        if (k == 1 and m_params == 1 and type(q) is np.ndarray and q.ndim == 1
+                and q.dtype == np.float64 and 0 < q.size <= 4096 and q.flags.c_contiguous
+                and np.isfinite(q).all()):
+            return q.reshape(1, q.size), q.shape, 1, q.size   # the common small case
         # real, finite floats of a size that fits in memory, or a ModelError
         a = inputs.coordinates_array(q, self, m_params, per_position)
-        k = len(self.coordinates)
         if k == 1:
             if a.ndim == 0:
                 a = a[None]

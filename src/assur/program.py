@@ -170,15 +170,18 @@ class Program:
 
     def layout(self, out_pts: tuple, out_sca: tuple) -> tuple:
         """What a run writing ``out_pts``/``out_sca`` needs besides its kernel (made
-        once per output set): the sizes of the six output blocks (points' values, first
-        and second analogs, then the scalars'), the rows of the angles among the
-        scalars (unwrapped along a range), and the index of each point and scalar."""
+        once per output set): the first and end rows of the six output blocks
+        (points' values, first and second analogs, then the scalars'), the rows of
+        the angles among the scalars (unwrapped along a range), and the index of each
+        point and scalar."""
         key = ("layout", out_pts, out_sca)
         lay = self._kernels.get(key)
         if lay is None:
             k, npo, nso = self.k, len(out_pts), len(out_sca)
+            sizes = (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k)
+            ends = tuple(int(v) for v in np.cumsum(sizes))
             lay = self._kernels[key] = (
-                (npo * 2, npo * 2 * k, npo * 2 * k * k, nso, nso * k, nso * k * k),
+                tuple(zip((0,) + ends[:-1], ends)),
                 tuple(i for i, s in enumerate(out_sca) if self.kinds[s] == "angle"),
                 {p: i for i, p in enumerate(out_pts)}, {s: i for i, s in enumerate(out_sca)})
         return lay
@@ -207,6 +210,10 @@ class Program:
     def kernel(self, out_pts=None, out_sca=None, vector=False):
         """The compiled kernel writing ``out_pts``/``out_sca`` (default: the program's);
         with ``vector``, its numpy evaluation (:mod:`assur.kernel.vector`)."""
+        default = out_pts is None and out_sca is None
+        fn = self._kernels.get(("all outputs", vector)) if default else None
+        if fn is not None:
+            return fn
         op = tuple(self.out_pts if out_pts is None else out_pts)
         os_ = tuple(self.out_sca if out_sca is None else out_sca)
         key = (op, os_, vector)
@@ -216,6 +223,8 @@ class Program:
                              tuple(self.slot[p] for p in op), tuple(self.scal[s] for s in os_),
                              vector)
             self._kernels[key] = fn
+        if default:
+            self._kernels[("all outputs", vector)] = fn
         return fn
 
 
@@ -371,26 +380,25 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     if rows is None:
         names_p = prog.out_pts if out_pts is None else tuple(out_pts)
         names_s = prog.out_sca if out_pts is None else tuple(out_sca)
-        kern = prog.kernel(names_p, names_s, vector=vector)
+        kern = (prog.kernel(vector=vector) if out_pts is None
+                else prog.kernel(names_p, names_s, vector=vector))
     else:
         names_p, names_s = tuple(out_pts), tuple(out_sca)
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), (), vector)
     npo, nso = len(names_p), len(names_s)
-    sizes, ang, pidx, sidx = prog.layout(names_p, names_s)
+    blocks, ang, pidx, sidx = prog.layout(names_p, names_s)
+    nrows = blocks[-1][1]
     if out_buffer is None:
-        out = np.empty((sum(sizes), E))
-    elif (out_buffer.shape != (sum(sizes), E) or out_buffer.dtype != np.float64
+        out = np.empty((nrows, E))
+    elif (out_buffer.shape != (nrows, E) or out_buffer.dtype != np.float64
           or not out_buffer.flags.c_contiguous or not out_buffer.flags.writeable):
-        raise ValueError(f"out: this solve writes {sum(sizes)} output rows × {E} designs·"
+        raise ValueError(f"out: this solve writes {nrows} output rows × {E} designs·"
                          f"positions into one writeable C-ordered float64 array; the one given "
                          f"is {out_buffer.dtype} of shape {out_buffer.shape}: give a result of "
                          f"the same outputs and size")
     else:
         out = out_buffer
-    parts, r0 = [], 0
-    for size in sizes:
-        parts.append(out[r0:r0 + size])
-        r0 += size
+    parts = [out[a:b] for a, b in blocks]
     sv = parts[3].reshape(nso, E)
     status = np.empty(E, dtype=np.int64)
     # the depth of a continuity failure, written by that pass at its failures only

@@ -325,18 +325,18 @@ class StabilityResult:
 
 def _limit(r0: float, w0: float, c: np.ndarray, m: float, masks=None) -> np.ndarray:
     """Sup of {P ≥ 0 : r0 + c·P ≥ m·(w0 + P)} [N]; inf if unbounded, 0 if empty.
-    ``masks``: ``(m − c, m − c > 0, m − c < 0)`` when the caller has them (both
-    limits of :func:`axle_reactions` share them)."""
-    den, pos, neg = masks if masks is not None else (m - c, None, None)
+    ``masks``: ``(m − c, m − c > 0)`` when the caller has them (both limits of
+    :func:`axle_reactions` share them)."""
+    den, pos = masks if masks is not None else (m - c, None)
     if pos is None:
-        pos, neg = den > 0, den < 0
+        pos = den > 0
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
     if excess >= 0:  # bounded where den > 0 (excess/den), unbounded where den ≤ 0
         out = np.empty(np.shape(den))
         out.fill(np.inf)
         return np.divide(excess, den, out=out, where=pos)
     # no weight where den ≥ 0 (0 at den > 0: max(excess, 0)/den), unbounded where den < 0
-    return np.where(neg, np.inf, 0.0)
+    return np.where(den < 0, np.inf, 0.0)
 
 
 def axle_reactions(machine: Machine, implement_weight: ArrayLike,
@@ -424,9 +424,10 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
     m = machine.min_share
     steerable = r_s >= m * total
     if not isinstance(total, np.ndarray):
-        total = np.full(shape, total)
+        total, w = np.empty(shape), total
+        total.fill(w)
     den = m - c                               # m − ∂R_s/∂P [-]
-    masks = (den, den > 0, den < 0)
+    masks = (den, den > 0)
     g_cw = _limit(r_cw, weight, c, m, masks)
     g_bare = _limit(r_bare, w_bare, c, m, masks)
     return StabilityResult(

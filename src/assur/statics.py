@@ -26,6 +26,8 @@ acceleration of a centre of mass is ``a = J·q̈ + q̇ᵀ·H·q̇`` from the ana
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import numpy as np
 
 from .errors import ModelError
@@ -104,7 +106,8 @@ class Statics:
 
     def _o(self, a):
         mn = (self.kinematics.m, self.kinematics.n)
-        return self.kinematics.reshape(a if np.shape(a) == mn else np.broadcast_to(a, mn))
+        return self.kinematics.reshape(a if getattr(a, "shape", None) == mn
+                                       else np.broadcast_to(a, mn))
 
     def actuator_force(self, coordinate=None):
         """Force the actuator of a coordinate must supply, by virtual work [N]
@@ -499,25 +502,55 @@ def _applied(kin, qdot, qddot, g):
     return r.W
 
 
+class _JointRows(Mapping):
+    """``{(i, j): (point, Rx, Ry, Rm)}`` over the fused kernel's output rows: a joint's
+    rows are viewed when it is asked for (one position at a time, as dynamics calls,
+    makes no views that nobody reads). ``index``: ``{(i, j): (point, first row)}``."""
+
+    __slots__ = ("_index", "_out")
+
+    def __init__(self, index, out):
+        self._index, self._out = index, out
+
+    def __getitem__(self, key):
+        pt, r = self._index[key]
+        return pt, self._out[r], self._out[r + 1], self._out[r + 2]
+
+    def __contains__(self, key):
+        return key in self._index
+
+    def __iter__(self):
+        return iter(self._index)
+
+    def __len__(self):
+        return len(self._index)
+
+
+_FUSED = []   # assur.fused, imported on first use (it imports this module)
+
+
 def _solve_fused(kin, g):
     """Static reactions and actuator forces of all positions from the fused kernel
     (:mod:`assur.fused`): the same group code as :func:`_solve`, traced into one
     compiled loop — an order of magnitude faster on large ranges and on one position."""
-    from . import fused
+    if not _FUSED:
+        from . import fused
+        _FUSED.append(fused)
+    fused = _FUSED[0]
 
     mech = kin.mechanism
     joints_, _, out = fused.statics_outputs(kin, g)
-    actuated = mech.memo(("statics: fused actuators",), lambda: tuple(
-        (c, fused.has_actuator(mech, c)) for c in mech.coordinates))
     # the outputs' rows, in order: Rx, Ry, Rm of each joint, then F, Fr of each coordinate
-    rows = iter(out)
-    joints = {(i, j): (pt, next(rows), next(rows), next(rows)) for i, j, pt in joints_}
+    index, actuated = mech.memo(("statics: fused rows",), lambda: (
+        {(i, j): (pt, 3 * r) for r, (i, j, pt) in enumerate(joints_)},
+        tuple((c, 3 * len(joints_) + 2 * a, fused.has_actuator(mech, c))
+              for a, c in enumerate(mech.coordinates))))
+    joints = _JointRows(index, out)
     vw, act = {}, {}
-    for c, has in actuated:
-        vw[c] = next(rows)
-        fr = next(rows)
+    for c, r, has in actuated:
+        vw[c] = out[r]
         if has:
-            act[c] = fr
+            act[c] = out[r + 1]
 
     def residual():
         return _residual(kin, _applied(kin, None, None, g), joints)
