@@ -755,13 +755,13 @@ class Mechanism:
             buf = out.output_buffer
         res = execute(prog, ptab, qarr, n, check, trig=trig, out_buffer=buf)
         status = res["status"]
-        failed = status >= 0
-        if pose_failures and not failed.any():
+        ok = (status < 0).reshape(m, n)   # a status ≥ 0 is a failure's code
+        all_ok = bool(ok.all())
+        if pose_failures and all_ok:
             raise pose_failures[0]
-        ok = ~failed.reshape(m, n)
         kin = Kinematics(mech, prog, qarr.reshape((len(self.coordinates), m, n)), res, shape,
                          ok=ok, params=ptab)
-        if failed.any():
+        if not all_ok:
             if on_failure == "raise":
                 raise diagnostics.assembly_error(mech, prog, ptab, qarr, status, res["amount"],
                                                  n, ok)

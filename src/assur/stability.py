@@ -522,19 +522,22 @@ class Carrying:
                 return v.reshape((-1,) + (1,) * (len(kin.shape) - 1))
             return v.reshape(()) if v.ndim == 1 else v
 
-        # what does not depend on the positions, once per mechanism: the parameters the
-        # machine refers to, whether they vary over designs, the machine of one design
-        hit = mech.memo(("stability: machine", id(self)), lambda: (self, *self._refs(mech)))
-        names, varying, machine = hit[1:] if hit[0] is self else self._refs(mech)
+        # what does not depend on the positions, once per mechanism (and shape of its
+        # batch): the parameters the machine refers to, whether they vary over designs,
+        # the machine of one design, the implement's weight
+        hit = mech.memo(("stability: machine", id(self), len(kin.shape)),
+                        lambda: (self, *self._refs(mech), val(self.weight)))
+        names, varying, machine, weight = (hit[1:] if hit[0] is self else
+                                           (*self._refs(mech), val(self.weight)))
         if varying and len(kin.shape) == 2:
             rows = []
             for d in range(kin.shape[0]):
                 pd_ = {r: np.atleast_1d(np.asarray(mech.params[r], float))
                        [d if np.size(mech.params[r]) > 1 else 0] for r in names}
-                w = np.broadcast_to(val(self.weight), kin.shape)[d]
+                w = np.broadcast_to(weight, kin.shape)[d]
                 rows.append(axle_reactions(self.machine_for(pd_), w, kin.x(self.point)[d]))
             return _stack_results(rows)
-        return axle_reactions(machine, val(self.weight), kin.x(self.point))
+        return axle_reactions(machine, weight, kin.x(self.point))
 
     def _refs(self, mech):
         names = self.ref_names()
