@@ -53,7 +53,7 @@ from .kernel.emit import Emitter
 from .kernel.select import branchless
 from .kernel.source import BUF_ROW, CHUNK, chunk_loop, hoisted, status_out
 from .kernel.sym import Sym, Tracer, code
-from .statics import GRAVITY, ReactionContextBase
+from .statics import GRAVITY, ReactionContextBase, gravity_unit
 
 __all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS"]
 
@@ -95,11 +95,38 @@ class OutputContext(ReactionContextBase):
     ``cylinder_terms(name)`` → ``(Cylinder, η_mech, k·A·η_hyd [m²], F_max·η_mech [N])``.
     """
 
+    def __init__(self, mech, rod_ends):
+        super().__init__(mech, rod_ends)
+        self.gravity_unit = gravity_unit(mech)
+        self.moving = False
+        self.k = len(mech.coordinates)
+        self.vw = [0.0] * self.k
+        self._frame = frozenset(mech.frame_points)
+
     def has_point(self, p):
         raise NotImplementedError
 
     def cylinder_terms(self, name):
         raise NotImplementedError
+
+    def record(self, i, j, pt, fx, fy, mz=0.0):
+        self.joints[(i, j)] = (pt, fx, fy, mz)
+
+    # loads (assur.loads contract): the wrench on the body and the virtual work ------
+    def force(self, link, point, fx, fy):
+        self.apply(link, point, fx, fy)
+        if point not in self._frame:  # a frame point does not move: no work
+            for a in range(self.k):
+                jx, jy = self.jet(point, a)
+                self.vw[a] = self.vw[a] + fx * jx + fy * jy
+
+    def couple(self, link, M):
+        self.apply_moment(link, M)
+        for a in range(self.k):
+            self.vw[a] = self.vw[a] + M * self.omega(link, a)
+
+    def spring(self, load, T, L):
+        pass
 
     def rate(self, link, coordinate=None):
         """∂φ/∂q of a link along a coordinate (the only one by default)."""
@@ -199,11 +226,6 @@ class _Fused(OutputContext):
         self.prog, self.t = prog, tracer
         self.literal_rows = literal_rows
         self.g = self.value(_G)
-        from .statics import gravity_unit
-        self.gravity_unit = gravity_unit(mech)
-        self.moving = False
-        self.k = len(mech.coordinates)
-        self.vw = [0.0] * self.k
         self.cyl_rows = cyl_rows
 
     # values ------------------------------------------------------------------------
@@ -234,27 +256,8 @@ class _Fused(OutputContext):
             return self.t.new(f"1.0 / {x.name} if {x.name} != 0.0 else 0.0")
         return 1.0 / x if x != 0 else 0.0
 
-    def record(self, i, j, pt, fx, fy, mz=0.0):
-        self.joints[(i, j)] = (pt, fx, fy, mz)
-
-    # loads (assur.loads contract) ---------------------------------------------------
-    def force(self, link, point, fx, fy):
-        self.apply(link, point, fx, fy)
-        if point not in self.prog.frame_rows:
-            for a in range(self.k):
-                jx, jy = self.jet(point, a)
-                self.vw[a] = self.vw[a] + fx * jx + fy * jy
-
-    def couple(self, link, M):
-        self.apply_moment(link, M)
-        for a in range(self.k):
-            self.vw[a] = self.vw[a] + M * self.omega(link, a)
-
     def nonzero(self, L, what):
         """Coincident spring ends give a non-finite element, caught after the kernel."""
-
-    def spring(self, load, T, L):
-        pass
 
     def has_point(self, p):
         return p in self.prog.slot

@@ -64,7 +64,6 @@ import numpy as np
 from ..errors import ModelError
 from ..fused import OUTPUT_UNITS, OutputContext, parse_output
 from ..groups.base import is_number, signed_name
-from ..statics import gravity_unit
 from .dual import Dual, base, variables
 
 __all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs"]
@@ -120,10 +119,6 @@ class _JetContext(OutputContext):
         self.pts = pts
         self._value = value
         self.g = g
-        self.gravity_unit = gravity_unit(mech)
-        self.moving = False
-        self.k = len(mech.coordinates)
-        self.vw = [0.0] * self.k
 
     def point(self, p):
         return self.pts[p]
@@ -138,27 +133,9 @@ class _JetContext(OutputContext):
     def inv(self, x):
         return 1.0 / x
 
-    def record(self, i, j, pt, fx, fy, mz=0.0):
-        self.joints[(i, j)] = (pt, fx, fy, mz)
-
-    # loads (assur.loads contract)
-    def force(self, link, point, fx, fy):
-        self.apply(link, point, fx, fy)
-        for a in range(self.k):
-            jx, jy = self.jet(point, a)
-            self.vw[a] = self.vw[a] + fx * jx + fy * jy
-
-    def couple(self, link, M):
-        self.apply_moment(link, M)
-        for a in range(self.k):
-            self.vw[a] = self.vw[a] + M * self.omega(link, a)
-
     def nonzero(self, L, what):
         if np.any(base(L) == 0):
             raise ModelError(f"{what}: its direction is undefined at some position")
-
-    def spring(self, load, T, L):
-        pass
 
     def has_point(self, p):
         return p in self.pts
