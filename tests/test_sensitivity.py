@@ -26,81 +26,20 @@ from hypothesis import strategies as st
 
 from assur import examples
 from assur.errors import AssemblyError, ModelError
-from assur.sensitivity import jet_outputs, numeric_parameters, sensitivities
+from assur.sensitivity import numeric_parameters, sensitivities
+from assur.sensitivity.cstep import H as H_CS
+from assur.sensitivity.cstep import complex_step
 from assur.sensitivity.dual import Dual, base, variables
 from assur.statics import solve
 from conftest import examples as n_examples
 import test_statics_random as TS  # the random mechanism families and loads
 
-H_CS = 1e-30
 RTOL_CS = 1e-9
 RTOL_FD = 1e-5
 
 HITCH_OUTPUTS = ["G(ГЦ, S6)", "G(ГЦ, 56)", "p(ГЦ)", "Y(S6)", "Y(56)", "X(67)", "dY(S6)",
                  "phi(6)", "dphi(5)", "F(S)", "Fr(S)", "Rx(0, 5)", "Ry(0, 5)", "R(5, 6)",
                  "reserve(ГЦ, S6, P6)"]
-
-
-class CStep(np.ndarray):
-    """A complex array whose ufuncs numpy lacks for complex numbers (``arctan2``,
-    ``hypot``, ``abs``, ``maximum``, ``minimum``, ``copysign``) are their analytic
-    continuations near the real axis, and whose comparisons look at the real parts:
-    complex step through code written for real arrays."""
-
-    def __array_ufunc__(self, ufunc, method, *inputs, **kw):
-        if any(hasattr(type(x), "__array_ufunc__") and not isinstance(x, np.ndarray)
-               for x in inputs):
-            return NotImplemented  # a dual: its own rules
-        args = [np.asarray(x) for x in inputs]
-        res = None
-        if method == "__call__" and not kw:
-            res = _cs_call(ufunc, args)
-        if res is None:
-            res = getattr(ufunc, method)(*args, **kw)
-        if np.iscomplexobj(res):  # 0-d results too (numpy would give a scalar)
-            return np.asarray(res).view(CStep)
-        return res
-
-
-def _cs_call(ufunc, args):
-    re = [np.real(a) for a in args]
-    if ufunc is np.arctan2:
-        y, x = args
-        yr, xr = re
-        off = np.arctan2(yr, xr)
-        # each branch divides by the larger of the two where it is taken; where it is
-        # not, by 1 (a tiny other component must not overflow the discarded quotient)
-        wide = (np.abs(xr) >= np.abs(yr)) & (xr != 0)
-        xs, ys = np.where(wide, x, 1.0), np.where(np.abs(xr) < np.abs(yr), y, 1.0)
-        a = np.arctan(y / xs) + (off - np.arctan(yr / np.real(xs)))
-        b = -np.arctan(x / ys) + (off + np.arctan(xr / np.real(ys)))
-        return np.where(np.abs(xr) >= np.abs(yr), a, b)
-    if ufunc is np.hypot:
-        return np.sqrt(args[0] * args[0] + args[1] * args[1])
-    if ufunc is np.absolute:
-        return np.where(re[0] >= 0, args[0], -args[0])
-    if ufunc in (np.maximum, np.minimum):
-        pick = re[0] >= re[1] if ufunc is np.maximum else re[0] <= re[1]
-        return np.where(pick, args[0], args[1])
-    if ufunc is np.copysign:
-        return np.where(np.signbit(re[0]) == np.signbit(re[1]), args[0], -args[0])
-    if ufunc in (np.less, np.less_equal, np.greater, np.greater_equal, np.equal,
-                 np.not_equal):
-        return ufunc(*re)
-    return None
-
-
-def _cs(v):
-    return np.asarray(np.asarray(v, dtype=complex) + 1j * H_CS).view(CStep)
-
-
-def complex_step(mech, q, params, outputs):
-    """(n, outputs, params) derivatives by complex step of the plain-numpy pipeline."""
-    cols = []
-    for p in params:
-        res, *_ = jet_outputs(mech, q, (), outputs, step=(p, _cs))
-        cols.append(np.stack([np.imag(v) / H_CS for v, _ in res], -1))
-    return np.stack(cols, -1)
 
 
 def assert_close(got, ref, rtol, what, families=None, values=None):

@@ -19,6 +19,11 @@ sensitivities ∂/∂p and the mixed ∂²/∂q∂p — which is what the deriva
 cylinder force F = −Σ F_load·∂r/∂q, of a pressure and of a capacity
 G = k·p_max·A·η_h·η_m/(∂Y/∂q) needs.
 
+The reference they are checked against is :func:`assur.sensitivity.cstep.complex_step`:
+the same plain-numpy code, without parameter jets, with one parameter given an
+imaginary step (the tests on random mechanisms of every group family; the timing in
+``benchmarks/sensitivity.py``).
+
 Why not the alternatives:
 
 * *Symbolic differentiation in the generated kernel* would need a third jet order
