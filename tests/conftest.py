@@ -16,6 +16,7 @@
 import os
 import sys
 
+import pytest
 from hypothesis import settings
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -32,3 +33,22 @@ settings.load_profile(PROFILE)
 def examples(n: int) -> int:
     """Examples of a property test: ``n`` in the ``ci`` profile, n/5 (≥ 10) in ``dev``."""
     return n if PROFILE == "ci" else max(10, n // 5)
+
+
+@pytest.fixture
+def page_log(request):
+    """``page_log(line)``: show a measurement of the page's tests in the terminal
+    (without xdist, whose workers keep their output) and append it to
+    ``.pytest_cache/assur-page.log``."""
+    from pathlib import Path
+
+    def log(line):
+        tr = request.config.pluginmanager.get_plugin("terminalreporter")
+        if tr is not None and "PYTEST_XDIST_WORKER" not in os.environ:
+            tr.write_line(line)
+        path = Path(request.config.rootpath) / ".pytest_cache" / "assur-page.log"
+        path.parent.mkdir(exist_ok=True)
+        with open(path, "a", encoding="utf-8") as f:
+            f.write(line.strip() + "\n")
+
+    return log

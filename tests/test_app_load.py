@@ -67,7 +67,7 @@ def served(path):
         proc.stdout.close()
 
 
-def test_fifty_requests_per_second_for_thirty_seconds(request):
+def test_fifty_requests_per_second_for_thirty_seconds(page_log):
     local = threading.local()
     conns, stale, lock = [], [], threading.Lock()
 
@@ -135,23 +135,10 @@ def test_fifty_requests_per_second_for_thirty_seconds(request):
             c.close()
     lat = np.array([r[0] for r in results]) * 1e3
     errors = [r[1] for r in results if r[1]]
-    _log(request, f"\nload test: {n} requests in {elapsed:.1f} s ({n / elapsed:.1f}/s), "
-              f"{len(errors)} errors, {len(stale)} retried on a new connection after the "
-              f"server closed an idle one; latency p50 {np.percentile(lat, 50):.1f} ms, "
-              f"p99 {np.percentile(lat, 99):.1f} ms, max {lat.max():.1f} ms")
+    page_log(f"\nload test: {n} requests in {elapsed:.1f} s ({n / elapsed:.1f}/s), "
+             f"{len(errors)} errors, {len(stale)} retried on a new connection after the "
+             f"server closed an idle one; latency p50 {np.percentile(lat, 50):.1f} ms, "
+             f"p99 {np.percentile(lat, 99):.1f} ms, max {lat.max():.1f} ms")
     assert not errors, errors[:5]
     assert elapsed < DURATION + 30  # the schedule was kept (not a latency bound)
 
-
-def _log(request, line):
-    """Show the measurement in the terminal (without xdist, whose workers keep their
-    output) and append it to ``.pytest_cache/assur-page.log``."""
-    import os
-    from pathlib import Path
-    tr = request.config.pluginmanager.get_plugin("terminalreporter")
-    if tr is not None and "PYTEST_XDIST_WORKER" not in os.environ:
-        tr.write_line(line)
-    path = Path(request.config.rootpath) / ".pytest_cache" / "assur-page.log"
-    path.parent.mkdir(exist_ok=True)
-    with open(path, "a", encoding="utf-8") as f:
-        f.write(line.strip() + "\n")

@@ -45,7 +45,7 @@ def _redraws(logs):
             if m]
 
 
-def test_hitch_page_end_to_end(browser, url, request):
+def test_hitch_page_end_to_end(browser, url, page_log):
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
     logs, errors = [], []
     page.on("console", lambda m: logs.append(m.text))
@@ -108,21 +108,8 @@ def test_hitch_page_end_to_end(browser, url, request):
     times = _redraws(logs)
     assert len(times) > len(_redraws(logs[:n]))
     assert not errors, errors
-    _log(request, f"\npage e2e (seed 003): {len(times)} redraws after a parameter change, "
-              f"times from the input event to the new drawing [ms]: "
-              f"{', '.join(f'{t:.0f}' for t in times)}")
+    page_log(f"\npage e2e (seed 003): {len(times)} redraws after a parameter change, "
+             f"times from the input event to the new drawing [ms]: "
+             f"{', '.join(f'{t:.0f}' for t in times)}")
     page.close()
 
-
-def _log(request, line):
-    """Show the measurement in the terminal (without xdist, whose workers keep their
-    output) and append it to ``.pytest_cache/assur-page.log``."""
-    import os
-    from pathlib import Path
-    tr = request.config.pluginmanager.get_plugin("terminalreporter")
-    if tr is not None and "PYTEST_XDIST_WORKER" not in os.environ:
-        tr.write_line(line)
-    path = Path(request.config.rootpath) / ".pytest_cache" / "assur-page.log"
-    path.parent.mkdir(exist_ok=True)
-    with open(path, "a", encoding="utf-8") as f:
-        f.write(line.strip() + "\n")
