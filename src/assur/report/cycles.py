@@ -42,7 +42,6 @@ Forces are shown in kN in the figures and the HTML, in N in the CSV and XLSX.
 
 from __future__ import annotations
 
-import base64
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -51,6 +50,7 @@ import numpy as np
 from ..dynamics.cycles import PERIODS, SCENARIOS, strokes, sweep
 from ..texts import Text, localize
 from .figures import new_figure, titled_axes, to_png_bytes
+from .html import data_uri
 from .labels import check_lang, unit
 from .tables import Column, Table, write_csv, write_xlsx
 
@@ -578,8 +578,7 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
                                            stroke_text),
             notes=[localize(n, lang) for n in model.mechanism.notes],
             drive=drive, m2=unit("m²", lang), ms=unit("m/s", lang),
-            figures=[{"name": n, "uri": "data:image/png;base64,"
-                      + base64.b64encode(d).decode("ascii")} for n, d in pngs.items()],
+            figures=[{"name": n, "uri": data_uri(d)} for n, d in pngs.items()],
             tables=views)
         p = out / "cycles.html"
         p.write_text(text, encoding="utf-8")

@@ -5,9 +5,7 @@ the numbers come from :mod:`assur.design`.
 
 from __future__ import annotations
 
-import base64
 import html
-import io as _io
 
 import numpy as np
 
@@ -60,20 +58,6 @@ def curves(problem, x):
     return {o: np.asarray(f[o]) for o in problem.outputs if not o.startswith("length(__")}
 
 
-def _figure(w, h):
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-    fig = Figure(figsize=(w, h))
-    FigureCanvasAgg(fig)
-    return fig
-
-
-def _png(fig):
-    buf = _io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
-    return base64.b64encode(buf.getvalue()).decode("ascii")
-
-
 def _unit_of(problem, output):
     for c in problem.constraints + problem.objectives:
         if output in c.outputs and c.unit is not None:
@@ -94,6 +78,8 @@ def comparison_html(problem, result, title=None, lang="en"):
     :class:`~assur.design.search.OptimizeResult`) with the original: the variables,
     the objective, the constraints, and the curves of both over the positions;
     labels in ``lang`` ("en" or "ru")."""
+    from .figures import new_figure, to_png_bytes   # matplotlib when a report is made
+    from .html import data_uri
     if lang not in ("en", "ru"):
         raise ValueError("lang must be one of: ['en', 'ru']")
 
@@ -129,7 +115,7 @@ def comparison_html(problem, result, title=None, lang="en"):
     figs = ""
     for o in c0:
         u = _unit_of(problem, o)
-        fig = _figure(5.5, 3.2)
+        fig = new_figure(5.5, 3.2)
         ax = fig.add_subplot()
         ax.plot(q, u.of(c0[o]), label=t("original"), color="0.4")
         ax.plot(q, u.of(c1[o]), label=t("best"), color="C0")
@@ -138,7 +124,8 @@ def comparison_html(problem, result, title=None, lang="en"):
         ax.set_ylabel(f"{o} [{u.text}]")
         ax.grid(alpha=0.3)
         ax.legend()
-        figs += f'<figure><img alt="{esc(o)}" src="data:image/png;base64,{_png(fig)}"></figure>'
+        uri = data_uri(to_png_bytes(fig, bbox_inches="tight"))
+        figs += f'<figure><img alt="{esc(o)}" src="{uri}"></figure>'
     ttl = esc(title or t("title", name=problem.name))
     status = t("feasible") if result.feasible else t("infeasible", why=best.reason(0))
     work = t("work", n=result.evaluations, calls=result.calls, gens=result.generations,
@@ -183,8 +170,9 @@ def write_comparison(path, problem, result, title=None, lang="en"):
 def pareto_figure(problem, result, path):
     """The Pareto front (two first objectives, in their units) with the original
     design, saved to ``path`` (PNG or SVG)."""
+    from .figures import new_figure
     a, b = problem.objectives[:2]
-    fig = _figure(5.5, 4)
+    fig = new_figure(5.5, 4)
     ax = fig.add_subplot()
     if result.batch is not None:
         F = result.batch.objectives

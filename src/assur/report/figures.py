@@ -573,8 +573,11 @@ def save(fig, path, dpi=110) -> Path:
     return path
 
 
-def to_png_bytes(fig, dpi=110) -> bytes:
-    """The figure as PNG bytes (for embedding)."""
+def to_png_bytes(fig, dpi=110, bbox_inches=None) -> bytes:
+    """The figure as PNG bytes (for embedding); ``bbox_inches="tight"`` crops it to
+    its drawn parts."""
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None})
+    fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None},
+                bbox_inches=bbox_inches)
     return buf.getvalue()
+

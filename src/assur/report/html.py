@@ -11,8 +11,9 @@ XLSX files keep full precision.
 
 from __future__ import annotations
 
-import base64
 from pathlib import Path
+
+import base64
 
 import numpy as np
 
@@ -45,8 +46,9 @@ def _fmt(x, u, lang):
     return s.lstrip("-") if float(s) == 0 else s
 
 
-def _data_uri(png: bytes) -> str:
-    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+def data_uri(data: bytes, mime: str = "image/png") -> str:
+    """``data:`` URI of an image, for embedding it in an HTML report."""
+    return f"data:{mime};base64," + base64.b64encode(data).decode("ascii")
 
 
 def _anchor(prefix, ident):
@@ -164,7 +166,7 @@ def _figure_items(figures, lang):
         if caption is None:
             key = f"f_{name}"
             caption = TEXT[key][lang].replace("{0}", "").strip() if key in TEXT else name
-        items.append(dict(name=name, anchor=_anchor("fig-", name), src=_data_uri(bytes(obj)),
+        items.append(dict(name=name, anchor=_anchor("fig-", name), src=data_uri(bytes(obj)),
                           caption=f"{t('figure', lang)} {k} — {caption}"))
     return items
 
@@ -330,12 +332,12 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     drawing_uri = None
     if drawing is not False:
         png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
-        drawing_uri = _data_uri(bytes(png))
+        drawing_uri = data_uri(bytes(png))
     frames = []
     if animation is not False and animation:
         if not isinstance(animation[0], (bytes, bytearray)):
             animation = _drawing.frames_png_bytes(animation)
-        frames = [_data_uri(bytes(f)) for f in animation]
+        frames = [data_uri(bytes(f)) for f in animation]
     env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
     tpl = env.from_string(_TEMPLATE)
     L = {k: v[lang] for k, v in TEXT.items()}

@@ -20,15 +20,14 @@ figure the pump's pressure too, and ``reduced_mass`` shows the diagonal of M(q(t
 
 from __future__ import annotations
 
-import base64
 import html
-import io as _io
 from pathlib import Path
 
 import numpy as np
 
 from ..texts import Text, localize
-from .figures import new_figure, titled_axes
+from .figures import new_figure, titled_axes, to_png_bytes
+from .html import data_uri
 from .labels import check_lang, t, unit
 
 __all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
@@ -177,12 +176,6 @@ def summary(result, lang="en"):
     return rows
 
 
-def _png(fig):
-    buf = _io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110)
-    return buf.getvalue()
-
-
 def write_simulation_report(result, outdir, title="", lang="en",
                             formats=("csv", "png", "html", "gif"), mechanism=None,
                             frame_step=0.1):
@@ -210,7 +203,7 @@ def write_simulation_report(result, outdir, title="", lang="en",
             p, index=False)
         files.append(p)
     figs = figures(result, lang) if ("png" in formats or "html" in formats) else {}
-    pngs = {name: _png(f) for name, f in figs.items()}
+    pngs = {name: to_png_bytes(f) for name, f in figs.items()}
     if "png" in formats:
         for name, data in pngs.items():
             p = out / f"sim_{name}.png"
@@ -227,7 +220,7 @@ def write_simulation_report(result, outdir, title="", lang="en",
         p = write_gif(frames, out / "simulation.gif", duration=int(round(frame_step * 1e3)),
                       bounce=False)
         files.append(p)
-        gif_uri = "data:image/gif;base64," + base64.b64encode(p.read_bytes()).decode("ascii")
+        gif_uri = data_uri(p.read_bytes(), "image/gif")
     if "html" in formats:
         esc = html.escape
         parts = [f"<!doctype html><html lang='{lang}'><head><meta charset='utf-8'>"
@@ -242,7 +235,7 @@ def write_simulation_report(result, outdir, title="", lang="en",
         if gif_uri:
             parts.append(f"<figure><img alt='motion' src='{gif_uri}'></figure>")
         for name, data in pngs.items():
-            uri = "data:image/png;base64," + base64.b64encode(data).decode("ascii")
+            uri = data_uri(data)
             parts.append(f"<figure><img alt='{esc(name)}' src='{uri}'></figure>")
         parts.append("</body></html>")
         p = out / "simulation.html"

@@ -5,7 +5,6 @@ report; bilingual through :class:`assur.texts.Text`."""
 
 from __future__ import annotations
 
-import base64
 import html as _html
 from pathlib import Path
 
@@ -13,6 +12,7 @@ import numpy as np
 
 from ..texts import Text, localize
 from .figures import new_figure, save, to_png_bytes
+from .html import data_uri
 from .labels import check_lang
 
 __all__ = ["display_scale", "tolerance_tables", "tolerance_histogram", "tolerance_html",
@@ -139,8 +139,8 @@ def tolerance_html(r, mech, lang="en", figures=None):
     parts.append("</table>")
     parts.append(f"<h2>{e(_l('worst', lang))}</h2>{_table_html(tabs['tolerance_worst'])}")
     for o, fig in (figures or {}).items():
-        png = base64.b64encode(to_png_bytes(fig)).decode()
-        parts.append(f"<figure><img alt='{e(o)}' src='data:image/png;base64,{png}'></figure>")
+        parts.append(f"<figure><img alt='{e(o)}' src='{data_uri(to_png_bytes(fig))}'>"
+                     "</figure>")
     parts.append(f"<h2>{e(_l('position', lang))}</h2>"
                  f"{_table_html(tabs['tolerance_positions'])}")
     if r.reasons:
