@@ -99,6 +99,17 @@ def test_hitch_page_end_to_end(browser, url, page_log):
     text = Path(dl.value.path()).read_text(encoding="utf-8")
     assert 'L5 = "0.5 m"' in text and "# §1.2 links" in text
 
+    # animated: play moves the stroke and the drawing with it; a second click stops it
+    s0 = page.input_value("#stroke")
+    ya = page.get_attribute("#pt-56", "data-y")
+    page.click("#play")
+    page.wait_for_function("document.getElementById('stroke').value !== %r" % s0)
+    page.wait_for_function("document.getElementById('pt-56').dataset.y !== %r" % ya)
+    page.click("#play")
+    stopped = page.input_value("#stroke")
+    page.wait_for_timeout(300)          # five ticks of the 60 ms timer, had it run on
+    assert page.input_value("#stroke") == stopped
+
     # Russian labels
     page.click("#lang-toggle")
     page.wait_for_function("document.getElementById('title').textContent.includes('навески')")
