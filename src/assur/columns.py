@@ -276,6 +276,47 @@ class Formula:
                 raise FormulaError(f"unknown distance {d!r} in {self.expr!r}: expected one of "
                                    f"the named distances ({', '.join(dists) or 'none'})")
 
+    def compute(self, terms):
+        """The expression's value from ``terms`` (one walker for every kind of value).
+
+        Parameters
+        ----------
+        terms : mapping
+            ``terms["name"](n)`` — a parameter or a coordinate [SI]; ``terms[f](ref)``
+            for ``f`` in ``X Y I phi dphi ddphi dist ddist`` — the kinematic quantity
+            of a point, link or distance. Arrays for :meth:`evaluate`; the symbols of
+            the fused kernel or the dual numbers of the sensitivities for
+            :mod:`assur.fused` (numpy's functions dispatch on them).
+
+        Returns
+        -------
+        value
+            Of the type ``terms`` gives [SI].
+        """
+        def walk(node):
+            if isinstance(node, ast.Expression):
+                return walk(node.body)
+            if isinstance(node, ast.Constant):
+                return np.float64(node.value)
+            if isinstance(node, ast.Name):
+                if node.id in CONSTANTS:
+                    return np.float64(CONSTANTS[node.id])
+                return terms["name"](node.id)
+            if isinstance(node, ast.BinOp):
+                return _BINOPS[type(node.op)](walk(node.left), walk(node.right))
+            if isinstance(node, ast.UnaryOp):
+                return _UNARY[type(node.op)](walk(node.operand))
+            f = node.func.id
+            if f in POINT_FUNCTIONS:
+                return terms[f](_ref(node.args[0], "point"))
+            if f in LINK_FUNCTIONS:
+                return terms[f](_ref(node.args[0], "link"))
+            if f in DISTANCE_FUNCTIONS:
+                return terms[f](_ref(node.args[0], "distance"))
+            return MATH_FUNCTIONS[f][0](*(walk(a) for a in node.args))
+
+        return walk(self._parsed[0])
+
     def evaluate(self, kin) -> np.ndarray:
         """The formula over the positions (and designs) of ``kin`` [SI].
 
@@ -305,44 +346,15 @@ class Formula:
                 return v.reshape((-1,) + (1,) * (len(kin.shape) - 1))
             return v.reshape(()) if v.ndim == 1 else v
 
-        def walk(node):
-            if isinstance(node, ast.Expression):
-                return walk(node.body)
-            if isinstance(node, ast.Constant):
-                return np.float64(node.value)
-            if isinstance(node, ast.Name):
-                if node.id in CONSTANTS:
-                    return np.float64(CONSTANTS[node.id])
-                if node.id in mech.coordinates:
-                    return kin.q(node.id)
-                return param(node.id)
-            if isinstance(node, ast.BinOp):
-                return _BINOPS[type(node.op)](walk(node.left), walk(node.right))
-            if isinstance(node, ast.UnaryOp):
-                return _UNARY[type(node.op)](walk(node.operand))
-            f = node.func.id
-            if f == "X":
-                return kin.x(_ref(node.args[0], "point"))
-            if f == "Y":
-                return kin.y(_ref(node.args[0], "point"))
-            if f == "I":
-                return kin.transmission(_ref(node.args[0], "point"))
-            if f == "phi":
-                return kin.phi(_ref(node.args[0], "link"))
-            if f == "dphi":
-                return kin.dphi(_ref(node.args[0], "link"))
-            if f == "ddphi":
-                return kin.ddphi(_ref(node.args[0], "link"))
-            if f == "dist":
-                return kin.length(_ref(node.args[0], "distance"))
-            if f == "ddist":
-                return kin.dlength(_ref(node.args[0], "distance"))
-            return MATH_FUNCTIONS[f][0](*(walk(a) for a in node.args))
+        terms = {"X": kin.x, "Y": kin.y, "I": kin.transmission, "phi": kin.phi,
+                 "dphi": kin.dphi, "ddphi": kin.ddphi, "dist": kin.length,
+                 "ddist": kin.dlength,
+                 "name": lambda n: kin.q(n) if n in mech.coordinates else param(n)}
 
         # floating-point exceptions become errors (never silenced into NaN/inf)
         try:
             with np.errstate(all="raise"):
-                out = np.array(np.broadcast_to(np.asarray(walk(self._parsed[0]),
+                out = np.array(np.broadcast_to(np.asarray(self.compute(terms),
                                                           dtype=float), kin.shape))
         except (FloatingPointError, ZeroDivisionError, OverflowError, ValueError) as e:
             raise FormulaError(f"formula {self.name!r} = {self.expr}: cannot be evaluated "

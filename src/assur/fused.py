@@ -19,7 +19,7 @@ Outputs are written as function calls (units SI):
 ``I(p)``                 transmission number dY/dq of p (= ``dY(p)``)
 ``phi(l)``               angle of link l in (−π, π] (unwrapped along stored positions) [rad]
 ``dphi(l)``              its analog dφ/dq [rad/m or rad/rad]
-``length(d)``            a named distance [m]
+``length(d)``            a named distance [m]; ``dlength(d)`` its analog dd/dq [m/m, m/rad]
 ``F(c)``                 actuator force of coordinate c by virtual work [N or N·m]
 ``Fr(c)``                the same from the joint reactions [N or N·m]
 ``Rx(i, j)``, ``Ry``     force of link i on link j [N]; ``R(i, j)`` its magnitude,
@@ -28,6 +28,10 @@ Outputs are written as function calls (units SI):
 ``G(cyl, p)``            lift capacity at point p, k·p_max·A·η_h·η_m / I(p) [N]
 ``reserve(cyl, p, P)``   capacity reserve (G − P)/P·100 for a load P (number or
                          parameter) [%]
+``Xc``, ``Yc``           the common centre of mass of the masses on moving links,
+                         Σ m_i·r_i / Σ m_i (001 lab 3, :mod:`assur.balancing`) [m]
+``name``                 a formula of the model's ``[[tables.formulas]]`` by its name
+                         (:class:`assur.columns.Formula`), e.g. ``p_c`` [SI of its unit]
 =======================  ==============================================================
 
 Static loads only (weights, forces, moments, springs, the weights of masses); the
@@ -55,33 +59,80 @@ from .kernel.source import BUF_ROW, CHUNK, chunk_loop, hoisted, status_out
 from .kernel.sym import Sym, Tracer, code
 from .statics import GRAVITY, ReactionContextBase, gravity_unit
 
-__all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS"]
+__all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS", "parse_output",
+           "resolve_output", "output_unit", "formula_of"]
 
 FORMAT = "7"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
-                "dphi": "rad/q", "length": "m", "F": "N", "Fr": "N", "Rx": "N", "Ry": "N",
-                "R": "N", "Rm": "N·m", "p": "Pa", "G": "N", "reserve": "%"}
+                "dphi": "rad/q", "length": "m", "dlength": "m/q", "F": "N", "Fr": "N", "Rx": "N", "Ry": "N",
+                "R": "N", "Rm": "N·m", "p": "Pa", "G": "N", "reserve": "%", "Xc": "m",
+                "Yc": "m", "formula": "SI"}
 _ARITY = {"X": (1,), "Y": (1,), "dX": (1, 2), "dY": (1, 2), "I": (1, 2), "phi": (1,),
-          "dphi": (1, 2), "length": (1,), "F": (1,), "Fr": (1,), "Rx": (2,), "Ry": (2,),
-          "R": (2,), "Rm": (2,), "p": (1,), "G": (2,), "reserve": (3,)}
+          "dphi": (1, 2), "length": (1,), "dlength": (1, 2), "F": (1,), "Fr": (1,), "Rx": (2,), "Ry": (2,),
+          "R": (2,), "Rm": (2,), "p": (1,), "G": (2,), "reserve": (3,), "Xc": (0,),
+          "Yc": (0,)}
 _CALL = re.compile(r"^\s*([A-Za-z]+)\s*\((.*)\)\s*$")
+_NAME = re.compile(r"^\s*([^\W\d]\w*)\s*$")
 
 
 @functools.lru_cache(maxsize=4096)
 def parse_output(text: str) -> tuple:
-    """``"Rx(0, 5)"`` → ``("Rx", ("0", "5"))``; raises :class:`ModelError`."""
+    """``"Rx(0, 5)"`` → ``("Rx", ("0", "5"))``, ``"Xc"`` → ``("Xc", ())``, the name of
+    a formula ``"p_c"`` → ``("formula", ("p_c",))`` (whether the model has it is checked
+    where the mechanism is known); raises :class:`ModelError`."""
+    bare = _NAME.match(str(text))
+    if bare:
+        name = bare.group(1)
+        return (name, ()) if _ARITY.get(name) == (0,) else ("formula", (name,))
     m = _CALL.match(str(text))
     if not m or m.group(1) not in _ARITY:
         raise ModelError(f"unknown output {text!r}: expected one of "
-                         f"{', '.join(f + '(…)' for f in _ARITY)}")
+                         f"{', '.join(f + ('' if _ARITY[f] == (0,) else '(…)') for f in _ARITY)}"
+                         f" or the name of a formula of the model's [[tables.formulas]]")
     args = tuple(a.strip().strip("'\"") for a in m.group(2).split(",")) if m.group(2).strip() \
         else ()
     if len(args) not in _ARITY[m.group(1)]:
         raise ModelError(f"output {text!r}: {m.group(1)} takes "
                          f"{' or '.join(map(str, _ARITY[m.group(1)]))} argument(s)")
     return m.group(1), args
+
+
+def formula_of(mech, name):
+    """The :class:`assur.columns.Formula` of ``mech`` named ``name``; raises
+    :class:`ModelError` naming the formulas it has."""
+    from .columns import formulas_of
+    fs = formulas_of(mech)
+    for f in fs:
+        if f.name == name:
+            return f
+    raise ModelError(f"unknown output {name!r}: model {mech.name!r} has no formula of that "
+                     f"name (its [[tables.formulas]]: {[f.name for f in fs] or 'none'}); "
+                     f"the outputs are " + ", ".join(
+                         f + ("" if _ARITY[f] == (0,) else "(…)") for f in _ARITY))
+
+
+def resolve_output(mech, text) -> tuple:
+    """:func:`parse_output` of ``text`` for ``mech``: a formula's name becomes
+    ``("formula", (name, expression))`` — the expression is part of the kernel's key —
+    after checking that ``mech`` has it and that its names exist."""
+    fn, args = text if isinstance(text, tuple) else parse_output(text)
+    if fn == "formula":
+        f = formula_of(mech, args[0])
+        f.check(mech)
+        return fn, (f.name, f.expr)
+    return fn, args
+
+
+def output_unit(mech, text) -> str:
+    """The SI unit of an output (``"q"`` for the coordinate's unit in analogs): a
+    formula's own unit when its scale is 1, else ``"SI"``."""
+    fn, args = resolve_output(mech, text)
+    if fn == "formula":
+        f = formula_of(mech, args[0])
+        return f.unit if f.scale == 1.0 else "SI"
+    return OUTPUT_UNITS[fn]
 
 
 class OutputContext(ReactionContextBase):
@@ -167,6 +218,20 @@ class OutputContext(ReactionContextBase):
                              f"{[b for b in self.mech.topology.bodies if b != '0']}")
         return pq
 
+    def formula_terms(self):
+        """The kinematic quantities of a :class:`assur.columns.Formula` as this
+        context's values (the outputs ``X``, ``Y``, ``I``, ``phi``, ``dphi``,
+        ``length``, ``dlength``; second analogs are not in the fused kernel)."""
+        def out(fn):
+            return lambda ref: self.output(fn, (ref,))
+
+        def second(ref):
+            raise ModelError(f"ddphi({ref}): second analogs are not outputs of the fused "
+                             f"kernel; a formula with ddphi is a report column only")
+        return {"X": out("X"), "Y": out("Y"), "I": out("I"), "phi": out("phi"),
+                "dphi": out("dphi"), "ddphi": second, "dist": out("length"),
+                "ddist": out("dlength"), "name": self.value}
+
     def output(self, fn, args):
         if fn in ("X", "Y", "dX", "dY", "I") and not self.has_point(args[0]):
             raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
@@ -183,12 +248,32 @@ class OutputContext(ReactionContextBase):
             (pxa, pya), (qxa, qya) = self.jet(P, a), self.jet(Q, a)
             dx, dy = qx - px, qy - py
             return (dx * (qya - pya) - dy * (qxa - pxa)) / (dx * dx + dy * dy)
-        if fn == "length":
+        if fn in ("length", "dlength"):
             dd = [x for x in self.mech.distances if x.name == args[0]]
             if not dd:
-                raise ModelError(f"no distance {args[0]!r}")
+                raise ModelError(f"no distance {args[0]!r}; distances: "
+                                 f"{[x.name for x in self.mech.distances]}")
             (ax, ay), (bx, by) = self.point(dd[0].a), self.point(dd[0].b)
-            return np.hypot(bx - ax, by - ay)
+            L = np.hypot(bx - ax, by - ay)
+            if fn == "length":
+                return L
+            a = self.coord_index(args, fn)
+            (axa, aya), (bxa, bya) = self.jet(dd[0].a, a), self.jet(dd[0].b, a)
+            return ((bx - ax) * (bxa - axa) + (by - ay) * (bya - aya)) / L
+        if fn in ("Xc", "Yc"):  # 001 lab 3: r_c = Σ m_i·r_i / Σ m_i (assur.balancing)
+            from .inertia import masses_of
+            masses = masses_of(self.mech)
+            if not masses:
+                raise ModelError(f"output {fn}: mechanism {self.mech.name!r} has no masses "
+                                 f"on moving links ([[loads]] of type \"mass\")")
+            num = tot = 0.0
+            for ld in masses:
+                m = self.value(ld.m)
+                num = num + m * self.point(ld.point)[fn == "Yc"]
+                tot = tot + m
+            return num / tot
+        if fn == "formula":
+            return formula_of(self.mech, args[0]).compute(self.formula_terms())
         if fn in ("F", "Fr"):
             if args[0] not in self.mech.coordinates:
                 raise ModelError(f"output {fn}({args[0]}): not a coordinate "
@@ -589,7 +674,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
         raise ValueError("on_failure must be one of: ['raise', 'report']")
     if not outputs:
         raise ModelError("evaluate: name at least one output, e.g. outputs=['Y(56)']")
-    specs = tuple(o if isinstance(o, tuple) else parse_output(o) for o in outputs)
+    specs = tuple(resolve_output(mech, o) for o in outputs)
     inputs.check_params(mech, params)
     m_ = mech.with_params(**params) if params else mech
     g = gravity_of(m_) if g is None else float(g)
@@ -604,7 +689,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
         raise diagnostics.assembly_error(m_, m_.program(), ptab, qarr, status, np.zeros(E), n,
                                          ~failed.reshape(m, n))
     nfail = failed.reshape(m, n).sum(axis=1)
-    units = {o: OUTPUT_UNITS[fn] for o, (fn, _) in zip(outputs, specs)}
+    units = {o: output_unit(mech, s_) for o, s_ in zip(outputs, specs)}
     if reduce:
         r = red.reshape(len(specs), 4, m, cpd)
         res = {op: {} for op in REDUCTIONS}

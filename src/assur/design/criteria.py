@@ -55,7 +55,7 @@ from functools import partial
 import numpy as np
 
 from ..errors import ModelError
-from ..fused import OUTPUT_UNITS, parse_output
+from ..fused import output_unit, parse_output, resolve_output
 from ..groups.base import signed_name
 
 __all__ = ["Criterion", "Limit", "CRITERIA", "REDUCTIONS", "criterion", "Reductions",
@@ -291,7 +291,7 @@ def jet_reductions(sens, params) -> Reductions:
 
 
 def _check_output(text, mech):
-    return parse_output(text)
+    return resolve_output(mech, text)
 
 
 _QUANTITY = {"m": "length", "rad": "angle", "N": "force", "Pa": "pressure", "N·m": "moment",
@@ -309,7 +309,7 @@ class _Bound(_Kind):
         if how not in REDUCTIONS:
             raise ModelError(f"bound of {q}: of must be one of {list(REDUCTIONS)}, got {how!r}")
         fn, _ = _check_output(q, mech)
-        return f"{how} {q}", (q,), (), _QUANTITY.get(OUTPUT_UNITS[fn])
+        return f"{how} {q}", (q,), (), _QUANTITY.get(output_unit(mech, q))
 
     def value(self, c, red):
         return red.of(c.args["quantity"], c.args.get("of", "min"))

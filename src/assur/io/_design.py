@@ -106,11 +106,13 @@ class DesignSpec:
         self.polish = polish
 
 
-def _kind_of_output(text):
-    from ..fused import OUTPUT_UNITS, parse_output
-    fn, _ = parse_output(text)
+def _kind_of_output(text, mech):
+    """The quantity of an output's limits (None for a formula: its value's own unit)."""
+    from ..fused import output_unit, resolve_output
+    if resolve_output(mech, text)[0] == "formula":
+        return None
     return {"m": LENGTH, "N": FORCE, "Pa": PRESSURE, "rad": ANGLE, "%": NUMBER}.get(
-        OUTPUT_UNITS[fn])
+        output_unit(mech, text))
 
 
 _CRITERION_KIND = {"capacity": FORCE, "pressure": PRESSURE, "transmission_angle": ANGLE,
@@ -214,15 +216,15 @@ def _criterion(c, key, mech, criterion, Limit):
         sense = "maximize" if c.maximize is not None else "minimize"
         if c.type == "bound":
             args["quantity"] = c.maximize or c.minimize
-        kind = _kind_of_output(args["quantity"]) if c.type == "bound" else \
+        kind = _kind_of_output(args["quantity"], mech) if c.type == "bound" else \
             _CRITERION_KIND[c.type]
-        unit = _percent(args.get("quantity")) or _default_unit(kind)
+        unit = _output_unit(args.get("quantity"), mech) or _default_unit(kind)
         return criterion(c.type, args, mech, sense=sense, unit=unit)
     if c.at_least is not None and c.at_most is not None:
         raise ValueError("give at_least or at_most, not both")
     sense = "at_least" if c.at_least is not None else "at_most" if c.at_most is not None \
         else None
-    kind = _kind_of_output(c.quantity) if c.type == "bound" else _CRITERION_KIND[c.type]
+    kind = _kind_of_output(c.quantity, mech) if c.type == "bound" else _CRITERION_KIND[c.type]
     if sense is None:
         if c.type == "pressure":  # the relief setting, shown in the unit the file gave it
             from ..quantities import display_units
@@ -238,7 +240,7 @@ def _criterion(c, key, mech, criterion, Limit):
     text = getattr(c, sense)
     if isinstance(text, str) and text.strip() == "original":
         return criterion(c.type, args, mech, limit=Limit("original", sense),
-                         unit=_percent(c.quantity) or _default_unit(kind))
+                         unit=_output_unit(c.quantity, mech) or _default_unit(kind))
     raw = parse(text) if not isinstance(text, str) or text.strip() else None
     if isinstance(raw, str):  # a parameter name
         if raw not in mech.params:
@@ -249,13 +251,17 @@ def _criterion(c, key, mech, criterion, Limit):
     return criterion(c.type, args, mech, limit=Limit(v, sense), unit=unit)
 
 
-def _percent(quantity):
-    """Unit("%") for an output in percent (a reserve), else None."""
-    from ..fused import OUTPUT_UNITS, parse_output
+def _output_unit(quantity, mech):
+    """Unit("%") for an output in percent (a reserve), a formula's own unit, else None."""
+    from ..fused import formula_of, output_unit, resolve_output
     from ..quantities import Unit
-    if quantity and OUTPUT_UNITS[parse_output(quantity)[0]] == "%":
-        return Unit("%")
-    return None
+    if not quantity:
+        return None
+    fn, args = resolve_output(mech, quantity)
+    if fn == "formula":
+        f = formula_of(mech, args[0])
+        return Unit(f.unit, f.scale)
+    return Unit("%") if output_unit(mech, quantity) == "%" else None
 
 
 def _default_unit(kind):

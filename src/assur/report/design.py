@@ -62,10 +62,14 @@ def _unit_of(problem, output):
     for c in problem.constraints + problem.objectives:
         if output in c.outputs and c.unit is not None:
             return c.unit
-    from ..fused import OUTPUT_UNITS, parse_output
+    from ..fused import formula_of, output_unit, resolve_output
     from ..quantities import Unit
-    fn, args = parse_output(output)
-    text = OUTPUT_UNITS[fn]
+    mech = problem.mechanism
+    fn, args = resolve_output(mech, output)
+    if fn == "formula":
+        f = formula_of(mech, args[0])
+        return Unit(f.unit, f.scale)
+    text = output_unit(mech, output)
     if "/q" in text:  # an analog: per metre of a cylinder, per radian of a crank
         mech = problem.mechanism
         c = args[1] if len(args) > 1 else mech.coordinates[0]

@@ -67,7 +67,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ModelError
-from ..fused import OUTPUT_UNITS, OutputContext, parse_output
+from ..fused import OutputContext, output_unit, resolve_output
 from ..groups.base import is_number, signed_name
 from .dual import Dual, base, variables
 
@@ -93,8 +93,8 @@ def _param_unit(mech, name) -> str:
 
 
 def _unit_of(fn, mech, args):
-    u = OUTPUT_UNITS[fn]
-    if "q" in u:
+    u = output_unit(mech, (fn, args))
+    if "q" in u and fn != "formula":
         c = args[1] if len(args) > 1 else mech.coordinates[0]
         qu = "rad" if mech.coordinate_kind(c) == "angle" else "m"
         u = u.replace("q", qu)
@@ -264,7 +264,7 @@ def jet_outputs(mech, q, params, outputs, g=None, values=None, step=None):
     if unknown:
         raise ModelError(f"{mech.name}: {unknown} are not parameters; parameters: "
                          f"{list(mech.params)}")
-    specs = [parse_output(o) for o in outputs]
+    specs = [resolve_output(mech, o) for o in outputs]
     if values:
         inputs.check_params(mech, values)
         mech = mech.with_params(**values)
@@ -398,6 +398,6 @@ def sensitivities(source, q=None, params=None, outputs=(), *, values=None, g=Non
     qs = q3[0].reshape(out_shape) if len(m2.coordinates) == 1 else \
         np.moveaxis(q3, 0, -1).reshape(out_shape + (len(m2.coordinates),))
     units = {o: _unit_of(fn, m2, args) for o, (fn, args) in
-             zip(outputs, (parse_output(o) for o in outputs))}
+             zip(outputs, (resolve_output(m2, o) for o in outputs))}
     return Sensitivities(tuple(outputs), params, val, jac, qs, units,
                          {p: _param_unit(m2, p) for p in params})
