@@ -223,8 +223,9 @@ class PosePoint(Group):
 
     def prepare(self, data, ptab, positions_at):
         """Fill the derived rows (β, ℓ) of ``ptab`` per design from the positions of
-        origin and toward at the pose; ``positions_at(qpose)`` runs the groups before
-        this one at ``qpose`` (k, m) and returns ``{point: (x, y)}``.
+        origin and toward at the pose; ``positions_at(qpose, points)`` runs the groups
+        before this one at ``qpose`` (k, m) and returns ``{point: (x, y)}`` of at least
+        ``points``.
 
         Examples
         --------
