@@ -21,7 +21,27 @@ __all__ = ["SliderInput"]
 class SliderInput(Group):
     """Slider ``out`` on the line through ``origin`` at ``direction`` [rad] from +x,
     at distance ``s + offset`` [m]. ``links = (slider,)``; the slider turns with the
-    link of ``origin`` (its guide)."""
+    link of ``origin`` (its guide).
+
+    Examples
+    --------
+    The double-rod cylinder of seed 001 lab 4's modern steering drive: its rod ends
+    1L and 1R slide along +x from the cylinder's middle C0 at −h_rod and +h_rod
+    (h_rod = 0.35 m, illustrative):
+
+    >>> from assur import examples
+    >>> m = examples.steering_lab4_modern()
+    >>> g = m.group("rod end 1L")
+    >>> g.origin, g.s, g.offset, g.direction          # direction [rad]
+    ('C0', 'S', '-h_rod', 0.0)
+    >>> r = m.solve([0.0, 0.03])                      # S [m]
+    >>> [round(float(v), 3) for v in r.x("1L")]       # [m]
+    [-0.35, -0.32]
+    >>> [round(float(v), 3) for v in r.x("1R")]       # [m]
+    [0.35, 0.38]
+    >>> round(float(r.dx("1L")[0]), 3)                # ∂x/∂S [m/m]
+    1.0
+    """
 
     origin: str = ""
     out: str = ""
@@ -44,18 +64,67 @@ class SliderInput(Group):
     )
 
     def inputs(self):
+        """The point of the guide line.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.steering_lab4_modern().group("rod end 1L").inputs()
+        ('C0',)
+        """
         return (self.origin,)
 
     def outputs(self):
+        """The slider point.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.steering_lab4_modern().group("rod end 1L").outputs()
+        ('1L',)
+        """
         return (self.out,)
 
     def refs(self):
+        """``offset`` [m] and ``direction`` [rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.steering_lab4_modern().group("rod end 1L").refs()   # −h_rod; 0 [rad]
+        {'offset': '-h_rod', 'direction': 0.0}
+        """
         return {"offset": self.offset, "direction": self.direction}
 
     def coordinates_driven(self):
+        """The travel ``s``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.steering_lab4_modern()
+        >>> m.group("rod end 1L").coordinates_driven(), m.group("rod end 1R").coordinates_driven()
+        (('S',), ('S',))
+        """
         return (self.s,)
 
     def topology(self, t):
+        """Create the slider (a body of one point, which owns it) turning with the
+        guide, the link of ``origin``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.topology import TopologyBuilder
+        >>> m = examples.steering_lab4_modern()
+        >>> t = TopologyBuilder(m.name, m.coordinates)
+        >>> for g in m.groups[:3]:                     # the frame points 03, 04, C0
+        ...     _ = g.topology(t)
+        >>> m.group("rod end 1L").topology(t)
+        ('1L',)
+        >>> t.bodies["1L"], t.owner("1L"), t.turns["1L"]
+        (['1L'], '1L', '0')
+        """
         (l,) = t.link_names(self, 1)
         t.new(self, l, (self.out,))
         t.own(self.out, l)
@@ -63,17 +132,67 @@ class SliderInput(Group):
         return (l,)
 
     def evaluate(self, pts, val):
+        """Add ``out = origin + (s + offset)·(cos, sin)(direction)``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.groups.base import ref_value
+        >>> m = examples.steering_lab4_modern()
+        >>> pts = {"C0": (0.0, -0.3)}                                  # [m]
+        >>> val = lambda ref: ref_value({**m.params, "S": 0.03}, ref)  # S = 30 mm
+        >>> m.group("rod end 1L").evaluate(pts, val)
+        >>> [round(float(v), 3) for v in pts["1L"]]                    # C0 + (S − h_rod, 0) [m]
+        [-0.32, -0.3]
+        """
         ox, oy = pts[self.origin]
         t = val(self.s) + val(self.offset)
         b = val(self.direction)
         pts[self.out] = (ox + t * np.cos(b), oy + t * np.sin(b))
 
     def compile(self, c):
+        """``(slot of out, slot of origin, coordinate index, row of the offset, trig row
+        of the direction)``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.program import CompileContext
+        >>> m = examples.steering_lab4_modern()
+        >>> names = m.program().param_names        # the parameters, then −a_half, −h_rod
+        >>> c = CompileContext(m.coordinates, names)
+        >>> c.slot("C0")
+        0
+        >>> m.group("rod end 1L").compile(c)       # 1L in slot 1; S; row of −h_rod; trig 0
+        (1, 0, 0, 18, 0)
+        >>> c.trig                                 # cos, sin of the literal direction 0
+        [('angle', ('lit', 0.0))]
+        """
         return (c.slot(self.out), c.slot(self.origin), c.coord(self.s), c.pref(self.offset),
                 c.trig_angle(c.pref(self.direction)))
 
     @classmethod
     def emit(cls, E, i, row):
+        """The slider's position and its analog ``∂/∂s = (cos, sin)(direction)``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.groups import SliderInput
+        >>> from assur.kernel.emit import Emitter
+        >>> row = examples.steering_lab4_modern().program().rows[3]   # rod end 1L
+        >>> E = Emitter(K=1, order=1)
+        >>> SliderInput.emit(E, 3, row[1:])
+        >>> for line in E.lines:
+        ...     print(line.strip())
+        t3t = q[0, e] + params[18, d]
+        t3c = trig[0, d]
+        t3s = trig[1, d]
+        x3 = x2 + t3t * t3c
+        y3 = y2 + t3t * t3s
+        x3_0 = x2_0 + t3c
+        y3_0 = y2_0 + t3s
+        """
         o, A, j, s0, trow = row
         ax, ay = pt(A)
         x, y = pt(o)
@@ -92,6 +211,24 @@ class SliderInput(Group):
             E(f"{dd(y, a, b)} = {dd(ay, a, b)}")
 
     def reactions(self, r):
+        """The guide's and the drive's force on the slider; the drive takes the loads'
+        component along the line (the actuator of ``s``).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples, statics
+        >>> m = examples.steering_lab4_modern()
+        >>> r = statics.ReactionContext(m.solve([0.0]), set())
+        >>> r.apply("1L", "1L", 1000.0, 500.0)          # a load on the rod end 1L [N]
+        >>> r.links = m.topology.group_links["rod end 1L"]
+        >>> m.group("rod end 1L").reactions(r)
+        >>> round(float(np.squeeze(r.act["S"])), 3)     # the drive, along the line [N]
+        -1000.0
+        >>> pt, fx, fy, mz = r.joints[("0", "1L")]      # guide + drive on the slider
+        >>> pt, round(float(fx[0, 0]), 3), round(float(fy[0, 0]), 3)   # [N]
+        ('1L', -1000.0, -500.0)
+        """
         (l,) = r.links
         C = self.out
         bG = r.owner(self.origin)
