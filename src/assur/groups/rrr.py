@@ -35,7 +35,7 @@ def dyad_position(pts, a, b, ra, rb, branch):
 
     Examples
     --------
-    A 3-4-5 triangle: |A–B| = 0.5 m, ra = 0.3 m, rb = 0.4 m; branch +1 puts C on
+    A 3-4-5 triangle: ``|A–B|`` = 0.5 m, ra = 0.3 m, rb = 0.4 m; branch +1 puts C on
     the left of A → B (above the x axis), −1 on the right:
 
     >>> from assur.groups.rrr import dyad_position
