@@ -25,7 +25,8 @@ class Topology:
         Bodies whose length is a generalized coordinate (cylinders, telescopic arms).
     owner : mapping of str to str
         The body that owns each point: loads at the point and later groups attached
-        there act on it (a dyad's middle joint belongs to its second link).
+        there act on it (an RRR dyad's middle joint belongs to its second link; an RRP
+        dyad's slider joint to its first).
     group_links : mapping of str to tuple of str
         The links of each group, in the order of its ``link_roles`` (then guides).
     turns_with : mapping of str to str
