@@ -34,7 +34,23 @@ __all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_tabl
 class CompileContext:
     """What a group's :meth:`~assur.groups.base.Group.compile` works with: slots of
     points, rows of parameters and literals, coordinate indices, rows of fixed
-    angles, derived rows and pre-passes."""
+    angles, derived rows and pre-passes.
+
+    Examples
+    --------
+    The row of the hitch's cylinder–lever group, compiled by hand:
+
+    >>> from assur import examples
+    >>> from assur.program import CompileContext
+    >>> m = examples.hitch_003()
+    >>> c = CompileContext(m.coordinates, tuple(m.params))
+    >>> for p in m.group("I (2,3)").inputs():          # 01, 03 in slots 0, 1
+    ...     _ = c.slot(p)
+    >>> m.group("I (2,3)").compile(c)   # 23 in slot 2; S: coordinate 0 (−1); L3: row 8
+    (2, 0, 1, -1, 8, -1)
+    >>> tuple(m.params).index("L3")
+    8
+    """
 
     def __init__(self, coordinates, param_names):
         self.coordinates = tuple(coordinates)
@@ -51,7 +67,19 @@ class CompileContext:
     # rows: parameters first, then literal numbers, then derived rows (fixed up later)
     def pref(self, ref):
         """Parameter-table row of a number or parameter name (a placeholder for
-        literals and derived rows until :meth:`resolve`)."""
+        literals and derived rows until :meth:`resolve`).
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
+        >>> c.pref("L4"), c.pref(0.61)
+        (1, ('lit', 0.61))
+        >>> c.pref("L9")
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: 'L9' is not a parameter
+        """
         if is_number(ref):
             key = float(ref)
             if key not in self.literals:
@@ -62,46 +90,135 @@ class CompileContext:
         raise ModelError(f"{ref!r} is not a parameter")
 
     def lref(self, ref):
-        """Length reference: a parameter row ≥ 0, or ``−(j + 1)`` for coordinate j."""
+        """Length reference: a parameter row ≥ 0, or ``−(j + 1)`` for coordinate j.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
+        >>> c.lref("S"), c.lref("L3"), c.lref("L4")      # a cylinder length; parameters
+        (-1, 0, 1)
+        """
         if isinstance(ref, str) and ref in self.coordinates:
             return -(self.coordinates.index(ref) + 1)
         return self.pref(ref)
 
     def coord(self, name) -> int:
-        """Index of a generalized coordinate."""
+        """Index of a generalized coordinate.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S1", "S2"), ())          # two cylinders
+        >>> c.coord("S2")
+        1
+        """
         return self.coordinates.index(name)
 
     def slot(self, point) -> int:
-        """Slot of a point (new points get the next slot)."""
+        """Slot of a point (new points get the next slot).
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
+        >>> c.slot("01"), c.slot("03"), c.slot("01")
+        (0, 1, 0)
+        """
         if point not in self.slots:
             self.slots[point] = len(self.slots)
         return self.slots[point]
 
     def derived_row(self):
-        """A new per-design row filled by a pre-pass (see :meth:`prepare`)."""
+        """A new per-design row filled by a pre-pass (see :meth:`prepare`).
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
+        >>> rows = c.derived_row(), c.derived_row()
+        >>> rows
+        (('der', 0), ('der', 1))
+        >>> c.resolve(rows)            # after the 2 parameters (no literals)
+        (2, 3)
+        """
         self.derived += 1
         return ("der", self.derived - 1)
 
     def trig_angle(self, row) -> int:
-        """Trig-table row of cos and sin of the angle in parameter row ``row``."""
+        """Trig-table row of cos and sin of the angle in parameter row ``row``.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("phiBD",))
+        >>> c.trig_angle(c.pref("phiBD")), c.trig_angle(c.pref(0.0))   # cos; sin next
+        (0, 2)
+        >>> c.trig
+        [('angle', 0), ('angle', ('lit', 0.0))]
+        """
         self.trig.append(("angle", row))
         return 2 * (len(self.trig) - 1)
 
     def trig_triangle(self, pb, pl, po, branch) -> int:
-        """Trig-table row of the angle ``branch·acos((b² + l² − o²)/(2bl))``."""
+        """Trig-table row of the angle ``branch·acos((b² + l² − o²)/(2bl))``.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L3", "L4", "L34"))
+        >>> c.trig_triangle(c.pref("L3"), c.pref("L4"), c.pref("L34"), -1)
+        0
+        >>> c.trig
+        [('triangle', 0, 1, 2, -1)]
+        """
         self.trig.append(("triangle", pb, pl, po, branch))
         return 2 * (len(self.trig) - 1)
 
     def frame_point(self, name, rx, ry) -> None:
-        """Record a frame point's rows (frame points are served from the table)."""
+        """Record a frame point's rows (frame points are served from the table).
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("X01", "Y01"))
+        >>> c.frame_point("01", c.pref("X01"), c.pref("Y01"))
+        >>> c.frame_rows
+        {'01': (0, 1)}
+        """
         self.frame_rows[name] = (rx, ry)
 
     def prepare(self, group, data) -> None:
-        """Register the group's pre-pass ``group.prepare(data, ptab, positions_at)``."""
+        """Register the group's pre-pass ``group.prepare(data, ptab, positions_at)``.
+
+        Examples
+        --------
+        The hitch's centre of mass S6 is fixed at the pose S = Sp (group 9): its
+        pre-pass fills two derived rows:
+
+        >>> from assur import examples
+        >>> from assur.program import CompileContext
+        >>> m = examples.hitch_003()
+        >>> c = CompileContext(m.coordinates, tuple(m.params))
+        >>> for i, g in enumerate(m.groups[:10]):
+        ...     c.current = i
+        ...     _ = g.compile(c)
+        >>> len(c.prepares), c.prepares[0][0], c.derived
+        (1, 9, 2)
+        """
         self.prepares.append((self.current, data))
 
     def resolve(self, v):
-        """Final row number of a placeholder (after all literals are known)."""
+        """Final row number of a placeholder (after all literals are known).
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
+        >>> lit, der = c.pref(0.61), c.derived_row()
+        >>> c.resolve(lit), c.resolve(der), c.resolve((1, lit, der))  # params, literals, derived
+        (2, 3, (1, 2, 3))
+        """
         if isinstance(v, tuple) and v and v[0] == "lit":
             return len(self.param_names) + self.literals[v[1]]
         if isinstance(v, tuple) and v and v[0] == "der":
@@ -141,6 +258,17 @@ class Program:
         Fixed angles: ``("angle", row)`` or ``("triangle", pb, pl, po, branch)``.
     prepares : tuple of (int, object)
         Group index and data of each pre-pass.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.groups import group_type
+    >>> prog = examples.hitch_003().program()
+    >>> [group_type(r[0]).type_name for r in prog.rows][4:]  # doctest: +NORMALIZE_WHITESPACE
+    ['cylinder_lever', 'rigid_point', 'dyad', 'rigid_point', 'dyad', 'pose_point',
+     'rigid_point']
+    >>> prog.k, prog.slot["56"], prog.kinds["6"]
+    (1, 7, 'angle')
     """
 
     rows: tuple
@@ -161,7 +289,15 @@ class Program:
 
     @property
     def continuity_rows(self) -> tuple:
-        """Indices of the groups checked for continuity between positions (k = 1)."""
+        """Indices of the groups checked for continuity between positions (k = 1).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> prog = examples.hitch_003().program()
+        >>> prog.continuity_rows        # the cylinder–lever group and the two dyads
+        (4, 6, 8)
+        """
         c = self._kernels.get("continuity")
         if c is None:
             c = self._kernels["continuity"] = tuple(
@@ -173,7 +309,20 @@ class Program:
         once per output set): the first and end rows of the six output blocks
         (points' values, first and second analogs, then the scalars'), the rows of
         the angles among the scalars (unwrapped along a range), and the index of each
-        point and scalar."""
+        point and scalar.
+
+        Examples
+        --------
+        One point (x, y) and one link angle, k = 1:
+
+        >>> from assur import examples
+        >>> prog = examples.hitch_003().program()
+        >>> blocks, angles, pidx, sidx = prog.layout(("56",), ("6",))
+        >>> blocks
+        ((0, 2), (2, 4), (4, 6), (6, 7), (7, 8), (8, 9))
+        >>> angles, pidx, sidx
+        ((0,), {'56': 0}, {'6': 0})
+        """
         key = ("layout", out_pts, out_sca)
         lay = self._kernels.get(key)
         if lay is None:
@@ -187,13 +336,40 @@ class Program:
         return lay
 
     def param_row(self, ref) -> int:
-        """Row of a number (literal) or a parameter name."""
+        """Row of a number (literal) or a parameter name.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> prog = m.program()
+        >>> prog.param_row("L3"), prog.param_row(0.61)    # L3; the 610 mm of the test frame
+        (8, 32)
+        >>> round(float(prog.param_table(m.params)[32, 0]), 3)  # [m]
+        0.61
+        """
         if is_number(ref):
             return len(self.param_names) + self.literals.index(float(ref))
         return self.param_names.index(ref)
 
     def param_table(self, params: Mapping) -> np.ndarray:
-        """Parameter table, shape (rows, m): parameters, literals, derived rows (0)."""
+        """Parameter table, shape (rows, m): parameters, literals, derived rows (0).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> prog = m.program()
+        >>> ptab = prog.param_table(m.params)
+        >>> ptab.shape, round(float(ptab[prog.param_row("L3"), 0]), 3)   # L3 [m]
+        ((36, 1), 0.2)
+        >>> prog.param_table({**m.params, "L4": [0.60, 0.66]}).shape      # two designs
+        (36, 2)
+        >>> prog.param_table({**m.params, "L4": [0.60, 0.66], "L7": [0.7, 0.75, 0.8]})
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: parameter 'L4' has 2 designs, others 3
+        """
         rows = [np.atleast_1d(np.asarray(ref_value(params, n), dtype=float))
                 for n in self.param_names]
         m = max([r.shape[0] for r in rows] + [1])
@@ -209,7 +385,29 @@ class Program:
 
     def kernel(self, out_pts=None, out_sca=None, vector=False):
         """The compiled kernel writing ``out_pts``/``out_sca`` (default: the program's);
-        with ``vector``, its numpy evaluation (:mod:`assur.kernel.vector`)."""
+        with ``vector``, its numpy evaluation (:mod:`assur.kernel.vector`).
+
+        Examples
+        --------
+        The hitch's point 56 at S = Smin by the numpy evaluation (no compilation),
+        called as :func:`execute` calls it: rows x, y, then ∂x/∂S, ∂y/∂S, …:
+
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> prog = m.program(["56"])
+        >>> kern = prog.kernel(vector=True)
+        >>> ptab, trig, _ = m.prepared(prog)
+        >>> q = np.array([[0.42]])                                  # S [m]
+        >>> out, amount, status = np.empty((6, 1)), np.empty(1), np.empty(1, dtype=np.int64)
+        >>> _ = kern(ptab, trig, q, 1, False, out, amount, status, 0, 1)
+        >>> bool(status[0] < 0)                                     # assembled
+        True
+        >>> round(float(out[1, 0]), 4)         # Y56(Smin), seed 003 §2.2 condition [m]
+        0.2
+        >>> round(float(out[3, 0]), 3)         # I56 = dY56/dS, seed 003 table 3.1 [m/m]
+        4.459
+        """
         default = out_pts is None and out_sca is None
         fn = self._kernels.get(("all outputs", vector)) if default else None
         if fn is not None:
@@ -261,7 +459,23 @@ def _signed_refs(mech) -> tuple:
 
 def compile_program(mech, outputs=None) -> Program:
     """The :class:`Program` of a mechanism and the outputs it asks for (cached per
-    structure: the groups, links, distances, coordinates and parameter names)."""
+    structure: the groups, links, distances, coordinates and parameter names).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.program import compile_program
+    >>> m = examples.hitch_003()
+    >>> prog = compile_program(m, ["56", "6"])
+    >>> prog.out_pts, prog.out_sca
+    (('56',), ('6',))
+    >>> compile_program(m.with_params(L4=0.65), ["56", "6"]) is prog   # same structure
+    True
+    >>> compile_program(m, ["57"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: unknown outputs ['57']; points: ['01', '03', ...
+    """
     outputs = None if outputs is None else tuple(outputs)
     names = tuple(mech.params) + _signed_refs(mech)
     key = (mech.groups, mech.links, mech.distances, mech.coordinates, names, outputs)
@@ -321,6 +535,25 @@ def trig_table(prog: Program, ptab: np.ndarray) -> np.ndarray:
     A triangle-defined angle is ``branch·acos((b² + l² − o²)/(2·b·l))`` (seed 000
     DELFI); its argument is clipped here only so that the table is finite — a
     triangle that cannot close is detected and reported by the kernel.
+
+    Examples
+    --------
+    The hitch's fixed angles: the arm 34 at φBD = 22° (seed 003 §1.2), the axis 56
+    (0°), the centre of mass S6 at φS6 = atan(Y6/X6) − φ6(Sp) (seed 003 §1.4, a
+    derived row filled by its pre-pass) and the test frame (−90°):
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.program import trig_table
+    >>> m = examples.hitch_003()
+    >>> prog = m.program()
+    >>> ptab, _, _ = m.prepared(prog)                 # parameters, pre-passes run
+    >>> tt = trig_table(prog, ptab)                   # rows cos, sin per angle
+    >>> tt.shape
+    (8, 1)
+    >>> angles = np.degrees(np.arctan2(tt[1::2, 0], tt[0::2, 0]))
+    >>> [round(float(a), 3) for a in angles]          # [°]
+    [22.0, 0.0, -79.683, -90.0]
     """
     m = ptab.shape[1]
     out = np.empty((max(2 * len(prog.trig), 1), m))
@@ -373,6 +606,23 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     part of the program (pre-passes at a pose, refinements of the continuity check).
     ``out_buffer``: the array to write the outputs into, shape (rows, k·E) as the
     returned ``out`` (float64, C order), instead of a new one.
+
+    Examples
+    --------
+    The hitch's point 56 at both ends of the stroke, the way
+    :meth:`~assur.Mechanism.solve` runs it:
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.program import execute
+    >>> m = examples.hitch_003()
+    >>> prog = m.program(["56"])
+    >>> ptab, trig, _ = m.prepared(prog)
+    >>> res = execute(prog, ptab, np.array([[0.42, 0.67]]), 2, True, trig=trig)  # S [m]
+    >>> (res["status"] < 0).tolist()                        # both assembled
+    [True, True]
+    >>> [round(float(v), 4) for v in res["pv"][res["pidx"]["56"], 1]]   # Y56 [m]
+    [0.2, 1.0432]
     """
     k, E = qarr.shape
     # the first small calls of a process: numpy evaluates the same code (no numba start-up)

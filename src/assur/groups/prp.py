@@ -37,7 +37,26 @@ PARALLEL_TOL = 1e-7
 @dataclass(frozen=True)
 class DoubleSliderDyad(Group):
     """PRP dyad: C on line a and line b (see module). ``links = (slider a, slider b)``;
-    each slider turns with its guide."""
+    each slider turns with its guide.
+
+    Examples
+    --------
+    A wedge: the input slider P travels ``s`` along x and carries the vertical line
+    a; line b is fixed at 45° through B0 = (0, 0.1) m, so C = (s, 0.1 + s):
+
+    >>> import math
+    >>> from assur import Mechanism
+    >>> m = (Mechanism("wedge", coordinates=("s",))
+    ...      .frame("C0", 0.0, 0.0).frame("B0", 0.0, 0.1)
+    ...      .slider_input("slider 1", origin="C0", out="P", s="s", links=("1",))
+    ...      .prp_dyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
+    ...                direction_b=math.pi / 4, links=("2", "3")))
+    >>> r = m.solve([0.1, 0.2])                          # s [m]
+    >>> [round(float(v), 4) for v in r.y("C")]           # [m]
+    [0.2, 0.3]
+    >>> [round(float(v), 4) for v in r.dy("C")]          # ∂y_C/∂s [m/m]
+    [1.0, 1.0]
+    """
 
     a: str = ""
     b: str = ""
@@ -65,13 +84,40 @@ class DoubleSliderDyad(Group):
     )
 
     def inputs(self):
+        """Names of the points this group needs solved first: ``a``, ``b`` and the
+        points of ``line_link_a``, ``line_link_b`` if given.
+
+        Examples
+        --------
+        >>> from assur.groups import DoubleSliderDyad
+        >>> DoubleSliderDyad("II", a="P", b="B0", out="C").inputs()
+        ('P', 'B0')
+        >>> DoubleSliderDyad("II", a="P", b="B0", out="C", line_link_a=("A0", "A")).inputs()
+        ('P', 'B0', 'A0', 'A')
+        """
         extra = tuple(self.line_link_a or ()) + tuple(self.line_link_b or ())
         return (self.a, self.b) + extra
 
     def outputs(self):
+        """Names of the points this group adds: ``(out,)``, the pin C.
+
+        Examples
+        --------
+        >>> from assur.groups import DoubleSliderDyad
+        >>> DoubleSliderDyad("II", a="P", b="B0", out="C").outputs()
+        ('C',)
+        """
         return (self.out,)
 
     def refs(self):
+        """Angle references of the group by role: ``direction_a``, ``direction_b`` [rad].
+
+        Examples
+        --------
+        >>> from assur.groups import DoubleSliderDyad
+        >>> DoubleSliderDyad("II", a="P", b="B0", out="C", direction_b="beta").refs()
+        {'direction_a': 0.0, 'direction_b': 'beta'}
+        """
         return {"direction_a": self.direction_a, "direction_b": self.direction_b}
 
     def _guide(self, t, point, line_link):
@@ -79,6 +125,28 @@ class DoubleSliderDyad(Group):
                 else t.owner(point))
 
     def topology(self, t):
+        """Create the two slider blocks at C (C belongs to slider b), each turning with
+        its guide (the owner of ``a``/``b`` or the link carrying the line); returns
+        ``(slider a, slider b, guide a, guide b)``.
+
+        Examples
+        --------
+        >>> from assur.topology import TopologyBuilder
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("wedge", coordinates=("s",))
+        ...      .frame("C0", 0.0, 0.0).frame("B0", 0.0, 0.1)
+        ...      .slider_input("slider 1", origin="C0", out="P", s="s", links=("1",))
+        ...      .prp_dyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
+        ...                direction_b=math.pi / 4, links=("2", "3")))
+        >>> t = TopologyBuilder(m.name, m.coordinates)
+        >>> for g in m.groups[:-1]:                  # frame points and input slider first
+        ...     _ = g.topology(t)
+        >>> m.group("II").topology(t)                # guides: input slider 1, frame 0
+        ('2', '3', '1', '0')
+        >>> t.turns["2"], t.turns["3"], t.owner("C")
+        ('1', '0', '3')
+        """
         la, lb = t.link_names(self, 2)
         ga = self._guide(t, self.a, self.line_link_a)
         gb = self._guide(t, self.b, self.line_link_b)
@@ -102,6 +170,20 @@ class DoubleSliderDyad(Group):
         return out
 
     def evaluate(self, pts, val):
+        """Add ``out`` to ``pts``: the intersection of the two lines (plain numpy, any
+        dtype).
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.groups import DoubleSliderDyad
+        >>> g = DoubleSliderDyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
+        ...                      direction_b=math.pi / 4)
+        >>> pts = {"P": (0.2, 0.0), "B0": (0.0, 0.1)}             # [m]
+        >>> g.evaluate(pts, float)
+        >>> [round(float(v), 4) for v in pts["C"]]                # C [m]
+        [0.2, 0.3]
+        """
         (pax, pay), (pbx, pby) = pts[self.a], pts[self.b]
         (uax, uay), (ubx, uby) = self._units(pts, val, pax)
         cr = uax * uby - uay * ubx
@@ -109,6 +191,22 @@ class DoubleSliderDyad(Group):
         pts[self.out] = (pax + t * uax, pay + t * uay)
 
     def compile(self, c):
+        """The program row ``(out, a, P_a, Q_a, trig row a, b, P_b, Q_b, trig row b)``;
+        ``P = Q = −1`` for a fixed direction.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> import math
+        >>> from assur.groups import DoubleSliderDyad
+        >>> g = DoubleSliderDyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
+        ...                      direction_b=math.pi / 4)
+        >>> c = CompileContext(("s",), ())
+        >>> c.slot("P"), c.slot("B0")
+        (0, 1)
+        >>> c.resolve(g.compile(c))   # trig rows 0 (90°) and 2 (45°)
+        (2, 0, -1, -1, 0, 1, -1, -1, 2)
+        """
         row = [c.slot(self.out)]
         for p, beta, ll in ((self.a, self.direction_a, self.line_link_a),
                             (self.b, self.direction_b, self.line_link_b)):
@@ -118,6 +216,17 @@ class DoubleSliderDyad(Group):
 
     @classmethod
     def emit(cls, E, i, row):
+        """Emit the kernel code of group ``i`` with program ``row`` (see :meth:`compile`).
+
+        Examples
+        --------
+        >>> from assur.groups import DoubleSliderDyad
+        >>> from assur.kernel.emit import Emitter
+        >>> E = Emitter(1, order=1)
+        >>> DoubleSliderDyad.emit(E, 1, (2, 0, -1, -1, 0, 1, -1, -1, 2))
+        >>> print(next(line.strip() for line in E.lines if "t1cr =" in line))  # û_a × û_b
+        t1cr = u1px * u1qy - u1py * u1qx
+        """
         o = row[0]
         K = E.K
         x, y = pt(o)
@@ -166,6 +275,22 @@ class DoubleSliderDyad(Group):
             solve(rr[0], rr[1], dd(x, a, b), dd(y, a, b))
 
     def failure(self, code, pts, v, nm):
+        """Amount (the sine of the angle between the lines) and message of failure
+        ``code``; other codes as the base class.
+
+        Examples
+        --------
+        >>> from assur.groups import DoubleSliderDyad
+        >>> from assur.kernel.emit import FAIL_PARALLEL
+        >>> g = DoubleSliderDyad("II", a="P", b="B0", out="C")   # both lines along +x
+        >>> pts = {"P": (0.2, 0.0), "B0": (0.0, 0.1)}             # [m]
+        >>> f = g.failure(FAIL_PARALLEL, pts, float, str)
+        >>> f.amount   # sin of the angle between the lines
+        0.0
+        >>> print(f.text)  # doctest: +NORMALIZE_WHITESPACE
+        its two slider lines (through 'P' and 'B0') are parallel (angle between them 0°):
+        they do not intersect
+        """
         if code != FAIL_PARALLEL:
             return super().failure(code, pts, v, nm)
         (uax, uay), (ubx, uby) = self._units(pts, lambda r: v(r), 0.0)
@@ -175,6 +300,21 @@ class DoubleSliderDyad(Group):
                            f"parallel (angle between them {ang:.3g}°): they do not intersect")
 
     def closure(self, P, val):
+        """Largest distance of C from either line [m].
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.groups import DoubleSliderDyad
+        >>> g = DoubleSliderDyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
+        ...                      direction_b=math.pi / 4)
+        >>> pts = {"P": (0.2, 0.0), "B0": (0.0, 0.1), "C": (0.2, 0.3)}   # [m]
+        >>> round(float(g.closure(pts.get, float)), 9)           # [m]
+        0.0
+        >>> pts["C"] = (0.21, 0.3)                               # 10 mm off line a
+        >>> round(float(g.closure(pts.get, float)), 4)           # [m]
+        0.01
+        """
         cx, cy = P(self.out)
         res = 0.0
         for p, beta, ll in ((self.a, self.direction_a, self.line_link_a),
@@ -188,6 +328,31 @@ class DoubleSliderDyad(Group):
         return res
 
     def reactions(self, r):
+        """Joint reactions: each guide's normal force and moment on its slider, and the
+        pin force of slider a on slider b at C.
+
+        Examples
+        --------
+        The wedge at s = 0.2 m with 100 N down on slider b: the fixed 45° guide holds
+        it with (−100, 100) N, slider a pushes it with 100 N along x:
+
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("wedge", coordinates=("s",))
+        ...      .frame("C0", 0.0, 0.0).frame("B0", 0.0, 0.1)
+        ...      .slider_input("slider 1", origin="C0", out="P", s="s", links=("1",))
+        ...      .prp_dyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
+        ...                direction_b=math.pi / 4, links=("2", "3")))
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(m.solve([0.2]), set())          # s [m]
+        >>> r.links = m.topology.group_links["II"]
+        >>> r.apply("3", "C", 0.0, -100.0)                      # [N]
+        >>> m.group("II").reactions(r)
+        >>> [round(float(f[0, 0]), 3) for f in r.joints[("0", "3")][1:3]]  # guide b on 3 [N]
+        [-100.0, 100.0]
+        >>> round(float(r.joints[("2", "3")][1][0, 0]), 3)     # slider a on b, x [N]
+        100.0
+        """
         la, lb, ga, gb = r.links
         C = self.out
         cx, cy = r.point(C)

@@ -41,7 +41,25 @@ __all__ = ["SleeveDyad"]
 @dataclass(frozen=True)
 class SleeveDyad(Group):
     """RPR dyad: rod pinned at ``a`` through a sleeve pivoted at ``b`` (see module).
-    ``links = (rod, sleeve)``; the sleeve turns with the rod."""
+    ``links = (rod, sleeve)``; the sleeve turns with the rod.
+
+    Examples
+    --------
+    A slotted lever (кулиса): the crank pin A (radius 0.12 m) drives the rod 2
+    through the sleeve 3 pivoted at B, 0.16 m from the crank's pivot:
+
+    >>> import numpy as np
+    >>> from assur import Mechanism
+    >>> m = (Mechanism("slotted lever", coordinates=("j1",))
+    ...      .frame("A0", 0.0, 0.0).frame("B", 0.16, 0.0)
+    ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+    ...      .rpr_dyad("II", a="A", b="B", out="E", length=0.55, links=("2", "3")))
+    >>> r = m.solve([0.0, np.pi / 2])                     # j1 [rad]
+    >>> [round(float(v), 4) for v in r.phi("2", degrees=True)]  # rod angle [°]
+    [0.0, -36.8699]
+    >>> [round(float(v), 4) for v in r.y("E")]            # the rod's end E, y [m]
+    [0.0, -0.21]
+    """
 
     a: str = ""
     b: str = ""
@@ -66,21 +84,71 @@ class SleeveDyad(Group):
     )
 
     def inputs(self):
+        """Names of the points this group needs solved first: ``(a, b)``.
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55)
+        >>> g.inputs()           # the rod's pin, the sleeve's pivot
+        ('A', 'B')
+        """
         return (self.a, self.b)
 
     def outputs(self):
+        """Names of the points this group adds: ``(out,)``, a point of the rod.
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55)
+        >>> g.outputs()
+        ('E',)
+        """
         return (self.out,)
 
     def refs(self):
+        """Length references of the group by role: ``length``, ``offset`` [m].
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> SleeveDyad("II", a="A", b="B", out="E", length="L2").refs()
+        {'length': 'L2', 'offset': 0.0}
+        """
         return {"length": self.length, "offset": self.offset}
 
     def validate(self, coordinates):
+        """A message if ``length`` or ``offset`` names a generalized coordinate (the
+        group has no input), else the base checks (branch ±1).
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> print(SleeveDyad("II", a="A", b="B", out="E", length=0.55).validate(("j1",)))
+        None
+        >>> print(SleeveDyad("II", a="A", b="B", out="E", length="j1").validate(("j1",)))
+        length must be a number or a parameter, not the coordinate 'j1'
+        """
         for role, ref in self.refs().items():
             if isinstance(ref, str) and ref in coordinates:
                 return f"{role} must be a number or a parameter, not the coordinate {ref!r}"
         return super().validate(coordinates)
 
     def topology(self, t):
+        """Create the rod (a–out, owner of ``out``) and the sleeve (at b), which turns
+        with the rod, in the topology builder ``t``.
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> from assur.topology import TopologyBuilder
+        >>> t = TopologyBuilder("slotted lever", ("j1",))
+        >>> SleeveDyad("II", a="A", b="B", out="E", length=0.55, links=("2", "3")).topology(t)
+        ('2', '3')
+        >>> t.bodies["2"], t.bodies["3"], t.turns, t.owner("E")
+        (['A', 'E'], ['B'], {'3': '2'}, '2')
+        """
         rod, sleeve = t.link_names(self, 2)
         t.new(self, rod, (self.a, self.out))
         t.new(self, sleeve, (self.b,))
@@ -89,6 +157,20 @@ class SleeveDyad(Group):
         return (rod, sleeve)
 
     def evaluate(self, pts, val):
+        """Add ``out`` to ``pts`` by the formulas of the module docstring (plain numpy,
+        any dtype).
+
+        Examples
+        --------
+        The rod from A through B (``|A–B|`` = 0.2 m, direction (0.8, −0.6)), E at 0.55 m:
+
+        >>> from assur.groups import SleeveDyad
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55)
+        >>> pts = {"A": (0.0, 0.12), "B": (0.16, 0.0)}          # [m]
+        >>> g.evaluate(pts, float)
+        >>> [round(float(v), 4) for v in pts["E"]]              # E [m]
+        [0.44, -0.21]
+        """
         ax, ay = pts[self.a]
         bx, by = pts[self.b]
         e, ell = val(self.offset), val(self.length)
@@ -100,11 +182,40 @@ class SleeveDyad(Group):
         pts[self.out] = (ax + ell * ux, ay + ell * uy)
 
     def compile(self, c):
+        """The program row ``(out, a, b, length, offset row, branch)``.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> from assur.groups import SleeveDyad
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55)
+        >>> c = CompileContext(("j1",), ())
+        >>> c.slot("A"), c.slot("B")
+        (0, 1)
+        >>> c.resolve(g.compile(c))   # length, offset: the literal rows 0 and 1
+        (2, 0, 1, 0, 1, 1)
+        >>> c.literals                # the numbers: row of each [m]
+        {0.55: 0, 0.0: 1}
+        """
         return (c.slot(self.out), c.slot(self.a), c.slot(self.b), c.lref(self.length),
                 c.pref(self.offset), self.branch)
 
     @classmethod
     def emit(cls, E, i, row):
+        """Emit the kernel code of group ``i`` with program ``row`` (see :meth:`compile`).
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> from assur.kernel.emit import Emitter
+        >>> E = Emitter(1, order=1)
+        >>> SleeveDyad.emit(E, 1, (2, 0, 1, 0, 1, 1))
+        >>> print("\\n".join(line.strip() for line in E.lines[:2]))  # length, offset
+        t1l = params[0, d]
+        t1e = params[1, d]
+        >>> print(next(line.strip() for line in E.lines if line.strip().startswith("x2 =")))
+        x2 = x0 + t1l * t1ux
+        """
         o, A, B, lref, pe, sig = row
         K = E.K
         ax, ay = pt(A)
@@ -161,6 +272,22 @@ class SleeveDyad(Group):
                 E(f"{dd(c + str(o), a, b)} = {dd(pc, a, b)} + {t}l * {t}u{c}ab{extra}")
 
     def failure(self, code, pts, v, nm):
+        """Amount and message of failure ``code``: the offset exceeds ``|a–b|`` (amount
+        [m]), or a dead point (the sleeve at the rod's pin).
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> from assur.kernel.emit import FAIL_TOO_CLOSE
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55, offset="e")
+        >>> pts = {"A": (0.0, 0.12), "B": (0.16, 0.0)}          # [m]
+        >>> f = g.failure(FAIL_TOO_CLOSE, pts, lambda ref: {"e": 0.25}.get(ref, ref), str)
+        >>> round(f.amount, 6)   # [m]
+        0.05
+        >>> print(f.text)  # doctest: +NORMALIZE_WHITESPACE
+        the distance |A–B| = 0.2 m is less than the sleeve's offset |e| = 0.25 m by 50 mm:
+        the rod cannot reach the sleeve
+        """
         (ax, ay), (bx, by) = pts[self.a], pts[self.b]
         L = math.hypot(bx - ax, by - ay)
         e = v(self.offset)
@@ -176,6 +303,20 @@ class SleeveDyad(Group):
         return super().failure(code, pts, v, nm)
 
     def closure(self, P, val):
+        """Largest violation of ``|out − a| = length`` and of b at the offset from the
+        rod's line [m].
+
+        Examples
+        --------
+        >>> from assur.groups import SleeveDyad
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55)
+        >>> pts = {"A": (0.0, 0.12), "B": (0.16, 0.0), "E": (0.44, -0.21)}  # [m]
+        >>> round(float(g.closure(pts.get, float)), 9)       # [m]
+        0.0
+        >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55, offset="e")
+        >>> round(float(g.closure(pts.get, lambda ref: {"e": 0.01}.get(ref, ref))), 4)  # [m]
+        0.01
+        """
         ax, ay = P(self.a)
         bx, by = P(self.b)
         ox, oy = P(self.out)
@@ -186,6 +327,30 @@ class SleeveDyad(Group):
         return np.maximum(res, np.abs(cr + val(self.offset)))
 
     def reactions(self, r):
+        """Joint reactions of the rod and the sleeve: the sleeve's force ``N·n̂`` normal
+        to the rod and its moment, the pins at a and b.
+
+        Examples
+        --------
+        The slotted lever at j1 = 90° (rod along (0.8, −0.6), the sleeve 0.2 m from
+        A) with 100 N down at E: the sleeve takes 44 N·m / 0.2 m = 220 N:
+
+        >>> import numpy as np
+        >>> from assur.statics import ReactionContext
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("slotted lever", coordinates=("j1",))
+        ...      .frame("A0", 0.0, 0.0).frame("B", 0.16, 0.0)
+        ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+        ...      .rpr_dyad("II", a="A", b="B", out="E", length=0.55, links=("2", "3")))
+        >>> r = ReactionContext(m.solve([np.pi / 2]), set())   # j1 [rad]
+        >>> r.links = m.topology.group_links["II"]
+        >>> r.apply("2", "E", 0.0, -100.0)                     # [N]
+        >>> m.group("II").reactions(r)
+        >>> [round(float(f[0, 0]), 3) for f in r.joints[("0", "3")][1:3]]  # frame on 3 [N]
+        [132.0, 176.0]
+        >>> [round(float(f[0, 0]), 3) for f in r.joints[("1", "2")][1:3]]  # crank on 2 [N]
+        [-132.0, -76.0]
+        """
         rod, sleeve = r.links
         A, B, O = self.a, self.b, self.out
         bA, bB = r.owner(A), r.owner(B)

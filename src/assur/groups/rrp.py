@@ -29,7 +29,27 @@ __all__ = ["SliderDyad", "line_direction"]
 
 
 def line_direction(r, direction, line_link):
-    """Direction angle [rad] of a slider line in a reaction context, shape (m, n)."""
+    """Direction angle [rad] of a slider line in a reaction context, shape (m, n).
+
+    Examples
+    --------
+    A line turned 0 rad from the crank A0 → A, with the crank at 90°:
+
+    >>> import numpy as np
+    >>> from assur.groups.rrp import line_direction
+    >>> from assur.statics import ReactionContext
+    >>> from assur import Mechanism
+    >>> m = (Mechanism("slider-crank", coordinates=("j1",))
+    ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)
+    ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+    ...      .slider_dyad("II", a="A", out="C", radius=0.40, line_point="L0",
+    ...                   links=("2", "3")))
+    >>> r = ReactionContext(m.solve([np.pi / 2]), set())      # j1 [rad]
+    >>> round(float(np.degrees(line_direction(r, 0.0, ("A0", "A"))[0, 0])), 3)  # [°]
+    90.0
+    >>> float(line_direction(r, 0.5, None))                    # a fixed line [rad]
+    0.5
+    """
     beta = r.value(direction)
     if line_link:
         (px, py), (qx, qy) = r.point(line_link[0]), r.point(line_link[1])
@@ -41,7 +61,26 @@ def line_direction(r, direction, line_link):
 @dataclass(frozen=True)
 class SliderDyad(Group):
     """RRP dyad: ``out`` at ``radius`` [m] from ``a``, on a line (see module).
-    ``links = (link at a, slider)``; the slider block turns with the guide."""
+    ``links = (link at a, slider)``; the slider block turns with the guide.
+
+    Examples
+    --------
+    A slider-crank: crank 0.12 m, connecting rod 0.40 m, the slider on the
+    horizontal line y = −0.24 m:
+
+    >>> import numpy as np
+    >>> from assur import Mechanism
+    >>> m = (Mechanism("slider-crank", coordinates=("j1",))
+    ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)
+    ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+    ...      .slider_dyad("II", a="A", out="C", radius=0.40, line_point="L0",
+    ...                   links=("2", "3")))
+    >>> r = m.solve([0.0, np.pi / 2])                # j1 [rad]
+    >>> [round(float(x), 4) for x in r.x("C")]       # slider position [m]
+    [0.44, 0.1744]
+    >>> [round(float(v), 4) for v in r.dx("C")]      # ∂x_C/∂j1 [m/rad]
+    [-0.09, -0.12]
+    """
 
     a: str = ""
     out: str = ""
@@ -68,16 +107,65 @@ class SliderDyad(Group):
     )
 
     def inputs(self):
+        """Names of the points this group needs solved first: ``a``, ``line_point``
+        and the points of ``line_link``, if given.
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> SliderDyad("II", a="A", out="C", radius=0.4, line_point="L0").inputs()
+        ('A', 'L0')
+        >>> SliderDyad("II", a="A", out="C", radius=0.4, line_point="L0",
+        ...            line_link=("B", "D")).inputs()   # a line on the link B–D
+        ('A', 'L0', 'B', 'D')
+        """
         extra = tuple(self.line_link) if self.line_link else ()
         return (self.a, self.line_point) + extra
 
     def outputs(self):
+        """Names of the points this group adds: ``(out,)``, the slider joint.
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> SliderDyad("II", a="A", out="C", radius=0.4, line_point="L0").outputs()
+        ('C',)
+        """
         return (self.out,)
 
     def refs(self):
+        """References of the group by role: ``radius`` [m], ``direction`` [rad].
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> SliderDyad("II", a="A", out="C", radius="L2", line_point="L0").refs()
+        {'radius': 'L2', 'direction': 0.0}
+        """
         return {"radius": self.radius, "direction": self.direction}
 
     def topology(self, t):
+        """Create the link a (A–C, owner of C) and the slider block (at C) that turns
+        with the guide — the owner of ``line_point``, or the link carrying
+        ``line_link``; returns ``(link a, slider, guide)``.
+
+        Examples
+        --------
+        >>> from assur.topology import TopologyBuilder
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("slider-crank", coordinates=("j1",))
+        ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)
+        ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+        ...      .slider_dyad("II", a="A", out="C", radius=0.40, line_point="L0",
+        ...                   links=("2", "3")))
+        >>> t = TopologyBuilder(m.name, m.coordinates)
+        >>> for g in m.groups[:-1]:                    # frame points and crank first
+        ...     _ = g.topology(t)
+        >>> m.group("II").topology(t)                  # the guide is the frame "0"
+        ('2', '3', '0')
+        >>> t.turns, t.owner("C")
+        ({'3': '0'}, '2')
+        """
         la, lb = t.link_names(self, 2)
         guide = (t.carrier(self, self.line_link[0], self.line_link[1], ()) if self.line_link
                  else t.owner(self.line_point))
@@ -88,6 +176,22 @@ class SliderDyad(Group):
         return (la, lb, guide)
 
     def evaluate(self, pts, val):
+        """Add ``out`` to ``pts``: the intersection of the circle about ``a`` with the
+        line (plain numpy, any dtype).
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> g = SliderDyad("II", a="A", out="C", radius=0.40, line_point="L0")
+        >>> pts = {"A": (0.12, 0.0), "L0": (0.0, -0.24)}        # [m]
+        >>> g.evaluate(pts, float)
+        >>> [round(float(v), 3) for v in pts["C"]]               # C [m]
+        [0.44, -0.24]
+        >>> SliderDyad("II", a="A", out="C", radius=0.40, line_point="L0",
+        ...            branch=-1).evaluate(pts, float)
+        >>> [round(float(v), 3) for v in pts["C"]]               # the other one [m]
+        [-0.2, -0.24]
+        """
         beta = val(self.direction)
         ax, ay = pts[self.a]
         lx, ly = pts[self.line_point]
@@ -103,6 +207,23 @@ class SliderDyad(Group):
         pts[self.out] = (lx + t * ux, ly + t * uy)
 
     def compile(self, c):
+        """The program row ``(out, a, radius, line_point, P, Q, trig row, branch)``;
+        ``P = Q = −1`` for a fixed line.
+
+        Examples
+        --------
+        >>> from assur.program import CompileContext
+        >>> from assur.groups import SliderDyad
+        >>> g = SliderDyad("II", a="A", out="C", radius=0.40, line_point="L0")
+        >>> c = CompileContext(("j1",), ())
+        >>> c.slot("A"), c.slot("L0")
+        (0, 1)
+        >>> row = g.compile(c)
+        >>> c.resolve(row)      # radius: first literal row; direction: trig row 0
+        (2, 0, 0, 1, -1, -1, 0, 1)
+        >>> c.literals          # the numbers: row of each [m, rad]
+        {0.4: 0, 0.0: 1}
+        """
         dp, dq = ((c.slot(self.line_link[0]), c.slot(self.line_link[1])) if self.line_link
                   else (-1, -1))
         return (c.slot(self.out), c.slot(self.a), c.lref(self.radius), c.slot(self.line_point),
@@ -110,6 +231,19 @@ class SliderDyad(Group):
 
     @classmethod
     def emit(cls, E, i, row):
+        """Emit the kernel code of group ``i`` with program ``row`` (see :meth:`compile`).
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> from assur.kernel.emit import Emitter
+        >>> E = Emitter(1, order=1)
+        >>> SliderDyad.emit(E, 1, (2, 0, 0, 1, -1, -1, 0, 1))
+        >>> print(E.lines[0].strip())          # the fixed line's cos from the trig table
+        u1x = trig[0, d]
+        >>> print(next(line.strip() for line in E.lines if line.strip().startswith("x2 =")))
+        x2 = x1 + t1t * u1x
+        """
         o, A, refr, L0, dP_, dQ_, trow, sig = row
         K = E.K
         ax, ay = pt(A)
@@ -164,6 +298,22 @@ class SliderDyad(Group):
                   f"{dd(f'u{i}{c}', a, b)}")
 
     def failure(self, code, pts, v, nm):
+        """Amount and message of failure ``code``: the circle misses the line (amount
+        [m]) or a dead point (the link square to the line).
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> from assur.kernel.emit import FAIL_LINE
+        >>> g = SliderDyad("II", a="A", out="C", radius="L2", line_point="L0")
+        >>> pts = {"A": (0.12, 0.0), "L0": (0.0, -0.24)}        # [m]
+        >>> f = g.failure(FAIL_LINE, pts, lambda ref: {"L2": 0.2}.get(ref, ref), str)
+        >>> round(f.amount, 6)   # [m]
+        0.04
+        >>> print(f.text)  # doctest: +NORMALIZE_WHITESPACE
+        the circle of radius L2 = 0.2 m about 'A' does not reach the slider line
+        through 'L0': it falls short by 40 mm
+        """
         if code not in (FAIL_LINE, FAIL_DEAD_POINT):
             return super().failure(code, pts, v, nm)
         ax, ay = pts[self.a]
@@ -187,6 +337,19 @@ class SliderDyad(Group):
                             f"singular")
 
     def closure(self, P, val):
+        """Largest violation of ``|C − A| = radius`` and of C on the line [m].
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> g = SliderDyad("II", a="A", out="C", radius=0.40, line_point="L0")
+        >>> pts = {"A": (0.12, 0.0), "L0": (0.0, -0.24), "C": (0.44, -0.24)}  # [m]
+        >>> round(float(g.closure(pts.get, float)), 9)       # [m]
+        0.0
+        >>> pts["C"] = (0.44, -0.23)                         # 10 mm off the line
+        >>> round(float(g.closure(pts.get, float)), 4)       # [m]
+        0.01
+        """
         cx, cy = P(self.out)
         px, py = P(self.a)
         res = np.abs(np.hypot(cx - px, cy - py) - val(self.radius))
@@ -199,9 +362,44 @@ class SliderDyad(Group):
         return np.maximum(res, np.abs(np.cos(beta) * (cy - ly) - np.sin(beta) * (cx - lx)))
 
     def rod_ends(self, links, is_coord):
+        """``((link a, out),)`` when ``radius`` is a coordinate (a cylinder), else ().
+
+        Examples
+        --------
+        >>> from assur.groups import SliderDyad
+        >>> g = SliderDyad("II", a="A", out="C", radius="S", line_point="L0")
+        >>> g.rod_ends(("2", "3"), lambda ref: ref == "S")
+        (('2', 'C'),)
+        >>> g.rod_ends(("2", "3"), lambda ref: False)
+        ()
+        """
         return ((links[0], self.out),) if is_coord(self.radius) else ()
 
     def reactions(self, r):
+        """Joint reactions of the link a and the slider block; the guide's normal
+        force and moment on the block are recorded as the guide's reaction.
+
+        Examples
+        --------
+        The slider-crank at j1 = 0 (rod A–C along (0.8, −0.6)) with 100 N against the
+        slider: the rod carries 125 N, the guide holds the block with 75 N:
+
+        >>> from assur.statics import ReactionContext
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("slider-crank", coordinates=("j1",))
+        ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)
+        ...      .crank("crank", pivot="A0", out="A", radius=0.12, q="j1", links=("1",))
+        ...      .slider_dyad("II", a="A", out="C", radius=0.40, line_point="L0",
+        ...                   links=("2", "3")))
+        >>> r = ReactionContext(m.solve([0.0]), set())
+        >>> r.links = m.topology.group_links["II"]
+        >>> r.apply("3", "C", -100.0, 0.0)                    # [N]
+        >>> m.group("II").reactions(r)
+        >>> [round(float(f[0, 0]), 3) for f in r.joints[("2", "3")][1:3]]  # rod on block [N]
+        [100.0, -75.0]
+        >>> round(float(r.joints[("0", "3")][2][0, 0]), 3)   # guide on block, y [N]
+        75.0
+        """
         la, lb, guide = r.links
         A, C = self.a, self.out
         bA = r.owner(A)

@@ -31,7 +31,20 @@ __all__ = ["Dyad", "dyad_position", "dyad_emit", "dyad_failure", "dyad_reactions
 
 
 def dyad_position(pts, a, b, ra, rb, branch):
-    """C of an RRR dyad from A = pts[a], B = pts[b] (plain numpy, any dtype) [m]."""
+    """C of an RRR dyad from A = pts[a], B = pts[b] (plain numpy, any dtype) [m].
+
+    Examples
+    --------
+    A 3-4-5 triangle: ``|A–B|`` = 0.5 m, ra = 0.3 m, rb = 0.4 m; branch +1 puts C on
+    the left of A → B (above the x axis), −1 on the right:
+
+    >>> from assur.groups.rrr import dyad_position
+    >>> pts = {"A": (0.0, 0.0), "B": (0.5, 0.0)}
+    >>> [round(float(v), 3) for v in dyad_position(pts, "A", "B", 0.3, 0.4, 1)]  # [m]
+    [0.18, 0.24]
+    >>> [round(float(v), 3) for v in dyad_position(pts, "A", "B", 0.3, 0.4, -1)]  # [m]
+    [0.18, -0.24]
+    """
     ax, ay = pts[a]
     bx, by = pts[b]
     dx, dy = bx - ax, by - ay
@@ -43,7 +56,23 @@ def dyad_position(pts, a, b, ra, rb, branch):
 
 
 def dyad_emit(E, i, row):
-    """Kernel code of an RRR dyad; ``row = (out, A, B, ra_ref, rb_ref, branch)``."""
+    """Kernel code of an RRR dyad; ``row = (out, A, B, ra_ref, rb_ref, branch)``.
+
+    Examples
+    --------
+    Group 0 puts C in slot 2 from A (slot 0) and B (slot 1); ``ra`` is the
+    coordinate 0 (ref −1, a cylinder), ``rb`` the parameter row 0; first order only:
+
+    >>> from assur.kernel.emit import Emitter
+    >>> from assur.groups.rrr import dyad_emit
+    >>> E = Emitter(1, order=1)
+    >>> dyad_emit(E, 0, (2, 0, 1, -1, 0, 1))
+    >>> print("\\n".join(line.strip() for line in E.lines[:2]))
+    t0ra = q[0, e]
+    t0rb = params[0, d]
+    >>> print(next(line.strip() for line in E.lines if line.strip().startswith("x2 =")))
+    x2 = x0 + t0a * t0ux - (1.0) * t0h * t0uy
+    """
     o, A, B, refa, refb, sig = row
     K = E.K
     ax, ay = pt(A)
@@ -116,7 +145,22 @@ def _sum(names, values, op):
 
 
 def dyad_failure(g, code, pts, v, nm, a, b, ra_ref, rb_ref):
-    """Amount and message of an RRR-type failure (distances and dead points)."""
+    """Amount and message of an RRR-type failure (distances and dead points).
+
+    Examples
+    --------
+    The outer joints 0.8 m apart, the links 0.3 + 0.4 m: too far by 0.1 m:
+
+    >>> from assur.groups.rrr import Dyad, dyad_failure
+    >>> from assur.kernel.emit import FAIL_TOO_FAR
+    >>> g = Dyad("II", a="A", b="B", out="C", ra=0.3, rb=0.4)
+    >>> pts = {"A": (0.0, 0.0), "B": (0.8, 0.0)}
+    >>> f = dyad_failure(g, FAIL_TOO_FAR, pts, float, str, "A", "B", 0.3, 0.4)
+    >>> round(f.amount, 6)  # [m]
+    0.1
+    >>> print(f.text)
+    the distance |A–B| = 0.8 m exceeds 0.3 + 0.4 = 0.7 m by 100 mm
+    """
     (ax, ay), (bx, by) = pts[a], pts[b]
     L = math.hypot(bx - ax, by - ay)
     ra, rb = v(ra_ref), v(rb_ref)
@@ -148,6 +192,25 @@ def dyad_reactions_block(r, a, b, c, la, lb, ra_ref, rb_ref):
     ``[[−u_y, u_x], [−w_y, w_x]]·R_A = [r1, r2]`` with u = A−C, w = B−C (seed 003
     §5.1–5.3, group by group). R_C is the force of link a on link b [N]; all zero
     where the dyad is degenerate (a failed position: det = 0).
+
+    Examples
+    --------
+    A two-bar truss: links 2 (A–C, 0.3 m) and 3 (B–C, 0.4 m) pinned to the frame at
+    A and B 0.5 m apart, 100 N down at C. The bars carry 80 N and 60 N (3-4-5):
+
+    >>> from assur import Mechanism
+    >>> from assur.statics import ReactionContext
+    >>> from assur.groups.rrr import dyad_reactions_block
+    >>> m = (Mechanism("truss", coordinates=("S",))
+    ...      .frame("A", 0.0, 0.0).frame("B", 0.5, 0.0)
+    ...      .dyad("II", a="A", b="B", out="C", ra=0.3, rb=0.4, links=("2", "3")))
+    >>> r = ReactionContext(m.solve([0.0]), set())
+    >>> r.apply("3", "C", 0.0, -100.0)                   # [N]
+    >>> dyad_reactions_block(r, "A", "B", "C", "2", "3", 0.3, 0.4)
+    >>> [round(float(f[0, 0]), 3) for f in r.joints[("0", "2")][1:3]]  # frame on 2 at A [N]
+    [48.0, 64.0]
+    >>> [round(float(f[0, 0]), 3) for f in r.joints[("0", "3")][1:3]]  # frame on 3 at B [N]
+    [-48.0, 36.0]
     """
     bA, bB = r.owner(a), r.owner(b)
     ax, ay = r.point(a)
@@ -222,15 +285,56 @@ class Dyad(Group):
     )
 
     def inputs(self):
+        """Names of the points this group needs solved first: ``(a, b)``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().group("III (6,7)").inputs()  # implement 6, top link 7
+        ('56', '07')
+        """
         return (self.a, self.b)
 
     def outputs(self):
+        """Names of the points this group adds: ``(out,)``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().group("III (6,7)").outputs()  # implement 6, top link 7
+        ('67',)
+        """
         return (self.out,)
 
     def refs(self):
+        """Length references of the group by role: ``ra``, ``rb``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> refs = m.group("III (6,7)").refs()
+        >>> refs
+        {'ra': 'L6', 'rb': 'L7'}
+        >>> round(float(m.value_of(refs["ra"])), 3)  # L6, seed 003 §1.2 [m]
+        0.515
+        """
         return {"ra": self.ra, "rb": self.rb}
 
     def topology(self, t):
+        """Create links a (A–C) and b (B–C) in the topology builder ``t``; C belongs to
+        link b; a link whose radius is a generalized coordinate is variable.
+
+        Examples
+        --------
+        >>> from assur.groups import Dyad
+        >>> from assur.topology import TopologyBuilder
+        >>> t = TopologyBuilder("truss", ("S",))
+        >>> Dyad("II", a="A", b="B", out="C", ra="S", rb=0.4, links=("2", "3")).topology(t)
+        ('2', '3')
+        >>> t.bodies["2"], sorted(t.variable), t.owner("C")
+        (['A', 'C'], ['2'], '3')
+        """
         la, lb = t.link_names(self, 2)
         t.new(self, la, (self.a, self.out), variable=t.is_coord(self.ra))
         t.new(self, lb, (self.b, self.out), variable=t.is_coord(self.rb))
@@ -238,19 +342,90 @@ class Dyad(Group):
         return (la, lb)
 
     def evaluate(self, pts, val):
+        """Add ``out`` to ``pts`` by :func:`dyad_position` (plain numpy, any dtype).
+
+        Examples
+        --------
+        A 3-4-5 triangle; a complex step of ``ra`` gives ∂C/∂ra exactly:
+
+        >>> from assur.groups import Dyad
+        >>> g = Dyad("II", a="A", b="B", out="C", ra="ra", rb="rb")
+        >>> pts = {"A": (0.0, 0.0), "B": (0.5, 0.0)}
+        >>> g.evaluate(pts, {"ra": 0.3, "rb": 0.4}.get)
+        >>> [round(float(v), 3) for v in pts["C"]]                  # C [m]
+        [0.18, 0.24]
+        >>> g.evaluate(pts, {"ra": 0.3 + 1e-20j, "rb": 0.4}.get)
+        >>> [round(float(v.imag / 1e-20), 3) for v in pts["C"]]   # ∂C/∂ra [m/m]
+        [0.6, 0.8]
+        """
         pts[self.out] = dyad_position(pts, self.a, self.b, val(self.ra), val(self.rb),
                                       self.branch)
 
     def compile(self, c):
+        """The program row ``(out, a, b, ra, rb, branch)``: slots, length references
+        (``−(j + 1)`` for coordinate j, else a parameter row) and the branch.
+
+        Examples
+        --------
+        >>> from assur.groups import Dyad
+        >>> from assur.program import CompileContext
+        >>> c = CompileContext(("S",), ("L7",))
+        >>> c.slot("56"), c.slot("07")
+        (0, 1)
+        >>> Dyad("III", a="56", b="07", out="67", ra="S", rb="L7", branch=-1).compile(c)
+        (2, 0, 1, -1, 0, -1)
+        """
         return (c.slot(self.out), c.slot(self.a), c.slot(self.b), c.lref(self.ra),
                 c.lref(self.rb), self.branch)
 
-    emit = classmethod(lambda cls, E, i, row: dyad_emit(E, i, row))
+    @classmethod
+    def emit(cls, E, i, row):
+        """Emit the kernel code of group ``i`` with program ``row`` (:func:`dyad_emit`).
+
+        Examples
+        --------
+        >>> from assur.groups import Dyad
+        >>> from assur.kernel.emit import Emitter
+        >>> E = Emitter(1)                      # one coordinate, up to second order
+        >>> Dyad.emit(E, 3, (2, 0, 1, -1, 0, 1))
+        >>> print(next(line.strip() for line in E.lines if line.strip().startswith("y2 =")))
+        y2 = y0 + t3a * t3uy + (1.0) * t3h * t3ux
+        >>> sum(line.strip().startswith("x2_00 =") for line in E.lines)  # second analog
+        1
+        """
+        dyad_emit(E, i, row)
 
     def failure(self, code, pts, v, nm):
+        """Amount and message of failure ``code`` (:func:`dyad_failure`).
+
+        Examples
+        --------
+        >>> from assur.groups import Dyad
+        >>> from assur.kernel.emit import FAIL_TOO_CLOSE
+        >>> g = Dyad("III", a="A", b="B", out="C", ra="L6", rb="L7")
+        >>> pts = {"A": (0.0, 0.0), "B": (0.2, 0.0)}
+        >>> f = g.failure(FAIL_TOO_CLOSE, pts, {"L6": 0.5, "L7": 0.2}.get, str)
+        >>> round(f.amount, 6)  # [m]
+        0.1
+        >>> print(f.text)
+        the distance |A–B| = 0.2 m is less than |L6 − L7| = |0.5 − 0.2| = 0.3 m by 100 mm
+        """
         return dyad_failure(self, code, pts, v, nm, self.a, self.b, self.ra, self.rb)
 
     def closure(self, P, val):
+        """Largest violation of ``|C − A| = ra``, ``|C − B| = rb`` [m].
+
+        Examples
+        --------
+        >>> from assur.groups import Dyad
+        >>> g = Dyad("II", a="A", b="B", out="C", ra=0.3, rb=0.4)
+        >>> pts = {"A": (0.0, 0.0), "B": (0.5, 0.0), "C": (0.18, 0.24)}
+        >>> round(float(g.closure(pts.get, float)), 9)   # [m]
+        0.0
+        >>> pts["C"] = (0.18, 0.25)                      # 10 mm off
+        >>> round(float(g.closure(pts.get, float)), 4)   # |A–C| − ra [m]
+        0.0081
+        """
         cx, cy = P(self.out)
         res = 0.0
         for p, r in ((self.a, self.ra), (self.b, self.rb)):
@@ -259,8 +434,39 @@ class Dyad(Group):
         return res
 
     def rod_ends(self, links, is_coord):
+        """``(cylinder link, rod-end point)`` for each radius that is a coordinate.
+
+        Examples
+        --------
+        >>> from assur.groups import Dyad
+        >>> g = Dyad("II", a="A", b="B", out="C", ra="S", rb=0.4)
+        >>> g.rod_ends(("2", "3"), lambda ref: ref == "S")
+        (('2', 'C'),)
+        """
         return tuple((l, self.out) for ref, l in zip((self.ra, self.rb), links) if is_coord(ref))
 
     def reactions(self, r):
+        """Joint reactions of the dyad (:func:`dyad_reactions_block`); a radius that is a
+        coordinate adds the cylinder's axial force to ``r.act``.
+
+        Examples
+        --------
+        A two-bar truss whose bar 2 (A–C) is a cylinder of length S = 0.3 m, bar 3
+        (B–C) 0.4 m, A and B 0.5 m apart, 100 N down at C: the cylinder pushes 80 N:
+
+        >>> from assur import Mechanism
+        >>> from assur.statics import ReactionContext
+        >>> m = (Mechanism("truss", coordinates=("S",))
+        ...      .frame("A", 0.0, 0.0).frame("B", 0.5, 0.0)
+        ...      .dyad("II", a="A", b="B", out="C", ra="S", rb=0.4, links=("2", "3")))
+        >>> r = ReactionContext(m.solve([0.3]), set())
+        >>> r.links = m.topology.group_links["II"]
+        >>> r.apply("3", "C", 0.0, -100.0)                     # [N]
+        >>> m.group("II").reactions(r)
+        >>> round(float(r.act["S"][0, 0]), 3)                   # cylinder force [N]
+        80.0
+        >>> [round(float(f[0, 0]), 3) for f in r.joints[("0", "3")][1:3]]  # frame on 3 [N]
+        [-48.0, 36.0]
+        """
         la, lb = r.links
         dyad_reactions_block(r, self.a, self.b, self.out, la, lb, self.ra, self.rb)
