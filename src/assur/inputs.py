@@ -187,7 +187,7 @@ def coordinates_array(q, mech, designs: int = 1, per_position: float | None = No
         if not np.isfinite(q).all():
             bad = tuple(int(i) for i in np.argwhere(~np.isfinite(q))[0])
             raise ModelError(f"mechanism {mech.name!r}: the generalized coordinate value at "
-                             f"index {bad} is not finite ({q[bad]!r})")
+                             f"index {bad} is not finite ({float(q[bad])!r})")
         return q
     name = f"mechanism {mech.name!r}"
     if q is None:
@@ -223,7 +223,7 @@ def coordinates_array(q, mech, designs: int = 1, per_position: float | None = No
     if not np.isfinite(a).all():
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(a))[0])
         raise ModelError(f"{name}: the generalized coordinate value at index {bad} is not "
-                         f"finite ({a[bad]!r})")
+                         f"finite ({float(a[bad])!r})")
     return a
 
 
