@@ -1225,7 +1225,7 @@ class Mechanism:
                     e = int(np.flatnonzero(st >= 0)[0])
                     msg, _, _ = diagnostics.failure_message(self, prog, ptab, qpose, st,
                                                             res["amount"], 1, e)
-                    at = dict(zip(self.coordinates, qpose[:, e]))
+                    at = {c: float(v) for c, v in zip(self.coordinates, qpose[:, e])}
                     pose = ", ".join(diagnostics.coordinate_text(self, c, v)
                                      for c, v in at.items())
                     failures.append(AssemblyError(
