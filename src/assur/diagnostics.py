@@ -20,14 +20,40 @@ __all__ = ["failure_message", "assembly_error", "describe_failures", "coordinate
 
 def coordinate_value(mech, c, v) -> str:
     """A coordinate value as messages show it: a crank angle in degrees
-    (``"14.679°"``), a length as its number in metres (``"0.42"``)."""
+    (``"14.679°"``), a length as its number in metres (``"0.42"``).
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur import Mechanism, examples
+    >>> from assur.diagnostics import coordinate_value
+    >>> coordinate_value(examples.hitch_003(), "S", 0.42)             # S [m]
+    '0.42'
+    >>> crank = (Mechanism("crank", coordinates=("j1",)).frame("O1", 0.0, 0.0)
+    ...          .crank("c", pivot="O1", out="A", radius=0.1, q="j1"))  # radius [m]
+    >>> coordinate_value(crank, "j1", math.radians(14.679))            # j1 [rad] → [°]
+    '14.679°'
+    """
     if mech.coordinate_kind(c) == "angle":
         return f"{float(np.degrees(v)):.6g}°"
     return f"{float(v):.6g}"
 
 
 def coordinate_text(mech, c, v) -> str:
-    """``"j1 = 14.679°"``, ``"S = 0.42"`` (see :func:`coordinate_value`)."""
+    """``"j1 = 14.679°"``, ``"S = 0.42"`` (see :func:`coordinate_value`).
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur import Mechanism, examples
+    >>> from assur.diagnostics import coordinate_text
+    >>> coordinate_text(examples.hitch_003(), "S", 0.4200000001)      # S [m]
+    'S = 0.42'
+    >>> crank = (Mechanism("crank", coordinates=("j1",)).frame("O1", 0.0, 0.0)
+    ...          .crank("c", pivot="O1", out="A", radius=0.1, q="j1"))  # radius [m]
+    >>> coordinate_text(crank, "j1", math.radians(-15.321))            # j1 [rad]
+    'j1 = -15.321°'
+    """
     return f"{c} = {coordinate_value(mech, c, v)}"
 
 
@@ -48,7 +74,31 @@ def group_links(mech, g) -> tuple[str, ...]:
 
 
 def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
-    """``(message, amount, group or measure)`` of the failure at element ``e``."""
+    """``(message, amount, group or measure)`` of the failure at element ``e``.
+
+    Examples
+    --------
+    The kernel's raw status of seed 003's hitch with a brace L4 = 0.95 m too long
+    (:meth:`assur.Mechanism.solve` builds its messages so):
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.diagnostics import failure_message
+    >>> from assur.program import execute
+    >>> m = examples.hitch_003(L4=0.95)                                 # [m]
+    >>> prog = m.program()
+    >>> ptab, trig, _ = m.prepared(prog)
+    >>> q = np.array([[0.42, 0.67]])                                    # S [m]
+    >>> res = execute(prog, ptab, q, 2, trig=trig)
+    >>> res["status"].tolist()                       # ≥ 0: a failure's code; -1: ok
+    [129, -1]
+    >>> msg, amount, group = failure_message(m, prog, ptab, q, res["status"],
+    ...                                      res["amount"], 2, 0)
+    >>> print(msg)
+    RRR dyad 'III (6,7)' (links 6, 7) cannot assemble at position 0 (S = 0.42): the distance |56–07| = 1.31749 m exceeds L6 + L7 = 0.515 + 0.75217 = 1.26717 m by 50.3 mm
+    >>> round(amount, 4), group.name                                    # [m]
+    (0.0503, 'III (6,7)')
+    """
     opi, code = divmod(int(status[e]), CODES_PER_OP)
     d = e // n
     where = _where(mech, ptab, qarr, n, e)
@@ -88,7 +138,26 @@ def failure_message(mech, prog, ptab, qarr, status, amount, n, e):
 
 
 def describe_failures(mech, prog, ptab, qarr, status, amount, n, limit=20):
-    """Messages of the first ``limit`` failed elements."""
+    """Messages of the first ``limit`` failed elements.
+
+    Examples
+    --------
+    Seed 003's hitch with a brace L4 = 0.95 m too long, at three strokes S:
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.diagnostics import describe_failures
+    >>> from assur.program import execute
+    >>> m = examples.hitch_003(L4=0.95)                                 # [m]
+    >>> prog = m.program()
+    >>> ptab, trig, _ = m.prepared(prog)
+    >>> q = np.array([[0.42, 0.43, 0.67]])                              # S [m]
+    >>> res = execute(prog, ptab, q, 3, trig=trig)
+    >>> for text in describe_failures(m, prog, ptab, q, res["status"], res["amount"], 3):
+    ...     print(text.split(": the")[0])
+    RRR dyad 'III (6,7)' (links 6, 7) cannot assemble at position 0 (S = 0.42)
+    RRR dyad 'III (6,7)' (links 6, 7) cannot assemble at position 1 (S = 0.43)
+    """
     idx = np.flatnonzero(status >= 0)
     return [failure_message(mech, prog, ptab, qarr, status, amount, n, e)[0]
             for e in idx[:limit]]
@@ -96,7 +165,29 @@ def describe_failures(mech, prog, ptab, qarr, status, amount, n, limit=20):
 
 def assembly_error(mech, prog, ptab, qarr, status, amount, n, ok):
     """The :class:`AssemblyError` of the first failed element, with the failing
-    spans of its design and the number of failing designs."""
+    spans of its design and the number of failing designs.
+
+    Examples
+    --------
+    Seed 003's hitch with a brace L4 = 0.95 m too long (what
+    :meth:`assur.Mechanism.solve` raises):
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.diagnostics import assembly_error
+    >>> from assur.program import execute
+    >>> m = examples.hitch_003(L4=0.95)                                 # [m]
+    >>> prog = m.program()
+    >>> ptab, trig, _ = m.prepared(prog)
+    >>> q = np.array([[0.42, 0.43, 0.67]])                              # S [m]
+    >>> res = execute(prog, ptab, q, 3, trig=trig)
+    >>> e = assembly_error(m, prog, ptab, q, res["status"], res["amount"], 3,
+    ...                    (res["status"] < 0).reshape(1, 3))
+    >>> e.group, e.links, e.position, e.coordinate
+    ('III (6,7)', ('6', '7'), 0, {'S': 0.42})
+    >>> print(str(e).split("; ")[-1])
+    2 of 3 positions fail (S = 0.42…0.43)
+    """
     idx = np.flatnonzero(status >= 0)
     e = int(idx[0])
     msg, amt, g = failure_message(mech, prog, ptab, qarr, status, amount, n, e)
@@ -116,6 +207,6 @@ def assembly_error(mech, prog, ptab, qarr, status, amount, n, ok):
         nd = len(np.unique(idx // n))
         msg += f"; {nd} of {ptab.shape[1]} designs fail, first design {d}"
     links = group_links(mech, g) if hasattr(g, "group_links") else ()
-    return AssemblyError(msg, group=g.name, links=links,
-                         coordinate=dict(zip(mech.coordinates, qarr[:, e])), design=d,
+    at = {c: float(v) for c, v in zip(mech.coordinates, qarr[:, e])}   # plain floats
+    return AssemblyError(msg, group=g.name, links=links, coordinate=at, design=d,
                          position=pos, amount=amt, failures=ok)

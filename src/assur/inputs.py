@@ -85,6 +85,20 @@ def max_memory() -> int:
     ------
     ModelError
         When the variable is set but is not a size such as ``"8 GiB"``.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> from assur.inputs import max_memory
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "500 MiB"}):
+    ...     max_memory()                                          # [bytes]
+    524288000
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "lots"}):
+    ...     max_memory()
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: ASSUR_MAX_MEMORY='lots': expected a size such as "2 GiB", "500 MiB" or a number of bytes
     """
     text = os.environ.get(MAX_MEMORY_ENV, "").strip()
     if not text:
@@ -98,7 +112,14 @@ def max_memory() -> int:
 
 
 def fmt_bytes(n: float) -> str:
-    """``3.2e9`` → ``"3 GiB"``-style text (KiB, MiB, GiB, TiB, PiB) [bytes]."""
+    """``3.2e9`` → ``"3 GiB"``-style text (KiB, MiB, GiB, TiB, PiB) [bytes].
+
+    Examples
+    --------
+    >>> from assur.inputs import fmt_bytes
+    >>> fmt_bytes(3.2e9), fmt_bytes(2 * 1024**3), fmt_bytes(512)     # [bytes]
+    ('2.98 GiB', '2 GiB', '512 B')
+    """
     for unit, size in (("PiB", 1024**5), ("TiB", 1024**4), ("GiB", 1024**3),
                        ("MiB", 1024**2), ("KiB", 1024)):
         if n >= size:
@@ -114,6 +135,15 @@ def bytes_per_position(mech) -> int:
     statics, cylinders, stability and the report's tables hold about as much again,
     plus the coordinates and per-position flags. Measured peaks (seed
     003 at 10⁵ positions) stay below this estimate.
+
+    Examples
+    --------
+    Seed 003's hitch: k = 1, 11 points and 7 links, 8·((2·11 + 7)·3·2 + 8 + 128):
+
+    >>> from assur import examples
+    >>> from assur.inputs import bytes_per_position
+    >>> bytes_per_position(examples.hitch_003())                     # [bytes]
+    2480
     """
     hit = _PER_POSITION.get(mech)
     if hit is None:
@@ -147,6 +177,18 @@ def check_memory(positions: float, per_position: float, what: str) -> None:
     ModelError
         With the estimate and the limit, e.g. ``… would need about 2.5 TiB of memory
         (limit 2 GiB, set ASSUR_MAX_MEMORY to change it)``.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> from assur.inputs import check_memory
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "2 GiB"}):
+    ...     check_memory(1e5, 2480, "range.S (count = 1e5)")     # 248 MB [bytes]: fine
+    ...     check_memory(1e9, 2480, "range.S (count = 1e9)")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: range.S (count = 1e9): 1e+09 positions would need about 2.26 TiB of memory (limit 2 GiB; set ASSUR_MAX_MEMORY to change it, or use fewer positions)
     """
     need = float(positions) * float(per_position)
     limit = max_memory()
@@ -181,13 +223,30 @@ def coordinates_array(q, mech, designs: int = 1, per_position: float | None = No
     ModelError
         For ``None``, text, complex or ragged input, no positions, a value that is
         not finite, or more positions than the memory limit allows.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.inputs import coordinates_array
+    >>> m = examples.hitch_003()
+    >>> a = coordinates_array([0.42, 0.67], m)                       # S [m]
+    >>> a.dtype.name, a.tolist()
+    ('float64', [0.42, 0.67])
+    >>> coordinates_array([[0.42], [0.5, 0.6]], m)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': the generalized coordinates must be numbers [m or rad] in a regular array; got a ragged list (rows of different lengths): [[0.42], [0.5, 0.6]]
+    >>> coordinates_array("0.42", m)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': the generalized coordinates must be numbers [m or rad], got the text '0.42'
     """
     if type(q) is np.ndarray and q.dtype == np.float64 and 0 < q.size <= 4096 and designs <= 1:
         # the common small case (one or a few positions): the checks below, cheaper
         if not np.isfinite(q).all():
             bad = tuple(int(i) for i in np.argwhere(~np.isfinite(q))[0])
             raise ModelError(f"mechanism {mech.name!r}: the generalized coordinate value at "
-                             f"index {bad} is not finite ({q[bad]!r})")
+                             f"index {bad} is not finite ({float(q[bad])!r})")
         return q
     name = f"mechanism {mech.name!r}"
     if q is None:
@@ -223,7 +282,7 @@ def coordinates_array(q, mech, designs: int = 1, per_position: float | None = No
     if not np.isfinite(a).all():
         bad = tuple(int(i) for i in np.argwhere(~np.isfinite(a))[0])
         raise ModelError(f"{name}: the generalized coordinate value at index {bad} is not "
-                         f"finite ({a[bad]!r})")
+                         f"finite ({float(a[bad])!r})")
     return a
 
 
@@ -247,7 +306,20 @@ _LOAD_ROLES = {  # load attribute -> (kind, must be positive)
 
 def span_problem(kind: str, value: float, positive: bool = False) -> str | None:
     """What is wrong with the SI ``value`` of a ``kind`` (``"length"``, ``"force"``, …,
-    ``"efficiency"``, ``"count"``), or None when it is within :data:`SPANS`."""
+    ``"efficiency"``, ``"count"``), or None when it is within :data:`SPANS`.
+
+    Examples
+    --------
+    >>> from assur.inputs import span_problem
+    >>> span_problem("length", 2e4)                                  # [m]
+    'expected a length of at most 10000 m in magnitude'
+    >>> span_problem("length", 0.0, positive=True)                   # [m]
+    'expected a length of at least 1e-06 m'
+    >>> span_problem("count", 2.5)                                   # [-]
+    'expected a whole number (a count) from 1 to 1000'
+    >>> print(span_problem("efficiency", 0.84))                      # [-]
+    None
+    """
     if not math.isfinite(value):
         return "expected a finite number"
     if kind == "efficiency":
@@ -313,6 +385,21 @@ def check_params(mech, params: Mapping | None = None) -> None:
     ------
     ModelError
         Naming the parameter, the value, the role and the expected span.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.inputs import check_params
+    >>> m = examples.hitch_003()
+    >>> check_params(m, {"L4": 0.7})                                 # [m]: fine
+    >>> check_params(m, {"L4": -0.7})
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': parameter 'L4' (used as RRR dyad 'II (4,5)'.ra): expected a length of at least 1e-06 m, found -0.7 [m]
+    >>> check_params(m, {"eta": [0.84, 1.2]})                        # two designs [-]
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': parameter 'eta' (used as cylinder 'ГЦ'.eta_hyd): expected an efficiency in [0.01, 1], found 1.2 [-] (design 1)
     """
     if not params and mech in _CHECKED:
         return  # the mechanism's own values, checked on an earlier call
@@ -398,6 +485,18 @@ def check_finite(analysis) -> None:
     Raises
     ------
     ModelError
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.inputs import check_finite
+    >>> a = examples.hitch_003().analyze([0.42, 0.67])                # S [m]
+    >>> check_finite(a)                                              # all finite
+    >>> a.kinematics.output_buffer[0, 1] = float("inf")  # spoil X23 at S = 0.67 m
+    >>> check_finite(a)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': the position of point '23' is not finite (element 1): the inputs are outside the range where it can be computed; check the sizes of lengths, loads, bores and efficiencies
     """
     kin = analysis.kinematics
     for bad in (kin.first_nonfinite(), analysis.statics.first_nonfinite()):

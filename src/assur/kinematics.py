@@ -79,6 +79,16 @@ class Kinematics:
         True where the mechanism assembled.
     failures : list of str
         Messages of failed elements when solved with ``on_failure="report"``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> r = examples.hitch_003().solve(np.linspace(0.42, 0.67, 10))   # S [m]
+    >>> r.coordinates, r.shape, bool(r.ok.all())
+    (('S',), (10,), True)
+    >>> [round(float(v), 3) for v in r.y("56")[[0, -1]]]   # Y56 [m], seed 003 table 2.2
+    [0.2, 1.043]
     """
 
     def __init__(self, mechanism, prog, q, raw, shape, ok, params):
@@ -129,33 +139,105 @@ class Kinematics:
         """The one array, shape (output rows, m·n), that the kernel wrote and every
         position, analog, angle and distance of this result views — what
         ``Mechanism.solve(..., out=result)`` writes into again; None for a part of a
-        result (:meth:`positions`)."""
+        result (:meth:`positions`).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> r = m.solve([0.42, 0.67])                             # S [m]
+        >>> r.output_buffer.shape, r.positions(0, 1).output_buffer is None
+        ((63, 2), True)
+        >>> r2 = m.solve([0.5, 0.6], out=r)                       # reuses its memory
+        >>> r2.output_buffer is r.output_buffer, round(float(r2.q()[0]), 2)   # S [m]
+        (True, 0.5)
+        """
         return self._buffer
 
     @property
     def points(self):
-        """Names of the moving points in this result (frame points are available too)."""
+        """Names of the moving points in this result (frame points are available too).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().solve([0.42]).points
+        ('23', '34', '45', '56', '67', 'S6', 'F610')
+        >>> examples.hitch_003().solve([0.42], outputs=["56"]).points
+        ('56',)
+        """
         return tuple(self._pidx)
 
     def value(self, point):
-        """Position of any point (frame points included), shape (2, m, n) [m]."""
+        """Position of any point (frame points included), shape (2, m, n) [m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> r.value("56").shape
+        (2, 1, 2)
+        >>> [round(float(v), 3) for v in r.value("56")[:, 0, 0]]  # X56, Y56 [m], table 2.2
+        [1.131, 0.2]
+        >>> [float(v) for v in r.value("01")[:, 0, 1]]           # frame pivot 01 [m]
+        [0.415, 0.563]
+        """
         return self._val(point)
 
     def jacobian(self, point):
-        """First analogs ∂(x, y)/∂q of a point, shape (2, k, m, n) [m/m or m/rad]."""
+        """First analogs ∂(x, y)/∂q of a point, shape (2, k, m, n) [m/m or m/rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> J = examples.hitch_003().solve([0.42, 0.67]).jacobian("56")
+        >>> J.shape
+        (2, 1, 1, 2)
+        >>> [round(float(v), 3) for v in J[1, 0, 0]]   # dY56/dS = I56 [m/m], table 3.1
+        [4.459, 2.621]
+        """
         return self._jet1(point)
 
     def hessian(self, point):
-        """Second analogs ∂²(x, y)/∂q∂q of a point, shape (2, k, k, m, n)."""
+        """Second analogs ∂²(x, y)/∂q∂q of a point, shape (2, k, k, m, n).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> H = examples.hitch_003().solve([0.42, 0.67]).hessian("56")
+        >>> H.shape
+        (2, 1, 1, 1, 2)
+        >>> [round(float(v), 3) for v in H[1, 0, 0, 0]]    # d²Y56/dS² [1/m]
+        [-24.851, -7.64]
+        """
         return self._jet2(point)
 
     def has_point(self, point) -> bool:
-        """True if the result holds the point (all points unless solved with ``outputs``)."""
+        """True if the result holds the point (all points unless solved with ``outputs``).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42], outputs=["56"])
+        >>> r.has_point("56"), r.has_point("01"), r.has_point("S6")   # 01: a frame point
+        (True, True, False)
+        """
         return point in self._pidx or point in self._frame
 
     def first_nonfinite(self):
         """``(what, element)`` of the first value that is NaN or infinite (positions,
-        analogs, link angles and distances), or None — one pass over the arrays."""
+        analogs, link angles and distances), or None — one pass over the arrays.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> print(r.first_nonfinite())
+        None
+        >>> r.output_buffer[0, 1] = float("nan")     # spoil X23 at the second position
+        >>> r.first_nonfinite()
+        ("position of point '23'", 1)
+        """
         if self._buffer is not None and np.isfinite(self._buffer).all():
             return None   # the common case: one check of the buffer the arrays view
         for what, arr, names in (("position of point", self._pv, list(self._pidx)),
@@ -171,17 +253,48 @@ class Kinematics:
 
     def has_all_points(self) -> bool:
         """True if the result holds every point of the mechanism (not solved with
-        ``outputs=`` for some of them)."""
+        ``outputs=`` for some of them).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> m.solve([0.42]).has_all_points(), m.solve([0.42], outputs=["56"]).has_all_points()
+        (True, False)
+        """
         return all(self.has_point(p) for p in self.mechanism.points)
 
     def positions(self, i0, i1):
-        """The same result restricted to positions i0:i1 (views, no copies)."""
+        """The same result restricted to positions i0:i1 (views, no copies).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve(np.linspace(0.42, 0.67, 10))   # S [m]
+        >>> p = r.positions(8, 10)
+        >>> p.shape, [round(float(v), 3) for v in p.q()]             # S [m]
+        ((2,), [0.642, 0.67])
+        >>> [round(float(v), 1) for v in p.phi("6", degrees=True)]   # table 2.1 [°]
+        [105.8, 110.3]
+        """
         return self._positions(i0, i1)
 
     def body_rates(self, body):
         """Angular analogs of a body: (φ', φ''), shapes (k, m, n) and (k, k, m, n)
         [rad/m or rad/rad]; zero for the frame. A single-point body (a slider block, a
-        sleeve) turns with its guide (:meth:`assur.topology.Topology.angle_points`)."""
+        sleeve) turns with its guide (:meth:`assur.topology.Topology.angle_points`).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> w1, w2 = r.body_rates("5")
+        >>> w1.shape, [round(float(v), 3) for v in w1[0, 0]]     # φ5' [rad/m], table 3.1
+        ((1, 1, 2), [4.475, 3.019])
+        >>> float(abs(r.body_rates("0")[0]).max())              # the frame does not turn
+        0.0
+        """
         k, m, n = self.k, self.m, self.n
         pq = self.mechanism.topology.angle_points(body)
         if pq is None:
@@ -203,7 +316,16 @@ class Kinematics:
         return w1, w2
 
     def reshape(self, a):
-        """An array of shape ``(m, n, *tail)`` in the result's shape (``shape + tail``)."""
+        """An array of shape ``(m, n, *tail)`` in the result's shape (``shape + tail``).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.55, 0.67])    # one design: shape (3,)
+        >>> r.ok.shape, r.reshape(r.ok).shape, r.reshape(np.zeros((1, 3, 2))).shape
+        ((1, 3), (3,), (3, 2))
+        """
         return self._out(a)
 
     def _val(self, point):
@@ -226,7 +348,14 @@ class Kinematics:
 
     @property
     def links(self):
-        """Names of the links (angles) in this result."""
+        """Names of the links (angles) in this result.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().solve([0.42]).links
+        ('2', '3', '34', '4', '5', '6', '7')
+        """
         return tuple(s for s in self._sidx if self._kinds[s] == "angle")
 
     def _out(self, a):
@@ -270,41 +399,113 @@ class Kinematics:
 
     # ---- coordinates and points ---------------------------------------------------
     def q(self, name=None):
-        """Generalized coordinate values [m or rad]."""
+        """Generalized coordinate values [m or rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67], params={"L4": [0.65, 0.66]})
+        >>> r.q().shape, r.q("S")[1].tolist()          # 2 designs × 2 positions; S [m]
+        ((2, 2), [0.42, 0.67])
+        """
         j = 0 if name is None and self.k == 1 else self.coordinates.index(name)
         return self._out(self._q[j])
 
     def q_table(self):
         """All generalized coordinates as one C-contiguous array, shape (k, m·n)
-        [m or rad], in the order of :attr:`coordinates` (a view: do not write to it)."""
+        [m or rad], in the order of :attr:`coordinates` (a view: do not write to it).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67], params={"L4": [0.65, 0.66]})
+        >>> r.q_table().tolist()        # S [m] of design 0, then design 1
+        [[0.42, 0.67, 0.42, 0.67]]
+        """
         return np.ascontiguousarray(self._q.reshape(self.k, self.m * self.n))
 
     def x(self, point):
-        """X coordinate of a point [m]."""
+        """X coordinate of a point [m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.x("56")]    # X56 [m], seed 003 table 2.2
+        [1.131, 1.003]
+        """
         return self._out(self._val(point)[0])
 
     def y(self, point):
-        """Y coordinate of a point [m]."""
+        """Y coordinate of a point [m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.y("S6")]    # YS6 [m], seed 003 table 2.2
+        [0.333, 1.487]
+        """
         return self._out(self._val(point)[1])
 
     def point(self, point):
-        """Position of a point, shape (..., 2) [m]."""
+        """Position of a point, shape (..., 2) [m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> p = examples.hitch_003().solve([0.42, 0.67]).point("67")
+        >>> p.shape, [round(float(v), 3) for v in p[-1]]   # X67, Y67 at S = 0.67 [m], table 2.2
+        ((2, 2), [0.824, 1.526])
+        """
         return self._out(np.moveaxis(self._val(point), 0, -1))
 
     def dx(self, point, wrt=None):
-        """Velocity analog dX/dq of a point [m/m or m/rad]."""
+        """Velocity analog dX/dq of a point [m/m or m/rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.dx("56")]       # dX56/dS [m/m]
+        [1.253, -1.7]
+        """
         return self._d1(self._jet1(point)[0], wrt)
 
     def dy(self, point, wrt=None):
-        """Velocity analog dY/dq of a point [m/m or m/rad]."""
+        """Velocity analog dY/dq of a point [m/m or m/rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.dy("56")]       # I56 [m/m], seed 003 table 3.1
+        [4.459, 2.621]
+        """
         return self._d1(self._jet1(point)[1], wrt)
 
     def ddx(self, point, wrt=None):
-        """Acceleration analog d²X/dq² of a point [1/m or m/rad²]."""
+        """Acceleration analog d²X/dq² of a point [1/m or m/rad²].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.ddx("56")]      # d²X56/dS² [1/m]
+        [-28.517, -6.286]
+        """
         return self._d2(self._jet2(point)[0], wrt)
 
     def ddy(self, point, wrt=None):
-        """Acceleration analog d²Y/dq² of a point [1/m or m/rad²]."""
+        """Acceleration analog d²Y/dq² of a point [1/m or m/rad²].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])
+        >>> [round(float(v), 3) for v in r.ddy("56")]      # dI56/dS [1/m]
+        [-24.851, -7.64]
+        """
         return self._d2(self._jet2(point)[1], wrt)
 
     def transmission(self, point, axis="y", wrt=None):
@@ -343,7 +544,17 @@ class Kinematics:
         ``link`` is a link declared with :meth:`~assur.Mechanism.link`, or any link a
         group names (its angle is the direction from its first point to its second,
         e.g. pivot → joint; a slider block or a sleeve turns with its guide or rod),
-        continuous along the positions."""
+        continuous along the positions.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(v), 1) for v in r.phi("5", degrees=True)]   # table 2.1 [°]
+        [-15.7, 33.0]
+        >>> [round(float(v), 4) for v in r.phi("5")]                 # [rad]
+        [-0.2739, 0.5753]
+        """
         pq = self._body_link(link)
         if pq is not None:
             d = self._val(pq[1]) - self._val(pq[0])
@@ -353,27 +564,67 @@ class Kinematics:
         return np.degrees(v) if degrees else v
 
     def dphi(self, link, wrt=None):
-        """Angular-velocity analog φ' = dφ/dq [rad/m or rad/rad]."""
+        """Angular-velocity analog φ' = dφ/dq [rad/m or rad/rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(v), 3) for v in r.dphi("3")]   # dφ3 [rad/m], seed 003 table 3.1
+        [6.719, 6.239]
+        """
         if self._body_link(link) is not None:
             return self._d1(self.body_rates(link)[0], wrt)
         return self._d1(self._sd[self._s(link, "angle")], wrt)
 
     def ddphi(self, link, wrt=None):
-        """Angular-acceleration analog φ'' = d²φ/dq² [rad/m² or rad/rad²]."""
+        """Angular-acceleration analog φ'' = d²φ/dq² [rad/m² or rad/rad²].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(v), 2) for v in r.ddphi("3")]            # [rad/m²]
+        [-53.42, 23.86]
+        """
         if self._body_link(link) is not None:
             return self._d2(self.body_rates(link)[1], wrt)
         return self._d2(self._sdd[self._s(link, "angle")], wrt)
 
     def length(self, name):
-        """A named distance [m]."""
+        """A named distance [m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().distance("d57", "05", "67", angle="57")   # |05–67|
+        >>> [round(float(v), 3) for v in m.solve([0.42, 0.67]).length("d57")]   # [m]
+        [1.037, 1.253]
+        """
         return self._out(self._sv[self._s(name, "distance")])
 
     def dlength(self, name, wrt=None):
-        """First analog of a named distance [m/m]."""
+        """First analog of a named distance [m/m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().distance("d57", "05", "67", angle="57")   # |05–67|
+        >>> [round(float(v), 3) for v in m.solve([0.42, 0.67]).dlength("d57")]  # [m/m]
+        [2.083, -0.028]
+        """
         return self._d1(self._sd[self._s(name, "distance")], wrt)
 
     def ddlength(self, name, wrt=None):
-        """Second analog of a named distance [1/m]."""
+        """Second analog of a named distance [1/m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().distance("d57", "05", "67", angle="57")   # |05–67|
+        >>> [round(float(v), 3) for v in m.solve([0.42, 0.67]).ddlength("d57")]  # [1/m]
+        [-23.535, -7.693]
+        """
         return self._d2(self._sdd[self._s(name, "distance")], wrt)
 
     def _singular_mask(self, den, what, singular):
@@ -402,6 +653,27 @@ class Kinematics:
         singular : {"raise", "mask"}
             Where φ_j' = 0 the ratio is undefined: raise :class:`SingularPositionError`
             (default) or return a :class:`numpy.ma.MaskedArray` masking those positions.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> [round(float(v), 3) for v in m.solve([0.42, 0.67]).ratio("5", "3")]
+        [0.666, 0.484]
+
+        U53 [-] as seed 003 table 3.1 prints it. Link 4 is at rest where its U43
+        changes sign (between S = 0.420 and 0.448 m in the table), so U34 is
+        singular there:
+
+        >>> s0 = 0.44                                # Newton's method for φ4' = 0
+        >>> for _ in range(6):
+        ...     r = m.solve([s0])
+        ...     s0 -= float(r.dphi("4")[0] / r.ddphi("4")[0])
+        >>> round(s0, 4)                                             # S [m]
+        0.4416
+        >>> u = m.solve([0.42, s0]).ratio("3", "4", singular="mask")
+        >>> round(float(u[0]), 2), u.mask.tolist()                  # U34 [-]
+        (-43.45, [False, True])
         """
         if singular not in ("raise", "mask"):
             raise ValueError("singular must be one of: ['raise', 'mask']")
@@ -413,7 +685,15 @@ class Kinematics:
         return np.ma.masked_array(r, mask=bad) if singular == "mask" else r
 
     def dratio(self, i, j, wrt=None, singular="raise"):
-        """Derivative dU_ij/dq = (φ_i''φ_j' − φ_i'φ_j'')/φ_j'² [1/m]."""
+        """Derivative dU_ij/dq = (φ_i''φ_j' − φ_i'φ_j'')/φ_j'² [1/m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(v), 3) for v in r.dratio("5", "3")]     # dU53/dS [1/m]
+        [0.746, -2.313]
+        """
         wrt = wrt if wrt is not None or self.k == 1 else self.coordinates[0]
         a, b = self.dphi(i, wrt), self.dphi(j, wrt)
         aa, bb = self.ddphi(i, wrt), self.ddphi(j, wrt)
@@ -435,13 +715,34 @@ class Kinematics:
     def velocity(self, point, qdot):
         """Velocity of a point v = J·q̇ [m/s], shape (..., 2), for coordinate rates q̇
         [m/s or rad/s] (scalar or array broadcastable to the result shape, ``(..., k)``
-        for k > 1)."""
+        for k > 1).
+
+        Examples
+        --------
+        The rod extending at Ṡ = 0.05 m/s:
+
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> v = r.velocity("56", 0.05)
+        >>> v.shape, [round(float(c), 4) for c in v[0]]      # (vx, vy) at S = 0.42 [m/s]
+        ((2, 2), [0.0627, 0.223])
+        """
         qd, _ = self._rates(qdot)
         J = self._out(np.moveaxis(self._jet1(point), (0, 1), (-2, -1)))  # (...,2,k)
         return np.einsum("...ik,...k->...i", J, qd)
 
     def acceleration(self, point, qdot, qddot):
-        """Acceleration a = J·q̈ + q̇ᵀ·H·q̇ of a point [m/s²], shape (..., 2)."""
+        """Acceleration a = J·q̈ + q̇ᵀ·H·q̇ of a point [m/s²], shape (..., 2).
+
+        Examples
+        --------
+        The rod extending at a steady Ṡ = 0.05 m/s (S̈ = 0): a = Ṡ²·(d²X/dS², d²Y/dS²):
+
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(c), 4) for c in r.acceleration("56", 0.05, 0.0)[0]]  # [m/s²]
+        [-0.0713, -0.0621]
+        """
         qd, qdd = self._rates(qdot, qddot)
         J = self._out(np.moveaxis(self._jet1(point), (0, 1), (-2, -1)))
         H = self._out(np.moveaxis(self._jet2(point), (0, 1, 2), (-3, -2, -1)))
@@ -449,13 +750,30 @@ class Kinematics:
                 + np.einsum("...k,...ikl,...l->...i", qd, H, qd))
 
     def angular_velocity(self, link, qdot):
-        """ω = φ'·q̇ [rad/s]."""
+        """ω = φ'·q̇ [rad/s].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(w), 4) for w in r.angular_velocity("3", 0.05)]  # Ṡ = 0.05 m/s → [rad/s]
+        [0.336, 0.3119]
+        """
         qd, _ = self._rates(qdot)
         J = self._out(np.moveaxis(self._sd[self._s(link, "angle")], 0, -1))
         return np.einsum("...k,...k->...", J, qd)
 
     def angular_acceleration(self, link, qdot, qddot):
-        """ε = φ'·q̈ + q̇ᵀ·φ''·q̇ [rad/s²]."""
+        """ε = φ'·q̈ + q̇ᵀ·φ''·q̇ [rad/s²].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> eps = r.angular_acceleration("3", 0.05, 0.01)      # Ṡ [m/s], S̈ [m/s²]
+        >>> [round(float(e), 4) for e in eps]                  # [rad/s²]
+        [-0.0664, 0.122]
+        """
         qd, qdd = self._rates(qdot, qddot)
         i = self._s(link, "angle")
         J = self._out(np.moveaxis(self._sd[i], 0, -1))
@@ -473,6 +791,18 @@ class Kinematics:
         Returns
         -------
         xp, yp : ndarray
+
+        Examples
+        --------
+        The seed's check I56 = φ6'·(X56 − Xp) at S = 0.42 m:
+
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> xp, yp = r.instant_centre("6")
+        >>> round(float(xp[0]), 3), round(float(yp[0]), 3)      # [m]
+        (-13.991, 4.449)
+        >>> round(float(r.dphi("6")[0] * (r.x("56")[0] - xp[0])), 3)   # I56 [m/m], table 3.1
+        4.459
         """
         lk = next(l for l in self.mechanism.links if l.name == link)
         w = self.dphi(link, wrt)
@@ -488,6 +818,14 @@ class Kinematics:
         Recomputes every constraint of every group from the returned points
         (:meth:`assur.groups.base.Group.closure`): lengths of links, rigid offsets,
         slider lines.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> res = examples.hitch_003().solve(np.linspace(0.42, 0.67, 10)).closure_residual()
+        >>> res.shape, bool(res.max() < 1e-12)                  # [m]
+        ((10,), True)
         """
         mech = self.mechanism
         res = np.zeros(self.shape)
@@ -509,7 +847,15 @@ class Kinematics:
 
     def transmission_angle(self, group, degrees=False):
         """Transmission angle μ of a dyad: the angle at its middle joint between its
-        two links [rad] (or [°]); 0 or π is a dead point."""
+        two links [rad] (or [°]); 0 or π is a dead point.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(v), 1) for v in r.transmission_angle("III (6,7)", degrees=True)]
+        [102.3, 53.3]
+        """
         g = self.mechanism.group(group)
         cx, cy = self.x(g.out), self.y(g.out)
         ax, ay = self.x(g.a), self.y(g.a)
@@ -529,6 +875,18 @@ class Kinematics:
         in the mechanism's ``tables`` (seed 003: U43, U53, U65, U75, I56, IS6);
         ``<distance>`` for named distances. For k > 1 the analog columns carry the
         coordinate name (``dphi3_S1``). A batch gets a (design, position) index.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> f = examples.hitch_003().solve(np.linspace(0.42, 0.67, 10)).to_frame()
+        >>> f.shape, list(f.columns[:4])
+        ((10, 70), ['S', 'phi2', 'dphi2', 'ddphi2'])
+        >>> [round(float(v), 3) for v in f["U53"].iloc[[0, -1]]]   # seed 003 table 3.1 [-]
+        [0.666, 0.484]
+        >>> [round(float(v), 1) for v in f["phi6"].iloc[[0, -1]]]  # table 2.1 [°]
+        [88.5, 110.3]
         """
         import pandas as pd
 

@@ -12,6 +12,7 @@ generalized coordinates are arrays of shape ``(n,)`` (one design) or ``(m, n)``
 
 from __future__ import annotations
 
+import inspect
 import math
 from types import MappingProxyType
 from typing import Iterable, Mapping
@@ -163,12 +164,35 @@ class Mechanism:
         return Mechanism(**d)
 
     def add(self, *groups) -> "Mechanism":
-        """Return a mechanism with ``groups`` appended (solved after the existing ones)."""
+        """Return a mechanism with ``groups`` appended (solved after the existing ones).
+
+        Examples
+        --------
+        >>> from assur import Mechanism
+        >>> from assur.groups import Frame
+        >>> m = Mechanism("m", coordinates=("j1",)).frame("O1", 0.0, 0.0)
+        >>> m.add(Frame(name="O3", x=1.209, y=0.0)).frame_points     # x, y [m]
+        ('O1', 'O3')
+        """
         return self._with(groups=self.groups + tuple(groups))
 
     def extended(self, groups=(), params=None) -> "Mechanism":
         """Return a mechanism with ``groups`` appended and ``params`` added (new
-        parameter names; :meth:`with_params` changes existing ones)."""
+        parameter names; :meth:`with_params` changes existing ones).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.groups import Frame
+        >>> m = examples.hitch_003().extended([Frame(name="09", x="X09", y=0.2)],
+        ...                                   params={"X09": 1.5})     # [m]
+        >>> m.frame_points, float(m.params["X09"])
+        (('01', '03', '05', '07', '09'), 1.5)
+        >>> m.extended(params={"L4": 0.7})
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: mechanism 'hitch_003': parameters ['L4'] exist already; change them with with_params
+        """
         p = dict(self.params)
         clash = sorted(set(params or {}) & set(p))
         if clash:
@@ -178,7 +202,27 @@ class Mechanism:
         return self._with(params=p, groups=self.groups + tuple(groups))
 
     def add_group(self, type_name: str, name: str, **kw) -> "Mechanism":
-        """Add a group of the registered type ``type_name`` (the model file's ``type``)."""
+        """Add a group of the registered type ``type_name`` (the model file's ``type``).
+
+        Examples
+        --------
+        The builder ``m.dyad("II", …)`` is ``m.add_group("dyad", "II", …)``; a seed
+        003-like four-bar, lengths [m]:
+
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("m", coordinates=("S",), params={"L3": 0.2})
+        ...      .frame("01", 0.415, 0.563).frame("03", 0.25, 1.112).frame("05", 0.135, 0.48)
+        ...      .add_group("cylinder_lever", "I", base="01", pivot="03", out="23",
+        ...                 lever="L3", s="S", branch=-1, links=["2", "3"])
+        ...      .add_group("dyad", "II", a="23", b="05", out="45", ra=0.6, rb=0.48,
+        ...                 branch=1, links=["4", "5"]))
+        >>> m.group("II").links, m.owner("45")
+        (('4', '5'), '5')
+        >>> m.add_group("gear", "G")
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: unknown group type 'gear'; known: ['crank', 'cylinder_lever', 'dyad', 'frame', 'pose_point', 'prp_dyad', 'rigid_point', 'rpr_dyad', 'slider_dyad', 'slider_input']
+        """
         types = registry()
         if type_name not in types:
             raise ModelError(f"unknown group type {type_name!r}; known: {sorted(types)}")
@@ -234,13 +278,34 @@ class Mechanism:
 
     def distance(self, name, a, b, angle=None) -> "Mechanism":
         """Name the distance |a–b| [m] (e.g. a dependent cylinder length); ``angle``
-        also names its direction a → b (an angle φ_angle, as a link of that name)."""
+        also names its direction a → b (an angle φ_angle, as a link of that name).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().distance("d57", "05", "67", angle="57")
+        >>> r = m.solve([0.42, 0.67])                                  # S [m]
+        >>> [round(float(v), 3) for v in r.length("d57")]             # |05–67| [m]
+        [1.037, 1.253]
+        >>> [round(float(v), 1) for v in r.phi("57", degrees=True)]   # its angle [°]
+        [13.1, 56.6]
+        """
         links = self.links + ((Link(angle, a, b),) if angle is not None else ())
         return self._with(distances=self.distances + (Distance(name, a, b, angle),),
                           links=links)
 
     def distance_angle(self, name):
-        """The name of the link angle of the distance ``name`` (None if it has none)."""
+        """The name of the link angle of the distance ``name`` (None if it has none).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().distance("d57", "05", "67", angle="57")
+        >>> m.distance_angle("d57")
+        '57'
+        >>> print(m.distance("d07", "07", "56").distance_angle("d07"))
+        None
+        """
         for d in self.distances:
             if d.name == name:
                 return d.angle
@@ -262,12 +327,35 @@ class Mechanism:
         return self._with(loads=self.loads + (Weight(point, P, link, name),))
 
     def force(self, point, fx=0.0, fy=0.0, link=None, name=None) -> "Mechanism":
-        """Add a force ``(fx, fy)`` [N] at ``point``."""
+        """Add a force ``(fx, fy)`` [N] at ``point``.
+
+        Examples
+        --------
+        A downward force of 27.5 kN at S6 asks of the cylinder what the seed's weight
+        P6 does:
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_loads().force("S6", fy=-27500.0)
+        >>> round(float(m.analyze([0.42]).statics.actuator_force("S")[0]))  # P6·IS6 [N]
+        129614
+        """
         from .loads import PointForce
         return self._with(loads=self.loads + (PointForce(point, fx, fy, link, name),))
 
     def moment(self, link, M, name=None) -> "Mechanism":
-        """Add a moment ``M`` [N·m] (counter-clockwise positive) on ``link``."""
+        """Add a moment ``M`` [N·m] (counter-clockwise positive) on ``link``.
+
+        Examples
+        --------
+        By virtual work the rod force is F = −M·φ6' (φ6' [rad/m], seed 003 table 3.1):
+
+        >>> from assur import examples
+        >>> a = examples.hitch_003().with_loads().moment("6", 1000.0).analyze([0.42, 0.67])
+        >>> [round(float(v), 1) for v in a.statics.actuator_force("S")]   # [N]
+        [-294.9, -3084.9]
+        >>> [round(float(v), 3) for v in a.kinematics.dphi("6")]          # [rad/m]
+        [0.295, 3.085]
+        """
         from .loads import Couple
         return self._with(loads=self.loads + (Couple(link, M, name),))
 
@@ -275,35 +363,97 @@ class Mechanism:
                count=1) -> "Mechanism":
         """Add ``count`` identical springs between points ``a`` and ``b`` (rate [N/m],
         free length [m], preload [N] of one spring); tension pulls the points
-        together."""
+        together.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import spring_states
+        >>> m = examples.hitch_003().with_loads().spring("k", "07", "S6", rate=1e4,
+        ...                                              free_length=1.0)  # [N/m], [m]
+        >>> L, T, F = spring_states(m.solve([0.42, 0.67]))["k"]
+        >>> [round(float(v), 3) for v in L], [round(float(v)) for v in T]  # [m], [N]
+        ([1.674, 1.463], [6745, 4630])
+        """
         from .loads import Spring
         links = tuple(links) if links else None
         return self._with(loads=self.loads + (Spring(name, a, b, rate, free_length, preload,
                                                      links, count),))
 
     def mass(self, link, m, point, J=0.0) -> "Mechanism":
-        """Give ``link`` a mass ``m`` [kg] at ``point`` and inertia ``J`` [kg·m²]."""
+        """Give ``link`` a mass ``m`` [kg] at ``point`` and inertia ``J`` [kg·m²].
+
+        Examples
+        --------
+        A mass weighing the seed's P6 = 27.5 kN (g = 9.81 m/s²) at rest:
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_loads().mass("6", 27500.0 / 9.81, "S6")  # [kg]
+        >>> round(float(m.analyze([0.42]).statics.actuator_force("S")[0]))  # [N]
+        129614
+        """
         from .loads import Mass
         return self._with(loads=self.loads + (Mass(link, m, point, J),))
 
     def resisting_moment(self, link, M, travel=1, coordinate=None, name=None) -> "Mechanism":
         """Add a moment of magnitude ``M`` [N·m] on ``link`` that opposes its turn while
         the coordinate travels in the direction ``travel`` (±1;
-        :class:`assur.loads.ResistingMoment`)."""
+        :class:`assur.loads.ResistingMoment`).
+
+        Examples
+        --------
+        Link 6 turns counter-clockwise as S grows (φ6' > 0), so 1000 N·m resisting
+        that travel acts clockwise and the rod must push (compare :meth:`moment`):
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_loads().resisting_moment("6", 1000.0, travel=1)
+        >>> [round(float(v), 1) for v in m.analyze([0.42, 0.67]).statics.actuator_force("S")]
+        [294.9, 3084.9]
+        """
         from .loads import ResistingMoment
         return self._with(loads=self.loads + (ResistingMoment(link, M, travel, coordinate,
                                                               name),))
 
     def cylinder(self, name, coordinate=None, **kw) -> "Mechanism":
         """Add hydraulic cylinder data for a coordinate, or a passive cylinder on a named
-        distance (``distance=…``, ``supply=…``; see :class:`assur.loads.Cylinder`)."""
+        distance (``distance=…``, ``supply=…``; see :class:`assur.loads.Cylinder`).
+
+        Examples
+        --------
+        Two cylinders of 80 mm bore lifting 10 kN at the lever's pin 23:
+
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("lift", coordinates=("S",), params={"L3": 0.2})
+        ...      .frame("01", 0.415, 0.563).frame("03", 0.25, 1.112)
+        ...      .cylinder_lever("lever", base="01", pivot="03", out="23", lever="L3",
+        ...                      s="S", branch=-1, links=("2", "3"))
+        ...      .weight("23", 10000.0)                                   # [N]
+        ...      .cylinder("C", "S", bore=0.08, count=2))                 # bore [m]
+        >>> c = m.analyze([0.42]).cylinder("C")
+        >>> round(float(c.force[0])), round(float(c.pressure[0] / 1e6), 3)  # [N], [MPa]
+        (10259, 1.02)
+        """
         from .loads import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
     def with_machine(self, machine, point, weight, refs=None) -> "Mechanism":
         """Carry the implement (weight [N] at ``point``) on a machine for the stability
         analysis (:class:`assur.stability.Machine`, :class:`assur.stability.Carrying`);
-        ``refs`` ties the machine's positions and weights to parameters."""
+        ``refs`` ties the machine's positions and weights to parameters.
+
+        Examples
+        --------
+        The seed 003 tractor carrying half the implement's weight: the share of the
+        front axle A (seed table 6.1 prints 23.8 % with the whole 27.5 kN) grows:
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> half = m.with_machine(m.machine.machine, "S6", 13750.0)       # [N]
+        >>> round(float(m.analyze([0.42]).stability.share("A")[0]), 1)     # [%]
+        23.8
+        >>> round(float(half.analyze([0.42]).stability.share("A")[0]), 1)  # [%]
+        39.9
+        """
         from .stability import Carrying
         return self._with(machine=Carrying(machine, point, weight, refs))
 
@@ -311,7 +461,18 @@ class Mechanism:
         """The same mechanism with ``loads`` (:mod:`assur.loads` objects; none by
         default) in place of its own, e.g. a subset of them (the dead loads of a
         capacity, :func:`assur.capacity.dead_load_mechanism`; one load at a time, to
-        see what each asks of the actuators)."""
+        see what each asks of the actuators).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> m.loads[0].point, m.with_loads().loads
+        ('S6', ())
+        >>> a = m.with_loads().analyze([0.42])        # no load: no rod force [N]
+        >>> float(a.statics.actuator_force("S")[0]) == 0.0
+        True
+        """
         return self._with(loads=tuple(loads))
 
     def with_params(self, **values) -> "Mechanism":
@@ -345,6 +506,21 @@ class Mechanism:
         direction : float, optional
             Direction of gravity from +x, counter-clockwise [rad]; default −π/2
             (straight down, −y). Weights (``weight`` loads, masses) act along it.
+
+        Examples
+        --------
+        A mass of 1000 kg at S6 weighs m·g:
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_loads().mass("6", 1000.0, "S6")   # [kg]
+        >>> F = [round(float(mm.analyze([0.42]).statics.actuator_force("S")[0]))
+        ...      for mm in (m, m.with_gravity(1.62))]     # Earth, Moon [m/s²] → [N]
+        >>> F                                         # 9810 N, 1620 N × IS6 = 4.713
+        [46237, 7635]
+        >>> m.with_gravity("none").weight("S6", 100.0)
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: mechanism 'hitch_003' has no gravity (a mechanism in a horizontal plane) but a weight load at point 'S6': give the load as a force, or give gravity
         """
         if isinstance(g, str):
             if g != "none":
@@ -356,7 +532,19 @@ class Mechanism:
 
     def with_units(self, **units) -> "Mechanism":
         """Return a copy that shows parameters in the given units
-        (:class:`assur.quantities.Unit`, e.g. ``P=Unit("kN", 1e3)``)."""
+        (:class:`assur.quantities.Unit`, e.g. ``P=Unit("kN", 1e3)``).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.quantities import Unit
+        >>> m = examples.hitch_003()
+        >>> m.units["Dgc"].text                          # the model file's unit
+        'mm'
+        >>> u = m.with_units(Dgc=Unit("in", 0.0254)).units["Dgc"]     # [m per in]
+        >>> u.text, round(u.of(float(m.params["Dgc"])), 3)   # the 80 mm bore [in]
+        ('in', 3.15)
+        """
         u = dict(self.units)
         u.update(units)
         return self._with(units=u)
@@ -370,7 +558,19 @@ class Mechanism:
         |Ṡ| [m/s] and ``omega`` the table |Ṡ(t)| [m/s]; or a law of motion q(t) at the
         times ``law_t`` [s], ``law_q`` [m or rad]; :func:`assur.analysis.analyze` then
         includes the inertia loads of a rod's motion. ``direction`` defaults to
-        counter-clockwise / extending, or the law's."""
+        counter-clockwise / extending, or the law's.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_motion("S", "extend", speed=0.05)   # [m/s]
+        >>> m.motion("S").describe()
+        'S: extend, |v| = 0.05 m/s'
+        >>> m.with_motion("j1", "cw")
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: mechanism 'hitch_003': a motion is given for 'j1', which is not a generalized coordinate ['S']
+        """
         from .motion import Motion
         if coordinate not in self.coordinates:
             raise ModelError(f"mechanism {self.name!r}: a motion is given for {coordinate!r}, "
@@ -383,7 +583,17 @@ class Mechanism:
 
     def motion(self, coordinate=None):
         """The :class:`assur.motion.Motion` of a coordinate (default: the only one),
-        or None when none is given."""
+        or None when none is given.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> print(m.motion())
+        None
+        >>> m.with_motion("S", "retract", speed=0.02).motion().describe()   # [m/s]
+        'S: retract, |v| = 0.02 m/s'
+        """
         if coordinate is None:
             if len(self.coordinates) != 1:
                 raise ModelError(f"mechanism {self.name!r} has {len(self.coordinates)} "
@@ -412,6 +622,18 @@ class Mechanism:
             seen.add(mo.coordinate)
 
     def with_tables(self, **tables) -> "Mechanism":
+        """Return a copy with some of its :attr:`tables` replaced: what
+        :meth:`Kinematics.to_frame <assur.kinematics.Kinematics.to_frame>` and the
+        reports tabulate (``ratios``: pairs of links, ``transmissions``: points, …).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_tables(ratios=[("6", "3")], transmissions=["67"])
+        >>> f = m.solve([0.42]).to_frame()
+        >>> [c for c in f.columns if c[0] in "UI"]          # U63 [-], I67 [m/m]
+        ['U63', 'I67']
+        """
         t = dict(self.tables)
         t.update(tables)
         return self._with(tables=t)
@@ -419,23 +641,58 @@ class Mechanism:
     # ---- introspection ---------------------------------------------------------
     @property
     def points(self) -> tuple[str, ...]:
-        """Names of all points in solving order (frame points first as declared)."""
+        """Names of all points in solving order (frame points first as declared).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().points
+        ('01', '03', '05', '07', '23', '34', '45', '56', '67', 'S6', 'F610')
+        """
         return tuple(p for g in self.groups for p in g.outputs())
 
     @property
     def frame_points(self) -> tuple[str, ...]:
-        """Names of the frame pivots."""
+        """Names of the frame pivots.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().frame_points
+        ('01', '03', '05', '07')
+        """
         return tuple(self.topology.bodies["0"])
 
     def group(self, name) -> Group:
-        """The group named ``name``."""
+        """The group named ``name``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> g = examples.hitch_003().group("II (4,5)")
+        >>> g.kind, g.a, g.b, g.out, g.ra, g.rb
+        ('RRR dyad', '34', '05', '45', 'L4', 'L5')
+        >>> examples.hitch_003().group("IV")
+        Traceback (most recent call last):
+        ...
+        KeyError: "no group 'IV' in mechanism 'hitch_003'"
+        """
         for g in self.groups:
             if g.name == name:
                 return g
         raise KeyError(f"no group {name!r} in mechanism {self.name!r}")
 
     def defining_index(self, point) -> int:
-        """Index of the group that adds ``point``."""
+        """Index of the group that adds ``point``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> i = m.defining_index("45")
+        >>> i, m.groups[i].name
+        (6, 'II (4,5)')
+        """
         for i, g in enumerate(self.groups):
             if point in g.outputs():
                 return i
@@ -444,7 +701,18 @@ class Mechanism:
     def coordinate_kind(self, c) -> str:
         """How a generalized coordinate reads: ``"angle"`` (a crank angle [rad]),
         ``"slider"`` (a prismatic input's travel [m]) or ``"length"`` (a cylinder
-        length [m], also for coordinates no input group declares)."""
+        length [m], also for coordinates no input group declares).
+
+        Examples
+        --------
+        >>> from assur import Mechanism, examples
+        >>> examples.hitch_003().coordinate_kind("S")
+        'length'
+        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O1", 0.0, 0.0)
+        ...      .crank("c", pivot="O1", out="A", radius=0.1, q="j1"))  # radius [m]
+        >>> m.coordinate_kind("j1")
+        'angle'
+        """
         for g in self.groups:
             if c in g.coordinates_driven() and g.driver_kind:
                 return g.driver_kind
@@ -452,14 +720,30 @@ class Mechanism:
 
     @property
     def topology(self) -> Topology:
-        """The mechanism's bodies, owners and group links (:class:`assur.topology.Topology`)."""
+        """The mechanism's bodies, owners and group links (:class:`assur.topology.Topology`).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> t = examples.hitch_003().topology
+        >>> t.bodies["6"], t.group_links["III (6,7)"], sorted(t.variable)
+        (('56', '67', 'S6', 'F610'), ('6', '7'), ['2'])
+        """
         return self._topology
 
     def owner(self, point):
         """The link that owns ``point``: loads at the point and later groups attached
         there act on it. Frame points belong to "0"; a dyad's middle joint to its
         second link; a rigid point to its link; a crank or slider end to the crank
-        or slider."""
+        or slider.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> m.owner("01"), m.owner("45"), m.owner("S6")   # frame, dyad II's link 5, link 6
+        ('0', '5', '6')
+        """
         return self._topology.owner[point]
 
     @property
@@ -468,6 +752,13 @@ class Mechanism:
 
         Derived from the groups (:attr:`topology`); links not named in a group get the
         name ``"<group>:a"``/``":b"``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> b = examples.hitch_003().bodies
+        >>> b["5"], b["2"]["variable"]      # link 5; the cylinder 2 changes length
+        ({'points': ['05', '45', '56'], 'variable': False}, True)
         """
         t = self._topology
         return {k: {"points": list(v), "variable": k in t.variable} for k, v in t.bodies.items()}
@@ -645,7 +936,18 @@ class Mechanism:
 
     # ---- evaluation --------------------------------------------------------------
     def value_of(self, ref, params=None):
-        """Value of a reference (number or parameter name) as a float array over designs."""
+        """Value of a reference (number or parameter name) as a float array over designs.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> round(float(examples.hitch_003().value_of("L4")), 4)   # solved L4 [m], printed 0.6613
+        0.6613
+        >>> examples.hitch_003(L4=[0.6, 0.66]).value_of("L4").tolist()   # two designs [m]
+        [0.6, 0.66]
+        >>> examples.hitch_003().value_of("-X05").tolist()    # a signed name [m]
+        -0.135
+        """
         p = self.params if params is None else params
         return np.asarray(ref_value(p, ref), dtype=float)
 
@@ -668,6 +970,15 @@ class Mechanism:
         Returns
         -------
         dict of str to (x, y) tuples of arrays [m]
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> pts = examples.hitch_003().evaluate_positions({"S": 0.42})     # S [m]
+        >>> [round(float(v), 3) for v in pts["56"]]     # X56, Y56 [m], seed 003 table 2.2
+        [1.131, 0.2]
+        >>> sorted(examples.hitch_003().evaluate_positions({"S": 0.42}, upto=5))
+        ['01', '03', '05', '07', '23']
         """
         p = dict(self.params)
         p.update(params or {})
@@ -819,14 +1130,37 @@ class Mechanism:
 
     def memo(self, key, make):
         """A value derived from this (immutable) mechanism, made once by ``make()`` and
-        kept with it (programs, prepared tables, fused kernels)."""
+        kept with it (programs, prepared tables, fused kernels).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003().with_params(L4=0.65)
+        >>> calls = []
+        >>> def make():
+        ...     calls.append(1)
+        ...     return float(m.params["L4"]) * 1000     # L4 [mm]
+        >>> m.memo(("L4 in mm",), make), m.memo(("L4 in mm",), make), len(calls)
+        (650.0, 650.0, 1)
+        """
         v = self._cache.get(key)
         if v is None:
             v = self._cache[key] = make()
         return v
 
     def program(self, outputs=None):
-        """The compiled :class:`~assur.program.Program` writing ``outputs`` (cached)."""
+        """The compiled :class:`~assur.program.Program` writing ``outputs`` (cached).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> prog = m.program(["56", "6"])
+        >>> prog.out_pts, prog.out_sca, m.program(["56", "6"]) is prog
+        (('56',), ('6',), True)
+        >>> len(m.program().out_pts), m.program().k    # all moving points; one coordinate
+        (7, 1)
+        """
         key = None if outputs is None else tuple(outputs)
         prog = self._cache.get(("program", key))
         if prog is None:
@@ -836,7 +1170,19 @@ class Mechanism:
     def prepared(self, prog):
         """The parameter table of this mechanism's values for ``prog``, shape (rows, m),
         its fixed angles' cos/sin table and the failures of its pre-passes (cached: the
-        mechanism is immutable): callers must not write to them."""
+        mechanism is immutable): callers must not write to them.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003(L4=[0.60, 0.66])            # two designs
+        >>> prog = m.program()
+        >>> ptab, trig, failures = m.prepared(prog)
+        >>> [round(float(v), 2) for v in ptab[prog.param_row("L4")]], failures  # L4 [m]
+        ([0.6, 0.66], [])
+        >>> m.prepared(prog)[0] is ptab                        # cached
+        True
+        """
         hit = self._cache.get(("prepared", id(prog)))
         if hit is None or hit[0] is not prog:
             ptab = np.ascontiguousarray(prog.param_table(self.params))
@@ -849,7 +1195,25 @@ class Mechanism:
         """Run the groups' pre-passes (derived per-design rows, e.g. a point fixed at
         a pose). Returns the :class:`AssemblyError` of poses that cannot assemble
         (their rows stay 0); the caller raises them unless the main range fails
-        earlier, which gives the more useful message."""
+        earlier, which gives the more useful message.
+
+        Examples
+        --------
+        Seed 003's centre of mass S6 is given by its offset (X6, Y6) from 56 at the
+        pose S = Sp; the pre-pass turns it into a length and an angle on link 6:
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> prog = m.program()
+        >>> ptab = prog.param_table(m.params)
+        >>> gi, data = prog.prepares[0]
+        >>> m.groups[gi].name, float(ptab[data[1], 0])            # before: 0
+        ('centre of mass S6', 0.0)
+        >>> m.prepare(prog, ptab)                                  # no failure
+        []
+        >>> round(float(ptab[data[1], 0]), 3)           # |56–S6| = hypot(X6, Y6) [m]
+        0.871
+        """
         failures = []
         for gi, data in prog.prepares:
             g = self.groups[gi]
@@ -862,7 +1226,7 @@ class Mechanism:
                     e = int(np.flatnonzero(st >= 0)[0])
                     msg, _, _ = diagnostics.failure_message(self, prog, ptab, qpose, st,
                                                             res["amount"], 1, e)
-                    at = dict(zip(self.coordinates, qpose[:, e]))
+                    at = {c: float(v) for c, v in zip(self.coordinates, qpose[:, e])}
                     pose = ", ".join(diagnostics.coordinate_text(self, c, v)
                                      for c, v in at.items())
                     failures.append(AssemblyError(
@@ -878,7 +1242,20 @@ class Mechanism:
     # ---- coordinates ---------------------------------------------------------------
     def coordinate_array(self, q, m_params, per_position=None):
         """The coordinates ``q`` as a (k, m·n) array, their result shape, m and n;
-        checked (:func:`assur.inputs.coordinates_array`) before anything is allocated."""
+        checked (:func:`assur.inputs.coordinates_array`) before anything is allocated.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> qa, shape, m_, n = m.coordinate_array([0.42, 0.67], 3)   # S [m], 3 designs
+        >>> qa.shape, shape, m_, n
+        ((1, 6), (3, 2), 3, 2)
+        >>> m.coordinate_array([0.42, float("nan")], 1)
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: mechanism 'hitch_003': the generalized coordinate value at index (1,) is not finite (nan)
+        """
         k = len(self.coordinates)
         if (k == 1 and m_params == 1 and type(q) is np.ndarray and q.ndim == 1
                 and q.dtype == np.float64 and 0 < q.size <= 4096 and q.flags.c_contiguous
@@ -924,14 +1301,113 @@ class Mechanism:
                 f"{len(self.groups)} groups, {len(self.links)} links)")
 
 
+#: examples of the builder methods whose group class has none of its own (the
+#: positions by the plain-numpy formulas, :meth:`Mechanism.evaluate_positions`)
+_BUILDER_EXAMPLES = {
+    "crank": """
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
+        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",)))  # [m]
+        >>> A = m.evaluate_positions({"j1": math.radians(30)})["A"]   # j1 [rad]
+        >>> [round(float(v), 4) for v in A]                           # [m]
+        [0.0866, 0.05]
+        """,
+    "slider_input": """
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("rod", coordinates=("s",)).frame("O", 0.0, 0.0)
+        ...      .slider_input("rod", origin="O", out="B", s="s", offset=0.1,
+        ...                    direction=math.radians(90), links=("1",)))  # offset [m]
+        >>> B = m.evaluate_positions({"s": 0.25})["B"]                # s [m]
+        >>> [round(float(v), 4) for v in B]                           # [m]
+        [0.0, 0.35]
+        """,
+    "rigid_point": """
+        A point of the crank 0.2 m from O, 90° ahead of the crank's direction O → A:
+
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
+        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
+        ...      .rigid_point("P", origin="O", toward="A", out="P", length=0.2,
+        ...                   angle=math.radians(90), links=("1",)))   # [m], [rad]
+        >>> P = m.evaluate_positions({"j1": math.radians(30)})["P"]   # j1 [rad]
+        >>> [round(float(v), 4) for v in P]                           # [m]
+        [-0.1, 0.1732]
+        """,
+    "slider_dyad": """
+        A slider-crank: rod 2 of 0.3 m from the crank pin A to the slider B on the
+        x axis:
+
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("slider-crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
+        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
+        ...      .slider_dyad("II", a="A", out="B", radius=0.3, line_point="O",
+        ...                   direction=0.0, branch=1, links=("2", "3")))   # [m], [rad]
+        >>> B = m.evaluate_positions({"j1": math.radians(90)})["B"]   # j1 [rad]
+        >>> [round(float(v), 4) for v in B]                # x = √(0.3² − 0.1²) [m]
+        [0.2828, 0.0]
+        """,
+    "pose_point": """
+        A point of the crank given by its offset (0.05, 0) m from O at j1 = 0:
+
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
+        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
+        ...      .pose_point("S", origin="O", toward="A", out="S", dx=0.05, dy=0.0,
+        ...                  at=0.0, links=("1",)))                     # [m], j1 [rad]
+        >>> S = m.evaluate_positions({"j1": math.radians(90)})["S"]   # j1 [rad]
+        >>> [round(float(v), 4) for v in S]                           # [m]
+        [0.0, 0.05]
+        """,
+    "rpr_dyad": """
+        A slotted lever: the rod pinned at the crank pin A slides through a sleeve
+        pivoted at B; the point E of the rod 0.5 m from A:
+
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("slotted lever", coordinates=("j1",))
+        ...      .frame("O", 0.0, 0.0).frame("B", 0.3, 0.0)
+        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
+        ...      .rpr_dyad("II", a="A", b="B", out="E", length=0.5, branch=1,
+        ...                links=("2", "3")))                           # [m]
+        >>> E = m.evaluate_positions({"j1": math.radians(90)})["E"]   # j1 [rad]
+        >>> [round(float(v), 4) for v in E]         # A + 0.5·(B − A)/|B − A| [m]
+        [0.4743, -0.0581]
+        """,
+    "prp_dyad": """
+        A Scotch yoke: the yoke's pin C on the vertical line through the crank pin
+        A and on the horizontal line through O:
+
+        >>> import math
+        >>> from assur import Mechanism
+        >>> m = (Mechanism("yoke", coordinates=("j1",)).frame("O", 0.0, 0.0)
+        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
+        ...      .prp_dyad("yoke", a="A", b="O", out="C", direction_a=math.radians(90),
+        ...                direction_b=0.0, links=("2", "3")))          # [m], [rad]
+        >>> C = m.evaluate_positions({"j1": math.radians(30)})["C"]   # j1 [rad]
+        >>> [round(float(v), 4) for v in C]                # (0.1·cos j1, 0) [m]
+        [0.0866, 0.0]
+        """,
+}
+
+
 def _builder(cls):
     def method(self, name, **kw):
         return self.add_group(cls.type_name, name, **kw)
     params = ", ".join(f.name for f in cls.fields)
     method.__name__ = cls.type_name
     method.__qualname__ = f"Mechanism.{cls.type_name}"
+    # the class's docstring dedented, so that it reads as the method's own
+    doc = inspect.cleandoc(cls.__doc__ or "")
+    example = _BUILDER_EXAMPLES.get(cls.type_name)
+    if example and ">>>" not in doc:   # the group's own example, where it has one
+        doc += "\n\nExamples\n--------\n" + inspect.cleandoc(example)
     method.__doc__ = (f"Add a {cls.kind} (:class:`{cls.__module__}.{cls.__name__}`); "
-                      f"keywords: {params}, links.\n\n" + (cls.__doc__ or ""))
+                      f"keywords: {params}, links.\n\n" + doc)
     return method
 
 

@@ -172,7 +172,16 @@ class Motion:
     # ---- description -------------------------------------------------------------
     @property
     def direction_name(self) -> str:
-        """``"ccw"`` or ``"cw"`` (a crank); ``"extend"`` or ``"retract"`` (a rod)."""
+        """``"ccw"`` or ``"cw"`` (a crank); ``"extend"`` or ``"retract"`` (a rod).
+
+        Examples
+        --------
+        >>> from assur.motion import Motion
+        >>> Motion("j1", -1).direction_name, Motion("S", -1, kind="length").direction_name
+        ('cw', 'retract')
+        >>> Motion("S", law_t=(0.0, 2.0), law_q=(0.5, 0.4), kind="length").direction_name
+        'retract'
+        """
         if self.kind == "length":
             return "extend" if self.direction > 0 else "retract"
         return "ccw" if self.direction > 0 else "cw"
@@ -180,7 +189,14 @@ class Motion:
     @property
     def has_speed(self) -> bool:
         """True if a speed (constant, ω(t)) or a law q(t) is given, not only a
-        direction."""
+        direction.
+
+        Examples
+        --------
+        >>> from assur.motion import Motion
+        >>> Motion("j1", "cw").has_speed, Motion("j1", "cw", speed=31.4).has_speed  # [rad/s]
+        (False, True)
+        """
         return self.speed is not None or bool(self.t) or bool(self.law_t)
 
     # ---- a law of motion q(t) ----------------------------------------------------
@@ -245,7 +261,21 @@ class Motion:
     # ---- rates -------------------------------------------------------------------
     def travel(self, q) -> np.ndarray:
         """The angle turned along the direction of rotation from ``start`` (default:
-        the first of ``q``), ``s = direction·(q − q_start)`` [rad], shape of ``q``."""
+        the first of ``q``), ``s = direction·(q − q_start)`` [rad], shape of ``q``.
+
+        Examples
+        --------
+        Seed 002's crank turns clockwise from 14.679° in steps of 30°:
+
+        >>> import numpy as np
+        >>> from assur.motion import Motion
+        >>> s = Motion("j1", "cw").travel(np.radians([14.679, -15.321, -45.321]))
+        >>> [round(float(v), 3) for v in np.degrees(s[1:])]             # [°]
+        [30.0, 60.0]
+        >>> start = Motion("j1", "cw", start=np.radians(44.679))        # [rad]
+        >>> round(float(np.degrees(start.travel(np.radians(14.679)))), 3)  # [°]
+        30.0
+        """
         q = np.asarray(q, dtype=float)
         q0 = float(self.start) if self.start is not None else float(q.reshape(-1)[0])
         return self.direction * (q - q0)
@@ -264,6 +294,15 @@ class Motion:
         Returns
         -------
         numpy.ndarray, shape (n,)
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur.motion import Motion
+        >>> printed = np.radians([14.679, 344.679, 314.679, 44.679, 188.229])  # [rad]
+        >>> q = Motion("j1", "cw").continuous(printed)
+        >>> [round(float(v), 3) for v in np.degrees(q)]                 # [°]
+        [14.679, -15.321, -45.321, -315.321, -531.771]
         """
         q = np.asarray(q, dtype=float).reshape(-1)
         if q.size < 2:
@@ -307,6 +346,21 @@ class Motion:
         ------
         ModelError
             Without a speed, or for positions outside a table's travel.
+
+        Examples
+        --------
+        A crank speeding up linearly from 10 to 20 rad/s in 1 s has turned 15 rad
+        when it reaches 20 rad/s (ω² = ω0² + 2·a·s):
+
+        >>> from assur.motion import Motion
+        >>> m = Motion("j1", "ccw", t=(0.0, 1.0), omega=(10.0, 20.0))   # [s], [rad/s]
+        >>> qdot, qddot = m.rates([0.0, 7.5, 15.0])                     # [rad]
+        >>> [round(float(v), 3) for v in qdot], [float(v) for v in qddot]  # [rad/s], [rad/s²]
+        ([10.0, 15.811, 20.0], [10.0, 10.0, 10.0])
+        >>> Motion("j1", "cw").rates([0.0])
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: motion of 'j1' gives only the direction (cw): give a speed (a constant |ω| or a table ω(t)) for real-time rates
         """
         q = np.asarray(q, dtype=float)
         if self.law_t:
@@ -324,7 +378,19 @@ class Motion:
 
     def time(self, q) -> np.ndarray:
         """The time at which the crank reaches each position [s] (from ``start`` at
-        t = 0 for a constant speed, at ``t[0]`` for a table), shape of ``q``."""
+        t = 0 for a constant speed, at ``t[0]`` for a table), shape of ``q``.
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.motion import Motion
+        >>> m = Motion("j1", "ccw", t=(0.0, 1.0), omega=(10.0, 20.0))   # [s], [rad/s]
+        >>> [round(float(v), 4) for v in m.time([0.0, 15.0])]          # q [rad] → [s]
+        [0.0, 1.0]
+        >>> cw = Motion("j1", "cw", speed=10 * math.pi, start=0.0)      # 300 rpm [rad/s]
+        >>> round(float(cw.time(-2 * math.pi)), 4)                     # one turn [s]
+        0.2
+        """
         if self.law_t:
             return self._law_time(np.asarray(q, dtype=float))[0]
         s = self.travel(q)
@@ -338,7 +404,17 @@ class Motion:
 
     def describe(self) -> str:
         """``"j1: cw, |ω| = 31.416 rad/s (300 rpm)"`` for reports and summaries
-        (``"S: extend, |v| = 0.05 m/s"`` for a rod)."""
+        (``"S: extend, |v| = 0.05 m/s"`` for a rod).
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.motion import Motion
+        >>> Motion("j1", "cw", speed=10 * math.pi).describe()            # [rad/s]
+        'j1: cw, |ω| = 31.4159 rad/s (300 rpm)'
+        >>> Motion("S", "extend", speed=0.05, kind="length").describe()  # [m/s]
+        'S: extend, |v| = 0.05 m/s'
+        """
         if self.law_t:
             unit = "m" if self.kind == "length" else "rad"
             return (f"{self.coordinate}: {self.direction_name}, law q(t) given at "
@@ -377,6 +453,18 @@ def rod_rates(kin):
         Arrays of the kinematics' shape (k = 1) or of shape (..., k) [m/s, m/s²]
         (0 for the coordinates without such a motion); None when no rod has a
         speed. Crank motions are left to :func:`assur.analysis.add_dynamics`.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.motion import rod_rates
+    >>> m = examples.hitch_003()
+    >>> print(rod_rates(m.solve([0.42, 0.67])))                     # no motion given
+    None
+    >>> r = m.with_motion("S", "extend", speed=0.05).solve([0.42, 0.67])   # [m/s]
+    >>> qdot, qddot = rod_rates(r)
+    >>> qdot.tolist(), qddot.tolist()                                # [m/s], [m/s²]
+    ([0.05, 0.05], [0.0, 0.0])
     """
     mech = kin.mechanism
     rods = [mo for mo in mech.motions if mo.kind == "length" and mo.has_speed]
