@@ -165,7 +165,8 @@ class Statics:
         --------
         >>> from assur import examples
         >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
-        >>> [round(float(f)) for f in st.actuator_force_from_reactions("S")]  # R23 along 01→23 [N]
+        >>> F = st.actuator_force_from_reactions("S")   # R23 along 01→23
+        >>> [round(float(f)) for f in F]                # Fgc, table 4.1 [N]
         [129614, 135652]
         >>> float(abs(st.actuator_force_from_reactions() - st.actuator_force()).max()) < 1e-6
         True
