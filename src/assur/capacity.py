@@ -131,7 +131,7 @@ def check_lifts(mech, coordinate, point, name=None):
     >>> check_lifts(m, "S1", "S3", name="MPT")   # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    assur.errors.ModelError: loader_lab1: capacity of cylinder 'MPT' on S1 at 'S3' is ...(moved by: S)
+    assur.errors.ModelError: loader_lab1: capacity of cylinder 'MPT' on S1 ...(moved by: S)
     """
     if not lifts(mech, coordinate, point):
         who = f"cylinder {name!r}" if name else "the cylinder"
