@@ -56,8 +56,9 @@ def _along_gravity(c, P):
 
 @dataclass(frozen=True)
 class Weight:
-    """Weight ``P`` [N] acting downward at ``point``, carried by ``link`` (by default
-    the link that owns the point).
+    """Weight ``P`` [N] acting along gravity at ``point`` — downward unless the model
+    turns gravity (``[model] gravity``, :func:`assur.statics.gravity_unit`) —, carried
+    by ``link`` (by default the link that owns the point).
 
     Examples
     --------
