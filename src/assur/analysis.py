@@ -40,6 +40,17 @@ class Analysis:
         What the analysis left out and why (e.g. masses without a crank speed).
     model_warnings : tuple of str
         The model file's warnings (unused parameters), shown in the report.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze([0.42, 0.67])      # S [m]
+    >>> list(a.cylinders), a.kinematics.shape
+    (['ГЦ'], (2,))
+    >>> [round(float(f)) for f in a.statics.actuator_force()]   # Fgc, seed 003 table 4.1 [N]
+    [129614, 135652]
+    >>> a.stability.steerable.tolist(), a.dynamics is None, a.notes
+    ([True, True], True, [])
     """
 
     def __init__(self, kinematics, statics, cylinders, stability, solved=()):
@@ -60,6 +71,15 @@ class Analysis:
 
     @property
     def mechanism(self):
+        """The analysed mechanism (that of :attr:`kinematics`).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> a = examples.hitch_003().analyze([0.42])
+        >>> a.mechanism.name, a.mechanism.coordinates
+        ('hitch_003', ('S',))
+        """
         return self.kinematics.mechanism
 
     def formula(self, name):
@@ -70,6 +90,20 @@ class Analysis:
         ------
         KeyError
             If the model declares no formula of that name (the message lists them).
+
+        Examples
+        --------
+        Seed 003 §6 prints a flagged "maximum lift capacity" GS6max; its model file
+        declares it as a formula:
+
+        >>> from assur import examples
+        >>> a = examples.hitch_003().analyze([0.42, 0.67])
+        >>> [round(float(v)) for v in a.formula("GS6max")]   # table 6.1, as printed [N]
+        [50645, 57569]
+        >>> a.formula("G_max")
+        Traceback (most recent call last):
+        ...
+        KeyError: "no formula 'G_max'; the model declares: ['GS6max']"
         """
         from .columns import formulas_of
         found = {f.name: f for f in formulas_of(self.mechanism)}
@@ -78,7 +112,19 @@ class Analysis:
         return found[name].evaluate(self.kinematics)
 
     def cylinder(self, name=None):
-        """The result of one cylinder group (the only one when ``name`` is None)."""
+        """The result of one cylinder group (the only one when ``name`` is None).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> a = examples.hitch_003().analyze([0.42, 0.67])
+        >>> [round(float(g)) for g in a.cylinder().capacity("56")]   # G56, table 4.1 [N]
+        [33139, 56377]
+        >>> examples.steering_lab4().analyze([0.51]).cylinder()   # two cylinders
+        Traceback (most recent call last):
+        ...
+        ValueError: name the cylinder: one of ['ГЦ1', 'ГЦ2']
+        """
         if name is None:
             if len(self.cylinders) != 1:
                 raise ValueError(f"name the cylinder: one of {list(self.cylinders)}")
@@ -94,7 +140,17 @@ class Analysis:
 def gravity_of(mech) -> float:
     """The acceleration of gravity of a mechanism [m/s²]: the model's own
     (:attr:`Mechanism.gravity`, ``[model] gravity`` of a model file), else
-    :data:`assur.statics.GRAVITY` (9.81)."""
+    :data:`assur.statics.GRAVITY` (9.81).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.analysis import gravity_of
+    >>> gravity_of(examples.hitch_003())                          # the default [m/s²]
+    9.81
+    >>> gravity_of(examples.hitch_003().with_gravity(9.80665))    # the model's own [m/s²]
+    9.80665
+    """
     return float(_statics.GRAVITY if mech.gravity is None else mech.gravity)
 
 
@@ -162,6 +218,36 @@ def add_dynamics(analysis, spec=None):
     ModelError
         When ``spec`` asks for a flywheel or balancing the mechanism cannot have (no
         crank coordinate, no masses, no speed, positions that are not one turn).
+
+    Examples
+    --------
+    The grain-cleaning mechanism of seed 001 lab 3 (illustrative masses; its crank
+    turns at 30 rad/s clockwise, ``[motion]``) over one turn in steps of 5°, with the
+    flywheel for δ = 0.05 of its ``[dynamics]`` (without its balancing, which takes
+    longer):
+
+    >>> import dataclasses
+    >>> import numpy as np
+    >>> from assur import examples, io
+    >>> from assur.analysis import add_dynamics
+    >>> model = io.load(io.bundled("cleaning_lab3"))
+    >>> a = model.mechanism.analyze(np.radians(np.arange(0.0, 361.0, 5.0)))   # φ1 [rad]
+    >>> spec = dataclasses.replace(model.dynamics, counter_masses=())
+    >>> a = add_dynamics(a, spec)
+    >>> round(float(a.dynamics.kinetic_energy.max()), 1)     # T = ½·J_red·ω² [J]
+    355.5
+    >>> round(a.flywheel.J_flywheel, 2)                      # J_f [kg·m²]
+    7.56
+
+    The hitch has no crank: it is left as it is, unless a spec asks for a flywheel:
+
+    >>> h = examples.hitch_003().analyze([0.42])
+    >>> add_dynamics(h).dynamics is None
+    True
+    >>> add_dynamics(h, spec)   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: hitch_003: [dynamics] needs one crank-angle coordinate and ...
     """
     from .errors import ModelError
     from .inertia import crank_dynamics, masses_of
@@ -211,6 +297,20 @@ def add_lift_test(analysis, test, s_range=None):
         leaves the analysis as it is.
     s_range : (float, float), optional
         The cylinder's travel [m]; default: the analysis' positions' extremes.
+
+    Examples
+    --------
+    The seed-003 hitch with its model file's ``[lift_test]`` (not in the seed: six
+    heights, 90 % of the relief pressure):
+
+    >>> from assur import io
+    >>> from assur.analysis import add_lift_test
+    >>> model = io.load(io.bundled("hitch_003"))
+    >>> a = add_lift_test(model.mechanism.analyze([0.42, 0.67]), model.lift_test)
+    >>> [round(float(h), 3) for h in a.lift_test.height]   # Y56 [m]
+    [0.2, 0.369, 0.537, 0.706, 0.875, 1.043]
+    >>> round(a.lift_test.hitch_minimum), round(a.lift_test.frame_minimum)   # [N]
+    (29825, 28669)
     """
     if test is None:
         return analysis

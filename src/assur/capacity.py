@@ -33,7 +33,17 @@ __all__ = ["dead_load_links", "dead_load_mechanism", "check_lifts", "lifts", "fa
 
 
 def dead_load_links(mech) -> tuple:
-    """The links whose loads every capacity carries (``tables["dead_loads"]``)."""
+    """The links whose loads every capacity carries (``tables["dead_loads"]``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.capacity import dead_load_links
+    >>> dead_load_links(examples.loader_lab1())   # the boom 3 (seed 001 lab 1 eq. 14)
+    ('3',)
+    >>> dead_load_links(examples.hitch_003())     # none declared
+    ()
+    """
     return tuple(mech.tables.get("dead_loads", ()) or ())
 
 
@@ -55,6 +65,20 @@ def dead_load_mechanism(mech, links=None):
     ------
     ModelError
         If a link carries no load (a misspelt link name would silently carry nothing).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.capacity import dead_load_mechanism
+    >>> m = examples.loader_lab1()
+    >>> dead_load_mechanism(m).loads      # the boom's mass m_str at S3 (seed 001 lab 1)
+    (Mass(link='3', m='m_str', point='S3', J=0.0),)
+    >>> print(dead_load_mechanism(examples.hitch_003()))
+    None
+    >>> dead_load_mechanism(m, "4")   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: loader_lab1: dead loads on links ['4']: no load acts on it ...
     """
     if isinstance(links, str):
         links = (links,)
@@ -76,13 +100,39 @@ def dead_load_mechanism(mech, links=None):
 
 def lifts(mech, coordinate, point) -> bool:
     """True if the cylinder on ``coordinate`` moves ``point`` (its capacity there has
-    a meaning)."""
+    a meaning).
+
+    Examples
+    --------
+    The loader of seed 001 lab 1: the boom cylinder S lifts the boom's centre S3 and
+    the load S9; the traverse cylinder S1 only turns the traverse, moving S9:
+
+    >>> from assur import examples
+    >>> from assur.capacity import lifts
+    >>> m = examples.loader_lab1()
+    >>> lifts(m, "S", "S3"), lifts(m, "S", "S9")
+    (True, True)
+    >>> lifts(m, "S1", "S3"), lifts(m, "S1", "S9")
+    (False, True)
+    """
     return coordinate in point_coordinates(mech, point)
 
 
 def check_lifts(mech, coordinate, point, name=None):
     """Raise :class:`ModelError` if the cylinder on ``coordinate`` does not move
-    ``point`` (its transmission number there is identically zero)."""
+    ``point`` (its transmission number there is identically zero).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.capacity import check_lifts
+    >>> m = examples.loader_lab1()
+    >>> check_lifts(m, "S", "S3")      # the boom cylinder lifts the boom: no error
+    >>> check_lifts(m, "S1", "S3", name="MPT")   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: loader_lab1: capacity of cylinder 'MPT' on S1 ...(moved by: S)
+    """
     if not lifts(mech, coordinate, point):
         who = f"cylinder {name!r}" if name else "the cylinder"
         movers = sorted(point_coordinates(mech, point)) or ["none"]
@@ -93,7 +143,22 @@ def check_lifts(mech, coordinate, point, name=None):
 
 def farthest_reach(kin, point, design=None):
     """Index of the position where ``point`` is farthest forward (largest x): the
-    position (S*, S1*) of lab 1 eq. 14a. For a batch give ``design``."""
+    position (S*, S1*) of lab 1 eq. 14a. For a batch give ``design``.
+
+    Examples
+    --------
+    The loader of seed 001 lab 1 over its 13 × 8 grid of (S, S1):
+
+    >>> from assur import examples
+    >>> from assur.capacity import farthest_reach
+    >>> q = examples.loader_lab1_range()
+    >>> kin = examples.loader_lab1().solve(q)
+    >>> i = farthest_reach(kin, "S9")
+    >>> i, [round(float(v), 3) for v in q[i]]     # (S*, S1*) [m]
+    (31, [1.163, 0.92])
+    >>> round(float(kin.x("S9")[i]), 3)           # its reach X9 [m]
+    3.324
+    """
     x = np.asarray(kin.x(point))
     if x.ndim == 2:
         if design is None:

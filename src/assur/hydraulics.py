@@ -38,7 +38,22 @@ __all__ = ["piston_area", "CylinderResult", "SupplyLine", "cylinder_results",
 def piston_area(bore, rod=0.0, side="piston", rod2=0.0):
     """Pressurised area [m²] of a cylinder with bore D and rod d [m]: π·D²/4 on the
     piston side, π·(D² − d²)/4 on the rod side; a double-rod cylinder's piston side
-    is the annulus around its second rod d2, π·(D² − d2²)/4."""
+    is the annulus around its second rod d2, π·(D² − d2²)/4.
+
+    Examples
+    --------
+    >>> from assur.hydraulics import piston_area
+    >>> round(float(piston_area(0.08)), 6)                  # S_gc, seed 003 D = 80 mm [m²]
+    0.005027
+    >>> round(float(piston_area(0.08, 0.04, "rod")), 6)     # annulus, d = 40 mm [m²]
+    0.00377
+    >>> round(float(piston_area(0.08, rod2=0.04)), 6)       # double rod, piston side [m²]
+    0.00377
+    >>> piston_area(0.08, 0.09, "rod")
+    Traceback (most recent call last):
+    ...
+    ValueError: rod side needs 0 < rod < bore, got rod 0.09, bore 0.08
+    """
     if side not in ("piston", "rod"):
         raise ValueError("side must be one of: ['piston', 'rod']")
     bore = np.asarray(bore, float)
@@ -76,6 +91,15 @@ class CylinderResult:
         F_req/(k·A·η_h) [Pa].
     force_max : float or ndarray
         k·p_max·A·η_h [N].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> cyl = examples.hitch_003().analyze([0.42, 0.67]).cylinder("ГЦ")
+    >>> [round(float(p)) for p in cyl.pressure]     # Pgc, seed 003 table 4.1 [Pa]
+    [15348729, 16063717]
+    >>> round(float(cyl.force_max))                  # 2·17.5 MPa·S_gc·0.84 [N]
+    147781
     """
 
     def __init__(self, kin, statics, cyl, g=None):
@@ -141,13 +165,37 @@ class CylinderResult:
 
     def chamber_area(self, side):
         """Area of one chamber of one cylinder [m²]: ``"piston"`` (π·(D² − d2²)/4) or
-        ``"rod"`` (π·(D² − d²)/4)."""
+        ``"rod"`` (π·(D² − d²)/4).
+
+        Examples
+        --------
+        The left cylinder of seed 001 lab 4's steering (D = 63 mm, d = 32 mm,
+        illustrative):
+
+        >>> from assur import examples
+        >>> a = examples.steering_lab4().analyze([0.51, 0.662])   # S1 [m]
+        >>> cyl = a.cylinders["ГЦ1"]
+        >>> round(float(cyl.chamber_area("piston")), 6)   # π·D²/4 [m²]
+        0.003117
+        >>> round(float(cyl.chamber_area("rod")), 6)      # π·(D² − d²)/4 [m²]
+        0.002313
+        """
         c = self.cylinder
         return piston_area(self._val(c.bore), self._val(c.rod), side, self._val(c.rod2))
 
     def share(self, bore=None):
         """Share of the maximum force used, F_req/F_max [-] (seed 000 Табл. 5, for the
-        bores D = 80, 63, 50 mm: pass ``bore`` [m] to evaluate a candidate)."""
+        bores D = 80, 63, 50 mm: pass ``bore`` [m] to evaluate a candidate).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> cyl = examples.hitch_003().analyze([0.42, 0.67]).cylinder("ГЦ")
+        >>> [round(float(v), 3) for v in cyl.share()]             # D = 80 mm [-]
+        [0.877, 0.918]
+        >>> [round(float(v), 3) for v in cyl.share(bore=0.063)]   # too small: > 1 [-]
+        [1.414, 1.48]
+        """
         if bore is None:
             return self.force_required / self.force_max
         c = self.cylinder
@@ -182,6 +230,19 @@ class CylinderResult:
             If this cylinder does not move ``point`` (the capacity is undefined).
         SingularPositionError
             If the point does not rise at some position (I = 0 there).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> cyl = examples.hitch_003().analyze([0.42, 0.67]).cylinder("ГЦ")
+        >>> [round(float(g)) for g in cyl.capacity("56")]   # G56, seed 003 table 4.1 [N]
+        [33139, 56377]
+        >>> [round(float(g)) for g in cyl.capacity("S6")]   # GS6, table 4.1 [N]
+        [31354, 29959]
+        >>> cyl.capacity("07")   # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: hitch_003: capacity of cylinder 'ГЦ' on S at '07' is undefined...
         """
         from .capacity import check_lifts, dead_load_mechanism
         kin = self.kinematics
@@ -209,7 +270,15 @@ class CylinderResult:
         return (self.force_max * self.eta_mech - fdead) / I
 
     def reserve(self, point, P):
-        """Capacity reserve (G − P)/P·100 [%] for a load P [N] at the point (003 ΔGS65)."""
+        """Capacity reserve (G − P)/P·100 [%] for a load P [N] at the point (003 ΔGS65).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> cyl = examples.hitch_003().analyze([0.42, 0.67]).cylinder("ГЦ")
+        >>> [round(float(v), 1) for v in cyl.reserve("S6", 27500.0)]  # ΔGS65, table 4.1 [%]
+        [14.0, 8.9]
+        """
         return (self.capacity(point) - P) / P * 100.0
 
 
@@ -245,6 +314,22 @@ class SupplyLine:
     members : dict of str to CylinderResult
         Every cylinder of the line, with ``pressure`` = p, ``force`` and
         ``force_required`` its rod force [N] and ``rate`` = ∂L/∂q [-].
+
+    Examples
+    --------
+    Seed 001 lab 4's steering (illustrative dimensions): the left cylinder ГЦ1 drives
+    S1, the passive right one ГЦ2 pulls with its rod side on the same line "P".
+
+    >>> from assur import examples
+    >>> from assur.hydraulics import SupplyLine
+    >>> a = examples.steering_lab4().analyze([0.51, 0.662])        # S1 [m]
+    >>> line = SupplyLine(a.kinematics, a.statics, "P", a.mechanism.cylinders)
+    >>> line.coordinate, list(line.members)
+    ('S1', ['ГЦ1', 'ГЦ2'])
+    >>> [round(float(p) / 1e6, 3) for p in line.pressure]          # [MPa]
+    [6.353, 8.294]
+    >>> [round(float(f)) for f in line.members["ГЦ2"].force]       # pulls [N]
+    [-14694, -19184]
     """
 
     def __init__(self, kin, statics, name, cylinders):
@@ -286,7 +371,21 @@ class SupplyLine:
 
 def cylinder_results(kin, statics, g=None):
     """``{name: CylinderResult}`` of every cylinder of the mechanism, in their order;
-    the cylinders of a supply line share its pressure (:class:`SupplyLine`)."""
+    the cylinders of a supply line share its pressure (:class:`SupplyLine`).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.hydraulics import cylinder_results
+    >>> a = examples.hitch_003().analyze([0.42])
+    >>> res = cylinder_results(a.kinematics, a.statics)
+    >>> list(res), round(float(res["ГЦ"].force[0]))     # Fgc, seed 003 table 4.1 [N]
+    (['ГЦ'], 129614)
+    >>> a = examples.steering_lab4().analyze([0.51])   # two cylinders on line "P"
+    >>> res = cylinder_results(a.kinematics, a.statics)
+    >>> [(name, r.supply_line) for name, r in res.items()]
+    [('ГЦ1', 'P'), ('ГЦ2', 'P')]
+    """
     mech = kin.mechanism
     lines = {}
     for c in mech.cylinders:
@@ -317,6 +416,24 @@ def supply_pressure_from_reactions(kin, line, g=None):
         The supply line's name.
     g : float, optional
         Gravity [m/s²] (default: the mechanism's).
+
+    Examples
+    --------
+    The steering of seed 001 lab 4 (illustrative dimensions): the same pressure as
+    the virtual work of :class:`SupplyLine`.
+
+    >>> from assur import examples
+    >>> from assur.hydraulics import supply_pressure_from_reactions
+    >>> a = examples.steering_lab4().analyze([0.51, 0.662])        # S1 [m]
+    >>> p = supply_pressure_from_reactions(a.kinematics, "P")
+    >>> [round(float(v) / 1e6, 3) for v in p]                      # [MPa]
+    [6.353, 8.294]
+    >>> float(abs(p - a.cylinders["ГЦ1"].pressure).max()) < 1e-3   # [Pa]
+    True
+    >>> supply_pressure_from_reactions(a.kinematics, "Q")
+    Traceback (most recent call last):
+    ...
+    KeyError: "no supply line 'Q'; lines: ['P']"
     """
     from . import statics as st
     from .analysis import gravity_of

@@ -85,6 +85,17 @@ class LinkMass:
     by +90°) is added as a ``rigid_point`` of length ``hypot(along, offset)`` turned
     ``atan2(offset, along)`` from P→Q: it moves with the body for any link, and its
     velocity and acceleration analogs are the engine's exact ones.
+
+    Examples
+    --------
+    The hitch's implement 6 as a mass at S6 that weighs P6 = 27.5 kN (g = 9.81 m/s²):
+
+    >>> from assur import examples
+    >>> from assur.inertia import LinkMass, with_masses
+    >>> m = with_masses(examples.hitch_003().with_loads(), [LinkMass("6", 27500.0 / 9.81,
+    ...                                                             point="S6")])
+    >>> [round(float(f)) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # Fgc [N]
+    [129614, 135652]
     """
 
     link: str
@@ -106,6 +117,21 @@ def with_masses(mech, masses: Iterable[LinkMass]):
         Unknown link, a non-positive mass, a negative J, a centre given both ways,
         a single-point link (a slider block) whose centre is not a named point, or a
         point name that exists already.
+
+    Examples
+    --------
+    A centre of mass 0.5 m along the hitch's lower link 5 (from its pivot 05 towards
+    45) becomes the new point S5:
+
+    >>> from assur import examples
+    >>> from assur.inertia import LinkMass, with_masses
+    >>> m = with_masses(examples.hitch_003(), [LinkMass("5", 30.0, J=0.5, along=0.5)])
+    >>> "S5" in m.points, m.loads[-1]               # [kg], [kg·m²]
+    (True, Mass(link='5', m=30.0, point='S5', J=0.5))
+    >>> with_masses(examples.hitch_003(), [LinkMass("5", -1.0, point="56")])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': link '5': m = -1.0 must be a finite ...
     """
     out = mech
     where = f"mechanism {mech.name!r}"
@@ -146,7 +172,18 @@ def with_masses(mech, masses: Iterable[LinkMass]):
 
 
 def masses_of(mech):
-    """The :class:`assur.loads.Mass` loads of a mechanism on moving links."""
+    """The :class:`assur.loads.Mass` loads of a mechanism on moving links.
+
+    Examples
+    --------
+    >>> from assur import examples, io
+    >>> from assur.inertia import masses_of
+    >>> masses_of(examples.hitch_003())      # a weight P6, no masses
+    ()
+    >>> ms = masses_of(io.load(io.bundled("cleaning_lab3")).mechanism)   # seed 001 lab 3
+    >>> len(ms), ms[1]                       # m2, J2 are model parameters
+    (9, Mass(link='2', m='m2', point='S2', J='J2'))
+    """
     return tuple(ld for ld in mech.loads if type(ld) is _MASS and ld.link != "0")
 
 
@@ -174,6 +211,23 @@ class MassMotion:
         −m·a_S [N].
     inertia_moment : ndarray
         −J·ε_i [N·m], counter-clockwise positive.
+
+    Examples
+    --------
+    The rocker 4 of the grain-cleaning mechanism (seed 001 lab 3, illustrative
+    masses) over a crank turn at ω = −30 rad/s:
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+    >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+    >>> s4 = dyn.masses[3]
+    >>> s4.link, s4.point, float(s4.m[0]), s4.inertia_force.shape    # [kg]
+    ('4', 'S4', 80.0, (73, 2))
+    >>> round(float(np.hypot(*s4.acceleration.T).max()), 2)          # largest |a_S4| [m/s²]
+    54.08
     """
 
     link: str
@@ -193,7 +247,19 @@ class MassMotion:
 
 def design_value(kin, ref):
     """A value of the mechanism (a number or a parameter name, e.g. a mass [kg] or
-    an inertia [kg·m²]) as an array of shape (m, 1) over the designs of ``kin``."""
+    an inertia [kg·m²]) as an array of shape (m, 1) over the designs of ``kin``.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.inertia import design_value
+    >>> kin = examples.hitch_003().solve([0.42, 0.67])
+    >>> design_value(kin, "P6").tolist(), design_value(kin, 2.0).tolist()   # [N], [-]
+    ([[27500.0]], [[2.0]])
+    >>> b = examples.hitch_003().solve([0.42, 0.67], params={"P6": [27500.0, 20000.0]})
+    >>> design_value(b, "P6").tolist()                                      # [N]
+    [[27500.0], [20000.0]]
+    """
     v = np.asarray(kin.mechanism.value_of(ref), dtype=float)
     return np.broadcast_to(v.reshape(-1, 1), (kin.m, 1)) if v.ndim else np.full((kin.m, 1),
                                                                                 float(v))
@@ -228,6 +294,21 @@ def reduced_inertia(kin):
 
     ``J_red = Σ m·|r_S'|² + J·φ_i'²``, ``J_red' = Σ 2m·r_S'·r_S'' + 2J·φ_i'·φ_i''``
     from the exact first- and second-order analogs (' = d/dφ).
+
+    Examples
+    --------
+    The grain-cleaning mechanism of seed 001 lab 3 (illustrative masses) at
+    φ1 = 0° and 90°:
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.inertia import reduced_inertia
+    >>> model = io.load(io.bundled("cleaning_lab3"))
+    >>> Jr, dJr = reduced_inertia(model.mechanism.solve(np.radians([0.0, 90.0])))
+    >>> [round(float(v), 4) for v in Jr[0]]       # J_red [kg·m²]
+    [0.0931, 0.6306]
+    >>> [round(float(v), 4) for v in dJr[0]]      # dJ_red/dφ [kg·m²/rad]
+    [0.5659, -0.6074]
     """
     _single_coordinate(kin, "reduced_inertia")
     Jr = np.zeros((kin.m, kin.n))
@@ -280,6 +361,25 @@ class CrankDynamics:
         T = ½·J_red·ω² [J].
     centre : CentreOfMassPath
         The common centre of mass of the moving links (:mod:`assur.balancing`).
+
+    Examples
+    --------
+    The grain-cleaning mechanism of seed 001 lab 3 (illustrative masses) over a
+    crank turn in steps of 5°:
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+    >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+    >>> dyn.coordinate, dyn.q.shape, len(dyn.masses)
+    ('j1', (73,), 9)
+    >>> round(float(dyn.kinetic_energy.max()), 1)        # T [J]
+    355.5
+    >>> gap = dyn.driving_moment - dyn.driving_moment_from_reactions   # two routes [N·m]
+    >>> bool(np.abs(gap).max() < 1e-9)
+    True
     """
 
     def __init__(self, kin, qdot, qddot, g):
@@ -340,20 +440,61 @@ class CrankDynamics:
     # ---- views and checks ------------------------------------------------------------
     def reaction(self, i, j, inertia=True):
         """Force of link i on link j at their joint over the positions, shape (..., 2)
-        [N] — the hodograph's points (with or without the inertia loads)."""
+        [N] — the hodograph's points (with or without the inertia loads).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> [round(float(v)) for v in dyn.reaction("0", "1")[18]]    # φ1 = 90°, R01 [N]
+        [6959, -2844]
+        >>> static = dyn.reaction("0", "1", inertia=False)
+        >>> [round(float(v), 1) for v in static[18]]                 # [N]
+        [125.4, 17.4]
+        """
         st = self.statics if inertia else self.statics_without_inertia
         return st.reaction(i, j)
 
     @property
     def joints(self):
-        """Every joint with a reaction: ``[(point, i, j), ...]``."""
+        """Every joint with a reaction: ``[(point, i, j), ...]``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> len(dyn.joints), ("O1", "0", "1") in dyn.joints    # the crank bearing O1
+        (13, True)
+        """
         return self.statics.joints
 
     def power_terms(self):
         """The power of every load [W], shape (terms, …): F·v of each point force
         (weights and inertia forces included) at the velocity of its point, then
         M·ω_i of each moment (inertia moments included) at its link's angular
-        velocity."""
+        velocity.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> dyn.power_terms().shape      # (terms, positions): forces, then moments
+        (28, 73)
+        >>> round(float(dyn.power_terms()[:, 18].sum()), 1)   # Σ at φ1 = 90° [W]
+        -8800.4
+        """
         kin = self.kinematics
         forces, couples, _ = _statics.applied_loads(kin, self.qdot, self.qddot, self.g)
         terms = []
@@ -367,24 +508,80 @@ class CrankDynamics:
 
     def load_power(self):
         """Σ F·v + Σ M·ω_i of all applied loads, weights and inertia loads [W]
-        (the sum of :meth:`power_terms`)."""
+        (the sum of :meth:`power_terms`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> [round(float(dyn.load_power()[i]), 1) for i in (0, 18)]   # φ1 = 0°, 90° [W]
+        [7015.0, -8800.4]
+        """
         return self.power_terms().sum(axis=0)
 
     def power_residual(self):
         """``M_drive·ω + Σ F·v + Σ M·ω_i`` [W] with the driving moment from the joint
         reactions (reverse-order pass) and the powers from the velocities: zero to
-        rounding when the two routes agree (the power balance)."""
+        rounding when the two routes agree (the power balance).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> bool(np.abs(dyn.power_residual()).max() < 1e-6)   # [W], vs loads of ~10 kW
+        True
+        >>> round(float(np.abs(dyn.load_power()).max()))     # [W]
+        11312
+        """
         return self.driving_moment_from_reactions * self.qdot + self.load_power()
 
     def equilibrium_residual(self):
         """Largest |ΣF| [N] and |ΣM| [N·m] of any moving link with the inertia loads
-        (Newton–Euler in d'Alembert form), recomputed from loads and reactions."""
+        (Newton–Euler in d'Alembert form), recomputed from loads and reactions.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> f, mo = dyn.equilibrium_residual()
+        >>> f.shape, bool(f.max() < 1e-6), bool(mo.max() < 1e-6)   # [N], [N·m]
+        ((73,), True, True)
+        """
         return self.statics.equilibrium_residual()
 
     def flywheel(self, delta=None, J_flywheel=None, omega_mean=None):
         """The flywheel by the energy–mass method (:func:`assur.flywheel.flywheel`)
         from this result's J_red(φ) and reduced moment without inertia; ``omega_mean``
-        defaults to the mean |ω| of the positions [rad/s]."""
+        defaults to the mean |ω| of the positions [rad/s].
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.inertia import crank_dynamics
+        >>> model = io.load(io.bundled("cleaning_lab3"))   # seed 001 lab 3, illustrative
+        >>> kin = model.mechanism.solve(np.radians(np.arange(0.0, 361.0, 5.0)))  # φ1 [rad]
+        >>> dyn = crank_dynamics(kin, qdot=-30.0)          # ω [rad/s], clockwise
+        >>> fw = dyn.flywheel(delta=0.05)
+        >>> round(fw.J_flywheel, 3)                            # J_f [kg·m²]
+        7.555
+        >>> round(fw.omega_min, 2), round(fw.omega_max, 2)     # [rad/s]
+        (29.25, 30.75)
+        >>> round(dyn.flywheel(J_flywheel=15.0).delta, 4)   # a larger flywheel: δ [-]
+        0.0258
+        """
         from .flywheel import flywheel
         if omega_mean is None:
             omega_mean = float(np.mean(np.abs(self.qdot)))

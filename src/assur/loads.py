@@ -56,8 +56,21 @@ def _along_gravity(c, P):
 
 @dataclass(frozen=True)
 class Weight:
-    """Weight ``P`` [N] acting downward at ``point``, carried by ``link`` (by default
-    the link that owns the point)."""
+    """Weight ``P`` [N] acting along gravity at ``point`` — downward unless the model
+    turns gravity (``[model] gravity``, :func:`assur.statics.gravity_unit`) —, carried
+    by ``link`` (by default the link that owns the point).
+
+    Examples
+    --------
+    1000 N at the implement's centre of mass S6 of the seed-003 hitch: the cylinder
+    pushes P·IS6.
+
+    >>> from assur import examples
+    >>> from assur.loads import Weight
+    >>> m = examples.hitch_003().with_loads([Weight("S6", 1000.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [4713.2, 4932.8]
+    """
 
     point: str
     P: Ref
@@ -74,13 +87,37 @@ class Weight:
     link_fields: ClassVar = ("link",)
 
     def apply(self, c):
+        """Apply the weight to the load context ``c``: the force P·u at the point, u
+        the direction of gravity (module notes).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import Weight
+        >>> from assur.statics import applied_loads   # calls apply with its context
+        >>> m = examples.hitch_003().with_loads([Weight("S6", "P6")])
+        >>> forces, _, _ = applied_loads(m.solve([0.42]))
+        >>> [(link, pt, float(fx), float(fy)) for link, pt, fx, fy in forces]  # [N]
+        [('6', 'S6', 0.0, -27500.0)]
+        """
         P = c.value(self.P)
         c.force(self.link or c.owner(self.point), self.point, *_along_gravity(c, P))
 
 
 @dataclass(frozen=True)
 class PointForce:
-    """Force ``(fx, fy)`` [N] at ``point``, carried by ``link`` (default: owner)."""
+    """Force ``(fx, fy)`` [N] at ``point``, carried by ``link`` (default: owner).
+
+    Examples
+    --------
+    A downward 1000 N at the hitch's suspension axis 56 asks P·I56 of the cylinder:
+
+    >>> from assur import examples
+    >>> from assur.loads import PointForce
+    >>> m = examples.hitch_003().with_loads([PointForce("56", fy=-1000.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [4459.4, 2621.3]
+    """
 
     point: str
     fx: Ref = 0.0
@@ -95,13 +132,36 @@ class PointForce:
     link_fields: ClassVar = ("link",)
 
     def apply(self, c):
+        """Apply the force to the load context ``c`` at its point.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import PointForce
+        >>> from assur.statics import applied_loads
+        >>> m = examples.hitch_003().with_loads([PointForce("56", fx=1000.0)])
+        >>> forces, _, _ = applied_loads(m.solve([0.42]))
+        >>> [(link, pt, float(fx), float(fy)) for link, pt, fx, fy in forces]  # [N]
+        [('5', '56', 1000.0, 0.0)]
+        """
         c.force(self.link or c.owner(self.point), self.point, c.value(self.fx),
                 c.value(self.fy))
 
 
 @dataclass(frozen=True)
 class Couple:
-    """Moment ``M`` [N·m], counter-clockwise positive, acting on ``link``."""
+    """Moment ``M`` [N·m], counter-clockwise positive, acting on ``link``.
+
+    Examples
+    --------
+    100 N·m counter-clockwise on the hitch's lever 3: the cylinder holds −M·∂φ3/∂S.
+
+    >>> from assur import examples
+    >>> from assur.loads import Couple
+    >>> m = examples.hitch_003().with_loads([Couple("3", 100.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [-671.9, -623.9]
+    """
 
     link: str
     M: Ref
@@ -114,6 +174,18 @@ class Couple:
     link_fields: ClassVar = ("link",)
 
     def apply(self, c):
+        """Apply the moment to the load context ``c``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import Couple
+        >>> from assur.statics import applied_loads
+        >>> m = examples.hitch_003().with_loads([Couple("3", 100.0)])
+        >>> _, couples, _ = applied_loads(m.solve([0.42]))
+        >>> [(link, float(M)) for link, M in couples]   # [N·m]
+        [('3', 100.0)]
+        """
         c.couple(self.link, c.value(self.M))
 
 
@@ -141,6 +213,17 @@ class ResistingMoment:
     coordinate : str, optional
         The coordinate whose travel is meant (default: the only one).
     name : str, optional
+
+    Examples
+    --------
+    The hitch's lever 3 turns counter-clockwise while S grows (∂φ3/∂S > 0), so 100 N·m
+    resisting it is −100 N·m, and the cylinder must push more to overcome it:
+
+    >>> from assur import examples
+    >>> from assur.loads import ResistingMoment
+    >>> m = examples.hitch_003().with_loads([ResistingMoment("3", 100.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [671.9, 623.9]
     """
 
     link: str
@@ -156,7 +239,20 @@ class ResistingMoment:
     link_fields: ClassVar = ("link",)
 
     def check(self, mech):
-        """A problem with this load in ``mech`` (a message), or None."""
+        """A problem with this load in ``mech`` (a message), or None.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import ResistingMoment
+        >>> m = examples.hitch_003()
+        >>> print(ResistingMoment("3", 100.0).check(m))
+        None
+        >>> ResistingMoment("3", 100.0, travel=2).check(m)
+        'travel must be 1 (the coordinate grows) or -1, got 2'
+        >>> ResistingMoment("3", 100.0, coordinate="L3").check(m)
+        "coordinate 'L3' is not a generalized coordinate ['S']"
+        """
         if self.travel not in (1, -1):
             return f"travel must be 1 (the coordinate grows) or -1, got {self.travel!r}"
         if self.coordinate is None and len(mech.coordinates) > 1:
@@ -168,6 +264,20 @@ class ResistingMoment:
         return None
 
     def apply(self, c):
+        """Apply the moment ``−M·sign(travel·∂φ_link/∂q)`` to the load context ``c``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import ResistingMoment
+        >>> from assur.statics import applied_loads
+        >>> for travel in (1, -1):     # S grows, then S shrinks
+        ...     m = examples.hitch_003().with_loads([ResistingMoment("3", 100.0, travel)])
+        ...     _, couples, _ = applied_loads(m.solve([0.42]))
+        ...     print([(link, float(M.ravel()[0])) for link, M in couples])   # [N·m]
+        [('3', -100.0)]
+        [('3', 100.0)]
+        """
         w = c.rate(self.link, self.coordinate)
         c.couple(self.link, -np.copysign(c.value(self.M), self.travel * w))
 
@@ -180,6 +290,18 @@ class Spring:
     [N/m], ``free_length`` [m], ``preload`` [N]. ``count`` identical springs act in
     parallel (seed 001 lab 2 eq. 4: k springs): the points are pulled together by
     ``count·T``.
+
+    Examples
+    --------
+    A spring along the hitch's cylinder, from 01 to 23 (its length is S): the
+    cylinder must push with its tension.
+
+    >>> from assur import examples
+    >>> from assur.loads import Spring
+    >>> s = Spring("s", "01", "23", rate=1000.0, free_length=0.5, preload=50.0)
+    >>> m = examples.hitch_003().with_loads([s])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [-30.0, 220.0]
     """
 
     name: str
@@ -199,10 +321,39 @@ class Spring:
     link_fields: ClassVar = ("links",)
 
     def tension(self, c, L):
-        """Tension of one spring [N] at the length ``L`` [m] (context values)."""
+        """Tension of one spring [N] at the length ``L`` [m] (context values).
+
+        Examples
+        --------
+        ``c`` needs only ``value`` here (a parameter's value, a number as it is):
+
+        >>> from types import SimpleNamespace
+        >>> from assur.loads import Spring
+        >>> c = SimpleNamespace(value=lambda ref: {"k": 2000.0}.get(ref, ref))
+        >>> s = Spring("s", "01", "23", rate="k", free_length=0.5, preload=100.0)
+        >>> round(float(s.tension(c, 0.6)), 6)    # 100 + 2000·(0.6 − 0.5) [N]
+        300.0
+        """
         return c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
 
     def apply(self, c):
+        """Apply the spring to the load context ``c``: ``count·T`` along a→b at ``a``,
+        the opposite at ``b``, and report its tension and length (``c.spring``).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import Spring
+        >>> from assur.statics import applied_loads
+        >>> s = Spring("s", "01", "23", rate=1000.0, free_length=0.5, preload=50.0, count=2)
+        >>> m = examples.hitch_003().with_loads([s])
+        >>> forces, _, springs = applied_loads(m.solve([0.67]))
+        >>> [(link, pt) for link, pt, _, _ in forces]      # the two ends' links
+        [('0', '01'), ('3', '23')]
+        >>> _, T, L = springs[0]
+        >>> round(float(T.ravel()[0]), 1), round(float(L.ravel()[0]), 3)   # one spring [N], [m]
+        (220.0, 0.67)
+        """
         (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
         dx, dy = bx - ax, by - ay
         L = np.hypot(dx, dy)
@@ -226,7 +377,18 @@ def is_one(v) -> bool:
 class Mass:
     """Mass ``m`` [kg] of a link with its centre of mass at ``point`` and moment of
     inertia ``J`` [kg·m²] about it: its weight m·g, and for a motion in time its
-    inertia force −m·a and moment −J·ε (d'Alembert)."""
+    inertia force −m·a and moment −J·ε (d'Alembert).
+
+    Examples
+    --------
+    1000 kg at S6 of the hitch weighs 9810 N (g = 9.81 m/s²):
+
+    >>> from assur import examples
+    >>> from assur.loads import Mass
+    >>> m = examples.hitch_003().with_loads([Mass("6", 1000.0, "S6")])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [46236.8, 48390.7]
+    """
 
     link: str
     m: Ref
@@ -240,6 +402,22 @@ class Mass:
     link_fields: ClassVar = ("link",)
 
     def apply(self, c):
+        """Apply the weight m·g to the load context ``c`` and, when it is moving, the
+        inertia force −m·a and moment −J·ε.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.loads import Mass
+        >>> from assur.statics import applied_loads
+        >>> m = examples.hitch_003().with_loads([Mass("6", 1000.0, "S6", J=50.0)])
+        >>> forces, couples, _ = applied_loads(m.solve([0.42]))    # static: weight only
+        >>> [(link, pt, float(fx), round(float(fy), 1)) for link, pt, fx, fy in forces]  # [N]
+        [('6', 'S6', 0.0, -9810.0)]
+        >>> forces, couples, _ = applied_loads(m.solve([0.42]), qdot=0.1)   # S moving [m/s]
+        >>> len(forces), len(couples)       # + the inertia force and moment
+        (2, 1)
+        """
         m = c.value(self.m)
         c.force(self.link, self.point, *_along_gravity(c, m * c.g))
         if c.moving:
@@ -296,6 +474,18 @@ class Cylinder:
         Which chamber is pressurised: piston area π·(D² − d2²)/4 (pushes) or annulus
         π·(D² − d²)/4 (pulls); ``"auto"``: the one that gives the force the loads
         need at each position (a double-rod cylinder steering either way).
+
+    Examples
+    --------
+    The seed-003 hitch's two cylinders (values are model parameters):
+
+    >>> from assur import examples
+    >>> c = examples.hitch_003().cylinders[0]
+    >>> c.name, c.coordinate, c.bore, c.count, c.side
+    ('ГЦ', 'S', 'Dgc', 'kgc', 'piston')
+    >>> from assur.loads import Cylinder
+    >>> Cylinder("ГЦ", coordinate="S", bore=0.08, count=2, eta_hyd=0.84, p_relief=17.5e6).bore
+    0.08
     """
 
     name: str
@@ -323,7 +513,16 @@ class Cylinder:
 
     @property
     def length(self) -> str:
-        """The name of the cylinder's length: its coordinate or its distance."""
+        """The name of the cylinder's length: its coordinate or its distance.
+
+        Examples
+        --------
+        >>> from assur.loads import Cylinder
+        >>> Cylinder("ГЦ1", coordinate="S1", bore=0.05).length
+        'S1'
+        >>> Cylinder("ГЦ2", distance="S2", supply="P", side="rod", bore=0.05).length  # passive
+        'S2'
+        """
         return self.coordinate if self.coordinate is not None else self.distance
 
 
@@ -334,7 +533,14 @@ LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring,
 
 
 def names_in(value) -> tuple:
-    """The names a point or link field holds: none (None), one (a str) or a tuple."""
+    """The names a point or link field holds: none (None), one (a str) or a tuple.
+
+    Examples
+    --------
+    >>> from assur.loads import names_in
+    >>> names_in(None), names_in("3"), names_in(["0", "3"])
+    ((), ('3',), ('0', '3'))
+    """
     if value is None:
         return ()
     return (value,) if isinstance(value, str) else tuple(value)

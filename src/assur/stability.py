@@ -192,12 +192,32 @@ class Machine:
 
     @property
     def other(self) -> str:
-        """Name of the axle that does not steer."""
+        """Name of the axle that does not steer.
+
+        Examples
+        --------
+        >>> from assur.stability import Machine
+        >>> m = Machine({"A": -2.96, "B": 0.0}, steered="A",            # seed 003 §6 [m]
+        ...             weights=[("tractor", 56000.0, -1.62)],            # [N], [m]
+        ...             counterweights=[("front ballast", 8000.0, -3.56)])
+        >>> m.other
+        'B'
+        """
         return next(n for n in self.axles if n != self.steered)
 
     @property
     def weight(self) -> float:
-        """Total weight of the machine with its counterweights [N]."""
+        """Total weight of the machine with its counterweights [N].
+
+        Examples
+        --------
+        >>> from assur.stability import Machine
+        >>> m = Machine({"A": -2.96, "B": 0.0}, steered="A",            # seed 003 §6 [m]
+        ...             weights=[("tractor", 56000.0, -1.62)],            # [N], [m]
+        ...             counterweights=[("front ballast", 8000.0, -3.56)])
+        >>> m.weight                  # P_мсха + P_гр [N]
+        64000.0
+        """
         return sum(w[1] for w in self.weights + self.counterweights)
 
     def _steered_reaction(self, items) -> float:
@@ -248,6 +268,17 @@ class StabilityResult:
         weight satisfies the rule (see the module notes).
     max_implement_weight_without_counterweights : ndarray
         The same limit with the counterweights removed [N].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> st = examples.hitch_003().analyze([0.42, 0.67]).stability
+    >>> [round(float(v)) for v in st.reactions["B"]]      # Rb, seed 003 table 6.1 [N]
+    [69739, 67513]
+    >>> [round(float(v), 1) for v in st.steered_share]    # ΔRa, table 6.1 [%]
+    [23.8, 26.2]
+    >>> st.steered, st.steerable.tolist()
+    ('A', [True, True])
     """
 
     reactions: dict[str, np.ndarray]
@@ -266,11 +297,31 @@ class StabilityResult:
         return table[name]
 
     def reaction(self, axle: str) -> np.ndarray:
-        """Reaction of ``axle`` [N]."""
+        """Reaction of ``axle`` [N].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).stability
+        >>> [round(float(v)) for v in st.reaction("A")]   # Ra, seed 003 table 6.1 [N]
+        [21761, 23987]
+        >>> st.reaction("C")
+        Traceback (most recent call last):
+        ...
+        ValueError: axle must be one of: ['A', 'B']; got 'C'
+        """
         return self._pick(self.reactions, axle)
 
     def share(self, axle: str) -> np.ndarray:
-        """Share of the total weight on ``axle`` [%]."""
+        """Share of the total weight on ``axle`` [%].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).stability
+        >>> [round(float(v), 1) for v in st.share("B")]   # ΔRb, seed 003 table 6.1 [%]
+        [76.2, 73.8]
+        """
         return self._pick(self.shares, axle)
 
     def to_frame(self, index: ArrayLike | None = None, index_name: str = "S"):
@@ -296,6 +347,17 @@ class StabilityResult:
         ValueError
             If the result has more than one axis (select one design first) or
             ``index`` has the wrong length.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).stability
+        >>> df = st.to_frame(index=[0.42, 0.67])    # S [m]
+        >>> list(df.columns)
+        ['Ra', 'Rb', 'dRa', 'dRb', 'G_max', 'G_max_no_cw', 'steerable']
+        >>> row = df.loc[0.67]
+        >>> round(float(row["Ra"])), round(float(row["dRa"]), 1)   # table 6.1 [N], [%]
+        (23987, 26.2)
         """
         import pandas as pd
 
@@ -457,6 +519,18 @@ class Carrying:
     A value a seed computes beside the limit (seed 003's printed GS6max) is not
     the machine's business: the model declares it as an extra formula column
     (:class:`assur.columns.Formula`).
+
+    Examples
+    --------
+    The seed-003 hitch's tractor carries the implement's weight P6 at S6:
+
+    >>> from assur import examples
+    >>> carrying = examples.hitch_003().machine
+    >>> carrying.point, carrying.weight, carrying.machine.steered
+    ('S6', 'P6', 'A')
+    >>> kin = examples.hitch_003().solve([0.42, 0.67])
+    >>> [round(float(v)) for v in carrying.evaluate(kin).max_implement_weight]  # [N]
+    [31464, 34679]
     """
 
     machine: Machine
@@ -468,7 +542,14 @@ class Carrying:
     refs: Mapping[str, object] | None = None
 
     def ref_names(self):
-        """Parameter names the machine's data refer to."""
+        """Parameter names the machine's data refer to.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().machine.ref_names()   # seed 003 §1.6
+        ['L', 'P_gr', 'P_mcxa', 'a', 'b']
+        """
         if not self.refs:
             return []
         terms = [t for ts in self.refs["axles"].values() for t in ts]
@@ -480,7 +561,17 @@ class Carrying:
     def quantities(self):
         """``{parameter: quantity}`` of the parameters the machine's data refer to
         (:mod:`assur.quantities`): axle and weight positions are lengths, weights
-        forces; the implement's weight too."""
+        forces; the implement's weight too.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> q = examples.hitch_003().machine.quantities()
+        >>> q["L"], q["b"], q["P_mcxa"], q["P6"]     # wheelbase, positions, weights
+        ('length', 'length', 'force', 'force')
+        >>> len(q)
+        6
+        """
         out = {}
         if isinstance(self.weight, str):
             out[self.weight] = "force"
@@ -495,7 +586,21 @@ class Carrying:
 
     def machine_for(self, params):
         """The :class:`Machine` with its numbers from the parameter values ``params``
-        (one design: scalars)."""
+        (one design: scalars).
+
+        Examples
+        --------
+        The seed-003 tractor with a longer wheelbase L = 3.2 m:
+
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> params = {name: float(m.params[name]) for name in m.machine.ref_names()}
+        >>> machine = m.machine.machine_for({**params, "L": 3.2})
+        >>> machine.axles, machine.weight          # [m], [N]
+        ({'A': -3.2, 'B': 0.0}, 64000.0)
+        >>> [(n, P, round(x, 3)) for n, P, x in machine.counterweights]   # at −(a + L) [N], [m]
+        [('противовесы', 8000.0, -3.8)]
+        """
         if not self.refs:
             return self.machine
 
@@ -513,7 +618,22 @@ class Carrying:
     def evaluate(self, kin):
         """Axle reactions and limits over the kinematics' positions, a
         :class:`StabilityResult`. With parameters that vary over a batch of designs,
-        each design gets its machine."""
+        each design gets its machine.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> r = m.machine.evaluate(m.solve([0.42, 0.67]))
+        >>> [round(float(v)) for v in r.reaction("A")]    # Ra, seed 003 table 6.1 [N]
+        [21761, 23987]
+
+        Two designs, with and without the front ballast P_гр:
+
+        >>> b = m.solve([0.42, 0.67], params={"P_gr": [8000.0, 0.0]})   # [N]
+        >>> m.machine.evaluate(b).steerable.tolist()
+        [[True, True], [False, False]]
+        """
         mech = kin.mechanism
 
         def val(ref):

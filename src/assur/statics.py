@@ -66,6 +66,15 @@ def gravity_unit(mech) -> tuple[float, float]:
     Returns
     -------
     tuple of float
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.statics import gravity_unit
+    >>> gravity_unit(examples.hitch_003())                 # straight down [-]
+    (0.0, -1.0)
+    >>> gravity_unit(examples.hitch_003().with_gravity(9.81, direction=0.0))  # along +x [-]
+    (1.0, 0.0)
     """
     d = getattr(mech, "gravity_direction", None)
     if d is None:
@@ -87,6 +96,15 @@ class Statics:
     flags : list of str
         Notes for reports (a source's printed signs are the model's sign maps,
         ``tables["signs"]``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
+    >>> [round(float(f)) for f in st.actuator_force("S")]   # Fgc, seed 003 table 4.1 [N]
+    [129614, 135652]
+    >>> [round(float(v)) for v in st.reaction("0", "7")[0]]  # R07, table 5.1 [N]
+    [-45683, 11272]
     """
 
     def __init__(self, kin, forces_vw, joints, actuator_rx, residual, flags, finite=False):
@@ -102,6 +120,18 @@ class Statics:
 
     @property
     def joints(self):
+        """Every joint with a reaction: ``[(point, i, j), ...]``, the force of link i
+        on link j at ``point``, groups last to first (the reverse-order pass).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42]).statics
+        >>> len(st.joints), st.joints[0]   # 9 pins; group III (6,7) is solved first
+        (9, ('56', '5', '6'))
+        >>> sorted(p for p, i, j in st.joints if i == "0")   # the frame's pivots
+        ['01', '03', '05', '07']
+        """
         return [(v[0], i, j) for (i, j), v in self._joints.items()]
 
     def _o(self, a):
@@ -111,13 +141,36 @@ class Statics:
 
     def actuator_force(self, coordinate=None):
         """Force the actuator of a coordinate must supply, by virtual work [N]
-        (or driving moment [N·m] for a crank angle): F = −Q, positive pushing."""
+        (or driving moment [N·m] for a crank angle): F = −Q, positive pushing.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
+        >>> [round(float(f)) for f in st.actuator_force()]   # Fgc, seed 003 table 4.1 [N]
+        [129614, 135652]
+        >>> st.actuator_force("L3")
+        Traceback (most recent call last):
+        ...
+        KeyError: "unknown coordinate 'L3'; coordinates: ['S']"
+        """
         c = self._coord(coordinate)
         return self._o(self._vw[c])
 
     def actuator_force_from_reactions(self, coordinate=None):
         """The same force from the joint reactions (axial component of the cylinder's
-        pin force, the crank's driving moment, the slider's drive) [N or N·m]."""
+        pin force, the crank's driving moment, the slider's drive) [N or N·m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
+        >>> F = st.actuator_force_from_reactions("S")   # R23 along 01→23
+        >>> [round(float(f)) for f in F]                # Fgc, table 4.1 [N]
+        [129614, 135652]
+        >>> float(abs(st.actuator_force_from_reactions() - st.actuator_force()).max()) < 1e-6
+        True
+        """
         c = self._coord(coordinate)
         if c not in self._act_rx:
             raise KeyError(f"no reaction-derived actuator force for {c!r}")
@@ -157,20 +210,54 @@ class Statics:
 
     def reaction_moment(self, i, j):
         """Moment of link ``i`` on link ``j`` at a prismatic pair or a driven crank
-        [N·m] (zero at a plain pin)."""
+        [N·m] (zero at a plain pin).
+
+        Examples
+        --------
+        The crank bearing O1 of the grain-cleaning mechanism (seed 001 lab 3,
+        illustrative dimensions) carries the driving moment; a plain pin carries none:
+
+        >>> import numpy as np
+        >>> from assur import io
+        >>> model = io.load(io.bundled("cleaning_lab3"))
+        >>> st = model.mechanism.analyze(np.radians([0.0, 90.0])).statics   # φ1 [rad]
+        >>> [round(float(v), 2) for v in st.reaction_moment("0", "1")]      # [N·m]
+        [-20.83, -20.02]
+        >>> [round(float(v), 2) for v in st.actuator_force("j1")]           # the same [N·m]
+        [-20.83, -20.02]
+        >>> [float(v) for v in st.reaction_moment("1", "2")]                # pin A [N·m]
+        [0.0, 0.0]
+        """
         i, j = str(i), str(j)
         if (i, j) in self._joints:
             return self._o(self._joints[(i, j)][3])
         return -self._o(self._joints[(j, i)][3])
 
     def reaction_magnitude(self, i, j):
-        """|R_ij| [N]."""
+        """|R_ij| [N].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
+        >>> [round(float(v)) for v in st.reaction_magnitude("5", "6")]  # |R56| of table 5.1 [N]
+        [48480, 74485]
+        """
         r = self.reaction(i, j)
         return np.hypot(r[..., 0], r[..., 1])
 
     def equilibrium_residual(self):
         """Largest |ΣF| [N] and |ΣM| [N·m] over all moving links, recomputed from the
-        loads and the reactions: ``(force, moment)`` arrays of the result shape."""
+        loads and the reactions: ``(force, moment)`` arrays of the result shape.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
+        >>> f, mo = st.equilibrium_residual()
+        >>> f.shape, bool(f.max() < 1e-6), bool(mo.max() < 1e-6)   # [N], [N·m]
+        ((2,), True, True)
+        """
         if callable(self._residual):
             self._residual = self._residual()
         f, mo = self._residual
@@ -178,7 +265,16 @@ class Statics:
 
     def first_nonfinite(self):
         """``(what, element)`` of the first reaction or actuator force that is NaN or
-        infinite, or None."""
+        infinite, or None.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import solve
+        >>> st = solve(examples.hitch_003().solve([0.42, 0.67]), method="array")
+        >>> print(st.first_nonfinite())   # every reaction and force is finite
+        None
+        """
         if self._finite:
             return None
         items = [(f"reaction R{i},{j}", (fx, fy, mz))
@@ -194,7 +290,18 @@ class Statics:
     def named_reactions(self):
         """The reactions the mechanism names (``tables["reactions"]``):
         ``{name: (i, j)}``, the force of link i on link j, e.g. seed 003
-        ``R05 = ("0", "5")``."""
+        ``R05 = ("0", "5")``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42]).statics
+        >>> names = st.named_reactions()
+        >>> names["R05"], names["R01"]   # seed 003's names: force of link i on link j
+        (('0', '5'), ('0', '2'))
+        >>> [round(float(v)) for v in st.reaction(*names["R05"])[0]]   # [N]
+        [49391, -47486]
+        """
         return {name: (str(v[0]), str(v[1]))
                 for name, v in self.kinematics.mechanism.tables.get("reactions", {}).items()}
 
@@ -207,6 +314,18 @@ class Statics:
         (``tables["signs"]``, :func:`assur.columns.column_signs`) is multiplied by its
         sign, as its source prints it. ``F_{coordinate}`` is the actuator force [N] by
         virtual work.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> st = examples.hitch_003().analyze([0.42, 0.67]).statics
+        >>> df = st.to_frame(printed_signs=True)
+        >>> list(df.columns[:4]), len(df.columns)
+        (['S', 'R56x', 'R56y', 'R56'], 29)
+        >>> [round(float(v)) for v in df["R05x"]]   # as seed 003 table 5.1 prints it [N]
+        [-49391, -45742]
+        >>> [round(float(v)) for v in st.to_frame()["R05x"]]   # force of 0 on 5 [N]
+        [49391, 45742]
         """
         import pandas as pd
 
@@ -303,6 +422,16 @@ def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
         Arrays broadcastable to (m, n) [N].
     couples : list of (link, M) [N·m]
     springs : list of (Spring, T, L) with the tension T [N] and length L [m]
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.statics import applied_loads
+    >>> forces, couples, springs = applied_loads(examples.hitch_003().solve([0.42]))
+    >>> [(link, pt, float(fx), float(fy)) for link, pt, fx, fy in forces]  # P6 [N]
+    [('6', 'S6', 0.0, -27500.0)]
+    >>> couples, springs
+    ([], [])
     """
     qd = qdd = None
     if qdot is not None:
@@ -330,6 +459,23 @@ def spring_states(kin):
         ``T = preload + rate·(L − free_length)`` [N], and the force of all ``count``
         springs, ``F = count·T`` [N]; arrays of the kinematics' shape (a parameter
         over designs broadcasts).
+
+    Examples
+    --------
+    Two springs along the hitch's cylinder 01–23 (length S), 1000 N/m, free length
+    0.5 m, preload 50 N:
+
+    >>> from assur import examples
+    >>> from assur.statics import spring_states
+    >>> m = examples.hitch_003().spring("s", "01", "23", rate=1000.0, free_length=0.5,
+    ...                                 preload=50.0, count=2)
+    >>> L, T, F = spring_states(m.solve([0.42, 0.67]))["s"]
+    >>> [round(float(v), 3) for v in L]   # = S [m]
+    [0.42, 0.67]
+    >>> [round(float(v), 1) for v in T]   # 50 + 1000·(L − 0.5) [N]
+    [-30.0, 220.0]
+    >>> [round(float(v), 1) for v in F]   # 2·T [N]
+    [-60.0, 440.0]
     """
     from .loads import Spring
 
@@ -353,6 +499,14 @@ def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):
 
     ``F_j = −Q_j``, ``Q_j = Σ F·∂r/∂q_j + Σ M·∂φ/∂q_j`` (spring forces enter as the
     point forces of their tension).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.statics import virtual_work_forces
+    >>> F = virtual_work_forces(examples.hitch_003().solve([0.42, 0.67]))
+    >>> list(F), [round(float(v)) for v in F["S"].ravel()]   # Fgc, table 4.1 [N]
+    (['S'], [129614, 135652])
     """
     forces, couples, _ = applied_loads(kin, qdot, qddot, g)
     Q = np.zeros((kin.k, kin.m, kin.n))
@@ -435,6 +589,20 @@ def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
     Returns
     -------
     Statics
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.statics import solve
+    >>> kin = examples.hitch_003().solve([0.42, 0.67])
+    >>> [round(float(v)) for v in solve(kin, method="array").actuator_force()]  # Fgc [N]
+    [129614, 135652]
+    >>> [round(float(v)) for v in solve(kin, g=9.81).reaction("5", "6")[:, 1]]  # R56y [N]
+    [16228, 69359]
+    >>> solve(kin, method="numba")
+    Traceback (most recent call last):
+    ...
+    ValueError: method must be one of: [None, 'fused', 'array']
     """
     if method not in (None, "fused", "array"):
         raise ValueError("method must be one of: [None, 'fused', 'array']")
@@ -575,6 +743,18 @@ class ReactionContextBase:
         The links of the group being solved (:attr:`assur.topology.Topology.group_links`).
     shape : tuple of int
         ``(m, n)``: designs and positions.
+
+    Examples
+    --------
+    The concrete context over arrays, :class:`ReactionContext`, on the hitch:
+
+    >>> from assur import examples
+    >>> from assur.statics import ReactionContext
+    >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+    >>> r.apply("6", "S6", 0.0, -27500.0)          # P6 at S6 [N]
+    >>> fx, fy, mo = r.wrench("6")
+    >>> float(fy), round(float(mo[0, 0]))          # [N], about the origin [N·m]
+    (-27500.0, -54788)
     """
 
     def __init__(self, mech, rod_ends):
@@ -587,24 +767,80 @@ class ReactionContextBase:
         self._at = {}  # (link, point) -> loads applied there, for a cylinder's axial force
 
     def owner(self, p):
-        """The body that owns a point."""
+        """The body that owns a point.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.owner("S6"), r.owner("45")   # 45: the outer joint of dyad II (4,5)
+        ('6', '5')
+        """
         return self.mech.owner(p)
 
     def is_coord(self, ref):
-        """True if ``ref`` names a generalized coordinate."""
+        """True if ``ref`` names a generalized coordinate.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.is_coord("S"), r.is_coord("L3"), r.is_coord(0.2)
+        (True, False, False)
+        """
         return isinstance(ref, str) and ref in self.mech.coordinates
 
     def wrench(self, body):
-        """Loads on a body: (Fx, Fy, moment about the origin) [N, N·m]."""
+        """Loads on a body: (Fx, Fy, moment about the origin) [N, N·m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.wrench("3")                        # nothing applied yet
+        (0.0, 0.0, 0.0)
+        >>> r.apply_moment("3", 10.0)            # [N·m]
+        >>> r.wrench("3")
+        (0.0, 0.0, 10.0)
+        """
         return tuple(self.W[body])
 
     def about(self, body, cx, cy):
-        """Loads on a body: (Fx, Fy, moment about the point c)."""
+        """Loads on a body: (Fx, Fy, moment about the point c).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.apply("6", "S6", 0.0, -27500.0)                # P6 at S6 [N]
+        >>> x, y = r.point("S6")
+        >>> round(float(r.about("6", x, y)[2][0, 0]), 6)     # about S6 itself [N·m]
+        0.0
+        >>> round(float(r.about("6", 0.0, y)[2][0, 0]))      # = −P6·XS6 [N·m]
+        -54788
+        """
         fx, fy, mo = self.W[body]
         return fx, fy, mo - (cx * fy - cy * fx)
 
     def apply(self, body, pt, fx, fy):
-        """Add the force (fx, fy) at point ``pt`` to ``body``'s loads."""
+        """Add the force (fx, fy) at point ``pt`` to ``body``'s loads.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.apply("6", "S6", 0.0, -27500.0)      # P6 at S6 [N]
+        >>> x, _ = r.point("S6")
+        >>> round(float(x[0, 0]), 3)                # XS6 [m]
+        1.992
+        >>> round(float(r.wrench("6")[2][0, 0]))    # −P6·XS6 about the origin [N·m]
+        -54788
+        """
         px, py = self.point(pt)
         w = self.W[body]
         w[0] = w[0] + fx
@@ -616,24 +852,69 @@ class ReactionContextBase:
             f[1] = f[1] + fy
 
     def apply_moment(self, body, M):
-        """Add a moment M [N·m] to ``body``'s loads."""
+        """Add a moment M [N·m] to ``body``'s loads.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.apply_moment("3", 10.0)
+        >>> r.apply_moment("3", -4.0)
+        >>> r.wrench("3")[2]                     # [N·m]
+        6.0
+        """
         self.W[body][2] = self.W[body][2] + M
 
     def axial(self, cyl, end, fx, fy, ux, uy):
         """A cylinder's push from the force (fx, fy) its rod end ``end`` exerts on the
-        next link, less what the loads applied at that end to the cylinder take."""
+        next link, less what the loads applied at that end to the cylinder take.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), {("2", "23")})
+        >>> float(r.axial("2", "23", 300.0, 400.0, 0.6, 0.8))   # (300, 400)·u [N]
+        500.0
+        >>> r.apply("2", "23", 100.0, 0.0)      # a load on the cylinder at its rod end [N]
+        >>> float(r.axial("2", "23", 300.0, 400.0, 0.6, 0.8))   # (200, 400)·u [N]
+        440.0
+        """
         lx, ly = self._at.get((cyl, end), (0.0, 0.0))
         return (fx - lx) * ux + (fy - ly) * uy
 
     def actuator(self, coordinate, F):
         """Add the generalized force F of an actuator of ``coordinate`` [N or N·m]
-        (several actuators of one coordinate — a double-rod cylinder — add up)."""
+        (several actuators of one coordinate — a double-rod cylinder — add up).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> r.actuator("S", 100.0)
+        >>> r.actuator("S", 50.0)    # a second actuator of S [N]
+        >>> r.act
+        {'S': 150.0}
+        """
         prev = self.act.get(coordinate)
         self.act[coordinate] = F if prev is None else prev + F
 
 
 class ReactionContext(ReactionContextBase):
-    """The reverse-order pass over arrays of shape (m, n) (designs, positions)."""
+    """The reverse-order pass over arrays of shape (m, n) (designs, positions).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.statics import ReactionContext
+    >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
+    >>> r.shape                              # one design, two positions
+    (1, 2)
+    >>> float(r.value("P6"))                  # [N]
+    27500.0
+    """
 
     def __init__(self, kin, rod_ends):
         super().__init__(kin.mechanism, rod_ends)
@@ -642,20 +923,59 @@ class ReactionContext(ReactionContextBase):
         self._val = _values(kin)
 
     def point(self, p):
-        """(x, y) of a point, arrays (m, n) [m]."""
+        """(x, y) of a point, arrays (m, n) [m].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
+        >>> x, y = r.point("01")                     # a frame pivot [m]
+        >>> x.tolist(), y.tolist()
+        ([[0.415, 0.415]], [[0.563, 0.563]])
+        """
         return self.kin.value(p)
 
     def value(self, ref):
-        """Value of a number or parameter, broadcastable to (m, n)."""
+        """Value of a number or parameter, broadcastable to (m, n).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
+        >>> float(r.value("L3")), float(r.value(2.5)), r.value(None)   # [m], [-], none
+        (0.2, 2.5, 0.0)
+        """
         return self._val(ref)
 
     def inv(self, x):
-        """1/x, and 0 where x = 0 (a degenerate, failed position)."""
+        """1/x, and 0 where x = 0 (a degenerate, failed position).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
+        >>> r.inv([4.0, 0.0]).tolist()
+        [[0.25, 0.0]]
+        """
         x = np.broadcast_to(np.asarray(x, float), self.shape)
         return np.divide(1.0, x, out=np.zeros(self.shape), where=x != 0.0)
 
     def record(self, i, j, pt, fx, fy, mz=0.0):
-        """Record the force (and moment) of body i on body j at point ``pt``."""
+        """Record the force (and moment) of body i on body j at point ``pt``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.statics import ReactionContext
+        >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
+        >>> r.record("5", "6", "56", 100.0, -50.0)        # [N]
+        >>> pt, fx, fy, mz = r.joints[("5", "6")]
+        >>> pt, fx.tolist(), fy.tolist(), mz.tolist()     # broadcast to (m, n)
+        ('56', [[100.0, 100.0]], [[-50.0, -50.0]], [[0.0, 0.0]])
+        """
         self.joints[(i, j)] = (pt, np.broadcast_to(fx, self.shape),
                                np.broadcast_to(fy, self.shape), np.broadcast_to(mz, self.shape))
 
