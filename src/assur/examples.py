@@ -210,7 +210,6 @@ def combine_002(**params) -> Mechanism:
 
     Examples
     --------
-    >>> import numpy as np
     >>> from assur import examples
     >>> m = examples.combine_002()
     >>> float(m.params["l2"])                 # the corrected coupler l2 [m]

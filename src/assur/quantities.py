@@ -60,14 +60,17 @@ class Unit:
 
     @property
     def is_degrees(self) -> bool:
-        """True for degrees (``"deg"`` or ``"°"`` with the scale π/180): a value shown in it is an angle.
+        """True for degrees (``"deg"`` or ``"°"`` with the scale π/180): a value shown
+        in it is an angle.
 
         Examples
         --------
         >>> import math
         >>> from assur.quantities import Unit
-        >>> Unit("deg", math.pi / 180).is_degrees, Unit("rad").is_degrees, Unit("deg").is_degrees
-        (True, False, False)
+        >>> Unit("deg", math.pi / 180).is_degrees, Unit("rad").is_degrees
+        (True, False)
+        >>> Unit("deg").is_degrees                 # named deg, but scale 1 [rad per unit]
+        False
         """
         return self.text in ("deg", "°") and abs(self.scale - math.pi / 180) < 1e-15
 

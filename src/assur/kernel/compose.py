@@ -313,7 +313,6 @@ def checks_continuity(kernel) -> bool:
     --------
     >>> from assur import examples
     >>> from assur.kernel.compose import checks_continuity
-    >>> from assur.kernel.vector import load_vector
     >>> prog = examples.hitch_003().program()
     >>> fused = prog.kernel()                       # the hitch's fused kernel
     >>> checks_continuity(fused), checks_continuity(lambda *args: 0)

@@ -125,7 +125,7 @@ def run(kernel, params, trig, q, npd, check, out, gout, status):
     >>> from assur.kernel.run import run
     >>> m = examples.hitch_003()
     >>> prog = m.program()
-    >>> kernel = prog.kernel((("56",)), (), vector=True)   # any kernel of this signature
+    >>> kernel = prog.kernel(("56",), (), vector=True)   # any kernel of this signature
     >>> ptab, trig, _ = m.prepared(prog)
     >>> q = np.array([[0.42, 0.67]])                  # S [m]
     >>> out, amount, status = np.empty((6, 2)), np.empty(2), np.empty(2, dtype=np.int64)

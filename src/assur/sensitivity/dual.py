@@ -41,7 +41,7 @@ def base(x):
     >>> from assur.sensitivity.dual import Dual, base
     >>> inner = Dual(np.array([0.42]), np.ones((1, 1)))     # a dual in q
     >>> outer = Dual(inner, np.zeros((1, 2)))                # a dual in two parameters
-    >>> [float(v) for v in base(outer)], base(2.5)
+    >>> [float(v) for v in base(outer)], base(2.5)          # S [m], a plain number
     ([0.42], 2.5)
     """
     while isinstance(x, Dual):
@@ -338,7 +338,7 @@ def variables(values, inner=None):
     >>> from assur.sensitivity.dual import variables
     >>> a, b = variables([2.0, np.array([1.0, 3.0])])
     >>> f = a * b + np.sin(a)                 # ∂f/∂a = b + cos a, ∂f/∂b = a
-    >>> [round(float(v), 6) for v in f.der[:, 0]], [float(v) for v in f.der[:, 1]]
+    >>> [round(float(v), 6) for v in f.der[:, 0]], [float(v) for v in f.der[:, 1]]   # [-]
     ([0.583853, 2.583853], [2.0, 2.0])
     """
     P = len(values)
