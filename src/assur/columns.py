@@ -80,7 +80,19 @@ _UNARY = {ast.USub: np.negative, ast.UAdd: np.positive}
 
 class FormulaError(ModelError):
     """An expression that is not a formula of the accepted form, or that names
-    something the model does not have."""
+    something the model does not have.
+
+    Examples
+    --------
+    >>> from assur.columns import Formula, FormulaError
+    >>> try:
+    ...     Formula("bad", "X(56).real")
+    ... except FormulaError as e:
+    ...     print(e)
+    only numbers, names, + - * / **, parentheses and the listed functions are allowed; found Attribute "X('56').real"
+    >>> issubclass(FormulaError, ValueError)
+    True
+    """
 
 
 def _ref(node, what):
@@ -206,6 +218,17 @@ class Formula:
     ------
     FormulaError
         If ``expr`` is not an accepted expression or ``scale`` is not positive.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.columns import Formula
+    >>> f = Formula("I56", "I(56)", table="3.1")     # the transmission dY56/dS [-]
+    >>> r = examples.hitch_003().solve([0.42, 0.67])  # S [m]
+    >>> [round(float(v), 3) for v in f.evaluate(r)]  # I56, seed 003's last table [-]
+    [4.459, 2.621]
+    >>> f.label is None, f.unit                       # described as "I56 = I(56)"
+    (True, '-')
     """
 
     name: str
@@ -230,22 +253,51 @@ class Formula:
 
     @property
     def names(self) -> frozenset:
-        """Parameter and coordinate names the expression uses."""
+        """Parameter and coordinate names the expression uses.
+
+        Examples
+        --------
+        >>> from assur.columns import Formula
+        >>> f = Formula("GS6max", "(P_mcxa*b + P_gr*(a + L) - 0.2*(P6 + P_mcxa + P_gr)) / X(S6)")
+        >>> sorted(f.names)
+        ['L', 'P6', 'P_gr', 'P_mcxa', 'a', 'b']
+        """
         return self._parsed[1]
 
     @property
     def points(self) -> frozenset:
-        """Points named by ``X``, ``Y``, ``I``."""
+        """Points named by ``X``, ``Y``, ``I``.
+
+        Examples
+        --------
+        >>> from assur.columns import Formula
+        >>> sorted(Formula("h", "hypot(X(56) - X(05), Y(56) - Y(05)) + I(S6)").points)
+        ['05', '56', 'S6']
+        """
         return self._parsed[2]
 
     @property
     def links(self) -> frozenset:
-        """Links named by ``phi``, ``dphi``, ``ddphi``."""
+        """Links named by ``phi``, ``dphi``, ``ddphi``.
+
+        Examples
+        --------
+        >>> from assur.columns import Formula
+        >>> sorted(Formula("mu", "phi(6) - phi(7) + 0*dphi(5) + ddphi('34')").links)
+        ['34', '5', '6', '7']
+        """
         return self._parsed[3]
 
     @property
     def distances(self) -> frozenset:
-        """Named distances of ``dist``, ``ddist``."""
+        """Named distances of ``dist``, ``ddist``.
+
+        Examples
+        --------
+        >>> from assur.columns import Formula
+        >>> sorted(Formula("v", "dist(l9) * ddist(l7)").distances)
+        ['l7', 'l9']
+        """
         return self._parsed[4]
 
     def check(self, mechanism):
@@ -255,6 +307,17 @@ class Formula:
         ------
         FormulaError
             Naming the first unknown name, point or link and what is known.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.columns import Formula
+        >>> m = examples.hitch_003()
+        >>> Formula("dY", "Y(56) - Y(05)").check(m)      # every point exists: no error
+        >>> Formula("dY", "Y(56) - Y(99)").check(m)
+        Traceback (most recent call last):
+        ...
+        assur.columns.FormulaError: unknown point '99' in 'Y(56) - Y(99)': expected one of 01, 03, 05, 07, 23, 34, 45, 56, 67, S6, F610
         """
         known = set(mechanism.params) | set(mechanism.coordinates)
         for n in sorted(self.names):
@@ -336,6 +399,15 @@ class Formula:
             Where the formula divides by zero, leaves its domain or overflows: the
             message names the formula and the first such position (never a NaN or an
             infinity in a result).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.columns import formulas_of
+        >>> m = examples.hitch_003()
+        >>> gs6max = formulas_of(m)[0]                    # as the seed computes it (flagged)
+        >>> [round(float(v)) for v in gs6max.evaluate(m.solve([0.42, 0.67]))]   # table 6.1 [N]
+        [50645, 57569]
         """
         mech = kin.mechanism
         self.check(mech)
@@ -378,6 +450,17 @@ class SignMap:
         +1 or −1: the printed column is ``sign`` × assur's value.
     note : str
         The explanation shown with the table and in the report's warnings.
+
+    Examples
+    --------
+    >>> from assur.columns import SignMap
+    >>> s = SignMap(["R05x", "R05y"], -1, "printed with the opposite sign")
+    >>> s.columns, s.sign
+    (('R05x', 'R05y'), -1)
+    >>> SignMap(["R05x"], 2)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: the sign of a sign map is 1 or -1, got 2
     """
 
     columns: tuple
@@ -395,15 +478,41 @@ class SignMap:
 
 
 def formulas_of(mechanism) -> tuple:
-    """The mechanism's :class:`Formula` objects (``tables["formulas"]``)."""
+    """The mechanism's :class:`Formula` objects (``tables["formulas"]``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.columns import formulas_of
+    >>> [(f.name, f.table, f.unit, len(f.flags)) for f in formulas_of(examples.hitch_003())]
+    [('GS6max', '6.1', 'N', 3)]
+    """
     return tuple(mechanism.tables.get("formulas", ()))
 
 
 def signs_of(mechanism) -> tuple:
-    """The mechanism's :class:`SignMap` objects (``tables["signs"]``)."""
+    """The mechanism's :class:`SignMap` objects (``tables["signs"]``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.columns import signs_of
+    >>> s = signs_of(examples.hitch_003())[0]        # seed 003 §5.2–5.3
+    >>> s.columns, s.sign
+    (('R05x', 'R05y', 'R34x', 'R34y', 'R45x', 'R45y'), -1)
+    """
     return tuple(mechanism.tables.get("signs", ()))
 
 
 def column_signs(mechanism) -> dict:
-    """``{column symbol: sign}`` of every column a sign map names."""
+    """``{column symbol: sign}`` of every column a sign map names.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.columns import column_signs
+    >>> signs = column_signs(examples.hitch_003())
+    >>> signs["R05x"], signs["R45y"], "R56x" in signs
+    (-1, -1, False)
+    """
     return {c: s.sign for s in signs_of(mechanism) for c in s.columns}

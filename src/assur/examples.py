@@ -84,12 +84,30 @@ def hitch_003(**params) -> Mechanism:
     φ12 = φ13 − acos(…), which is not the cylinder's direction; the cylinder angle
     here is the direction 01 → 23 (φ12 = π − φ13 − acos((S² + L13² − L3²)/(2·S·L13)))
     and closes the loop exactly.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.hitch_003()
+    >>> round(float(m.params["L4"]), 4)     # root of the seed's first Find block [m]
+    0.6613
+    >>> r = m.solve([0.42, 0.67])           # S at Smin and Smax [m]
+    >>> [round(float(v), 1) for v in r.phi("6", degrees=True)]   # φ6, table 2.1 [deg]
+    [88.5, 110.3]
     """
     return _mechanism("hitch_003", params)
 
 
 def hitch_003_range() -> np.ndarray:
-    """Seed 003 §1.3: S from Smin = 0.420 to Smax = 0.670 m in Npol = 10 positions [m]."""
+    """Seed 003 §1.3: S from Smin = 0.420 to Smax = 0.670 m in Npol = 10 positions [m].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> s = examples.hitch_003_range()      # S [m]
+    >>> len(s), round(float(s[0]), 3), round(float(s[1]), 3), round(float(s[-1]), 3)
+    (10, 0.42, 0.448, 0.67)
+    """
     return np.array(_model("hitch_003").range)
 
 
@@ -123,6 +141,14 @@ def header_000(**params) -> Mechanism:
     **params
         Overrides of any parameter; overriding ``XN``, ``YN``, ``X56_0`` or ``Y56_0``
         also updates the offsets ``dXN``, ``dYN`` derived from them.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> examples.header_000().solve([0.65])   # S [m] # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.AssemblyError: rigid point 'arm 46' (link 3) fails at position 0 (S = 0.65): ... L4 exceeds L3 + L34 = 0.65234 m by 4.66 mm
     """
     return _header("header_000", params)
 
@@ -137,12 +163,30 @@ def header_000_fixed(**params) -> Mechanism:
     ----------
     **params
         Overrides of any parameter (see :func:`header_000`).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.header_000_fixed()
+    >>> float(m.params["L4"])                 # the illustrative L4 [m]
+    0.652
+    >>> r = m.solve([0.65, 0.80])             # S at both ends of the seed's range [m]
+    >>> [round(float(v), 1) for v in r.phi("5", degrees=True)]   # rocker 5 [deg]
+    [-11.7, 69.2]
     """
     return _header("header_000_fixed", params)
 
 
 def header_000_range() -> np.ndarray:
-    """Seed 000: S_AA from 0.650 to 0.800 m in steps of 0.010 m [m]."""
+    """Seed 000: S_AA from 0.650 to 0.800 m in steps of 0.010 m [m].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> s = examples.header_000_range()       # S_AA [m]
+    >>> len(s), round(float(s[0]), 3), round(float(s[1]), 3), round(float(s[-1]), 3)
+    (16, 0.65, 0.66, 0.8)
+    """
     return np.array(_model("header_000").range)
 
 
@@ -163,6 +207,18 @@ def combine_002(**params) -> Mechanism:
     Seed slips resolved (BRIEF.md): l2 is printed 0,1 m but is 1.0 m (with 0.1 the
     first dyad cannot close: :func:`combine_002_printed`); the lost fixed angles
     j10 = −7.125°, j8 = +12.54° are restored from the seed's withheld table.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.combine_002()
+    >>> float(m.params["l2"])                 # the corrected coupler l2 [m]
+    1.0
+    >>> r = m.solve(examples.combine_002_range()[[0, -1]])   # positions 1 and 13 [rad]
+    >>> [round(float(v), 1) for v in r.phi("3", degrees=True)]   # rocker 3 at its extremes [deg]
+    [-78.8, -37.2]
+    >>> [bool(abs(v) < 1e-3) for v in r.dphi("3")]               # dφ3/dj1 ≈ 0 there [-]
+    [True, True]
     """
     return _mechanism("combine_002", params)
 
@@ -170,20 +226,50 @@ def combine_002(**params) -> Mechanism:
 def combine_002_printed(**params) -> Mechanism:
     """Seed 002's six-bar with l2 = 0.1 m as its table 2.2 prints it
     (``combine_002_printed.toml``): :meth:`~assur.Mechanism.solve` raises the
-    :class:`~assur.AssemblyError` of the first dyad (521 mm short at j1 = 14.679°)."""
+    :class:`~assur.AssemblyError` of the first dyad (521 mm short at j1 = 14.679°).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.combine_002_printed()
+    >>> float(m.params["l2"])                 # as table 2.2 prints it [m]
+    0.1
+    >>> m.solve(examples.combine_002_range()[:1])   # j1 = 14.679° [rad] # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.AssemblyError: RRR dyad 'dyad 2-3' (links 2, 3) cannot assemble at position 0 (j1 = 14.679°): ... by 521 mm
+    """
     return _mechanism("combine_002_printed", params)
 
 
 def combine_002_range() -> np.ndarray:
     """Seed 002's 13 crank positions [rad]: j1 = 14.679° and steps of −30° (written
     continuously along the clockwise turn: 14.679°, −15.321°, …, −315.321°), then
-    position 13 at 188.229° (written −171.771°)."""
+    position 13 at 188.229° (written −171.771°).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> j1 = np.degrees(examples.combine_002_range())   # [deg]
+    >>> len(j1), [round(float(v), 3) for v in j1[[0, 1, 11, 12]]]
+    (13, [14.679, -15.321, -315.321, -171.771])
+    """
     return np.array(_model("combine_002").range)
 
 
 def combine_002_turn_range() -> np.ndarray:
     """A full clockwise turn from j1 = 14.679°, one position per degree (361 positions,
-    ``combine_002_turn.toml``) [rad]."""
+    ``combine_002_turn.toml``) [rad].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> j1 = np.degrees(examples.combine_002_turn_range())   # [deg]
+    >>> len(j1), round(float(j1[0]), 3), round(float(j1[1] - j1[0]), 3), round(float(j1[-1]), 3)
+    (361, 14.679, -1.0, -345.321)
+    """
     return np.array(_model("combine_002_turn").range)
 
 
@@ -195,13 +281,34 @@ def loader_lab1(**params) -> Mechanism:
 
     The lab gives no dimensions; these are chosen so that the capacity at the
     suspension axis 09 with the boom's weight is about 11.5 kN and the
-    steerability-limited mass at 09 about 800 kg, as the lab reports."""
+    steerability-limited mass at 09 about 800 kg, as the lab reports.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.loader_lab1()
+    >>> m.coordinates                          # boom cylinder S, traverse cylinder S1
+    ('S', 'S1')
+    >>> r = m.solve(examples.loader_lab1_range()[[0, -1]])   # (S, S1) [m]
+    >>> [round(float(v), 3) for v in r.y("09")]              # height of the suspension axis [m]
+    [1.016, 3.751]
+    """
     return _mechanism("loader_lab1", params)
 
 
 def loader_lab1_range() -> np.ndarray:
     """The grid of (S, S1) of ``loader_lab1.toml`` [m], shape (n_S·n_S1, 2), S
-    varying slowest."""
+    varying slowest.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> g = examples.loader_lab1_range()       # (S, S1) [m]
+    >>> g.shape
+    (104, 2)
+    >>> [round(float(v), 3) for v in g[0]], [round(float(v), 3) for v in g[-1]]
+    ([1.001, 0.8], [1.647, 0.92])
+    """
     return np.array(_model("loader_lab1").range)
 
 
@@ -216,12 +323,30 @@ def steering_lab4(**params) -> Mechanism:
     both wheels oppose a left turn (S1 extends).
 
     Generalized coordinate ``S1``: the left cylinder's pin-to-pin length [m].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.steering_lab4()
+    >>> r = m.solve(examples.steering_lab4_range()[[0, -1]])   # S1 [m]
+    >>> [round(float(v), 1) for v in r.phi("w3", degrees=True)]   # left wheel's lever [deg]
+    [92.9, 142.0]
+    >>> [round(float(v), 1) for v in r.phi("w5", degrees=True)]   # right wheel's lever [deg]
+    [92.8, 126.2]
     """
     return _mechanism("steering_lab4", params)
 
 
 def steering_lab4_range() -> np.ndarray:
-    """The positions of ``steering_lab4.toml``: S1 from a small left turn to full lock [m]."""
+    """The positions of ``steering_lab4.toml``: S1 from a small left turn to full lock [m].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> s = examples.steering_lab4_range()    # S1 [m]
+    >>> len(s), round(float(s[0]), 3), round(float(s[-1]), 3)
+    (30, 0.51, 0.662)
+    """
     return np.array(_model("steering_lab4").range)
 
 
@@ -232,12 +357,30 @@ def steering_lab4_modern(**params) -> Mechanism:
     through the links 2 and 5 (eqs. 18–25).
 
     Generalized coordinate ``S``: the rod's travel from straight ahead [m].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.steering_lab4_modern()
+    >>> r = m.solve([0.0, 0.06])               # rod travel S [m]
+    >>> [round(float(v), 1) for v in r.phi("w3", degrees=True)]   # left wheel's lever [deg]
+    [90.0, 115.4]
+    >>> [round(float(v), 1) for v in r.phi("w4", degrees=True)]   # right wheel's lever [deg]
+    [90.0, 108.1]
     """
     return _mechanism("steering_lab4_modern", params)
 
 
 def steering_lab4_modern_range() -> np.ndarray:
-    """The positions of ``steering_lab4_modern.toml``: the rod's travel [m]."""
+    """The positions of ``steering_lab4_modern.toml``: the rod's travel [m].
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> s = examples.steering_lab4_modern_range()   # rod travel S [m]
+    >>> len(s), round(float(s[0]), 3), round(float(s[-1]), 3)
+    (13, 0.0, 0.06)
+    """
     return np.array(_model("steering_lab4_modern").range)
 
 

@@ -32,17 +32,46 @@ class Unit:
         ``"MPa"``, ``"mm"``, ``"deg"``, ``"kN·m"``, ``"-"``).
     scale : float
         The SI value of one unit (kN: 1000; deg: π/180) [SI per unit].
+
+    Examples
+    --------
+    >>> from assur.quantities import Unit
+    >>> kN = Unit("kN", 1000.0)                # one kN is 1000 N
+    >>> kN.of(27500.0)                         # P6 = 27 500 N shown in kN [kN]
+    27.5
     """
 
     text: str
     scale: float = 1.0
 
     def of(self, si):
-        """``si`` (SI) expressed in this unit."""
+        """``si`` (SI) expressed in this unit.
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.quantities import Unit
+        >>> Unit("MPa", 1e6).of(17.5e6)            # Pgc_max = 17.5e6 Pa [MPa]
+        17.5
+        >>> round(Unit("deg", math.pi / 180).of(math.pi / 2), 6)   # π/2 rad [deg]
+        90.0
+        """
         return si / self.scale
 
     @property
     def is_degrees(self) -> bool:
+        """True for degrees (``"deg"`` or ``"°"`` with the scale π/180): a value shown
+        in it is an angle.
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.quantities import Unit
+        >>> Unit("deg", math.pi / 180).is_degrees, Unit("rad").is_degrees
+        (True, False)
+        >>> Unit("deg").is_degrees                 # named deg, but scale 1 [rad per unit]
+        False
+        """
         return self.text in ("deg", "°") and abs(self.scale - math.pi / 180) < 1e-15
 
 
@@ -59,7 +88,14 @@ _SUPERSCRIPT = {"2": "²", "3": "³"}
 
 def unit_text(text: str) -> str:
     """A unit as a user wrote it (pint syntax), written for reading: ``kN*m`` →
-    ``kN·m``, ``kg*m^2`` → ``kg·m²``, ``m/s**2`` → ``m/s²``, ``degree`` → ``deg``."""
+    ``kN·m``, ``kg*m^2`` → ``kg·m²``, ``m/s**2`` → ``m/s²``, ``degree`` → ``deg``.
+
+    Examples
+    --------
+    >>> from assur.quantities import unit_text
+    >>> [unit_text(u) for u in ("kN*m", "kg*m^2", "m/s**2", "degree", "")]
+    ['kN·m', 'kg·m²', 'm/s²', 'deg', '-']
+    """
     s = text.strip()
     s = re.sub(r"\s*\*\*\s*([23])\b", lambda m: _SUPERSCRIPT[m.group(1)], s)
     s = re.sub(r"\s*\^\s*([23])\b", lambda m: _SUPERSCRIPT[m.group(1)], s)
@@ -74,6 +110,16 @@ def parameter_quantities(mech) -> dict:
 
     A parameter used as a position of a coordinate (a ``[[solve]]`` position, a
     pose's ``at``) has the coordinate's quantity (a length, or a crank angle).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.quantities import parameter_quantities
+    >>> q = parameter_quantities(examples.hitch_003())
+    >>> q["L4"], q["phiBD"], q["P6"], q["Pgc_max"], q["eta"]
+    ('length', 'angle', 'force', 'pressure', 'number')
+    >>> "Smin" in q                            # used only by the [range] and [[solve]]
+    False
     """
     from .groups.base import signed_name
     out: dict = {}
@@ -110,7 +156,23 @@ def _coordinate_quantity(mech, c):
 
 def display_units(mech) -> dict:
     """``{parameter: Unit}`` for every parameter of ``mech``: the unit it was given in
-    (:attr:`Mechanism.units`), else its quantity's default, else ``"-"``."""
+    (:attr:`Mechanism.units`), else its quantity's default, else ``"-"``.
+
+    Examples
+    --------
+    >>> from assur import Mechanism, examples
+    >>> from assur.quantities import display_units
+    >>> u = display_units(examples.hitch_003())   # the units hitch_003.toml gives
+    >>> u["P6"].text, u["Dgc"].text, u["phiBD"].text
+    ('kN', 'mm', 'deg')
+    >>> m = Mechanism("lever", coordinates=("S",), params={"L3": 0.2, "k": 1.0})
+    >>> m = m.frame("01", 0.415, 0.563).frame("03", 0.25, 1.112)
+    >>> m = m.cylinder_lever("lever", base="01", pivot="03", out="23", lever="L3",
+    ...                      s="S", branch=-1, links=("2", "3"))
+    >>> u = display_units(m)                   # no units given: the defaults, "-" if unused
+    >>> u["L3"].text, u["k"].text
+    ('m', '-')
+    """
     quantities = parameter_quantities(mech)
     return {name: mech.units.get(name) or DEFAULT_UNITS.get(quantities.get(name), Unit("-"))
             for name in mech.params}

@@ -99,6 +99,17 @@ class Model:
         True when ``[range] paired = true``: the coordinates move together, position
         i of each with position i of the others (``range`` has shape (n, k)), not
         over their full grid.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> model = io.load(io.bundled("hitch_003"))
+    >>> model.mechanism.name, model.source.name
+    ('hitch_003', 'hitch_003.toml')
+    >>> [(s.condition.unknown, round(s.value, 4)) for s in model.solved]  # Find roots [m]
+    [('L4', 0.6613), ('Sp', 0.4694), ('L7', 0.7522)]
+    >>> round(float(model.range[0]), 3), round(float(model.range[-1]), 3)  # [range] of S [m]
+    (0.42, 0.67)
     """
 
     mechanism: Mechanism
@@ -118,13 +129,31 @@ class Model:
     @property
     def shape(self) -> tuple:
         """The positions' arrangement: ``(n,)`` for one coordinate or paired paths,
-        ``(n1, n2, …)`` for the grid of k coordinates (first coordinate first)."""
+        ``(n1, n2, …)`` for the grid of k coordinates (first coordinate first).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> io.load(io.bundled("hitch_003")).shape     # 10 positions of S
+        (10,)
+        >>> model = io.load(io.bundled("loader_lab1"))
+        >>> model.shape, model.range.shape             # the grid of (S, S1) and its rows
+        ((13, 8), (104, 2))
+        """
         if self.paired or len(self.ranges) == 1:
             return (len(self.range),)
         return tuple(len(a) for a in self.ranges.values())
 
     @property
     def name(self) -> str:
+        """The mechanism's name (``[model] name`` of the file).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> io.load(io.bundled("hitch_003")).name
+        'hitch_003'
+        """
         return self.mechanism.name
 
     def analyze(self):
@@ -137,6 +166,17 @@ class Model:
         Raises
         ------
         AssemblyError, ModelError, SingularPositionError
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> a = io.load(io.bundled("hitch_003")).analyze()   # the 10 positions of [range]
+        >>> [round(float(f)) for f in a.cylinder("ГЦ").force[[0, -1]]]   # Fgc, table 4.1 [N]
+        [129614, 135652]
+        >>> [s.condition.unknown for s in a.solved]
+        ['L4', 'Sp', 'L7']
+        >>> round(float(a.lift_test.hitch_force[0]))      # [lift_test] at the lowest height [N]
+        29825
         """
         from ..analysis import add_dynamics, add_lift_test
         analysis = self.mechanism.analyze(self.range)
@@ -432,6 +472,16 @@ def bundled(name: str) -> Path:
     ------
     ValueError
         For an unknown name (the message lists the bundled ones).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> io.bundled("hitch_003").name
+    'hitch_003.toml'
+    >>> io.bundled("hitch_03")        # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: no bundled model 'hitch_03'; did you mean "hitch_003"? (bundled: ...)
     """
     stem = name[:-5] if name.endswith(".toml") else name
     names = _bundled_names()
@@ -444,6 +494,22 @@ def bundled(name: str) -> Path:
 
 def read_targets(path, mechanism):
     """A printed table (CSV, ``quantity [unit]`` headers) as targets of
-    :func:`assur.fitting.fit_parameters`; see :mod:`assur.io._fit_table`."""
+    :func:`assur.fitting.fit_parameters`; see :mod:`assur.io._fit_table`.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import examples, io
+    >>> table = "S [m],phi(6) [deg],phi(5) [deg]\\n0.420,88.5,-15.7\\n0.670,110.3,33.0\\n"
+    >>> with tempfile.TemporaryDirectory() as tmp:     # two rows of seed 003 table 2.1
+    ...     path = Path(tmp) / "table_2_1.csv"
+    ...     _ = path.write_text(table, encoding="utf-8")
+    ...     targets = io.read_targets(path, examples.hitch_003())
+    >>> [(t.name, t.period) for t in targets]          # angles compared modulo 360 [deg]
+    [('phi(6)', 360.0), ('phi(5)', 360.0)]
+    >>> [float(v) for v in targets[0].values], [float(v) for v in targets[0].tolerance]  # [deg]
+    ([88.5, 110.3], [0.05, 0.05])
+    """
     from ._fit_table import read_targets as read
     return read(path, mechanism)

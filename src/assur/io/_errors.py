@@ -11,7 +11,16 @@ _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
 def key_path(path) -> str:
     """``("groups", 2, "ra")`` → ``"groups[2].ra"``; keys that are not bare TOML keys
-    are quoted: ``("reactions", "R 5")`` → ``'reactions."R 5"'``."""
+    are quoted: ``("reactions", "R 5")`` → ``'reactions."R 5"'``.
+
+    Examples
+    --------
+    >>> from assur.io import key_path
+    >>> key_path(("groups", 2, "ra"))
+    'groups[2].ra'
+    >>> key_path(("reactions", "R 5"))
+    'reactions."R 5"'
+    """
     out = ""
     for part in path:
         if isinstance(part, int):
@@ -42,6 +51,19 @@ class ModelFileError(ModelError):
         table that lacks it.
     problem : str
         The message without the location.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> e = io.ModelFileError("hitch_003.toml", 57, "groups[2].ra",
+    ...                       'expected a length (e.g. "0.48 m"), found "22 deg"')
+    >>> print(e)
+    hitch_003.toml:57: groups[2].ra: expected a length (e.g. "0.48 m"), found "22 deg"
+    >>> try:
+    ...     io.loads('[model]\\nname = "x"\\ncoordinates = ["S"]\\n', name="x.toml")
+    ... except io.ModelFileError as err:
+    ...     print(err.file, err.line, err.key_path, "|", err.problem)
+    x.toml 1 range | missing required key "range"
     """
 
     def __init__(self, file: str, line: int, key_path: str, problem: str):

@@ -349,7 +349,19 @@ def _key(cls, f) -> str:
 def schema_table() -> str:
     """The Markdown table of the ``[[groups]]`` types of ``docs/model-format.md``,
     generated from the registry: type, kind, keys (what each holds, its quantity and
-    unit, its default, its description) and the links the group adds."""
+    unit, its default, its description) and the links the group adds.
+
+    Examples
+    --------
+    >>> from assur.io import schema_table
+    >>> rows = schema_table().splitlines()
+    >>> rows[0]
+    '| type | kind | keys | links |'
+    >>> [row.split(" | ")[0] for row in rows[2:4]]        # the first registered group types
+    ['| `cylinder_lever`', '| `dyad`']
+    >>> rows[3].split(" | ")[-1]                          # the links a dyad adds
+    '[link at a, link at b] |'
+    """
     from ..groups import group_type
     rows = ["| type | kind | keys | links |", "|---|---|---|---|"]
     for name in group_types():

@@ -23,12 +23,34 @@ _override: list = []
 
 
 def set_cache_dir(path) -> None:
-    """Use ``path`` for generated kernels in this process (None: back to the default)."""
+    """Use ``path`` for generated kernels in this process (None: back to the default).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur.kernel import cache_dir, set_cache_dir
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     set_cache_dir(tmp)
+    ...     try:
+    ...         print(cache_dir() == Path(tmp) / "kernels")
+    ...     finally:
+    ...         set_cache_dir(None)            # back to $ASSUR_CACHE_DIR or ~/.cache/assur
+    True
+    """
     _override[:] = [] if path is None else [str(path)]
 
 
 def cache_dir() -> Path:
-    """Directory of generated kernels (created when missing)."""
+    """Directory of generated kernels (created when missing).
+
+    Examples
+    --------
+    >>> from assur.kernel import cache_dir
+    >>> d = cache_dir()                        # $ASSUR_CACHE_DIR/kernels, ~/.cache/assur/kernels
+    >>> d.name, d.is_dir()
+    ('kernels', True)
+    """
     base = (_override[0] if _override else None) or os.environ.get("ASSUR_CACHE_DIR") or \
         os.path.join(os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "assur")
     p = Path(base) / "kernels"
@@ -41,6 +63,20 @@ def load_source(src: str, name: str = "kernel"):
 
     A module is loaded once per process; writes are atomic (a temporary file
     replaced), so processes sharing the cache never read half a file.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur.kernel.cache import cache_dir, load_source, set_cache_dir
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     set_cache_dir(tmp)
+    ...     try:
+    ...         twice = load_source("def kernel(x):\\n    return 2 * x\\n")
+    ...         files = sorted(p.name[:2] for p in cache_dir().glob("*.py"))
+    ...     finally:
+    ...         set_cache_dir(None)
+    >>> twice(21), files                       # the module, written as k_<hash of source>.py
+    (42, ['k_'])
     """
     key = hashlib.sha1(src.encode()).hexdigest()[:20]
     with _lock:
@@ -56,7 +92,26 @@ def load_source(src: str, name: str = "kernel"):
 def load_keyed(what: str, make, name: str = "kernel"):
     """Import the module cached under the description ``what`` (which must name
     everything its source depends on), writing it from ``make()`` (the source) on
-    the first use on this machine; returns ``module.<name>``."""
+    the first use on this machine; returns ``module.<name>``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur.kernel.cache import load_keyed, set_cache_dir
+    >>> made = []
+    >>> def make():
+    ...     made.append(1)
+    ...     return "def kernel(x):\\n    return x + 1\\n"
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     set_cache_dir(tmp)
+    ...     try:
+    ...         f = load_keyed("doc example: add one, v1", make)
+    ...         g = load_keyed("doc example: add one, v1", make)   # loaded: make not called
+    ...     finally:
+    ...         set_cache_dir(None)
+    >>> f(41), f is g, len(made)
+    (42, True, 1)
+    """
     key = hashlib.sha1(what.encode()).hexdigest()[:20]
     with _lock:
         mod = _loaded.get(key)

@@ -97,6 +97,21 @@ def canonical(lines):
     the exported names in the order of their ``v{k}``, which of them are read
     before written (inputs) and which are written (outputs), and the parameter
     and trig rows of ``P{k}`` and ``T{k}``.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.groups import group_type
+    >>> from assur.kernel.compose import canonical
+    >>> from assur.kernel.emit import Emitter
+    >>> row = examples.hitch_003().program().rows[6]   # dyad II (4,5): 34 and 05 → 45
+    >>> E = Emitter(1)
+    >>> group_type(row[0]).emit(E, 0, row[1:])
+    >>> body, names, inputs, outputs, prows, trows = canonical(E.lines)
+    >>> inputs[:4], outputs[:4]     # jets of the points in slots 5, 2 read; of slot 6 written
+    (['x2', 'x5', 'y2', 'y5'], ['x6', 'y6', 'x6_0', 'y6_0'])
+    >>> prows, body[0]              # parameter rows of L4, L5 become P0, P1
+    ([28, 9], 't0ra = P0')
     """
     prows: dict[int, int] = {}
     trows: dict[int, int] = {}
@@ -148,7 +163,21 @@ def _int_array(name, values):
 
 def generate_composed(rows, measures, K, out_pts, out_sca):
     """Sources of the composed kernel: ``(group_sources, driver)`` where the driver
-    imports the group functions by the cache keys of their sources."""
+    imports the group functions by the cache keys of their sources.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.kernel.compose import generate_composed
+    >>> prog = examples.hitch_003().program()
+    >>> srcs, driver = generate_composed(prog.rows, prog.measures, prog.k,
+    ...                                  tuple(prog.slot[p] for p in prog.out_pts),
+    ...                                  tuple(prog.scal[s] for s in prog.out_sca))
+    >>> len(prog.rows) + len(prog.measures), len(srcs)   # 18 calls of 6 distinct functions
+    (18, 6)
+    >>> driver.count('_group("'), "def kernel(params, trig, q, npd, check, out, gout," in driver
+    (6, True)
+    """
     items = []  # (emitted lines, status base, real names of the continuity staging)
     cont = []
     for i, row in enumerate(rows):
@@ -262,20 +291,64 @@ def _group(key):
 
 def is_fused(rows, measures) -> bool:
     """True if the structure gets the fused kernel of :mod:`assur.kernel.source`, False
-    for a composed one."""
+    for a composed one.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.kernel.compose import THRESHOLD, is_fused
+    >>> prog = examples.hitch_003().program()       # 11 groups and 7 link angles
+    >>> THRESHOLD, is_fused(prog.rows, prog.measures), is_fused(prog.rows * 2, prog.measures)
+    (20, True, False)
+    """
     return len(rows) + len(measures) <= THRESHOLD
 
 
 def checks_continuity(kernel) -> bool:
     """True for a kernel that checks continuity itself (a fused kernel: its 7th
     argument is the depth array ``amount``), False for one that stages the squared
-    heights in ``gout`` for :func:`assur.kernel.run.check_continuity` (composed)."""
+    heights in ``gout`` for :func:`assur.kernel.run.check_continuity` (composed).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.kernel.compose import checks_continuity
+    >>> prog = examples.hitch_003().program()
+    >>> fused = prog.kernel()                       # the hitch's fused kernel
+    >>> checks_continuity(fused), checks_continuity(lambda *args: 0)
+    (True, False)
+    """
     return bool(getattr(kernel, "py_func", kernel).__globals__.get("CHECKS_CONTINUITY", False))
 
 
 def load_kernel(rows, measures, K, out_pts, out_sca):
     """The compiled kernel of a structure: fused up to :data:`THRESHOLD` groups and
-    measures, composed above (:func:`is_fused`)."""
+    measures, composed above (:func:`is_fused`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.kernel.compose import load_kernel
+    >>> from assur.kernel.source import quantities
+    >>> m = examples.hitch_003()
+    >>> prog = m.program()
+    >>> pts = tuple(prog.slot[p] for p in prog.out_pts)
+    >>> sca = tuple(prog.scal[s] for s in prog.out_sca)
+    >>> kernel = load_kernel(prog.rows, prog.measures, prog.k, pts, sca)   # compiled once per machine
+    >>> ptab, trig, _ = m.prepared(prog)            # parameter and fixed-angle tables
+    >>> q = np.array([[0.42, 0.67]])                # S [m]
+    >>> rows = quantities(prog.k, pts, sca)
+    >>> out, amount = np.empty((len(rows), 2)), np.empty(2)
+    >>> status = np.empty(2, dtype=np.int64)
+    >>> kernel(ptab, trig, q, 2, True, out, amount, status, 0, 1), status.tolist()   # no failures
+    (0, [-1, -1])
+    >>> y56 = f"y{prog.slot['56']}"
+    >>> [round(float(v), 3) for v in out[rows.index(y56)]]           # Y56 [m]
+    [0.2, 1.043]
+    >>> [round(float(v), 3) for v in out[rows.index(y56 + "_0")]]    # I56, the pole check [-]
+    [4.459, 2.621]
+    """
     if is_fused(rows, measures):
         return load_source(generate(rows, measures, K, out_pts, out_sca))
     srcs, driver = generate_composed(rows, measures, K, out_pts, out_sca)

@@ -58,6 +58,16 @@ class Emitter:
         Highest order of analogs emitted (1 or 2).
     pairs : list of (int, int)
         The index pairs ``a ≤ b`` of the second analogs (empty for order 1).
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import Emitter
+    >>> E = Emitter(2)                        # two generalized coordinates
+    >>> E("x9 = 0.5 * (x4 + x5)")
+    >>> E.lines                               # indented for the element loop
+    ['            x9 = 0.5 * (x4 + x5)']
+    >>> E.pairs, Emitter(2, order=1).pairs    # second analogs ∂²/∂q_a∂q_b, a ≤ b
+    ([(0, 0), (0, 1), (1, 1)], [])
     """
 
     def __init__(self, K: int, order: int = 2):
@@ -73,17 +83,38 @@ class Emitter:
 
 
 def pt(slot: int) -> tuple[str, str]:
-    """Names of the x and y values of the point in ``slot``."""
+    """Names of the x and y values of the point in ``slot``.
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import pt
+    >>> pt(7)                                 # point in slot 7 (56 of the hitch)
+    ('x7', 'y7')
+    """
     return f"x{slot}", f"y{slot}"
 
 
 def d(v: str, a: int) -> str:
-    """Name of the first analog ∂v/∂q_a."""
+    """Name of the first analog ∂v/∂q_a.
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import d, pt
+    >>> [d(v, 0) for v in pt(7)]              # ∂x/∂q_0, ∂y/∂q_0
+    ['x7_0', 'y7_0']
+    """
     return f"{v}_{a}"
 
 
 def dd(v: str, a: int, b: int) -> str:
-    """Name of the second analog ∂²v/∂q_a∂q_b (symmetric)."""
+    """Name of the second analog ∂²v/∂q_a∂q_b (symmetric).
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import dd
+    >>> dd("x7", 1, 0), dd("x7", 0, 1), dd("x7", 0, 0)   # symmetric
+    ('x7_01', 'x7_01', 'x7_00')
+    """
     a, b = min(a, b), max(a, b)
     return f"{v}_{a}{b}"
 
@@ -93,6 +124,14 @@ def length_ref(ref: int, K: int) -> tuple[str, list[str]]:
 
     ``ref ≥ 0`` is a parameter row (constant over positions); ``ref < 0`` is the
     generalized coordinate ``−ref − 1`` (its derivative is 1 along itself).
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import length_ref
+    >>> length_ref(28, 2)                     # parameter row 28 (L4 of the hitch): constant
+    ('params[28, d]', ['0.0', '0.0'])
+    >>> length_ref(-2, 2)                     # the second coordinate: ∂/∂q_1 = 1
+    ('q[1, e]', ['0.0', '1.0'])
     """
     if ref >= 0:
         return f"params[{ref}, d]", ["0.0"] * K
@@ -102,12 +141,34 @@ def length_ref(ref: int, K: int) -> tuple[str, list[str]]:
 
 def fail(E: Emitter, i: int, code: int, cond: str) -> None:
     """Record group ``i``'s failure ``code`` where ``cond`` holds, unless an earlier
-    group failed (a select, no branch)."""
+    group failed (a select, no branch).
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import Emitter, fail, FAIL_TOO_FAR
+    >>> E = Emitter(1)
+    >>> fail(E, 6, FAIL_TOO_FAR, "t6r > P28 + P9")      # group 6: status 16·6 + 1
+    >>> E.lines[0].strip()
+    'st = 97 if ((st < 0) & (t6r > P28 + P9)) else st'
+    >>> ns = {"st": -1, "t6r": 1.5, "P28": 0.66, "P9": 0.48}   # |A–B| > ra + rb [m]
+    >>> exec(E.lines[0].strip(), ns)
+    >>> ns["st"]
+    97
+    """
     E(f"st = {i * CODES_PER_OP + code} if ((st < 0) & ({cond})) else st")
 
 
 def emit_zero_jets(E: Emitter, v: str) -> None:
-    """Zero first and second analogs of a value constant over the positions."""
+    """Zero first and second analogs of a value constant over the positions.
+
+    Examples
+    --------
+    >>> from assur.kernel.emit import Emitter, emit_zero_jets
+    >>> E = Emitter(2)
+    >>> emit_zero_jets(E, "x0")               # a frame point: constant over the positions
+    >>> [line.strip() for line in E.lines]
+    ['x0_0 = 0.0', 'x0_1 = 0.0', 'x0_00 = 0.0', 'x0_01 = 0.0', 'x0_11 = 0.0']
+    """
     for a in range(E.K):
         E(f"{d(v, a)} = 0.0")
     for a, b in E.pairs:
@@ -121,6 +182,19 @@ def emit_unit(E: Emitter, i: int, p: int, q: int, cb: str, sb: str, tag=None) ->
     P and Q are points of one rigid link (validated by the topology), so |Q − P| is
     constant and u is a linear map of Q − P: ``u' = R(β)(Q' − P')/|Q − P|``, and
     likewise u''. ``cb``, ``sb`` are the expressions of cos β and sin β.
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur.kernel.emit import Emitter, emit_unit
+    >>> E = Emitter(1)
+    >>> emit_unit(E, 0, 0, 1, "1.0", "0.0")   # u = R(0)(Q − P)/|Q − P|, P slot 0, Q slot 1
+    >>> ns = dict(math=math, st=-1, x0=0.0, y0=0.0, x1=3.0, y1=4.0,        # [m]
+    ...           x0_0=0.0, y0_0=0.0, x1_0=1.0, y1_0=0.0,                  # [m/m]
+    ...           x0_00=0.0, y0_00=0.0, x1_00=0.0, y1_00=0.0)              # [m/m²]
+    >>> exec("\\n".join(line.strip() for line in E.lines), ns)
+    >>> [round(ns[v], 6) for v in ("u0x", "u0y", "u0x_0", "u0y_0")], ns["st"]   # u [-], u' [1/m]
+    ([0.6, 0.8, 0.2, 0.0], -1)
     """
     K = E.K
     px, py = pt(p)

@@ -28,7 +28,18 @@ _pool: list = []
 
 
 def threads() -> int:
-    """Threads used for large problems (≥ 1)."""
+    """Threads used for large problems (≥ 1).
+
+    Examples
+    --------
+    >>> from assur.kernel import set_threads, threads
+    >>> threads() >= 1                        # the CPUs this process may use, or $ASSUR_THREADS
+    True
+    >>> set_threads(3)
+    >>> threads()
+    3
+    >>> set_threads(None)
+    """
     if _threads:
         return _threads[0]
     env = os.environ.get("ASSUR_THREADS")
@@ -44,14 +55,36 @@ def threads() -> int:
 
 
 def set_threads(n: int | None) -> None:
-    """Use ``n`` threads for large problems (None: back to the CPUs available)."""
+    """Use ``n`` threads for large problems (None: back to the CPUs available).
+
+    Examples
+    --------
+    >>> from assur.kernel import set_threads, threads
+    >>> set_threads(2)
+    >>> threads()
+    2
+    >>> set_threads(None)                     # back to the CPUs available
+    >>> set_threads(0)
+    Traceback (most recent call last):
+    ...
+    ValueError: threads must be ≥ 1, got 0
+    """
     if n is not None and int(n) < 1:
         raise ValueError(f"threads must be ≥ 1, got {n!r}")
     _threads[:] = [] if n is None else [int(n)]
 
 
 def pool() -> ThreadPoolExecutor:
-    """The process's worker threads (grown when more are asked for)."""
+    """The process's worker threads (grown when more are asked for).
+
+    Examples
+    --------
+    >>> from assur.kernel.run import pool, threads
+    >>> pool().submit(sum, [1, 2, 3]).result()
+    6
+    >>> pool()._max_workers >= threads(), pool() is pool()   # one pool, reused
+    (True, True)
+    """
     n = threads()
     if not _pool or _pool[0]._max_workers < n:
         _pool[:] = [ThreadPoolExecutor(max_workers=n, thread_name_prefix="assur")]
@@ -61,7 +94,20 @@ def pool() -> ThreadPoolExecutor:
 def threads_for(elements: int, chunks: int) -> int:
     """Threads for a kernel call over ``elements`` in ``chunks`` work items: each
     gets ≥ 8 chunks and ≥ :data:`MIN_ELEMENTS_PER_THREAD` elements (small problems
-    run in the calling thread)."""
+    run in the calling thread).
+
+    Examples
+    --------
+    >>> from assur.kernel.run import set_threads, threads_for
+    >>> threads_for(257 * 10, 11)             # 10 designs × 257 positions: small, one thread
+    1
+    >>> set_threads(4)
+    >>> threads_for(1_000_000, 4000), threads_for(20_000, 4000)   # ≥ 4096 elements a thread
+    (4, 4)
+    >>> threads_for(12_000, 4000)
+    2
+    >>> set_threads(None)
+    """
     if elements < 2 * MIN_ELEMENTS_PER_THREAD or chunks < 16:
         return 1  # without asking the OS for the CPUs (a few µs: one position is ~15 µs)
     return max(1, min(threads(), chunks // 8, elements // MIN_ELEMENTS_PER_THREAD))
@@ -70,7 +116,24 @@ def threads_for(elements: int, chunks: int) -> int:
 def run(kernel, params, trig, q, npd, check, out, gout, status):
     """Run a generated kernel over all elements, split over threads (small problems
     run in the calling thread). Returns the sum of what the kernel returns for its
-    ranges (the continuity failures of a fused kernel; 0 for a composed one)."""
+    ranges (the continuity failures of a fused kernel; 0 for a composed one).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.kernel.run import run
+    >>> m = examples.hitch_003()
+    >>> prog = m.program()
+    >>> kernel = prog.kernel(("56",), (), vector=True)   # any kernel of this signature
+    >>> ptab, trig, _ = m.prepared(prog)
+    >>> q = np.array([[0.42, 0.67]])                  # S [m]
+    >>> out, amount, status = np.empty((6, 2)), np.empty(2), np.empty(2, dtype=np.int64)
+    >>> run(kernel, ptab, trig, q, 2, True, out, amount, status)   # continuity failures
+    0
+    >>> [round(float(v), 3) for v in out[1]], [round(float(v), 3) for v in out[3]]  # Y56 [m], I56 [-]
+    ([0.2, 1.043], [4.459, 2.621])
+    """
     E = q.shape[1]
     nchunks = (E // npd) * ((npd + CHUNK - 1) // CHUNK)  # designs × runs per design
     nthreads = threads_for(E, nchunks)
@@ -84,7 +147,24 @@ def run(kernel, params, trig, q, npd, check, out, gout, status):
 
 def check_continuity(gout, q, npd, status, amount, codes):
     """Run :func:`continuity` over all elements, split over threads; returns the
-    number of failures."""
+    number of failures.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.kernel.run import check_continuity
+    >>> gout = np.array([[0.01, 0.01], [-1.0, 1.0]])   # g [m²] and dg/dq [m²/m] of one dyad
+    >>> q = np.array([[0.0, 0.1]])                      # two positions of one design [m]
+    >>> status, amount = np.array([-1, -1]), np.zeros(2)
+    >>> check_continuity(gout, q, 2, status, amount, np.array([103]))   # g dips below 0
+    1
+    >>> status.tolist(), round(float(amount[1]), 4)    # the dyad's code, the depth [m²]
+    ([-1, 103], -0.015)
+    >>> gout[1] = [-0.01, 0.01]                         # gentler slopes: stays open
+    >>> status[:] = -1
+    >>> check_continuity(gout, q, 2, status, amount, np.array([103])), status.tolist()
+    (0, [-1, -1])
+    """
     E = q.shape[1]
     fn = _continuity()
     nthreads = min(threads(), max(1, E // 65536))
@@ -145,7 +225,20 @@ def _continuity():
 
 def unwrap_rows(sv, rows, n):
     """Make angles continuous along positions, in place: ``sv`` shape (ns, E), E = m·n;
-    each run of n positions (one design) starts at its principal value [rad]."""
+    each run of n positions (one design) starts at its principal value [rad].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.kernel.run import unwrap_rows
+    >>> sv = np.array([[3.0, -3.0, -2.9, 3.1],     # an angle crossing ±π [rad]
+    ...                [0.1, 0.2, 0.3, 0.4]])
+    >>> unwrap_rows(sv, [0], 4)                    # row 0 is an angle, one design of 4
+    >>> [round(float(v), 3) for v in sv[0]]        # continuous [rad]
+    [3.0, 3.283, 3.383, 3.1]
+    >>> [round(float(v), 3) for v in sv[1]]        # not an angle row: unchanged
+    [0.1, 0.2, 0.3, 0.4]
+    """
     if sv.shape[1] <= SMALL:  # numpy: the same additions in the same order
         _unwrap_small(sv, rows, n)
         return

@@ -73,7 +73,18 @@ class _IfExpToSel(ast.NodeTransformer):
 
 def branchless(line: str) -> str:
     """``line`` (one indented statement or comment) with each ``a if c else b``
-    written ``_sel(c, a, b)``; lines without one are returned unchanged."""
+    written ``_sel(c, a, b)``; lines without one are returned unchanged.
+
+    Examples
+    --------
+    >>> from assur.kernel.select import branchless
+    >>> branchless("    st = 97 if ((st < 0) & (t6r > P28 + P9)) else st")
+    '    st = _sel((st < 0) & (t6r > P28 + P9), 97, st)'
+    >>> branchless("    t6ir = 1.0 / t6r if t6r > 0.0 else 0.0")
+    '    t6ir = _sel(t6r > 0.0, 1.0 / t6r, 0.0)'
+    >>> branchless("    x6 = x2 + t6dx")              # no conditional expression: unchanged
+    '    x6 = x2 + t6dx'
+    """
     if " if " not in line or line.lstrip().startswith("#"):
         return line
     indent = line[:len(line) - len(line.lstrip())]

@@ -60,7 +60,25 @@ _PI_LO = 1.2246467991473532e-16  # π − fl(π)
 def emit_atan2(E, out, y, x, t):
     """``out = atan2(y, x)`` [rad] as branch-free code (selects, no libm call), so the
     element loop stays vectorized: within 2 ulp of :func:`numpy.arctan2` (signed zeros
-    as numpy); ``t`` prefixes the temporaries."""
+    as numpy); ``t`` prefixes the temporaries.
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur.kernel.emit import Emitter
+    >>> from assur.kernel.source import emit_atan2
+    >>> E = Emitter(1)
+    >>> emit_atan2(E, "phi", "dy", "dx", "t0")
+    >>> code = "\\n".join(line.strip() for line in E.lines)
+    >>> def atan2(y, x):                     # the emitted code run on numbers
+    ...     ns = {"math": math, "dy": y, "dx": x}
+    ...     exec(code, ns)
+    ...     return ns["phi"]
+    >>> [round(atan2(y, x), 6) for y, x in [(1.0, -1.0), (4.0, 3.0), (-0.0, -1.0)]]   # [rad]
+    [2.356194, 0.927295, -3.141593]
+    >>> max(abs(atan2(y, x) - math.atan2(y, x)) for y, x in [(1.0, -1.0), (4.0, 3.0), (-2.0, 0.5)]) < 1e-15
+    True
+    """
     p0, p1, p2, p3, p4 = (repr(v) for v in _ATAN_P)
     q0, q1, q2, q3, q4 = (repr(v) for v in _ATAN_Q)
     E(f"{t}ax = abs({x})")
@@ -82,7 +100,26 @@ def emit_atan2(E, out, y, x, t):
 
 
 def emit_measure(E, i, kind, s_, P, Q):
-    """Link angle (kind 'angle') or distance (kind 'distance') between two points."""
+    """Link angle (kind 'angle') or distance (kind 'distance') between two points.
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur.kernel.emit import Emitter
+    >>> from assur.kernel.source import emit_measure
+    >>> E = Emitter(1)
+    >>> emit_measure(E, 11, "angle", 0, 0, 1)   # angle s0 of the direction slot 0 → slot 1
+    >>> ns = dict(math=math, st=-1, x0=0.0, y0=0.0, x1=1.0, y1=1.0,        # [m]
+    ...           x0_0=0.0, y0_0=0.0, x1_0=0.0, y1_0=1.0,                  # [m/m]
+    ...           x0_00=0.0, y0_00=0.0, x1_00=0.0, y1_00=0.0)              # [m/m²]
+    >>> exec("\\n".join(line.strip() for line in E.lines), ns)
+    >>> round(ns["s0"], 6), ns["s0_0"], ns["s0_00"], ns["st"]   # φ [rad], φ' [rad/m], φ'' [rad/m²]
+    (0.785398, 0.5, -0.5, -1)
+    >>> ns.update(x1=0.0, y1=0.0)                                # coincident points
+    >>> exec("\\n".join(line.strip() for line in E.lines), ns)
+    >>> ns["st"]                                                 # 16·11 + FAIL_COINCIDENT
+    181
+    """
     K = E.K
     px, py = pt(P)
     qx, qy = pt(Q)
@@ -122,7 +159,19 @@ def hoisted(lines):
     """The element loop's body (one level deeper, conditional expressions as branch-free
     selects) with per-design reads ``params[r, d]``, ``trig[r, d]`` replaced by locals
     ``P{r}``, ``T{r}``, and the lines that load those locals once per run of positions of
-    a design (so the loop reads only q and can be vectorized)."""
+    a design (so the loop reads only q and can be vectorized).
+
+    Examples
+    --------
+    >>> from assur.kernel.source import hoisted
+    >>> body, hoist = hoisted(["            t6ra = params[28, d]",
+    ...                        "            t6cb = trig[4, d] if st < 0 else 0.0"])
+    >>> [line.strip() for line in body]
+    ['t6ra = P28', 't6cb = _sel(st < 0, T4, 0.0)']
+    >>> print(hoist, end="")
+                P28 = params[28, d]
+                T4 = trig[4, d]
+    """
     prows = sorted({int(m) for line in lines for m in re.findall(r"params\[(\d+), d\]", line)})
     trows = sorted({int(m) for line in lines for m in re.findall(r"trig\[(\d+), d\]", line)})
     body = [branchless(re.sub(r"trig\[(\d+), d\]", r"T\1",
@@ -136,7 +185,15 @@ def hoisted(lines):
 def status_out(indent: str, offset: str = "") -> str:
     """The copy of a chunk's staged status codes ``sbuf`` to ``status`` (after the
     element loop), indented by ``indent``; ``offset`` (e.g. ``" + e0 - ep"``) is the
-    column in ``sbuf`` of element e0."""
+    column in ``sbuf`` of element e0.
+
+    Examples
+    --------
+    >>> from assur.kernel.source import status_out
+    >>> print(status_out("        ", " + e0 - ep"), end="")
+            for j in range(e1 - e0):
+                status[e0 + j] = sbuf[j + e0 - ep]
+    """
     return (f"{indent}for j in range(e1 - e0):\n"
             f"{indent}    status[e0 + j] = sbuf[j{offset}]\n")
 
@@ -150,6 +207,23 @@ def chunk_loop(hoist: str, lead: bool = False) -> str:
     ``ep``: e0, or with ``lead`` and ``check`` the element before e0 when it belongs to
     the same design (computed again, not written: the continuity check of the interval
     that ends at e0 needs it).
+
+    Examples
+    --------
+    >>> from assur.kernel.source import chunk_loop
+    >>> print(chunk_loop("            P28 = params[28, d]\\n"), end="")
+        cpd = (npd + 256 - 1) // 256
+        for c in range(c_start, c_end):
+            d = c // cpd
+            e0 = d * npd + (c % cpd) * 256
+            e1 = min(d * npd + npd, e0 + 256)
+            ep = e0
+            if e1 > e0:
+                P28 = params[28, d]
+                for e in range(ep, e1):
+                    st = -1
+    >>> [ln.strip() for ln in chunk_loop("", lead=True).splitlines() if ln.strip().startswith("ep =")]
+    ['ep = e0 - 1 if check and e0 > d * npd else e0']
     """
     ep = ("e0 - 1 if check and e0 > d * npd else e0") if lead else "e0"
     return (f"    cpd = (npd + {CHUNK} - 1) // {CHUNK}\n"
@@ -177,6 +251,22 @@ def continuity_check(indent):
     :func:`assur.kernel.run.check_continuity`). Counts the failures in ``nfail``.
     A loop over the groups (their rows and codes are constant arrays of the module):
     the code, and numba's compile time, do not grow with the number of groups.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.kernel.source import continuity_check
+    >>> code = ("def check(sbuf, buf, q, ep, e1, amount, _CROWS, _CCODES):\\n    nfail = 0\\n"
+    ...         + continuity_check("    ") + "    return nfail\\n")
+    >>> ns = {}
+    >>> exec(code, ns)
+    >>> sbuf = np.array([-1, -1])                          # both positions assembled
+    >>> buf = np.array([[0.01, 0.01], [-1.0, 1.0]])        # g [m²] and dg/dq [m²/m] of a dyad
+    >>> amount = np.zeros(2)
+    >>> ns["check"](sbuf, buf, np.array([[0.0, 0.1]]), 0, 2, amount, np.array([0]), np.array([103]))
+    1
+    >>> int(sbuf[1]), round(float(amount[1]), 4)           # the dyad's code, the depth [m²]
+    (103, -0.015)
     """
     i0 = indent
     lines = [f"{i0}for j in range(1, e1 - ep):",
@@ -212,7 +302,14 @@ def continuity_check(indent):
 
 def quantities(K, out_pts, out_sca):
     """Names of the output rows, in order: point values, first, second analogs, then
-    the measures likewise."""
+    the measures likewise.
+
+    Examples
+    --------
+    >>> from assur.kernel.source import quantities
+    >>> quantities(1, (7,), (5,))     # point 56 (slot 7) and φ6 (measure 5) of the hitch
+    ['x7', 'y7', 'x7_0', 'y7_0', 'x7_00', 'y7_00', 's5', 's5_0', 's5_00']
+    """
     qs = [v for s_ in out_pts for v in (f"x{s_}", f"y{s_}")]
     qs += [d(v, a) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)]
     qs += [dd(v, a, b) for s_ in out_pts for v in (f"x{s_}", f"y{s_}") for a in range(K)
@@ -264,6 +361,20 @@ def generate(rows, measures, K, out_pts, out_sca):
     positive (the group neither flattens nor opens between samples,
     :func:`continuity_check`; the composed kernels of large structures leave that to
     :func:`assur.kernel.run.check_continuity`).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.kernel.source import generate, quantities
+    >>> prog = examples.hitch_003().program()
+    >>> pts = tuple(prog.slot[p] for p in prog.out_pts)
+    >>> sca = tuple(prog.scal[s] for s in prog.out_sca)
+    >>> src = generate(prog.rows, prog.measures, prog.k, pts, sca)
+    >>> [ln.strip() for ln in src.splitlines() if ln.strip().startswith("# group")][4:7]
+    ['# group 4: cylinder_lever', '# group 5: rigid_point', '# group 6: dyad']
+    >>> f"NQ = {len(quantities(prog.k, pts, sca))}" in src    # 7 points, 7 angles: 63 rows
+    True
+    >>> _ = compile(src, "kernel", "exec")                     # valid Python
     """
     E, cont = emit_program(rows, measures, K)
     # per-design values are loaded once per run of positions of a design, before the

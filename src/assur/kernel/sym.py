@@ -28,7 +28,19 @@ _CALLS = {np.arctan2: "math.atan2", np.sin: "math.sin",
 
 
 class Tracer:
-    """Names and emits the temporaries of traced expressions into ``E``."""
+    """Names and emits the temporaries of traced expressions into ``E``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.kernel.emit import Emitter
+    >>> from assur.kernel.sym import Tracer
+    >>> E = Emitter(1)
+    >>> t = Tracer(E, prefix="f")
+    >>> F = -t.sym("P16") * np.cos(t.sym("T4"))       # a force's x component [N]
+    >>> F, t.n, [line.strip() for line in E.lines]
+    (Sym(f2), 3, ['f0 = -P16', 'f1 = math.cos(T4)', 'f2 = f0 * f1'])
+    """
 
     def __init__(self, E, prefix="z"):
         self.E = E
@@ -36,14 +48,39 @@ class Tracer:
         self.n = 0
 
     def new(self, expr: str) -> "Sym":
-        """Assign ``expr`` to a new local and return its symbol."""
+        """Assign ``expr`` to a new local and return its symbol.
+
+        Examples
+        --------
+        >>> from assur.kernel.emit import Emitter
+        >>> from assur.kernel.sym import Tracer
+        >>> E = Emitter(1)
+        >>> t = Tracer(E)
+        >>> t.new("x7 - x2"), t.new("y7 - y2")
+        (Sym(z0), Sym(z1))
+        >>> [line.strip() for line in E.lines]
+        ['z0 = x7 - x2', 'z1 = y7 - y2']
+        """
         name = f"{self.prefix}{self.n}"
         self.n += 1
         self.E(f"{name} = {expr}")
         return Sym(name, self)
 
     def sym(self, name: str) -> "Sym":
-        """The symbol of an existing local (or expression without side effects)."""
+        """The symbol of an existing local (or expression without side effects).
+
+        Examples
+        --------
+        >>> from assur.kernel.emit import Emitter
+        >>> from assur.kernel.sym import Tracer
+        >>> E = Emitter(1)
+        >>> t = Tracer(E)
+        >>> x = t.sym("x7")                        # no line emitted for an existing local
+        >>> E.lines
+        []
+        >>> (x - 1.0).name, E.lines[0].strip()
+        ('z0', 'z0 = x7 - 1.0')
+        """
         return Sym(name, self)
 
 
@@ -59,7 +96,22 @@ def code(v) -> str:
 
 
 class Sym:
-    """A scalar local of the generated code (see the module docstring)."""
+    """A scalar local of the generated code (see the module docstring).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.kernel.emit import Emitter
+    >>> from assur.kernel.sym import Tracer
+    >>> E = Emitter(1)
+    >>> t = Tracer(E)
+    >>> dx, dy = t.sym("t6dx"), t.sym("t6dy")
+    >>> r = 2.0 * np.hypot(dx, dy) * (0.5 * 4.0)     # 0.5 * 4.0 is folded in Python
+    >>> r, [line.strip() for line in E.lines]
+    (Sym(z2), ['z0 = math.sqrt(t6dx * t6dx + t6dy * t6dy)', 'z1 = 2.0 * z0', 'z2 = z1 * 2.0'])
+    >>> np.arctan2(dy, dx).name, E.lines[-1].strip()
+    ('z3', 'z3 = math.atan2(t6dy, t6dx)')
+    """
 
     __slots__ = ("name", "tracer")
     __array_priority__ = 1000

@@ -59,7 +59,24 @@ _VECTORS: dict = {}
 
 def set_calls(n: int | None) -> None:
     """Evaluate at most ``n`` more small calls of this process with numpy (0: always
-    compiled; None: back to :data:`CALLS` in all)."""
+    compiled; None: back to :data:`CALLS` in all).
+
+    Examples
+    --------
+    >>> import sys
+    >>> from assur.kernel.vector import calls_left, set_calls, wanted
+    >>> set_calls(0)                          # always compiled from now on
+    >>> int(calls_left()), wanted(10)
+    (0, False)
+    >>> set_calls(3)
+    >>> bool(calls_left() == (0 if "numba" in sys.modules else 3))   # with numba: compiled
+    True
+    >>> set_calls(None)                       # back to CALLS
+    >>> set_calls(-1)
+    Traceback (most recent call last):
+    ...
+    ValueError: calls must be ≥ 0, got -1
+    """
     if n is None:
         _state["calls"], _state["limit"] = 0, None
     else:
@@ -69,7 +86,21 @@ def set_calls(n: int | None) -> None:
 
 
 def calls_left() -> int:
-    """Small calls this process may still evaluate with numpy."""
+    """Small calls this process may still evaluate with numpy.
+
+    Examples
+    --------
+    >>> import sys
+    >>> from assur.kernel.vector import CALLS, calls_left, set_calls, wanted
+    >>> set_calls(None)
+    >>> bool(calls_left() == (0 if "numba" in sys.modules else CALLS))   # 50 without numba
+    True
+    >>> set_calls(2)
+    >>> _ = wanted(10)                        # a small call counts (if it is evaluated)
+    >>> bool(calls_left() == (0 if "numba" in sys.modules else 1))
+    True
+    >>> set_calls(None)
+    """
     if "numba" in sys.modules:  # its import is paid: the compiled kernels are cheap now
         return 0
     limit = CALLS if _state["limit"] is None else _state["limit"]
@@ -78,7 +109,19 @@ def calls_left() -> int:
 
 def wanted(elements: int) -> bool:
     """True if a call over ``elements`` elements is to be evaluated by numpy (and
-    counts it)."""
+    counts it).
+
+    Examples
+    --------
+    >>> import sys
+    >>> from assur.kernel.vector import SMALL, set_calls, wanted
+    >>> wanted(SMALL + 1)                     # 257 elements: always compiled
+    False
+    >>> set_calls(1)
+    >>> wanted(10) == ("numba" not in sys.modules), wanted(10)   # the one call left, then none
+    (True, False)
+    >>> set_calls(None)
+    """
     if elements > SMALL or calls_left() <= 0:
         return False
     _state["calls"] += 1
@@ -107,7 +150,19 @@ def _body(lines):
 def generate_vector(rows, measures, K, out_pts, out_sca) -> str:
     """Python source of the numpy evaluation of a structure (the arguments of
     :func:`assur.kernel.source.generate`); its ``kernel`` has the compiled kernel's
-    signature and results."""
+    signature and results.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.kernel.vector import generate_vector
+    >>> prog = examples.hitch_003().program()
+    >>> src = generate_vector(prog.rows, prog.measures, prog.k, (prog.slot["56"],), ())
+    >>> "def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):" in src
+    True
+    >>> [ln.strip() for ln in src.splitlines() if ln.strip().startswith("out[")]   # x, y and jets of 56
+    ['out[0] = _sel(ok_, x7, 0.0)', 'out[1] = _sel(ok_, y7, 0.0)', 'out[2] = _sel(ok_, x7_0, 0.0)', 'out[3] = _sel(ok_, y7_0, 0.0)', 'out[4] = _sel(ok_, x7_00, 0.0)', 'out[5] = _sel(ok_, y7_00, 0.0)']
+    """
     E, cont = emit_program(rows, measures, K)
     head, body = _body(E.lines)
     qs = quantities(K, out_pts, out_sca)
@@ -147,7 +202,24 @@ def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
 def load_vector(rows, measures, K, out_pts, out_sca):
     """The numpy-evaluated kernel of a structure (cached per process, and on disk by
     the structure and the code that emits it: a later process imports it — bytecode
-    cached — without generating it again)."""
+    cached — without generating it again).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.kernel.vector import load_vector
+    >>> m = examples.hitch_003()
+    >>> prog = m.program()
+    >>> kernel = load_vector(prog.rows, prog.measures, prog.k, (prog.slot["56"],), ())
+    >>> ptab, trig, _ = m.prepared(prog)
+    >>> q = np.array([[0.42, 0.67]])                  # S [m]
+    >>> out, amount, status = np.empty((6, 2)), np.empty(2), np.empty(2, dtype=np.int64)
+    >>> kernel(ptab, trig, q, 2, True, out, amount, status, 0, 1), status.tolist()
+    (0, [-1, -1])
+    >>> [round(float(v), 3) for v in out[1]], [round(float(v), 3) for v in out[3]]  # Y56 [m], I56 [-]
+    ([0.2, 1.043], [4.459, 2.621])
+    """
     key = (rows, measures, K, out_pts, out_sca)
     fn = _VECTORS.get(key)
     if fn is None:

@@ -80,7 +80,18 @@ _SI = {"length": "m", "angle": "rad", "force": "N", "pressure": "Pa", "mass": "k
 
 def numeric_parameters(mech) -> tuple:
     """The parameters of ``mech`` the groups, loads, cylinders or machine use, in the
-    model's order (those a sensitivity may be taken with respect to)."""
+    model's order (those a sensitivity may be taken with respect to).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity import numeric_parameters
+    >>> p = numeric_parameters(examples.hitch_003())
+    >>> len(p), p[:4], p[-3:]
+    (29, ('X01', 'Y01', 'X03', 'Y03'), ('L4', 'Sp', 'L7'))
+    >>> "Smin" in p                        # used only by [range] and [[solve]]
+    False
+    """
     from ..quantities import parameter_quantities
     used = parameter_quantities(mech)
     return tuple(p for p in mech.params if p in used)
@@ -185,6 +196,19 @@ class Sensitivities:
         The SI unit of each output.
     param_units : mapping of str to str
         The SI unit of each parameter.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity import sensitivities
+    >>> s = sensitivities(examples.hitch_003(), [0.42, 0.67], params=["X01", "L4"],
+    ...                   outputs=["Y(56)", "F(S)"])             # S [m]
+    >>> s
+    Sensitivities(2 outputs × 2 params, positions (2,))
+    >>> s.units["F(S)"], s.param_units["X01"]
+    ('N', 'm')
+    >>> [round(float(v)) for v in s.value[:, 1]]               # Fgc, table 4.1 [N]
+    [129614, 135652]
     """
 
     outputs: tuple
@@ -205,22 +229,69 @@ class Sensitivities:
         return norm.index(key)
 
     def d(self, output, param):
-        """∂output/∂param over the positions [output unit / parameter unit]."""
+        """∂output/∂param over the positions [output unit / parameter unit].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import sensitivities
+        >>> s = sensitivities(examples.hitch_003(), [0.42, 0.67], params=["X01", "L4"],
+        ...                   outputs=["F(S)"])                      # S [m]
+        >>> [round(float(v)) for v in s.d("F(S)", "X01")]            # ∂Fgc/∂X01 [N/m]
+        [288195, -149913]
+        >>> s.d("F(S)", "Dgc")
+        Traceback (most recent call last):
+        ...
+        KeyError: "'Dgc' is not among the parameters ['X01', 'L4']"
+        """
         if param not in self.params:
             raise KeyError(f"{param!r} is not among the parameters {list(self.params)}")
         return self.jacobian[..., self._o(output), self.params.index(param)]
 
     def gradient(self, output):
         """∂output/∂(every parameter) over the positions, shape (*shape, params)
-        [output unit / parameter unit], in the order of :attr:`params`."""
+        [output unit / parameter unit], in the order of :attr:`params`.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import sensitivities
+        >>> s = sensitivities(examples.hitch_003(), [0.42, 0.67], params=["X01", "L4"],
+        ...                   outputs=["Y(56)", "F(S)"])             # S [m]
+        >>> g = s.gradient("F(S)")                                   # shape (positions, params)
+        >>> g.shape, [round(float(v)) for v in g[0]]                 # ∂Fgc/∂(X01, L4) at S = 0.42 m [N/m]
+        ((2, 2), [288195, -145543])
+        """
         return self.jacobian[..., self._o(output), :]
 
     def values(self, output):
-        """The output itself over the positions [its unit]."""
+        """The output itself over the positions [its unit].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import sensitivities
+        >>> s = sensitivities(examples.hitch_003(), [0.42, 0.67], params=["L4"],
+        ...                   outputs=["Y(56)", "F(S)"])             # S [m]
+        >>> [round(float(v), 3) for v in s.values("Y(56)")]         # Y56(Smin) = 0.2 m by the Find [m]
+        [0.2, 1.043]
+        >>> [round(float(v)) for v in s.values("F (S)")]            # spaces are ignored; table 4.1 [N]
+        [129614, 135652]
+        """
         return self.value[..., self._o(output)]
 
     def unit(self, output, param) -> str:
-        """The unit of ∂output/∂param, e.g. ``"Pa/m"``."""
+        """The unit of ∂output/∂param, e.g. ``"Pa/m"``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import sensitivities
+        >>> s = sensitivities(examples.hitch_003(), [0.42], params=["Dgc", "phiBD"],
+        ...                   outputs=["p(ГЦ)", "Y(56)"])            # S [m]
+        >>> s.unit("p(ГЦ)", "Dgc"), s.unit("Y(56)", "phiBD")
+        ('Pa/m', 'm/rad')
+        """
         return f"{self.units[self.outputs[self._o(output)]]}/{self.param_units[param]}"
 
     def __repr__(self):
@@ -255,6 +326,17 @@ def jet_outputs(mech, q, params, outputs, g=None, values=None, step=None):
         plain arrays), ``.der`` the derivatives, trailing axis over ``params``.
     qarr : ndarray, shape (k, m, n)
     shape : tuple
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity import jet_outputs
+    >>> res, q3, shape, mech = jet_outputs(examples.hitch_003(), [0.42, 0.67], ["L4"], ["Y(56)"])
+    >>> value, der = res[0]                 # Y56 [m] and ∂Y56/∂L4 [m/m]
+    >>> q3.shape, shape, der.shape          # (k, designs, positions); der: trailing params axis
+    ((1, 1, 2), (2,), (1, 2, 1))
+    >>> [round(float(v), 3) for v in value[0]], [round(float(v), 4) for v in der[0, :, 0]]
+    ([0.2, 1.043], [-2.1958, -1.9565])
     """
     from .. import inputs
     from ..analysis import gravity_of
@@ -372,6 +454,23 @@ def sensitivities(source, q=None, params=None, outputs=(), *, values=None, g=Non
         Unknown outputs or parameters.
     AssemblyError
         A position does not assemble (``check=True``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity import sensitivities
+    >>> s = sensitivities(examples.hitch_003(), [0.42, 0.67], params=["L4", "Dgc"],
+    ...                   outputs=["Y(56)", "p(ГЦ)"])            # S [m]
+    >>> s.jacobian.shape                                        # (positions, outputs, params)
+    (2, 2, 2)
+    >>> [round(float(v), 4) for v in s.d("Y(56)", "L4")]        # ∂Y56/∂L4 [m/m]
+    [-2.1958, -1.9565]
+    >>> p = s.values("p(ГЦ)")                                   # table 4.1 [Pa]
+    >>> [round(float(v)) for v in p]
+    [15348729, 16063717]
+    >>> dp = s.d("p(ГЦ)", "Dgc")                                # ∂p/∂Dgc [Pa/m]
+    >>> [round(float(a / b), 9) for a, b in zip(dp, -2 * p / 0.080)]   # = −2p/D, D = 80 mm [-]
+    [1.0, 1.0]
     """
     mech = getattr(source, "mechanism", source)
     if q is None:

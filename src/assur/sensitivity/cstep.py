@@ -24,7 +24,22 @@ class CStep(np.ndarray):
     """A complex array whose ufuncs numpy lacks for complex numbers (``arctan2``,
     ``hypot``, ``abs``, ``maximum``, ``minimum``, ``copysign``) are their analytic
     continuations near the real axis, and whose comparisons look at the real parts:
-    complex step through code written for real arrays."""
+    complex step through code written for real arrays.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.sensitivity.cstep import CStep
+    >>> h = 1e-30                                        # the imaginary step [rad]
+    >>> y = np.array([1.0 + 1j * h, -2.0]).view(CStep)   # a step in y[0] only
+    >>> a = np.arctan2(y, 1.0)                           # numpy has no complex arctan2 [rad]
+    >>> [round(float(v), 6) for v in a.real]             # atan2(1, 1) = π/4, atan2(−2, 1)
+    [0.785398, -1.107149]
+    >>> [float(v) for v in a.imag / h]                   # ∂atan2(y, 1)/∂y = 1/(1 + y²) [1/rad]
+    [0.5, 0.0]
+    >>> bool(np.maximum(y, 0.0)[1] == 0.0), bool((y > 0)[0])   # compared by their real parts
+    (True, True)
+    """
 
     def __array_ufunc__(self, ufunc, method, *inputs, **kw):
         if any(hasattr(type(x), "__array_ufunc__") and not isinstance(x, np.ndarray)
@@ -86,6 +101,19 @@ def complex_step(mech, q, params, outputs):
         Parameters, one complex-step pass each.
     outputs : sequence of str
         :mod:`assur.fused` output names.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity import sensitivities
+    >>> from assur.sensitivity.cstep import complex_step
+    >>> m = examples.hitch_003()
+    >>> j = complex_step(m, [0.42, 0.67], ["L4"], ["Y(56)"])   # S [m]
+    >>> j.shape, [round(float(v), 4) for v in j[:, 0, 0]]      # ∂Y56/∂L4 [m/m]
+    ((2, 1, 1), [-2.1958, -1.9565])
+    >>> exact = sensitivities(m, [0.42, 0.67], params=["L4"], outputs=["Y(56)"]).jacobian
+    >>> float(abs(j - exact).max()) < 1e-12                    # the jets agree [m/m]
+    True
     """
     from . import jet_outputs
 

@@ -33,14 +33,34 @@ __all__ = ["Dual", "base", "expand", "where", "variables"]
 
 
 def base(x):
-    """The plain value under any nesting of duals (an ndarray or a number)."""
+    """The plain value under any nesting of duals (an ndarray or a number).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.sensitivity.dual import Dual, base
+    >>> inner = Dual(np.array([0.42]), np.ones((1, 1)))     # a dual in q
+    >>> outer = Dual(inner, np.zeros((1, 2)))                # a dual in two parameters
+    >>> [float(v) for v in base(outer)], base(2.5)          # S [m], a plain number
+    ([0.42], 2.5)
+    """
     while isinstance(x, Dual):
         x = x.val
     return x
 
 
 def expand(x):
-    """``x[..., None]`` for a number, an array or a dual (to multiply a derivative)."""
+    """``x[..., None]`` for a number, an array or a dual (to multiply a derivative).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.sensitivity.dual import Dual, expand
+    >>> expand(np.array([1.0, 2.0])).shape, expand(3.0).shape
+    ((2, 1), (1,))
+    >>> expand(Dual(np.array([1.0, 2.0]), np.ones((2, 3)))).shape   # val (2, 1), der (2, 1, 3)
+    (2, 1)
+    """
     if isinstance(x, Dual):
         return x[..., None]
     return np.asanyarray(x)[..., None]
@@ -48,7 +68,17 @@ def expand(x):
 
 def where(cond, a, b):
     """``np.where`` for duals: the value and every derivative taken from ``a`` where
-    ``cond`` holds, from ``b`` elsewhere."""
+    ``cond`` holds, from ``b`` elsewhere.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.sensitivity.dual import variables, where
+    >>> x, = variables([np.array([-2.0, 3.0])])
+    >>> y = where(x.val > 0, x * x, -x)       # x² where positive, −x elsewhere
+    >>> [float(v) for v in y.val], [float(v) for v in y.der[:, 0]]   # value, ∂y/∂x
+    ([2.0, 9.0], [-1.0, 6.0])
+    """
     cond = np.asarray(cond, dtype=bool)
     if not isinstance(a, Dual) and not isinstance(b, Dual):
         out = np.where(cond, a, b)
@@ -151,6 +181,17 @@ class Dual:
     der : ndarray, number or Dual
         ∂val/∂p_i along a trailing axis of length P (broadcastable to
         ``shape + (P,)``; a scalar 0 for none).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.sensitivity.dual import Dual
+    >>> x = Dual(np.array([3.0, 4.0]), np.array([[1.0, 0.0], [1.0, 0.0]]))   # ∂x/∂p1 = 1
+    >>> r = np.hypot(x, 4.0)                  # |(x, 4)| and its derivatives
+    >>> [round(float(v), 6) for v in r.val], [round(float(v), 6) for v in r.der[:, 0]]  # r, x/r
+    ([5.0, 5.656854], [0.6, 0.707107])
+    >>> [float(v) for v in r.der[:, 1]]       # no dependence on p2
+    [0.0, 0.0]
     """
 
     __slots__ = ("val", "der")
@@ -162,6 +203,16 @@ class Dual:
 
     @property
     def shape(self):
+        """The shape of the plain value (under any nesting of duals).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur.sensitivity.dual import variables
+        >>> x, y = variables([np.zeros((2, 3)), 1.0])
+        >>> x.shape, y.shape, x.der.shape          # der: one more axis, the 2 variables
+        ((2, 3), (), (2, 3, 2))
+        """
         return np.shape(base(self))
 
     def __getitem__(self, idx):
@@ -279,7 +330,17 @@ def variables(values, inner=None):
     """Duals of P independent variables, ``values`` a sequence of arrays (or numbers):
     the i-th has derivative 1 in direction i (trailing axis of length P) and 0 in the
     others. With ``inner`` (a function of a value) each value is first made a dual
-    in other directions (nesting)."""
+    in other directions (nesting).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.sensitivity.dual import variables
+    >>> a, b = variables([2.0, np.array([1.0, 3.0])])
+    >>> f = a * b + np.sin(a)                 # ∂f/∂a = b + cos a, ∂f/∂b = a
+    >>> [round(float(v), 6) for v in f.der[:, 0]], [float(v) for v in f.der[:, 1]]   # [-]
+    ([0.583853, 2.583853], [2.0, 2.0])
+    """
     P = len(values)
     out = []
     for i, v in enumerate(values):

@@ -58,6 +58,15 @@ class Scaled:
         ``hi − lo`` (1 where 0): d x / d z, the factor of every gradient in z.
     count : int
         Evaluations of ``fn``.
+
+    Examples
+    --------
+    >>> from assur.sensitivity.refine import Scaled
+    >>> ev = Scaled([0.40, 1.0], [0.43, 1.0], lambda x: float(x.sum()))  # bounds [m]
+    >>> [round(float(v), 6) for v in ev.span]  # the second variable is fixed: scaled by 1 [m]
+    [0.03, 1.0]
+    >>> round(ev([0.5, 0.0]), 3), round(ev([0.5, 0.0]), 3), ev.count   # one evaluation per point [m]
+    (1.415, 1.415, 1)
     """
 
     def __init__(self, lo, hi, fn, clip=False):
@@ -68,12 +77,28 @@ class Scaled:
         self._key = self._value = None
 
     def x(self, z):
-        """The design [SI] at the scaled point ``z``."""
+        """The design [SI] at the scaled point ``z``.
+
+        Examples
+        --------
+        >>> from assur.sensitivity.refine import Scaled
+        >>> ev = Scaled([0.40], [0.43], fn=None, clip=True)       # X01 in 0.40…0.43 m
+        >>> [round(float(v), 3) for v in ev.x([0.5])], [round(float(v), 3) for v in ev.x([1.2])]  # [m]
+        ([0.415], [0.43])
+        """
         z = np.asarray(z, float)
         return self.lo + (np.clip(z, 0.0, 1.0) if self.clip else z) * self.span
 
     def z(self, x):
-        """The scaled point of the design ``x`` [SI]."""
+        """The scaled point of the design ``x`` [SI].
+
+        Examples
+        --------
+        >>> from assur.sensitivity.refine import Scaled
+        >>> ev = Scaled([0.40], [0.43], fn=None)                  # X01 in 0.40…0.43 m
+        >>> [round(float(v), 6) for v in ev.z([0.415])]           # [-]
+        [0.5]
+        """
         return (np.asarray(x, float) - self.lo) / self.span
 
     def __call__(self, z):
@@ -101,6 +126,16 @@ class Refined:
         SLSQP iterations.
     evaluations : int
         Calls of :func:`sensitivities` (each: all positions, value and gradient).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity.refine import local_refine
+    >>> r = local_refine(examples.hitch_003(), [0.42, 0.67], "G(ГЦ, 56)", {"X01": (0.40, 0.43)})
+    >>> r.success, r.params, round(r.value)   # X01 [m], smallest G56 [N]
+    (True, {'X01': 0.4}, 34209)
+    >>> r.evaluations >= r.nit > 0            # sensitivity calls, SLSQP iterations
+    True
     """
 
     params: dict
@@ -139,6 +174,21 @@ def local_refine(mech, q, maximize, bounds, limits=(), *, maxiter=100, ftol=1e-1
     ------
     ModelError
         An unknown parameter, output or relation.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity.refine import local_refine
+    >>> m = examples.hitch_003()
+    >>> r = local_refine(m, [0.42, 0.545, 0.67], "G(ГЦ, 56)", {"X01": (0.40, 0.43)})  # S [m]
+    >>> r.success, r.params                   # the cylinder's pivot moves to its bound [m]
+    (True, {'X01': 0.4})
+    >>> round(r.start_value), round(r.value)  # smallest capacity at 56, from table 4.1's [N]
+    (33139, 34209)
+    >>> r = local_refine(m, [0.42, 0.545, 0.67], "G(ГЦ, 56)", {"X01": (0.40, 0.43)},
+    ...                  limits=[("p(ГЦ)", "<=", 16e6)])          # a pressure limit [Pa]
+    >>> round(r.params["X01"], 4), round(r.value)                 # [m], [N]
+    (0.4186, 32859)
     """
     from scipy.optimize import minimize
 
