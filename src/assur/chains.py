@@ -44,6 +44,23 @@ def point_coordinates(mech, point) -> frozenset:
     ------
     KeyError
         If ``point`` is not a point of the mechanism.
+
+    Examples
+    --------
+    The loader of seed 001 lab 1: the suspension axis 09 rides on the boom, which
+    the boom cylinder S alone turns; the tool's centre of mass S9 moves with both.
+
+    >>> from assur import examples
+    >>> from assur.chains import point_coordinates
+    >>> loader = examples.loader_lab1()
+    >>> sorted(point_coordinates(loader, "09")), sorted(point_coordinates(loader, "S9"))
+    (['S'], ['S', 'S1'])
+    >>> sorted(point_coordinates(loader, "01"))  # a frame point
+    []
+    >>> point_coordinates(loader, "99")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    KeyError: "loader_lab1: no point '99'; points: ['01', '03', '23', ...]"
     """
     table = _point_table(mech)
     if point not in table:
@@ -54,7 +71,19 @@ def point_coordinates(mech, point) -> frozenset:
 def link_coordinates(mech, link) -> frozenset:
     """The generalized coordinates that turn or stretch ``link`` (a link of
     :meth:`Mechanism.link` or a body named by a group): those that move any of its
-    points."""
+    points.
+
+    Examples
+    --------
+    The loader of seed 001 lab 1: the boom (link 3) turns with S only, the tool
+    (link 9) with both cylinders.
+
+    >>> from assur import examples
+    >>> from assur.chains import link_coordinates
+    >>> loader = examples.loader_lab1()
+    >>> sorted(link_coordinates(loader, "3")), sorted(link_coordinates(loader, "9"))
+    (['S'], ['S', 'S1'])
+    """
     declared = {l.name: (l.tail, l.head) for l in mech.links}
     if link in declared:
         pts = declared[link]
@@ -70,7 +99,23 @@ def link_coordinates(mech, link) -> frozenset:
 
 
 def moves(mech, coordinate, point=None, link=None) -> bool:
-    """True if ``coordinate`` moves ``point`` (or turns ``link``)."""
+    """True if ``coordinate`` moves ``point`` (or turns ``link``).
+
+    Examples
+    --------
+    The traverse cylinder S1 of the loader (seed 001 lab 1) does not move the
+    suspension axis 09 on the boom, but turns the tool (link 9):
+
+    >>> from assur import examples
+    >>> from assur.chains import moves
+    >>> loader = examples.loader_lab1()
+    >>> moves(loader, "S1", point="09"), moves(loader, "S1", link="9")
+    (False, True)
+    >>> moves(loader, "S1")
+    Traceback (most recent call last):
+    ...
+    ValueError: give exactly one of point=, link=
+    """
     if (point is None) == (link is None):
         raise ValueError("give exactly one of point=, link=")
     deps = point_coordinates(mech, point) if point is not None else link_coordinates(mech, link)

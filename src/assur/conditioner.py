@@ -65,6 +65,19 @@ def wedge_angle(D, H, h):
     ModelError
         If the layer does not touch the rollers (H < h) or is thicker than a roller
         can take (H − h ≥ D).
+
+    Examples
+    --------
+    A 45 mm layer entering a 5 mm gap between 200 mm rollers:
+
+    >>> import numpy as np
+    >>> from assur.conditioner import wedge_angle
+    >>> round(float(np.degrees(wedge_angle(0.200, 0.045, 0.005))), 2)  # β [deg]
+    36.87
+    >>> wedge_angle(0.200, 0.003, 0.005)  # the layer is thinner than the gap
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: wedge angle: need 0 ≤ H − h < D; got D = 0.2, H = 0.003, h = 0.005 m
     """
     D, H, h = (np.asarray(x, dtype=float) for x in (D, H, h))
     if np.any(H < h) or np.any(H - h >= D) or np.any(D <= 0):
@@ -81,6 +94,16 @@ def grips(D, H, h, friction_angle):
         Roller diameter, layer thickness, gap [m].
     friction_angle : float or array_like
         Friction angle φ of the crop on the roller [rad].
+
+    Examples
+    --------
+    The 200 mm rollers meet a 45 mm layer at β = 36.87° (gap 5 mm): a friction angle
+    of 40° grips it, 35° does not.
+
+    >>> import numpy as np
+    >>> from assur.conditioner import grips
+    >>> grips(0.200, 0.045, 0.005, np.radians([40.0, 35.0])).tolist()
+    [True, False]
     """
     return np.asarray(friction_angle) > wedge_angle(D, H, h)
 
@@ -95,6 +118,15 @@ def min_roller_diameter(H, h, friction_angle):
         Layer thickness and gap [m].
     friction_angle : float or array_like
         Friction angle φ [rad], 0 < φ < π/2.
+
+    Examples
+    --------
+    A 45 mm layer, 5 mm gap, friction angle 40°: the rollers need D > 171 mm.
+
+    >>> import numpy as np
+    >>> from assur.conditioner import min_roller_diameter
+    >>> round(float(min_roller_diameter(0.045, 0.005, np.radians(40))), 4)  # [m]
+    0.171
     """
     phi = np.asarray(friction_angle, dtype=float)
     if np.any(phi <= 0) or np.any(phi >= np.pi / 2):
@@ -109,6 +141,16 @@ def speed_ratio(D, H, h):
     printed expression is below 1 for any positive D, H, h; its reciprocal
     (D + H + h)/D falls in that range for usual rollers. Both are shown by the
     bundled model (flagged); this function returns the printed form.
+
+    Examples
+    --------
+    200 mm rollers, a 45 mm layer, a 5 mm gap: the printed form gives 0.8, its
+    reciprocal the lab's 1.25.
+
+    >>> from assur.conditioner import speed_ratio
+    >>> r = speed_ratio(0.200, 0.045, 0.005)
+    >>> round(float(r), 4), round(1 / float(r), 4)  # [-], [-]
+    (0.8, 1.25)
     """
     D = np.asarray(D, dtype=float)
     return D / (D + np.asarray(H, dtype=float) + np.asarray(h, dtype=float))
@@ -136,6 +178,21 @@ def spring_stroke(kin, spring):
     (L, dL) : numpy.ndarray
         [m] and [m/m], the kinematics' shape; λ' = u·(r_b' − r_a'), u the unit vector
         a → b (exact, from the analogs of its ends).
+
+    Examples
+    --------
+    The bundled conditioner of lab 2 (four-bar, spring ``sp``) over its eight gaps
+    Y = 0.205 … 0.240 m: the spring stretches by about half of Y's change.
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.conditioner import spring_stroke
+    >>> kin = examples.conditioner_lab2().solve(examples.conditioner_lab2_range())
+    >>> lam, dlam = spring_stroke(kin, "sp")
+    >>> np.round(lam[[0, -1]], 4).tolist()  # λ at Ymin, Ymax [m]
+    [0.3922, 0.4096]
+    >>> np.round(dlam[[0, -1]], 4).tolist()  # λ' [m/m]
+    [0.4872, 0.509]
     """
     if kin.k != 1:
         raise ModelError("spring_stroke: one generalized coordinate is needed")
@@ -170,6 +227,21 @@ def specific_pressure(kin, spring, roller_length):
     ------
     ModelError
         Where λ' = 0 (the spring does not stretch as Y changes: I is undefined).
+
+    Examples
+    --------
+    The bundled conditioner of lab 2 (two springs, rollers L = 1.6 m) at its
+    smallest and largest gap:
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.conditioner import specific_pressure
+    >>> kin = examples.conditioner_lab2().solve(examples.conditioner_lab2_range())
+    >>> I, p = specific_pressure(kin, "sp", 1.6)
+    >>> np.round(I[[0, -1]], 3).tolist()  # I at Ymin, Ymax [-]
+    [2.053, 1.965]
+    >>> np.round(p[[0, -1]], -1).tolist()  # p_c [N/m]
+    [19440.0, 20540.0]
     """
     from .statics import spring_states
     L, dL = spring_stroke(kin, spring)
@@ -194,6 +266,19 @@ class SpringDesign:
         p_c(Y) with that spring [N/m].
     spread : float
         (max − min)/mean of p_c over the range [-].
+
+    Examples
+    --------
+    The design :func:`flattest_spring` finds for the bundled conditioner of lab 2:
+
+    >>> from assur import examples
+    >>> from assur.conditioner import flattest_spring
+    >>> m = examples.conditioner_lab2()
+    >>> d = flattest_spring(m, examples.conditioner_lab2_range(), "sp", 20000.0, 1.6)
+    >>> round(d.preload, -1), round(d.spread, 3)  # F0 [N], spread [-]
+    (32110.0, 0.044)
+    >>> d.pressure.shape  # one p_c per position
+    (8,)
     """
 
     preload: float
@@ -224,6 +309,22 @@ def flattest_spring(mech, q, spring, target, roller_length, min_rate=0.0):
     Returns
     -------
     SpringDesign
+
+    Examples
+    --------
+    Hold 20 kN/m on the bundled conditioner of lab 2 (rollers L = 1.6 m): the best is
+    a constant-force spring (rate 0) with F0 ≈ 32.1 kN, p_c within 4.4 %; a real
+    spring of at least 20 kN/m spreads it more.
+
+    >>> from assur import examples
+    >>> from assur.conditioner import flattest_spring
+    >>> m, Y = examples.conditioner_lab2(), examples.conditioner_lab2_range()
+    >>> d = flattest_spring(m, Y, "sp", 20000.0, 1.6)
+    >>> round(d.preload, -1), round(d.rate, 1), round(d.spread, 3)  # [N], [N/m], [-]
+    (32110.0, 0.0, 0.044)
+    >>> stiff = flattest_spring(m, Y, "sp", 20000.0, 1.6, min_rate=20000.0)
+    >>> round(stiff.rate, 1), round(stiff.spread, 3)  # [N/m], [-]
+    (20000.0, 0.055)
     """
     from scipy.optimize import lsq_linear
 

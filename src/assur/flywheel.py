@@ -72,6 +72,28 @@ def turn_grid(q):
         The positions of the periodic grid (the end point, if given, dropped).
     h : float
         The signed step [rad], n·|h| = 2π.
+
+    Raises
+    ------
+    ValueError
+        Fewer than 9 positions, not uniform, or not exactly one turn.
+
+    Examples
+    --------
+    37 angles 10° apart with the end point, or 36 without, are the same grid:
+
+    >>> import numpy as np
+    >>> from assur.flywheel import turn_grid
+    >>> q = np.radians(np.arange(0, 361, 10))
+    >>> n, h = turn_grid(q)
+    >>> n, round(float(np.degrees(h)), 6)  # positions, step [deg]
+    (36, 10.0)
+    >>> turn_grid(q[:-1])[0], round(float(np.degrees(turn_grid(-q)[1])), 6)  # a clockwise turn
+    (36, -10.0)
+    >>> turn_grid(q[:19])
+    Traceback (most recent call last):
+    ...
+    ValueError: the crank angles must cover exactly one turn: 19 positions at 10° span 190° without the end point, 180° with it
     """
     q = np.asarray(q, dtype=float)
     if q.ndim != 1 or q.size < 9:
@@ -113,6 +135,19 @@ def periodic_integral(f, h, what="the integrand"):
     E : ndarray, shape (n,)
         E[0] = 0.
     mean : float
+
+    Examples
+    --------
+    The integral of 2 + cos φ less its mean 2 is sin φ, exactly at the positions:
+
+    >>> import numpy as np
+    >>> from assur.flywheel import periodic_integral
+    >>> q = np.radians(np.arange(0, 360, 10))  # one turn without the end point [rad]
+    >>> E, mean = periodic_integral(2 + np.cos(q), q[1] - q[0])
+    >>> round(mean, 12), round(float(E[9]), 12)  # mean, ∫ at φ = 90°
+    (2.0, 1.0)
+    >>> bool(np.allclose(E, np.sin(q), rtol=0, atol=1e-12))
+    True
     """
     f = np.asarray(f, dtype=float)
     n = f.size
@@ -127,7 +162,22 @@ def periodic_integral(f, h, what="the integrand"):
 
 
 def periodic_derivative(f, h, what="the function"):
-    """df/dφ at the positions of a uniform turn (spectral)."""
+    """df/dφ at the positions of a uniform turn (spectral).
+
+    Examples
+    --------
+    d(sin φ)/dφ = cos φ, exact for a resolved mode; a clockwise turn (h < 0) flips
+    the sign:
+
+    >>> import numpy as np
+    >>> from assur.flywheel import periodic_derivative
+    >>> q = np.radians(np.arange(0, 360, 10))  # [rad]
+    >>> d = periodic_derivative(np.sin(q), q[1] - q[0])
+    >>> bool(np.allclose(d, np.cos(q), rtol=0, atol=1e-12))
+    True
+    >>> round(float(periodic_derivative(np.sin(q), -(q[1] - q[0]))[0]), 12)  # at φ = 0
+    -1.0
+    """
     f = np.asarray(f, dtype=float)
     n = f.size
     F, k = _spectrum(f, what)
@@ -138,7 +188,17 @@ def periodic_derivative(f, h, what="the function"):
 
 
 def speed_of(T0, energy, inertia):
-    """ω(φ) = √(2(T0 + ΔE)/I) [rad/s] (magnitude)."""
+    """ω(φ) = √(2(T0 + ΔE)/I) [rad/s] (magnitude).
+
+    Examples
+    --------
+    50 J in 1 kg·m² is 10 rad/s; 25 J more make it √150:
+
+    >>> import numpy as np
+    >>> from assur.flywheel import speed_of
+    >>> np.round(speed_of(50.0, np.array([0.0, 25.0]), 1.0), 4).tolist()  # [rad/s]
+    [10.0, 12.2474]
+    """
     return np.sqrt(2.0 * (T0 + energy) / inertia)
 
 
@@ -179,6 +239,21 @@ class Flywheel:
     J_classical, J_mertsalov : float
         The approximations ΔE_max/(δω_m²) and swing(ΔE − ½J_red·ω_m²)/(δω_m²) −
         mean(J_red) [kg·m²] for the same δ.
+
+    Examples
+    --------
+    A crank of constant J_red = 0.5 kg·m² loaded by M_c = 100·sin φ N·m at
+    ω_m = 10 rad/s, δ = 0.05: the loads' work swings by 2·100 J, the speed between
+    ω_m(1 ± δ/2):
+
+    >>> import numpy as np
+    >>> from assur.flywheel import flywheel
+    >>> q = np.radians(np.arange(0, 361, 10))  # [rad]
+    >>> fw = flywheel(q, np.full(q.shape, 0.5), 100 * np.sin(q), 10.0, delta=0.05)
+    >>> round(fw.energy_swing, 9), round(fw.omega_max, 9), round(fw.omega_min, 9)  # [J], [rad/s]
+    (200.0, 10.25, 9.75)
+    >>> round(fw.J_classical, 9), round(fw.J_mertsalov, 9)  # [kg·m²]
+    (40.0, 39.5)
     """
 
     q: np.ndarray
@@ -202,7 +277,25 @@ class Flywheel:
     def rates(self, direction):
         """(q̇, q̈) over the positions for a crank turning counter-clockwise
         (``direction`` = +1) or clockwise (−1), to repeat the kinetostatics with
-        this motion (:func:`assur.inertia.crank_dynamics`)."""
+        this motion (:func:`assur.inertia.crank_dynamics`).
+
+        Examples
+        --------
+        The crank of J_red = 0.5 kg·m², M_c = 100·sin φ N·m with its flywheel for
+        δ = 0.05 at 10 rad/s, turning clockwise:
+
+        >>> import numpy as np
+        >>> from assur.flywheel import flywheel
+        >>> q = np.radians(np.arange(0, 361, 10))  # [rad]
+        >>> fw = flywheel(q, np.full(q.shape, 0.5), 100 * np.sin(q), 10.0, delta=0.05)
+        >>> qdot, qddot = fw.rates(-1)
+        >>> round(float(qdot[0]), 9), round(float(qddot[9]), 6)  # [rad/s], [rad/s²] at 90°
+        (-9.75, 2.5)
+        >>> fw.rates(0)
+        Traceback (most recent call last):
+        ...
+        ValueError: direction must be one of: [1, -1]
+        """
         if direction not in (1, -1):
             raise ValueError("direction must be one of: [1, -1]")
         return direction * self.omega, self.epsilon
@@ -243,6 +336,26 @@ def flywheel(q, J_red, M_c, omega_mean, delta=None, J_flywheel=None, dJ_red=None
         Not one uniform turn, a turn too coarse, both or neither of delta and
         J_flywheel, a δ that the mechanism reaches without a flywheel, or a mean
         speed the crank cannot keep (it would stop).
+
+    Examples
+    --------
+    Constant J_red = J0 and M_c = A·sin φ have the exact flywheel
+    J_f = 2A/(δ·ω_m²) − J0: 2·100/(0.05·10²) − 0.5 = 39.5 kg·m². Given that
+    flywheel, the irregularity comes back:
+
+    >>> import numpy as np
+    >>> from assur.flywheel import flywheel
+    >>> q = np.radians(np.arange(0, 361, 10))  # one turn with its end point [rad]
+    >>> J_red, M_c = np.full(q.shape, 0.5), 100 * np.sin(q)  # [kg·m²], [N·m]
+    >>> fw = flywheel(q, J_red, M_c, 10.0, delta=0.05)
+    >>> round(fw.J_flywheel, 9)  # [kg·m²]
+    39.5
+    >>> round(flywheel(q, J_red, M_c, 10.0, J_flywheel=39.5).delta, 9)  # [-]
+    0.05
+    >>> flywheel(q, J_red, M_c, 10.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: give exactly one of delta and J_flywheel
     """
     if (delta is None) == (J_flywheel is None):
         raise ValueError("give exactly one of delta and J_flywheel")

@@ -51,6 +51,20 @@ class LiftTest:
         Share of the relief-valve setting the test runs at [-] (ISO 789-2: 0.9).
     positions : int
         Number of positions evenly spaced over the lift range (at least 6).
+
+    Examples
+    --------
+    The test the bundled seed-003 hitch declares, and the standard's minimum of six
+    positions enforced:
+
+    >>> from assur import io
+    >>> from assur.lift_test import LiftTest
+    >>> io.load(io.bundled("hitch_003")).lift_test
+    LiftTest(hitch='56', frame='F610', cylinder=None, pressure_share=0.9, positions=6)
+    >>> LiftTest("56", positions=5)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: lift test: at least 6 positions over the lift range (ISO 789-2), got 5
     """
 
     hitch: str
@@ -89,6 +103,21 @@ class LiftTestResult:
         Vertical force available at the hitch points [N].
     frame_force : ndarray, shape (n,) or None
         Vertical force available at the frame's load point [N].
+
+    Examples
+    --------
+    The bundled seed-003 hitch over its travel S = 0.420 … 0.670 m: the hitch point
+    56 rises from 0.2 m (the seed's condition Y56(Smin) = 0.2 m) in six even steps.
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.lift_test import lift_test
+    >>> model = io.load(io.bundled("hitch_003"))
+    >>> r = lift_test(model.mechanism, model.lift_test, (0.42, 0.67))
+    >>> np.round(r.height, 4).tolist()  # Y56 [m]
+    [0.2, 0.3686, 0.5373, 0.7059, 0.8745, 1.0432]
+    >>> round(r.pressure / 1e6, 2), round(r.force_cylinder / 1e3, 1)  # [MPa], [kN]
+    (15.75, 133.0)
     """
 
     test: LiftTest
@@ -102,12 +131,42 @@ class LiftTestResult:
 
     @property
     def hitch_minimum(self) -> float:
-        """The smallest force at the hitch points over the lift range [N]."""
+        """The smallest force at the hitch points over the lift range [N].
+
+        Examples
+        --------
+        The bundled seed-003 hitch lifts least at its lowest position:
+
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.lift_test import lift_test
+        >>> model = io.load(io.bundled("hitch_003"))
+        >>> r = lift_test(model.mechanism, model.lift_test, (0.42, 0.67))
+        >>> round(r.hitch_minimum / 1e3, 2)  # [kN]
+        29.83
+        >>> int(np.argmin(r.hitch_force))  # the position
+        0
+        """
         return float(self.hitch_force.min())
 
     @property
     def frame_minimum(self) -> float | None:
-        """The smallest force at the frame over the lift range [N] (None without one)."""
+        """The smallest force at the frame over the lift range [N] (None without one).
+
+        Examples
+        --------
+        The bundled seed-003 hitch's test frame (point F610, 610 mm behind 56), and
+        the same test without a frame:
+
+        >>> from assur import io
+        >>> from assur.lift_test import LiftTest, lift_test
+        >>> model = io.load(io.bundled("hitch_003"))
+        >>> r = lift_test(model.mechanism, model.lift_test, (0.42, 0.67))
+        >>> round(r.frame_minimum / 1e3, 2)  # [kN]
+        28.67
+        >>> print(lift_test(model.mechanism, LiftTest("56"), (0.42, 0.67)).frame_minimum)
+        None
+        """
         return None if self.frame_force is None else float(self.frame_force.min())
 
 
@@ -144,6 +203,27 @@ def lift_test(mech, test: LiftTest, s_range, iterations=50) -> LiftTestResult:
     ModelError
         Without such a cylinder or points, with a hitch point whose height is not
         monotonic in S over the range, or with a position that does not converge.
+
+    Examples
+    --------
+    The bundled seed-003 hitch (its model file's ``[lift_test]``: hitch point 56,
+    frame point F610, 90 % of the relief pressure, six positions):
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.lift_test import LiftTest, lift_test
+    >>> model = io.load(io.bundled("hitch_003"))
+    >>> r = lift_test(model.mechanism, model.lift_test, (0.42, 0.67))
+    >>> np.round(r.s, 4).tolist()  # cylinder length at the positions [m]
+    [0.42, 0.4611, 0.5071, 0.5567, 0.6103, 0.67]
+    >>> np.round(r.hitch_force / 1e3, 1).tolist()  # at the hitch points [kN]
+    [29.8, 34.6, 37.7, 40.6, 44.2, 50.7]
+    >>> np.round(r.frame_force / 1e3, 1).tolist()  # at the frame [kN]
+    [28.7, 31.2, 31.8, 31.6, 30.8, 30.3]
+    >>> lift_test(model.mechanism, LiftTest("99"), (0.42, 0.67))
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: lift test of 'hitch_003': no point '99' in the model
     """
     cyl = _cylinder(mech, test.cylinder)
     c = cyl.coordinate

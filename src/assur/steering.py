@@ -75,6 +75,18 @@ def ideal_outer_angle(inner, track, wheelbase):
         Inner wheel's angle α [rad], in [0, π/2).
     track, wheelbase : float
         A and L [m].
+
+    Examples
+    --------
+    The lab's axle (seed 001 lab 4, §4.5: A = 1456 mm, L = 2534 mm) with the inner
+    wheel at 51°: Ackermann asks 35.84° of the outer one (the lab's linkage gives 34°).
+
+    >>> import numpy as np
+    >>> from assur.steering import ideal_outer_angle
+    >>> round(float(np.degrees(ideal_outer_angle(np.radians(51), 1.456, 2.534))), 2)  # [deg]
+    35.84
+    >>> float(ideal_outer_angle(0.0, 1.456, 2.534))  # straight ahead [rad]
+    0.0
     """
     t = np.tan(np.asarray(inner, dtype=float))
     return np.arctan(t / (1.0 + track / wheelbase * t))
@@ -82,13 +94,44 @@ def ideal_outer_angle(inner, track, wheelbase):
 
 def outer_angle_error(inner, outer, track, wheelbase):
     """β − β* [rad]: how far the outer wheel is from the Ackermann angle; unlike
-    :func:`ackermann_deviation` it is defined straight ahead too (0 there)."""
+    :func:`ackermann_deviation` it is defined straight ahead too (0 there).
+
+    Examples
+    --------
+    The lab's check (seed 001 lab 4, §4.5): α = 51°, β = 34°, A = 1456 mm,
+    L = 2534 mm; the outer wheel lags the Ackermann angle by 1.84°:
+
+    >>> import numpy as np
+    >>> from assur.steering import outer_angle_error
+    >>> err = outer_angle_error(np.radians(51), np.radians(34), 1.456, 2.534)
+    >>> round(float(np.degrees(err)), 2)  # [deg]
+    -1.84
+    >>> float(outer_angle_error(0.0, 0.0, 1.456, 2.534))  # straight ahead [rad]
+    0.0
+    """
     return np.asarray(outer, dtype=float) - ideal_outer_angle(inner, track, wheelbase)
 
 
 def turning_radius(inner, track, wheelbase):
     """Turning radius R = L·ctg α + a [m] (seed 001 lab 4 eq. 12; a = A/2), the
-    minimum R_min at the largest inner angle α_max."""
+    minimum R_min at the largest inner angle α_max.
+
+    Examples
+    --------
+    The lab's axle (seed 001 lab 4: A = 1456 mm, L = 2534 mm) at α_max = 51°:
+
+    >>> import numpy as np
+    >>> from assur.steering import turning_radius
+    >>> round(float(turning_radius(np.radians(51), 1.456, 2.534)), 3)  # R_min [m]
+    2.78
+
+    Straight ahead ctg α is not finite, and the function refuses:
+
+    >>> turning_radius(0.0, 1.456, 2.534)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: steering angles must be in (0°, 90°), got [0.]° …: ctg is not finite at 0° (straight ahead)
+    """
     (a,) = _angles(inner)
     return wheelbase / np.tan(a) + track / 2.0
 
@@ -124,7 +167,18 @@ def resisting_moment(wheel_load, kingpin_offset, tyre_width, friction):
 
 def rod_flow(area, rod_speed):
     """Flow into a cylinder Q = A·v [m³/s] for the pressurised area A [m²] and the
-    rod speed v [m/s] (seed 001 lab 4 eq. 25 by continuity)."""
+    rod speed v [m/s] (seed 001 lab 4 eq. 25 by continuity).
+
+    Examples
+    --------
+    A 40 mm bore pushed at 50 mm/s takes 3.77 l/min (the sign of v does not matter):
+
+    >>> import numpy as np
+    >>> from assur.steering import rod_flow
+    >>> area = np.pi * 0.040**2 / 4  # [m²]
+    >>> round(float(rod_flow(area, -0.05)) * 60e3, 3)  # [l/min]
+    3.77
+    """
     return np.asarray(area, dtype=float) * np.abs(np.asarray(rod_speed, dtype=float))
 
 
@@ -142,6 +196,20 @@ def power_flow(moments, rates, rod_speed, pressure):
         Rod speed v [m/s]: ω_i = φ_i′·v.
     pressure : array_like
         The line's pressure p [Pa] (not 0).
+
+    Examples
+    --------
+    Two wheels each resisting 3453.6 N·m (:func:`resisting_moment` of the lab's
+    inputs), turning at 5 and 4 rad per metre of rod travel, rod at 50 mm/s, 10 MPa:
+
+    >>> from assur.steering import power_flow
+    >>> q = power_flow([3453.6, 3453.6], [5.0, -4.0], 0.05, 10e6)  # [m³/s]
+    >>> round(float(q) * 60e3, 3)  # [l/min]
+    9.325
+    >>> power_flow([3453.6], [5.0], 0.05, 0.0)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: the flow from the power balance needs a non-zero pressure
     """
     p = np.asarray(pressure, dtype=float)
     if np.any(p == 0):

@@ -32,7 +32,22 @@ SCAN_POINTS = 257
 
 
 class DesignError(ModelError):
-    """A design condition has no root, or several, in its bracket."""
+    """A design condition has no root, or several, in its bracket.
+
+    Examples
+    --------
+    Seed 003's condition Y56(Smin) = 0.2 m has its root L4 = 0.6613 m outside
+    [0.7, 0.8] m:
+
+    >>> from assur import examples
+    >>> from assur.synthesis import Condition, DesignError, solve_conditions
+    >>> cond = Condition("L4", (0.7, 0.8), {"S": 0.42}, "Y56", 0.2)
+    >>> try:
+    ...     solve_conditions(examples.hitch_003(), [cond])
+    ... except DesignError as e:
+    ...     print(e)
+    condition Y56(S = 0.42) = 0.2 for L4: no root for L4 in the bracket [0.7, 0.8]: Y56 − target stays between -0.3006 and -0.08489
+    """
 
 
 @dataclass(frozen=True)
@@ -56,6 +71,17 @@ class Condition:
     unit : assur.quantities.Unit, optional
         The unit to show the target (and the residual) in: the one the file wrote
         ``equals`` in (``"90 deg"``); None: the quantity's default (m, or degrees).
+
+    Examples
+    --------
+    Seed 003 §2.3: L7 such that the implement 6 stands upright, φ6(Sp) = 90°, at the
+    working stroke Sp (a parameter named as the position):
+
+    >>> import math
+    >>> from assur.synthesis import Condition
+    >>> cond = Condition("L7", (0.56, 1.05), {"S": "Sp"}, "phi6", math.pi / 2)
+    >>> cond.describe()
+    'phi6(S = Sp) = 1.5708 for L7'
     """
 
     unknown: str
@@ -67,6 +93,17 @@ class Condition:
     unit: object = None
 
     def describe(self):
+        """The condition in one line, ``quantity(position) = target for unknown (source)``
+        (the target in SI).
+
+        Examples
+        --------
+        Seed 003 §2.2, with where it comes from:
+
+        >>> from assur.synthesis import Condition
+        >>> Condition("L4", (0.48, 0.9), {"S": "Smin"}, "Y56", 0.2, source="seed 003 §2.2").describe()
+        'Y56(S = Smin) = 0.2 for L4 (seed 003 §2.2)'
+        """
         at = ", ".join(f"{k} = {v}" for k, v in self.at.items())
         src = f" ({self.source})" if self.source else ""
         return f"{self.quantity}({at}) = {self.target:.6g} for {self.unknown}{src}"
@@ -74,7 +111,20 @@ class Condition:
 
 @dataclass
 class SolvedCondition:
-    """The outcome of one condition: the root [SI] and its residual."""
+    """The outcome of one condition: the root [SI] and its residual.
+
+    Examples
+    --------
+    Seed 003's L4 from Y56(Smin) = 0.2 m (printed L4 = 0.6613 m): the residual is at
+    rounding level, and the bracket's scan counts among the evaluations.
+
+    >>> from assur import examples
+    >>> from assur.synthesis import Condition, solve_conditions
+    >>> cond = Condition("L4", (0.48, 0.9), {"S": 0.42}, "Y56", 0.2)
+    >>> _, (sc,) = solve_conditions(examples.hitch_003(), [cond])
+    >>> round(sc.value, 4), abs(sc.residual) < 1e-12, sc.evaluations > 257  # L4 [m]
+    (0.6613, True, True)
+    """
 
     condition: Condition
     value: float
@@ -140,6 +190,19 @@ def condition_residual(mech, cond, values):
         ``quantity(at) − target``; angles compared modulo 2π [m or rad].
     ok : ndarray of bool, shape (m,)
         False where the mechanism does not assemble (its residual is meaningless).
+
+    Examples
+    --------
+    Y56(S = 0.42 m) − 0.2 m of the seed-003 hitch for three values of L4: it changes
+    sign near the seed's root L4 = 0.6613 m.
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.synthesis import Condition, condition_residual
+    >>> cond = Condition("L4", (0.48, 0.9), {"S": 0.42}, "Y56", 0.2)
+    >>> r, ok = condition_residual(examples.hitch_003(), cond, [0.6, 0.6613, 0.7])
+    >>> np.round(r * 1e3, 3).tolist(), ok.tolist()  # [mm]
+    ([134.518, -0.037, -84.89], [True, True, True])
     """
     params = {cond.unknown: np.asarray(values, float)}
     m = mech.with_params(**params)
@@ -190,6 +253,27 @@ def solve_conditions(mech, conditions, xtol=1e-13):
     DesignError
         When a condition has no root or several roots in its bracket, or the
         conditions cannot be ordered (two unknowns fixed by one condition).
+
+    Examples
+    --------
+    Seed 003's three Find blocks from the seed's start values, given in any order:
+    solved L4 first, then Sp, then L7, to the printed L4 = 0.6613, Sp = 0.4694,
+    L7 = 0.7522 m.
+
+    >>> import math
+    >>> from assur import examples
+    >>> from assur.synthesis import Condition, solve_conditions
+    >>> conditions = [
+    ...     Condition("L7", (0.56, 1.05), {"S": "Sp"}, "phi6", math.pi / 2),  # φ6(Sp) = 90°
+    ...     Condition("Sp", (0.42, 0.67), {"S": "Sp"}, "Y56", 0.4),  # Y56(Sp) = 0.4 m
+    ...     Condition("L4", (0.48, 0.9), {"S": 0.42}, "Y56", 0.2),  # Y56(Smin) = 0.2 m
+    ... ]
+    >>> start = examples.hitch_003(L4=0.6, L7=0.7, Sp=0.545)
+    >>> mech, solved = solve_conditions(start, conditions)
+    >>> [s.condition.unknown for s in solved]
+    ['L4', 'Sp', 'L7']
+    >>> [round(mech.params[k], 4) for k in ("L4", "Sp", "L7")]  # [m]
+    [0.6613, 0.4694, 0.7522]
     """
     conds = list(conditions)
     unknowns = [c.unknown for c in conds]

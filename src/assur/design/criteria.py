@@ -68,7 +68,25 @@ REDUCTIONS = ("min", "max", "span")
 @dataclass(frozen=True)
 class Limit:
     """The bound of a constraint: a number [SI], a parameter name (its value per
-    design), or ``"original"`` (the value of the file's own design)."""
+    design), or ``"original"`` (the value of the file's own design).
+
+    Examples
+    --------
+    The bundled seed-003 design problem keeps the hitch point 56 as low as the seed's
+    design goes ("original"), and the pressure within the relief setting (None: the
+    kind's default limit):
+
+    >>> from assur import io
+    >>> from assur.design import Limit, load_problem
+    >>> pb = load_problem(io.bundled("hitch_003_design"))
+    >>> [(c.name, c.limit.value, c.limit.sense) for c in pb.constraints]  # doctest: +NORMALIZE_WHITESPACE
+    [('min Y(56)', 'original', 'at_most'), ('max Y(56)', 'original', 'at_least'),
+     ('max p(ГЦ)', None, 'at_most')]
+    >>> Limit(0.2, "below")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: a limit is at_least or at_most, got 'below'
+    """
 
     value: object
     sense: str  # "at_least" | "at_most"
@@ -88,6 +106,26 @@ class Reductions:
     params : callable
         ``params(ref)`` → the value of a parameter name or number per design,
         shape (m,) [SI].
+
+    Examples
+    --------
+    Two designs of the seed-003 hitch whose point 56 spans 0.20 … 1.04 m and
+    0.25 … 0.98 m over 50 positions (lowest at the first, highest at the last):
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.design import Limit, criterion
+    >>> from assur.design.criteria import Reductions
+    >>> hitch = examples.hitch_003()
+    >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+    ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+    >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+    ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+    ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+    >>> red.mins["Y(56)"].tolist(), red.argmaxs["Y(56)"].tolist()  # [m], position indices
+    ([0.2, 0.25], [49, 49])
+    >>> round(float(red.param("L4")), 4)  # a parameter's value [m]
+    0.6613
     """
 
     def __init__(self, mins, maxs, argmins, argmaxs, params):
@@ -96,7 +134,24 @@ class Reductions:
         self.param = params
 
     def subset(self, mask) -> "Reductions":
-        """The reductions of the designs where ``mask`` is True."""
+        """The reductions of the designs where ``mask`` is True.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> second = red.subset([False, True])
+        >>> second.mins["Y(56)"].tolist(), second.maxs["Y(56)"].tolist()  # [m]
+        ([0.25], [0.98])
+        """
         mask = np.asarray(mask)
         param = self.param
 
@@ -106,7 +161,25 @@ class Reductions:
                             (self.mins, self.maxs, self.argmins, self.argmaxs)), value)
 
     def of(self, output, how):
-        """``min``, ``max`` or ``span`` of ``output`` per design [its unit]."""
+        """``min``, ``max`` or ``span`` of ``output`` per design [its unit].
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> np.round(red.of("Y(56)", "span"), 3).tolist()  # lift range [m]
+        [0.84, 0.73]
+        >>> red.of("Y(56)", "min").tolist()  # [m]
+        [0.2, 0.25]
+        """
         if how == "min":
             return self.mins[output]
         if how == "max":
@@ -114,7 +187,23 @@ class Reductions:
         return self.maxs[output] - self.mins[output]
 
     def where(self, output, how):
-        """Position index of the ``min`` or ``max`` (``span``: of the max) per design."""
+        """Position index of the ``min`` or ``max`` (``span``: of the max) per design.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> red.where("Y(56)", "min").tolist(), red.where("Y(56)", "span").tolist()
+        ([0, 0], [49, 49])
+        """
         return self.argmins[output] if how == "min" else self.argmaxs[output]
 
 
@@ -148,6 +237,22 @@ class Criterion:
         (:func:`jet_reductions`); None for a kind without an exact gradient (see the
         module docstring). A property: the kind's own ``gradient`` bound to this
         criterion.
+
+    Examples
+    --------
+    The seed-003 hitch's highest position of the hitch point 56 as a constraint,
+    and its lift capacity there as an objective:
+
+    >>> from assur import examples
+    >>> from assur.design import Limit, criterion
+    >>> hitch = examples.hitch_003()
+    >>> top = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+    ...                 limit=Limit(1.0, "at_least"))  # [m]
+    >>> top.name, top.outputs, top.unit.text
+    ('max Y(56)', ('Y(56)',), 'm')
+    >>> g = criterion("capacity", {"point": "56"}, hitch, sense="maximize")
+    >>> g.name, g.show(29825.4)  # [N]
+    ('min G(ГЦ, 56)', '29825.4 N')
     """
 
     kind: str
@@ -161,13 +266,50 @@ class Criterion:
 
     @property
     def gradient(self):
+        """``gradient(sens, red)`` → d(value)/d(variables), or None (see the class
+        attributes).
+
+        Examples
+        --------
+        d(max Y56)/d(variables) of the bundled seed-003 design problem at the seed's
+        design; the frame pivot's height Y01 (second variable) lifts the top position
+        2.62 times as much, as a central difference of two evaluated designs says:
+
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.design import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> sens, red = pb.jet(pb.x0)  # exact sensitivities at the seed's design
+        >>> top = pb.constraints[1]
+        >>> top.name, round(float(top.gradient(sens, red)[1]), 3)  # [m/m]
+        ('max Y(56)', 2.621)
+        >>> step = np.array([0, 1e-6, 0, 0, 0, 0, 0, 0])  # Y01 ± 1 µm [m]
+        >>> b = pb.evaluate([pb.x0 + step, pb.x0 - step])
+        >>> round(float(b.values[0, 1] - b.values[1, 1]) / 2e-6, 3)  # [m/m]
+        2.621
+        """
         g = CRITERIA[self.kind].gradient
         return None if g is None else partial(g, self)
 
     def bound_gradient(self, names) -> np.ndarray:
         """d(limit)/d(variables) of a constraint, shape (len(names),) [SI]: ±1 for the
         variable a limit names (``"p_relief"``, ``"-a"``), 0 for a number,
-        ``"original"`` or a parameter that is not a variable."""
+        ``"original"`` or a parameter that is not a variable.
+
+        Examples
+        --------
+        The seed-003 hitch's pressure held within its relief setting ``Pgc_max``: a
+        variable only when that parameter is one.
+
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> c = criterion("pressure", {"cylinder": "ГЦ"}, examples.hitch_003(),
+        ...               limit=Limit(None, "at_most"))
+        >>> c.args["relief"], c.bound_gradient(["X01", "Pgc_max"]).tolist()
+        ('Pgc_max', [0.0, 1.0])
+        >>> c.bound_gradient(["X01", "Y01"]).tolist()
+        [0.0, 0.0]
+        """
         v = self.limit.value
         if v is None:
             v = CRITERIA[self.kind].limit_ref(self)
@@ -182,7 +324,24 @@ class Criterion:
     def margin_gradient(self, sens, red, names) -> np.ndarray:
         """d(:meth:`margin`)/d(variables) of a constraint at one design, shape
         (len(names),) [SI]: the gradient of the value less (``at_least``) or minus
-        (``at_most``) that of the limit (:meth:`bound_gradient`)."""
+        (``at_most``) that of the limit (:meth:`bound_gradient`).
+
+        Examples
+        --------
+        In the bundled seed-003 design problem, ``max Y(56) ≥ original`` has the
+        gradient of its value as margin gradient, ``min Y(56) ≤ original`` minus it:
+
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.design import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> sens, red = pb.jet(pb.x0)  # exact sensitivities at the seed's design
+        >>> low, top = pb.constraints[:2]
+        >>> np.round(top.margin_gradient(sens, red, pb.names)[:2], 3).tolist()  # X01, Y01 [m/m]
+        [-0.022, 2.621]
+        >>> np.round(low.margin_gradient(sens, red, pb.names)[:2], 3).tolist()  # [m/m]
+        [0.131, -4.457]
+        """
         if self.gradient is None:
             raise ModelError(f"constraint {self.name}: a {self.kind} criterion has no exact "
                              f"gradient")
@@ -190,16 +349,77 @@ class Criterion:
         return g if self.limit.sense == "at_least" else -g
 
     def value(self, red: Reductions) -> np.ndarray:
-        """The criterion's value per design, shape (m,) [SI]."""
+        """The criterion's value per design, shape (m,) [SI].
+
+        Examples
+        --------
+        ``max Y(56)`` of two designs of the seed-003 hitch:
+
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> c.value(red).tolist()  # [m]
+        [1.04, 0.98]
+        """
         return CRITERIA[self.kind].value(self, red)
 
     def where(self, red: Reductions) -> np.ndarray:
-        """Position index where the value is taken, per design (−1: not one position)."""
+        """Position index where the value is taken, per design (−1: not one position).
+
+        Examples
+        --------
+        ``max Y(56)`` of two designs of the seed-003 hitch, both at the last of 50
+        positions:
+
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> c.where(red).tolist()
+        [49, 49]
+        """
         return CRITERIA[self.kind].where(self, red)
 
     def bound(self, red: Reductions, original=None) -> np.ndarray:
         """The limit per design [SI] (``original``: this criterion's value for the
-        file's own design, used by ``"original"``)."""
+        file's own design, used by ``"original"``).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> float(c.bound(red))  # the number of the limit [m]
+        1.0
+        >>> low = criterion("bound", {"quantity": "Y(56)", "of": "min"}, hitch,
+        ...                 limit=Limit("original", "at_most"))
+        >>> float(low.bound(red, original=0.2))  # the seed's own Y56(Smin) [m]
+        0.2
+        >>> low.bound(red)
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: constraint min Y(56): 'original' needs the value of the file's own design
+        """
         v = self.limit.value
         if isinstance(v, str) and v == "original":
             if original is None:
@@ -212,17 +432,68 @@ class Criterion:
 
     def margin(self, red: Reductions, original=None) -> np.ndarray:
         """Value − limit (``at_least``) or limit − value (``at_most``), shape (m,):
-        the constraint holds where ≥ 0 [SI]."""
+        the constraint holds where ≥ 0 [SI].
+
+        Examples
+        --------
+        ``max Y(56) ≥ 1 m``: the first design holds by 40 mm, the second misses by 20 mm.
+
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> np.round(c.margin(red), 3).tolist()  # [m]
+        [0.04, -0.02]
+        """
         val, lim = self.value(red), self.bound(red, original)
         return val - lim if self.limit.sense == "at_least" else lim - val
 
     def scale(self, red: Reductions, original=None) -> np.ndarray:
-        """A positive size to normalise violations by: |limit|, or 1 where it is 0."""
+        """A positive size to normalise violations by: |limit|, or 1 where it is 0.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> from assur.design.criteria import Reductions
+        >>> hitch = examples.hitch_003()
+        >>> c = criterion("bound", {"quantity": "Y(56)", "of": "max"}, hitch,
+        ...               limit=Limit(1.0, "at_least"))  # max Y56 ≥ 1 m
+        >>> red = Reductions({"Y(56)": np.array([0.20, 0.25])}, {"Y(56)": np.array([1.04, 0.98])},
+        ...                  {"Y(56)": np.array([0, 0])}, {"Y(56)": np.array([49, 49])},
+        ...                  lambda ref: hitch.params[ref] if isinstance(ref, str) else ref)
+        >>> float(c.scale(red))  # |1 m| [m]
+        1.0
+        >>> zero = criterion("bound", {"quantity": "Y(56)", "of": "min"}, hitch,
+        ...                  limit=Limit(0.0, "at_least"))
+        >>> float(zero.scale(red))  # a zero limit scales by 1 [m]
+        1.0
+        >>> float(criterion("bound", {"quantity": "Y(56)"}, hitch,
+        ...                 limit=Limit(-0.5, "at_least")).scale(red))  # [m]
+        0.5
+        """
         b = np.abs(self.bound(red, original))
         return np.where(b > 0, b, 1.0)
 
     def show(self, si) -> str:
-        """A value in the criterion's unit, e.g. ``"27.5 kN"``."""
+        """A value in the criterion's unit, e.g. ``"27.5 kN"``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.design import Limit, criterion
+        >>> top = criterion("bound", {"quantity": "Y(56)", "of": "max"}, examples.hitch_003(),
+        ...                 limit=Limit(1.0, "at_least"))
+        >>> top.show(1.0431634014)  # 6 significant digits [m]
+        '1.04316 m'
+        """
         u = self.unit
         if u is None:
             return f"{float(si):.6g}"
@@ -280,6 +551,22 @@ def jet_reductions(sens, params) -> Reductions:
     Reductions
         Per output, arrays of shape (1,): the minimum, maximum [its unit] and their
         positions (the first where several tie, as the kernel's reductions).
+
+    Examples
+    --------
+    The bundled seed-003 design problem at the seed's design: the hitch point 56 is
+    lowest (0.2 m, the seed's condition) at the first position, highest at the last.
+
+    >>> from assur import io
+    >>> from assur.design import load_problem
+    >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+    >>> sens, red = pb.jet(pb.x0)  # exact sensitivities at the seed's design
+    >>> from assur.design.criteria import jet_reductions
+    >>> r = jet_reductions(sens, red.param)
+    >>> round(float(r.mins["Y(56)"][0]), 6), int(r.argmins["Y(56)"][0])  # [m], position
+    (0.2, 0)
+    >>> round(float(r.maxs["Y(56)"][0]), 4), int(r.argmaxs["Y(56)"][0])  # [m], position
+    (1.0432, 49)
     """
     v = np.asarray(sens.value)
     mins, maxs, amin, amax = {}, {}, {}, {}
@@ -531,6 +818,25 @@ def criterion(kind, args, mech, *, limit=None, sense=None, unit=None):
     sense : {"maximize", "minimize"}, optional
         For an objective.
     unit : assur.quantities.Unit, optional
+
+    Examples
+    --------
+    The lift range of the seed-003 hitch as a constraint, and its lift capacity at
+    the implement's centre of mass S6 as an objective:
+
+    >>> from assur import examples
+    >>> from assur.design import Limit, criterion
+    >>> hitch = examples.hitch_003()
+    >>> span = criterion("bound", {"quantity": "Y(56)", "of": "span"}, hitch,
+    ...                  limit=Limit(0.8, "at_least"))  # [m]
+    >>> span.name, span.kind
+    ('span Y(56)', 'bound')
+    >>> criterion("capacity", {"point": "S6"}, hitch, sense="maximize").outputs
+    ('G(ГЦ, S6)',)
+    >>> criterion("volume", {}, hitch, sense="maximize")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: unknown criterion type 'volume': one of ['bound', 'box', 'capacity', 'pressure', 'transmission_angle']
     """
     if kind not in CRITERIA:
         raise ModelError(f"unknown criterion type {kind!r}: one of {sorted(CRITERIA)}")
@@ -551,7 +857,18 @@ def criterion(kind, args, mech, *, limit=None, sense=None, unit=None):
 
 def lift_outputs(outputs, mech):
     """The transmission-number outputs whose positivity the capacity outputs among
-    ``outputs`` need, ``{"I(S6)": "S6"}`` (``"I(S6, S)"`` for k > 1 coordinates)."""
+    ``outputs`` need, ``{"I(S6)": "S6"}`` (``"I(S6, S)"`` for k > 1 coordinates).
+
+    Examples
+    --------
+    A capacity at 56 and a reserve at S6 of the seed-003 hitch need both points to
+    rise with S; a height needs nothing:
+
+    >>> from assur import examples
+    >>> from assur.design.criteria import lift_outputs
+    >>> lift_outputs(["G(ГЦ, 56)", "Y(56)", "reserve(ГЦ, S6, P6)"], examples.hitch_003())
+    {'I(56)': '56', 'I(S6)': 'S6'}
+    """
     out = {}
     cyls = {c.name: c for c in mech.cylinders}
     for o in outputs:

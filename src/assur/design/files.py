@@ -20,7 +20,22 @@ __all__ = ["load_problem", "positions_of"]
 
 def positions_of(model, count=None):
     """The positions a design is checked at: the file's ``[range]``, or ``count``
-    positions evenly over its span (one coordinate) [m or rad]."""
+    positions evenly over its span (one coordinate) [m or rad].
+
+    Examples
+    --------
+    The seed-003 hitch's ten positions S = 0.420 … 0.670 m (seed §1.3), or six over
+    the same span:
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.design.files import positions_of
+    >>> model = io.load(io.bundled("hitch_003"))
+    >>> np.round(positions_of(model), 4).tolist()  # [m]
+    [0.42, 0.4478, 0.4756, 0.5033, 0.5311, 0.5589, 0.5867, 0.6144, 0.6422, 0.67]
+    >>> np.round(positions_of(model, 6), 4).tolist()  # [m]
+    [0.42, 0.47, 0.52, 0.57, 0.62, 0.67]
+    """
     q = np.asarray(model.range, float)
     if count is None:
         return q
@@ -48,6 +63,30 @@ def load_problem(path, variables=(), positions=None, chunk=None):
     Returns
     -------
     Problem
+
+    Examples
+    --------
+    The bundled design problem of the seed-003 hitch (its four frame pivots within
+    ±30 mm, 50 positions), with the brace L4 (0.6613 m) added within ±20 mm and
+    checked at 6 positions instead:
+
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.design import load_problem
+    >>> pb = load_problem(io.bundled("hitch_003_design"), variables=["L4=±20 mm"], positions=6)
+    >>> pb.names[-3:], pb.n_positions
+    (('X07', 'Y07', 'L4'), 6)
+    >>> np.round(pb.bounds[-1], 4).tolist()  # L4 [m]
+    [0.6413, 0.6813]
+    >>> [c.name for c in pb.objectives]
+    ['min reserve(ГЦ, S6, P6)']
+
+    A model file without a ``[design]`` section needs variables:
+
+    >>> load_problem(io.bundled("hitch_003"))  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: ...hitch_003.toml: no design variables: give a [design.variables] table or --var NAME=LOW:HIGH
     """
     return _load(str(Path(path).resolve()), tuple(variables), positions, chunk)
 

@@ -48,6 +48,27 @@ class Executor:
         ``progress(done, total)`` after every chunk (designs).
 
     Use as a context manager: the cluster started is closed on exit.
+
+    Examples
+    --------
+    Without a scheduler or workers the batches run in this process, here in chunks
+    of two designs of the bundled seed-003 design problem:
+
+    >>> from assur import io
+    >>> from assur.design import load_problem
+    >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+    >>> from assur.design.scale import Executor
+    >>> with Executor(chunk=2, progress=lambda done, total: print(f"{done}/{total}")) as ex:
+    ...     b = ex.evaluate(pb, pb.sample(5, seed=1))
+    2/5
+    4/5
+    5/5
+    >>> len(b), ex.describe()
+    (5, 'this process')
+    >>> Executor(scheduler="tcp://host:8786", workers=2)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: give either a scheduler address or a number of workers, not both
     """
 
     def __init__(self, scheduler=None, workers=None, chunk=1 << 14, progress=None):
@@ -65,6 +86,14 @@ class Executor:
 
     @property
     def distributed(self) -> bool:
+        """Whether the batches go to a Dask cluster (a scheduler or workers given).
+
+        Examples
+        --------
+        >>> from assur.design.scale import Executor
+        >>> Executor().distributed, Executor(workers=2).distributed
+        (False, True)
+        """
         return self.scheduler is not None or self.workers > 0
 
     def __enter__(self):
@@ -84,6 +113,18 @@ class Executor:
         return self._stack.__exit__(*exc)
 
     def describe(self) -> str:
+        """Where the batches run, in words (no cluster is started to say it).
+
+        Examples
+        --------
+        >>> from assur.design.scale import Executor
+        >>> Executor().describe()
+        'this process'
+        >>> Executor(workers=2).describe()
+        'Dask LocalCluster of 2 worker processes'
+        >>> Executor(scheduler="tcp://host:8786").describe()
+        'Dask scheduler tcp://host:8786'
+        """
         if self.scheduler is not None:
             return f"Dask scheduler {self.scheduler}"
         if self.workers:
@@ -92,7 +133,25 @@ class Executor:
 
     def evaluate(self, problem, X):
         """:meth:`Problem.evaluate` of ``X``, shape (m, number of variables), chunk by
-        chunk (on the cluster: one task per chunk, in parallel); returns one Batch."""
+        chunk (on the cluster: one task per chunk, in parallel); returns one Batch.
+
+        Examples
+        --------
+        Three chunks of the bundled seed-003 design problem, concatenated in order:
+
+        >>> from assur import io
+        >>> from assur.design import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> from assur.design.scale import Executor
+        >>> X = pb.sample(5, seed=1)
+        >>> b = Executor(chunk=2).evaluate(pb, X)
+        >>> len(b), bool((b.X == X).all()), b.status.tolist() == pb.evaluate(X).status.tolist()
+        (5, True, True)
+        >>> Executor(workers=2).evaluate(pb, X)  # a cluster is started by `with` only
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: use the Executor in a `with` block to start its cluster
+        """
         from .problem import Batch
         X = np.atleast_2d(np.asarray(X, float))
         size = self.chunk
@@ -141,6 +200,25 @@ def sweep(problem, X=None, *, samples=None, seed=None, executor=None):
     Returns
     -------
     Batch
+
+    Examples
+    --------
+    200 designs of the seed-003 hitch drawn with its pivots within ±30 mm (the
+    bundled design problem): one meets every constraint.
+
+    >>> from assur import io
+    >>> from assur.design import load_problem
+    >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+    >>> from assur.design.scale import sweep
+    >>> b = sweep(pb, samples=200, seed=1)
+    >>> len(b), int(b.feasible.sum()), b.best()
+    (200, 1, 172)
+    >>> round(float(b.objective()[172]), 3)  # its min capacity reserve at S6 [%]
+    5.157
+    >>> sweep(pb)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: sweep: give the designs X or a number of samples
     """
     if (X is None) == (samples is None):
         raise ModelError("sweep: give the designs X or a number of samples")
@@ -152,6 +230,24 @@ def sweep(problem, X=None, *, samples=None, seed=None, executor=None):
 
 def write_parquet(batch, path):
     """Write a batch as a Parquet table (one row per design; the columns of
-    :meth:`Batch.to_frame`, SI units); returns the path."""
+    :meth:`Batch.to_frame`, SI units); returns the path.
+
+    Examples
+    --------
+    A sweep of the bundled seed-003 design problem stored and read back:
+
+    >>> import os
+    >>> import tempfile
+    >>> import pandas as pd
+    >>> from assur import io
+    >>> from assur.design import load_problem
+    >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+    >>> from assur.design.scale import sweep, write_parquet
+    >>> b = sweep(pb, samples=20, seed=1)
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     df = pd.read_parquet(write_parquet(b, os.path.join(d, "sweep.parquet")))
+    >>> df.shape, list(df.columns[:2]), df["status"].tolist() == b.status.tolist()
+    ((20, 17), ['X01', 'Y01'], True)
+    """
     batch.to_frame().to_parquet(path, engine="pyarrow", index=False)
     return path
