@@ -47,7 +47,8 @@ class DirectionalValve:
     --------
     >>> import math
     >>> from assur.drive import DirectionalValve
-    >>> valve = DirectionalValve("raise", dp_nominal=0.3e6, nominal_flow=80 / 60e3)  # 0.3 MPa at 80 l/min
+    >>> valve = DirectionalValve("raise", dp_nominal=0.3e6,      # 0.3 MPa [Pa]
+    ...                          nominal_flow=80 / 60e3)         # at 80 l/min [m³/s]
     >>> area = math.pi * 0.125 ** 2 / 4            # lab 6's piston [m²]
     >>> a3 = valve.loss_coefficients(area, None)[2]
     >>> round(a3 * 0.0704 ** 2 / 1e6, 3)           # Δp [MPa] at the steady 70.4 mm/s

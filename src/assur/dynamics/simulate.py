@@ -265,7 +265,7 @@ class ExactEquations:
         >>> M, dM, Q = exact.mechanics(np.array([[0.55, 0.8]]))   # two states, S [m]
         >>> (M[:, 0, 0] / 1e3).round(3).tolist(), (Q[:, 0] / 1e3).round(2).tolist()  # [t], [kN]
         ([51.646, 52.709], [-58.56, -59.05])
-        >>> exact.mechanics(np.array([[2.0]]))                # far past the stroke [m]
+        >>> exact.mechanics(np.array([[2.0]]))   # far past the stroke [m]  # doctest: +ELLIPSIS
         Traceback (most recent call last):
         ...
         assur.errors.AssemblyError: cylinder–lever group 'I (2,3)' (links 2, 3) cannot assemble at position 0 (S = 2): ...
