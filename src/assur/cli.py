@@ -780,6 +780,35 @@ def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
 
 
 def main(argv=None):  # pragma: no cover - console entry
+    """Run the ``assur`` command line with the arguments ``argv`` (default:
+    ``sys.argv[1:]``); the console script ``assur`` calls it. It ends with
+    :class:`SystemExit`: 0 on success, 1 for a user's error (one message on
+    stderr), 2 for a usage error.
+
+    Examples
+    --------
+    >>> import contextlib, io, pathlib, tempfile
+    >>> import ezdxf
+    >>> from assur.cli import main
+    >>> from assur.io import bundled
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     out = pathlib.Path(d) / "hitch.dxf"
+    ...     argv = ["dxf", str(bundled("hitch_003")), "--at", "0.42,0.67", "-o", str(out)]
+    ...     with contextlib.redirect_stdout(io.StringIO()) as shown:
+    ...         try:
+    ...             main(argv)                  # assur dxf hitch_003.toml --at … -o …
+    ...         except SystemExit as e:
+    ...             code = e.code
+    ...     groups = sorted(g for g, _ in ezdxf.readfile(out).groups)
+    >>> code, groups                            # S [m] of the two drawn positions
+    (0, ['S=0.42 m', 'S=0.67 m'])
+    >>> shown.getvalue().startswith("ok: wrote")
+    True
+    >>> main(["check", "no-such-model.toml"])  # "error: … no such file" on stderr
+    Traceback (most recent call last):
+    ...
+    SystemExit: 1
+    """
     return app(args=argv)
 
 

@@ -67,7 +67,19 @@ def _summary(mech) -> str:
 
 
 def mechanism_html(mech) -> str:
-    """The model summary of a :class:`~assur.Mechanism` (it has no positions yet)."""
+    """The model summary of a :class:`~assur.Mechanism` (it has no positions yet).
+
+    Examples
+    --------
+    >>> import re
+    >>> from assur import examples
+    >>> from assur.display import mechanism_html
+    >>> html = mechanism_html(examples.hitch_003())
+    >>> re.findall(r"<tr><td>([^<]*)</td><td>dyad</td>", html)   # the RRR dyads
+    ['II (4,5)', 'III (6,7)']
+    >>> "<svg" in html                       # no positions: no drawing
+    False
+    """
     return f"<div class='assur'>{_summary(mech)}</div>"
 
 
@@ -81,7 +93,18 @@ def _drawing(kin) -> str:
 
 def kinematics_html(kin) -> str:
     """Summary, the drawing at the first position (the last as an outline) and the
-    positions' table (:meth:`Kinematics.to_frame`, cut at :data:`MAX_ROWS` rows)."""
+    positions' table (:meth:`Kinematics.to_frame`, cut at :data:`MAX_ROWS` rows).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.display import kinematics_html
+    >>> kin = examples.hitch_003().solve(np.linspace(0.42, 0.67, 4))   # S [m]
+    >>> html = kinematics_html(kin)
+    >>> html.count("<svg"), "<th>phi2</th>" in html   # the drawing, the table's columns
+    (1, True)
+    """
     parts = [_summary(kin.mechanism), _drawing(kin)]
     if len(kin.shape) == 1:
         frame = kin.to_frame()
@@ -104,7 +127,21 @@ def _tables_html(tables, lang="en") -> str:
 
 
 def analysis_html(analysis, lang: str = "en") -> str:
-    """Summary, drawing and the seed-like tables of an :class:`~assur.analysis.Analysis`."""
+    """Summary, drawing and the seed-like tables of an :class:`~assur.analysis.Analysis`.
+
+    Examples
+    --------
+    >>> import re
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.display import analysis_html
+    >>> analysis = examples.hitch_003().analyze(np.linspace(0.42, 0.67, 4))   # S [m]
+    >>> heads = re.findall(r"<h4>([^<]*)</h4>", analysis_html(analysis))
+    >>> heads[0], len(heads)                 # the seed's tables and the IC check
+    ('Table 2.1. Geometric analysis: link angles', 7)
+    >>> "Результаты геометрического анализа" in analysis_html(analysis, lang="ru")
+    True
+    """
     return f"<div class='assur'>{_analysis_parts(analysis, lang)}</div>"
 
 
@@ -119,7 +156,20 @@ def _analysis_parts(analysis, lang) -> str:
 
 def model_html(model, lang: str = "en") -> str:
     """A loaded model file: its solved conditions and its analysis over the file's
-    range, or the error that stops it."""
+    range, or the error that stops it.
+
+    Examples
+    --------
+    >>> import re
+    >>> from assur import io
+    >>> from assur.display import model_html
+    >>> html = model_html(io.load(io.bundled("hitch_003")))
+    >>> re.findall(r"<li>([^<]*)</li>", html)    # the seed's Find blocks [m]
+    ['L4 = 0.661283167 (SI)', 'Sp = 0.46935694 (SI)', 'L7 = 0.752169525 (SI)']
+    >>> html = model_html(io.load(io.bundled("header_000")))   # seed 000: cannot assemble
+    >>> print(re.search(r"<pre[^>]*>(.*)</pre>", html).group(1))  # doctest: +ELLIPSIS
+    rigid point &#x27;arm 46&#x27; (link 3) fails at position 0 (S = 0.65): ... by 4.66 mm; ...
+    """
     from .errors import AssemblyError, ModelError, SingularPositionError
     solved = "".join(f"<li>{escape(s.condition.unknown)} = {float(s.value):.9g} (SI)</li>"
                      for s in model.solved)

@@ -62,7 +62,23 @@ def _rebuild(en, translations):
 
 def text(value) -> str:
     """A text from a string or a ``{lang: text}`` mapping (``en`` is the default text;
-    a mapping without ``en`` takes its first language as the default)."""
+    a mapping without ``en`` takes its first language as the default).
+
+    Examples
+    --------
+    >>> from assur.texts import text
+    >>> t = text({"ru": "Навеска", "en": "Hitch"})
+    >>> str(t), t.translations
+    ('Hitch', {'ru': 'Навеска'})
+    >>> str(text({"ru": "Навеска"}))         # no English: the first language
+    'Навеска'
+    >>> text("plain")                        # a string stays as it is
+    'plain'
+    >>> text({})
+    Traceback (most recent call last):
+    ...
+    ValueError: a text needs at least one language
+    """
     if isinstance(value, Mapping):
         items = {str(k): str(v) for k, v in value.items() if v is not None}
         if not items:
@@ -75,7 +91,17 @@ def text(value) -> str:
 
 
 def localize(value, lang: str) -> str:
-    """``value`` in ``lang`` (its default text where it has no such translation)."""
+    """``value`` in ``lang`` (its default text where it has no such translation).
+
+    Examples
+    --------
+    >>> from assur.texts import localize, text
+    >>> t = text({"en": "Hitch", "ru": "Навеска"})
+    >>> localize(t, "ru"), localize(t, "en"), localize(t, "de")
+    ('Навеска', 'Hitch', 'Hitch')
+    >>> localize("plain", "ru"), localize(None, "ru")
+    ('plain', None)
+    """
     if value is None:
         return value
     if lang != "en":

@@ -48,21 +48,61 @@ class _Request(BaseModel):
 
 
 class AnalyzeRequest(_Request):
-    """``POST /api/analyze``: the parameters changed, the positions to draw."""
+    """``POST /api/analyze``: the parameters changed, the positions to draw.
+
+    Examples
+    --------
+    >>> from pydantic import ValidationError
+    >>> from assur.app.api import AnalyzeRequest
+    >>> req = AnalyzeRequest.model_validate_json('{"params": {"L5": 0.48}, "lang": "ru"}')
+    >>> req.params, req.positions, req.lang      # L5 in the file's unit [m]
+    ({'L5': 0.48}, 101, 'ru')
+    >>> try:
+    ...     AnalyzeRequest(positions=1)
+    ... except ValidationError as e:
+    ...     print(e.errors()[0]["loc"], e.errors()[0]["msg"])
+    ('positions',) Input should be greater than or equal to 2
+    """
 
     positions: int = Field(101, ge=2, le=MAX_POSITIONS)
 
 
 class ExportRequest(_Request):
     """``POST /api/export/{csv,xlsx,toml}``: the tables of the edited model over its
-    file's range (``csv``: the table ``table``, default the first), or its file."""
+    file's range (``csv``: the table ``table``, default the first), or its file.
+
+    Examples
+    --------
+    >>> from pydantic import ValidationError
+    >>> from assur.app.api import ExportRequest
+    >>> ExportRequest().table is None, ExportRequest(table="4.1").table   # None: the first
+    (True, '4.1')
+    >>> try:
+    ...     ExportRequest(table="4.1", sheet="all")
+    ... except ValidationError as e:
+    ...     print(e.errors()[0]["loc"], e.errors()[0]["msg"])
+    ('sheet',) Extra inputs are not permitted
+    """
 
     table: Optional[Annotated[str, StringConstraints(max_length=16)]] = None
 
 
 class DxfRequest(_Request):
     """``POST /api/export/dxf``: the drawing at the coordinate values ``at`` (in the
-    coordinate's unit: m, or degrees for a crank), one layer per link."""
+    coordinate's unit: m, or degrees for a crank), one layer per link.
+
+    Examples
+    --------
+    >>> from pydantic import ValidationError
+    >>> from assur.app.api import DxfRequest
+    >>> DxfRequest(at=[0.42, 0.67]).at             # S [m]
+    [0.42, 0.67]
+    >>> try:
+    ...     DxfRequest(at=[0.5] * 65)
+    ... except ValidationError as e:
+    ...     print(e.errors()[0]["loc"], e.errors()[0]["msg"])
+    ('at',) List should have at most 64 items after validation, not 65
+    """
 
     at: list[Number] = Field(default_factory=list, max_length=64)
     positions: int = Field(101, ge=2, le=MAX_POSITIONS)

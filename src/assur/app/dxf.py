@@ -115,6 +115,22 @@ def write_dxf(kin, path, positions=None, design=None) -> Path:
     Returns
     -------
     Path
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> import ezdxf
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.app.dxf import write_dxf
+    >>> kin = examples.hitch_003().solve(np.linspace(0.42, 0.67, 3))   # S [m]
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     path = write_dxf(kin, pathlib.Path(d) / "hitch.dxf", positions=[0, 2])
+    ...     doc = ezdxf.readfile(path)
+    >>> path.name, sorted(g for g, _ in doc.groups)      # one group per position
+    ('hitch.dxf', ['S=0.42 m', 'S=0.67 m'])
+    >>> doc.layers.get("link_2").dxf.linetype            # the cylinder
+    'DASHED'
     """
     kin = getattr(kin, "kinematics", kin)
     doc = _document(kin, positions, design)
@@ -124,7 +140,29 @@ def write_dxf(kin, path, positions=None, design=None) -> Path:
 
 
 def dxf_bytes(kin, positions=None, design=None) -> bytes:
-    """The DXF file of :func:`write_dxf` as bytes (UTF-8 text)."""
+    """The DXF file of :func:`write_dxf` as bytes (UTF-8 text).
+
+    Examples
+    --------
+    >>> import io
+    >>> import ezdxf
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.app.dxf import dxf_bytes
+    >>> kin = examples.hitch_003().solve(np.linspace(0.42, 0.67, 3))   # S [m]
+    >>> data = dxf_bytes(kin, positions=[1])
+    >>> doc = ezdxf.read(io.StringIO(data.decode("utf-8")))
+    >>> [g for g, _ in doc.groups]
+    ['S=0.545 m']
+    >>> p = [e for e in doc.modelspace() if e.dxftype() == "POINT"
+    ...      and e.dxf.layer == "frame_pivots"]
+    >>> sorted((round(e.dxf.location.x, 1), round(e.dxf.location.y, 1)) for e in p)  # [mm]
+    [(135.0, 480.0), (250.0, 1112.0), (415.0, 563.0), (415.0, 895.0)]
+    >>> dxf_bytes(kin, positions=[3])
+    Traceback (most recent call last):
+    ...
+    ValueError: positions must be in 0…2, got 3
+    """
     import io
     kin = getattr(kin, "kinematics", kin)
     doc = _document(kin, positions, design)

@@ -38,7 +38,17 @@ def convex_hull(points) -> list:
     (Andrew's monotone chain; coordinates rounded to 1e-12 m so that coincident
     points count once; collinear points give their two ends) — the outline the
     page, the SVG, the DXF and the report's drawing give a body of three or more
-    points."""
+    points.
+
+    Examples
+    --------
+    >>> from assur.app.geometry import convex_hull
+    >>> square = [(0, 0), (1, 0), (0.5, 0.5), (1, 1), (0, 1), (0, 0)]   # [m]
+    >>> [tuple(float(c) for c in p) for p in convex_hull(square)]    # inner point dropped
+    [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    >>> [tuple(float(c) for c in p) for p in convex_hull([(0, 0), (1, 1), (2, 2)])]
+    [(0.0, 0.0), (2.0, 2.0)]
+    """
     pts = sorted(set(map(tuple, np.round(np.asarray(points, dtype=float), 12))))
     if len(pts) <= 2:
         return pts
@@ -83,6 +93,17 @@ def geometry(kin, design=None) -> dict:
     -------
     dict
         JSON-ready (lists of floats), see the module notes. Coordinates [m].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.app.geometry import geometry
+    >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
+    >>> g["n"], g["q"], g["joints"]              # positions, S [m], pivots
+    (3, {'S': [0.42, 0.545, 0.67]}, ['01', '03', '05', '07', '23', '34', '45', '56', '67'])
+    >>> [round(v, 3) for v in g["bounds"]]       # xmin, ymin, xmax, ymax [m]
+    [0.135, 0.184, 1.994, 1.526]
     """
     mech = kin.mechanism
     n = kin.shape[-1]
@@ -127,7 +148,21 @@ def geometry(kin, design=None) -> dict:
 
 
 def pose(geo: dict, i: int) -> dict:
-    """The points of position ``i`` of :func:`geometry`'s data: ``{name: (x, y)}`` [m]."""
+    """The points of position ``i`` of :func:`geometry`'s data: ``{name: (x, y)}`` [m].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.app.geometry import geometry, pose
+    >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
+    >>> [round(v, 4) for v in pose(g, 0)["56"]]   # the suspension axis at S = 0.42 m [m]
+    [1.1314, 0.2]
+    >>> pose(g, 3)
+    Traceback (most recent call last):
+    ...
+    ValueError: position must be in 0…2, got 3
+    """
     n = geo["n"]
     if not -n <= i < n:
         raise ValueError(f"position must be in 0…{n - 1}, got {i}")

@@ -120,6 +120,22 @@ def create_app(model, lang: str = "en") -> FastAPI:
     ------
     ModelError, FileNotFoundError
         When the file cannot be read or is not a valid model.
+
+    Examples
+    --------
+    >>> from assur.io import bundled
+    >>> from assur.app.server import create_app
+    >>> app = create_app(bundled("hitch_003"), lang="ru")
+    >>> sorted(r.path for r in app.routes if r.path.startswith("/api/"))
+    ['/api/analyze', '/api/export/dxf', '/api/export/{fmt}', '/api/model', '/api/openapi.json']
+    >>> route = {r.path: r.endpoint for r in app.routes}
+    >>> info = route["/api/model"]()              # what GET /api/model answers
+    >>> info["file"], info["lang"], info["coordinates"]
+    ('hitch_003.toml', 'ru', [{'name': 'S', 'kind': 'length'}])
+    >>> create_app(bundled("hitch_003"), lang="de")
+    Traceback (most recent call last):
+    ...
+    ValueError: lang must be one of: ['en', 'ru']; got 'de'
     """
     pm = model if isinstance(model, PageModel) else PageModel.from_path(model)
     if lang not in ("en", "ru"):
@@ -240,7 +256,20 @@ def _nearest(model, kin, at):
 class running:
     """A context manager that serves ``app`` with uvicorn in a background thread on
     ``host`` (loopback) and a free port; ``with running(app) as url: …`` — for tests,
-    benchmarks and notebooks. The server stops when the block ends."""
+    benchmarks and notebooks. The server stops when the block ends.
+
+    Examples
+    --------
+    Nothing is served until the ``with`` block starts (``url`` is then
+    ``http://127.0.0.1:<port>``); the defaults bind to the loopback only, on a port
+    the system picks:
+
+    >>> from assur.io import bundled
+    >>> from assur.app.server import create_app, running
+    >>> server = running(create_app(bundled("hitch_003")))
+    >>> server.host, server.port               # port 0: any free port
+    ('127.0.0.1', 0)
+    """
 
     def __init__(self, app, host: str = "127.0.0.1", port: int = 0):
         self.app, self.host, self.port = app, host, port

@@ -103,6 +103,19 @@ class PageModel:
     ------
     ModelError
         When the text itself is not a valid model (the page needs a valid start).
+
+    Examples
+    --------
+    >>> from assur.io import bundled
+    >>> from assur.app.session import PageModel
+    >>> text = bundled("hitch_003").read_text(encoding="utf-8")
+    >>> pm = PageModel(text, name="hitch.toml")
+    >>> pm.name, pm.model.mechanism.name, len(pm.editable)   # editable parameters
+    ('hitch.toml', 'hitch_003', 28)
+    >>> PageModel("[model]", name="bad.toml")
+    Traceback (most recent call last):
+    ...
+    assur.io.ModelFileError: bad.toml:1: model.name: missing required key "name"
     """
 
     def __init__(self, text: str, name: str = "<model>", source: Path | None = None):
@@ -127,7 +140,20 @@ class PageModel:
 
     @classmethod
     def from_path(cls, path) -> "PageModel":
-        """The model file at ``path`` (read as :func:`assur.io.load` reads it)."""
+        """The model file at ``path`` (read as :func:`assur.io.load` reads it).
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("adapter_lab6"))    # seed 001 lab 6
+        >>> pm.name, pm.model.mechanism.coordinates
+        ('adapter_lab6.toml', ('S',))
+        >>> PageModel.from_path("no-such-model.toml")
+        Traceback (most recent call last):
+        ...
+        FileNotFoundError: [Errno 2] No such file or directory: 'no-such-model.toml'
+        """
         from ..io import read_model_bytes
         p = Path(path)
         data = read_model_bytes(p, str(path))
@@ -206,7 +232,19 @@ class PageModel:
         """The parameters of ``[params]``: name, group (the comment above), unit as the
         file writes it (``-`` for a plain number), current value in that unit, whether
         the page may edit it (a number, not an unknown of ``[[solve]]``), and the
-        comment at the end of its line."""
+        comment at the end of its line.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> p = {q["name"]: q for q in pm.parameters()}
+        >>> p["L5"]["group"], p["L5"]["unit"], p["L5"]["value"], p["L5"]["editable"]  # [m]
+        ('§1.2 links', 'm', 0.48, True)
+        >>> round(p["L4"]["value"], 4), p["L4"]["solved"], p["L4"]["editable"]  # seed: 0.6613 m
+        (0.6613, True, False)
+        """
         return [dict(p) for p in self._params]
 
     def check_params(self, values: dict) -> None:
@@ -217,6 +255,21 @@ class PageModel:
         ------
         ModelError
             Naming the parameter (with a did-you-mean) or the value.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> pm.check_params({"L5": 0.5, "X01": 0.4})    # [m]: valid, returns None
+        >>> pm.check_params({"L55": 0.5})
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: params.L55: not an editable parameter of hitch_003.toml; did you mean "L5"?
+        >>> pm.check_params({"L4": 0.66})
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: params.L4: is an unknown of [[solve]] (Given/Find): its value is solved, not set
         """
         import difflib
 
@@ -243,6 +296,15 @@ class PageModel:
         ------
         ModelError
             See :meth:`check_params`.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> old, new = pm.text.splitlines(), pm.edited_text({"L5": 0.5}).splitlines()
+        >>> [(a, b) for a, b in zip(old, new) if a != b]    # one line changed [m]
+        [('L5 = "0.480 m"', 'L5 = "0.5 m"')]
         """
         self.check_params(values)
         if not values:
@@ -270,6 +332,17 @@ class PageModel:
         ModelError
             Bad names or values; any problem of the edited file (a condition without
             a root, a group that cannot be built) with its key and line.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> model = pm.load({"L5": 0.5})                   # [m]
+        >>> model.mechanism.params["L5"], model.range.shape   # [m]; positions of S
+        (0.5, (10,))
+        >>> pm.load({"L5": 0.5}) is model                   # kept by its text
+        True
         """
         from ..io import loads
         text = self.edited_text(values)
@@ -289,7 +362,16 @@ class PageModel:
     def model_on(self, model, positions: int):
         """``model`` with its range resampled on ``positions`` evenly spaced values of
         its coordinate between its first and last (one coordinate); the model as it
-        is for more coordinates."""
+        is for more coordinates.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> pm.model_on(pm.model, 5).range.tolist()       # S [m]
+        [0.42, 0.4825, 0.545, 0.6075, 0.67]
+        """
         if len(model.mechanism.coordinates) != 1 or positions is None:
             return model
         r = np.asarray(model.range, dtype=float)
@@ -306,6 +388,23 @@ class PageModel:
             ``{"ok": False, "error": {"kind", "message"}, "ms"}``; ``kind`` is
             ``"model"`` (the file or a value), ``"assembly"`` (the mechanism cannot
             assemble) or ``"singular"``.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> out = pm.compute({}, positions=11)             # the file's values
+        >>> out["ok"], [t["id"] for t in out["tables"]]
+        (True, ['2.1', '2.2', '3.1', '4.1', '5.1', '6.1', 'IC', 'L'])
+        >>> [(s["name"], round(s["value"], 4), s["unit"]) for s in out["solved"]][:1]
+        [('L4', 0.6613, 'm')]
+        >>> out = pm.compute({"L5": 0.5}, positions=11)    # [m]
+        >>> round(out["solved"][0]["value"], 4)            # L4 solved again [m]
+        0.6681
+        >>> out = pm.compute({"L5": 1e6})                  # [m]
+        >>> out["ok"], out["error"]["kind"]
+        (False, 'model')
         """
         from ..errors import AssemblyError, ModelError, SingularPositionError
         from ..report.tables import seed_tables
@@ -361,6 +460,21 @@ class PageModel:
         Returns
         -------
         (bytes, media type, file name)
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.app.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> data, media, name = pm.export_tables({}, "csv", table="2.1")
+        >>> media, name
+        ('text/csv; charset=utf-8', 'hitch_003_table_2_1.csv')
+        >>> data.decode("utf-8").splitlines()[0]
+        'S [m],phi2 [deg],phi3 [deg],phi34 [deg],phi4 [deg],phi5 [deg],phi6 [deg],phi7 [deg]'
+        >>> pm.export_tables({}, "pdf")
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: format must be csv or xlsx, got 'pdf'
         """
         import tempfile
 

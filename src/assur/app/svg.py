@@ -144,6 +144,19 @@ def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
     -------
     str
         ``<svg …>…</svg>`` (coordinates in m, y up).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.app.geometry import geometry
+    >>> from assur.app.svg import svg
+    >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
+    >>> s = svg(g, positions=[2, 0], width=400, height=300)   # S = 0.67 m in colour
+    >>> s.startswith("<svg"), 'width="400" height="300"' in s   # [px]
+    (True, True)
+    >>> s.count('<g opacity="0.3">'), s.count('id="pt-')   # one ghost; the labelled points
+    (1, 11)
     """
     n = geo["n"]
     positions = sorted({0, n - 1}) if positions is None else [int(i) for i in positions]

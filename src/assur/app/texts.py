@@ -40,7 +40,17 @@ PAGE_TEXT = {
 
 
 def page_texts() -> dict:
-    """Every label the page shows: ``{key: {"en": …, "ru": …}}``."""
+    """Every label the page shows: ``{key: {"en": …, "ru": …}}``.
+
+    Examples
+    --------
+    >>> from assur.app.texts import page_texts
+    >>> t = page_texts()
+    >>> t["play"]["ru"], t["dxf"]["en"]          # one of the report's, one of the page's
+    ('пуск / пауза', 'drawing at this position (DXF)')
+    >>> all(set(v) == {"en", "ru"} for v in t.values())
+    True
+    """
     from ..report.labels import TEXT
     out = {k: dict(TEXT[k]) for k in _REUSED if k in TEXT}
     out.update({k: dict(v) for k, v in PAGE_TEXT.items()})

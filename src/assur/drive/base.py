@@ -35,7 +35,25 @@ _REGISTRY: dict[str, type] = {}
 
 
 def register(cls):
-    """Class decorator: register a component type under ``cls.type_name``."""
+    """Class decorator: register a component type under ``cls.type_name``.
+
+    Raises
+    ------
+    ValueError
+        A role not in :data:`ROLES`, or another class under the same ``type_name``.
+
+    Examples
+    --------
+    >>> from assur.drive import GearPump, register
+    >>> register(GearPump) is GearPump          # the same class again: no change
+    True
+    >>> class Tank:
+    ...     type_name, role = "tank", "reservoir"
+    >>> register(Tank)
+    Traceback (most recent call last):
+    ...
+    ValueError: component 'tank': role must be one of: ['pump', 'relief', 'valve', 'line', 'volume', 'cylinder', 'divider']
+    """
     name = cls.type_name
     if cls.role not in ROLES:
         raise ValueError(f"component {name!r}: role must be one of: {list(ROLES)}")
@@ -46,12 +64,33 @@ def register(cls):
 
 
 def registry() -> dict[str, type]:
-    """The registered component types by model-file ``type`` name (a copy)."""
+    """The registered component types by model-file ``type`` name (a copy).
+
+    Examples
+    --------
+    >>> from assur.drive import registry
+    >>> sorted(registry())
+    ['cylinder', 'directional_valve', 'flow_divider', 'gear_pump', 'line', 'line_losses', 'oil_volume', 'relief_valve']
+    >>> registry()["gear_pump"].role
+    'pump'
+    """
     return dict(_REGISTRY)
 
 
 def component_type(name: str) -> type:
-    """The component type of a ``type`` name; a ValueError lists the valid ones."""
+    """The component type of a ``type`` name; a ValueError lists the valid ones.
+
+    Examples
+    --------
+    >>> from assur.drive import component_type
+    >>> cls = component_type("oil_volume")
+    >>> cls.__name__, cls.role
+    ('OilVolume', 'volume')
+    >>> component_type("tank")
+    Traceback (most recent call last):
+    ...
+    ValueError: component type must be one of: ['cylinder', 'directional_valve', 'flow_divider', 'gear_pump', 'line', 'line_losses', 'oil_volume', 'relief_valve'], got 'tank'
+    """
     try:
         return _REGISTRY[name]
     except KeyError:
@@ -68,12 +107,35 @@ def _check(obj, field, ok, rule):
 
 
 def positive(obj, *fields):
-    """Raise ModelError unless every field of ``obj`` is a finite number > 0."""
+    """Raise ModelError unless every field of ``obj`` is a finite number > 0.
+
+    Examples
+    --------
+    >>> from assur.drive import GearPump
+    >>> from assur.drive.base import positive
+    >>> pump = GearPump(32e-6, 188.5, 0.9)     # [m³], [rad/s], [-]
+    >>> positive(pump, "displacement", "speed")   # passes: returns None
+    >>> GearPump(32e-6, 0.0, name="P1")       # speed = 0 rad/s
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: gear_pump P1: speed = 0.0 must be a finite number > 0
+    """
     for f in fields:
         _check(obj, f, lambda x: x > 0, "> 0")
 
 
 def nonneg(obj, *fields):
-    """Raise ModelError unless every field of ``obj`` is a finite number ≥ 0."""
+    """Raise ModelError unless every field of ``obj`` is a finite number ≥ 0.
+
+    Examples
+    --------
+    >>> from assur.drive import LineLosses
+    >>> from assur.drive.base import nonneg
+    >>> nonneg(LineLosses(a1=0.0, a3=2.0e9), "a1", "a3")   # 0 is allowed: returns None
+    >>> LineLosses(a2=float("nan"), name="hose")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: line_losses hose: a2 = nan must be a finite number ≥ 0
+    """
     for f in fields:
         _check(obj, f, lambda x: x >= 0, "≥ 0")

@@ -43,6 +43,15 @@ class Branch:
     stop : float
         The stop where the fed chamber is smallest (s_min when raising, s_max
         when lowering): V = V0 there [m].
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> crane = io.load(io.bundled("crane_lv184a")).drive   # seed 004: boom and stick
+    >>> [(b.coordinate, b.share, b.sense) for b in crane.branches]   # share, sense [-]
+    [('S1', 0.5, 1), ('S2', 0.5, -1)]
+    >>> [b.valve.name for b in crane.branches]
+    ['boom valve', 'stick valve']
     """
 
     coordinate: str
@@ -55,25 +64,76 @@ class Branch:
 
     @property
     def sense(self) -> int:
+        """+1: the piston side fed (S grows); −1: the rod side (the valve's
+        ``lower``) [-].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive   # seed 004
+        >>> [b.sense for b in crane.branches]    # the boom raised, the stick lowered
+        [1, -1]
+        """
         return 1 if self.valve is None else self.valve.sense
 
     @property
     def area(self) -> float:
+        """The fed area of the branch's cylinders: count·A raising, count·π·(D² −
+        d²)/4 lowering [m²].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> stick = io.load(io.bundled("crane_lv184a")).drive.branches[1]   # seed 004
+        >>> stick.valve.position, round(stick.area * 1e4, 2)     # the annulus [cm²]
+        ('lower', 30.63)
+        >>> round(stick.cylinder.area * 1e4, 2)                 # its piston [cm²]
+        50.27
+        """
         c = self.cylinder
         return c.area if self.sense > 0 else c.count * c.rod_side_area
 
     @property
     def stop(self) -> float:
+        """The stop where the fed chamber is smallest, V = V0: s_min raising, s_max
+        lowering [m].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive   # seed 004
+        >>> [tuple(round(x, 3) for x in (b.cylinder.s_min, b.cylinder.s_max, b.stop))
+        ...  for b in crane.branches]          # (s_min, s_max, stop) [m]
+        [(1.075, 1.705, 1.075), (1.362, 2.179, 2.179)]
+        """
         return self.cylinder.s_min if self.sense > 0 else self.cylinder.s_max
 
     def flow(self, pump_flow) -> float:
-        """The branch's supply share·Q [m³/s] of the pump's flow ``pump_flow``."""
+        """The branch's supply share·Q [m³/s] of the pump's flow ``pump_flow``.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive   # seed 004: Q_h = 80 l/min
+        >>> [round(b.flow(crane.pump_flow()) * 60e3, 3) for b in crane.branches]  # [l/min]
+        [40.0, 40.0]
+        """
         return self.share * pump_flow
 
     def loss_coefficients(self, pump_flow):
         """(a1, a2, a3) of lab 6 eq. (3) summed over the branch's lines and valve,
         referred to the rod's speed at the branch's working flow [Pa·s²/m, Pa·s/m,
-        Pa·s²/m²]."""
+        Pa·s²/m²].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive   # seed 004
+        >>> boom = crane.branches[0]
+        >>> a1, a2, a3 = boom.loss_coefficients(crane.pump_flow())
+        >>> round(a1), round(a2), round(a3 / 1e6, 3)   # [Pa·s²/m, Pa·s/m, MPa·s²/m²]
+        (135938, 781641, 13.064)
+        """
         a = [0.0, 0.0, 0.0]
         for c in self.lines:
             for i, v in enumerate(c.loss_coefficients(self.area, self.flow(pump_flow))):
@@ -104,6 +164,20 @@ class Circuit:
         A role missing or given twice, a component on no branch or on an unknown
         one, two cylinders on one coordinate, several cylinders without a flow
         divider, or a divider whose shares do not match the cylinders.
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur.drive import Circuit, DriveCylinder, GearPump, OilVolume
+    >>> pump = GearPump(32e-6, 1800 * 2 * math.pi / 60, 0.9)       # НШ-32, 1800 rpm
+    >>> cyl = DriveCylinder("S", bore=0.125, rod=0.05, s_min=0.55, s_max=0.8)   # [m]
+    >>> circuit = Circuit((pump, OilVolume(3e-3), cyl))
+    >>> circuit.coordinates, round(circuit.steady_speed() * 1e3, 1)   # lab 6's 70.4 mm/s
+    (('S',), 70.4)
+    >>> Circuit((pump, cyl))
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: drive: expected at least 1 component(s) of role 'volume', found 0 []
     """
 
     components: tuple
@@ -173,12 +247,28 @@ class Circuit:
 
     @property
     def branches(self) -> tuple:
-        """The :class:`Branch` of each cylinder, in the cylinders' order."""
+        """The :class:`Branch` of each cylinder, in the cylinders' order.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive     # seed 004
+        >>> [(b.coordinate, b.cylinder.name) for b in crane.branches]
+        [('S1', 'boom cylinder'), ('S2', 'stick cylinder')]
+        """
         return self._branches
 
     @property
     def coordinates(self) -> tuple:
-        """The coordinates the cylinders move."""
+        """The coordinates the cylinders move.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive     # seed 004
+        >>> crane.coordinates
+        ('S1', 'S2')
+        """
         return tuple(b.coordinate for b in self._branches)
 
     def _one(self, role):
@@ -192,64 +282,181 @@ class Circuit:
 
     @property
     def pump(self):
+        """The pump.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> circuit.pump.type_name, round(circuit.pump.displacement * 1e6, 3)   # [cm³]
+        ('gear_pump', 32.0)
+        """
         return self._one("pump")
 
     @property
     def divider(self):
-        """The flow divider, or None."""
+        """The flow divider, or None.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive     # seed 004
+        >>> crane.divider.shares                            # [-]
+        (0.5, 0.5)
+        >>> io.load(io.bundled("adapter_lab6")).drive.divider is None   # one cylinder
+        True
+        """
         return self._one("divider")
 
     @property
     def relief(self):
-        """The relief valve of a one-cylinder circuit, or None."""
+        """The relief valve of a one-cylinder circuit, or None.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> circuit.relief.setting / 1e6                    # [MPa]
+        16.0
+        >>> io.load(io.bundled("crane_lv184a")).drive.relief   # two branches
+        Traceback (most recent call last):
+        ...
+        ValueError: the circuit has 2 branches (S1, S2): use .branches for its relief valve
+        """
         return self._single("relief valve").relief
 
     @property
     def valve(self):
+        """The directional valve of a one-cylinder circuit, or None.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> circuit.valve.position, circuit.valve.dp_nominal / 1e6   # [MPa]
+        ('raise', 0.3)
+        """
         return self._single("valve").valve
 
     @property
     def volume(self):
+        """The lumped oil volume of a one-cylinder circuit.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> round(circuit.volume.volume * 1e3, 6)           # V0 [l]
+        3.0
+        """
         return self._single("oil volume").volume
 
     @property
     def cylinder(self):
+        """The cylinder of a one-cylinder circuit.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> c = circuit.cylinder
+        >>> c.coordinate, c.bore, c.rod                      # D, d [m]
+        ('S', 0.125, 0.05)
+        """
         return self._single("cylinder").cylinder
 
     @property
     def lines(self):
         """The components in series between the pump and the cylinder whose pressure
-        losses make up a1, a2, a3: the lines and the directional valve."""
+        losses make up a1, a2, a3: the lines and the directional valve.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> [c.type_name for c in circuit.lines]
+        ['directional_valve', 'line']
+        """
         return self._single("lines").lines
 
     @property
     def area(self) -> float:
-        """Pressurised area of the cylinders of a one-cylinder circuit [m²]."""
+        """Pressurised area of the cylinders of a one-cylinder circuit [m²].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> round(circuit.area * 1e4, 1)                    # [cm²], lab 6's 122.7 cm²
+        122.7
+        """
         return self._single("area").area
 
     def pump_flow(self) -> float:
-        """Q of the pump [m³/s]."""
+        """Q of the pump [m³/s].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> round(circuit.pump_flow() * 60e3, 2)   # [l/min]: 32 cm³ · 1800 rpm · 0.9
+        51.84
+        """
         return self.pump.flow()
 
     def steady_speeds(self):
         """The rod speeds the pump's flow sets, s_j·Q/A_j [m/s] (lab 6: "the steady
         speed is set by the pump's flow and the area of the cylinders"; seed 004
-        eqs. 65–66 with a divider), signed along the coordinates, shape (k,)."""
+        eqs. 65–66 with a divider), signed along the coordinates, shape (k,).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> crane = io.load(io.bundled("crane_lv184a")).drive     # seed 004
+        >>> crane.steady_speeds().round(4).tolist()   # [m/s]: the stick's rod retracts
+        [0.0849, -0.2176]
+        """
         Q = self.pump_flow()
         return np.array([b.sense * b.flow(Q) / b.area for b in self._branches])
 
     def steady_speed(self) -> float:
-        """The rod speed Q/A of a one-cylinder circuit [m/s]."""
+        """The rod speed Q/A of a one-cylinder circuit [m/s].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> round(circuit.steady_speed(), 4)        # lab 6: 0.0704 m/s
+        0.0704
+        """
         self._single("steady speed")
         return float(abs(self.steady_speeds()[0]))
 
     def relief_flow(self, p):
         """Flow through the relief valve of a one-cylinder circuit at the pressure p
-        [m³/s] (0 without one)."""
+        [m³/s] (0 without one).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> [round(float(circuit.relief_flow(p)) * 60e3, 2) for p in (15e6, 16.5e6)]  # [l/min]
+        [0.0, 25.92]
+        """
         b = self._single("relief valve")
         return 0.0 * p if b.relief is None else b.relief.flow(p, b.flow(self.pump_flow()))
 
     def loss_coefficients(self):
         """(a1, a2, a3) of lab 6 eq. (3) of a one-cylinder circuit, summed over the
-        lines and the valve at the pump's flow [Pa·s²/m, Pa·s/m, Pa·s²/m²]."""
+        lines and the valve at the pump's flow [Pa·s²/m, Pa·s/m, Pa·s²/m²].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> circuit = io.load(io.bundled("adapter_lab6")).drive   # seed 001 lab 6
+        >>> a1, a2, a3 = circuit.loss_coefficients()
+        >>> u = circuit.steady_speed()                      # [m/s]
+        >>> round((a2 * u + a3 * u * abs(u)) / 1e6, 3)      # steady loss Δp [MPa]
+        0.282
+        """
         return self._single("loss coefficients").loss_coefficients(self.pump_flow())

@@ -40,6 +40,17 @@ class DriveCylinder:
         Number of cylinders (lab 6: the load is shared equally; their rods move
         alike) [-].
     name : str, optional
+
+    Examples
+    --------
+    >>> from assur.drive import DriveCylinder
+    >>> cyl = DriveCylinder("S", bore=0.125, rod=0.05, s_min=0.55, s_max=0.8)  # lab 6 [m]
+    >>> round(cyl.area * 17e6 / 1e3, 1)      # push at 17 MPa [kN]
+    208.6
+    >>> DriveCylinder("S", bore=0.05, rod=0.125, s_min=0.55, s_max=0.8)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: cylinder 'S': rod = 0.125 m must be smaller than bore = 0.05 m
     """
 
     coordinate: str
@@ -69,15 +80,39 @@ class DriveCylinder:
 
     @property
     def piston_area(self) -> float:
-        """A = π·D²/4 of one cylinder [m²]."""
+        """A = π·D²/4 of one cylinder [m²].
+
+        Examples
+        --------
+        >>> from assur.drive import DriveCylinder
+        >>> cyl = DriveCylinder("S", bore=0.125, rod=0.05, s_min=0.55, s_max=0.8)
+        >>> round(cyl.piston_area * 1e4, 1)    # [cm²], lab 6's 122.7 cm²
+        122.7
+        """
         return math.pi * self.bore ** 2 / 4
 
     @property
     def rod_side_area(self) -> float:
-        """π·(D² − d²)/4 of one cylinder [m²]."""
+        """π·(D² − d²)/4 of one cylinder [m²].
+
+        Examples
+        --------
+        >>> from assur.drive import DriveCylinder
+        >>> cyl = DriveCylinder("S", bore=0.125, rod=0.05, s_min=0.55, s_max=0.8)
+        >>> round(cyl.rod_side_area * 1e4, 1)  # the annulus [cm²]
+        103.1
+        """
         return math.pi * (self.bore ** 2 - self.rod ** 2) / 4
 
     @property
     def area(self) -> float:
-        """The pressurised area of all the cylinders, count·A [m²]."""
+        """The pressurised area of all the cylinders, count·A [m²].
+
+        Examples
+        --------
+        >>> from assur.drive import DriveCylinder
+        >>> two = DriveCylinder("S", bore=0.08, rod=0.04, s_min=0.42, s_max=0.67, count=2)
+        >>> round(two.area * 1e4, 2)           # two 80 mm pistons [cm²]
+        100.53
+        """
         return self.count * self.piston_area

@@ -50,9 +50,25 @@ class FlowDivider:
                              f"numbers > 0 summing to 1")
 
     def flows(self, flow):
-        """Q_i = s_i·Q [m³/s] of the flow ``flow`` [m³/s]."""
+        """Q_i = s_i·Q [m³/s] of the flow ``flow`` [m³/s].
+
+        Examples
+        --------
+        >>> from assur.drive import FlowDivider
+        >>> q = FlowDivider((0.6, 0.4)).flows(80 / 60e3)   # 80 l/min [m³/s]
+        >>> (q * 60e3).round(6).tolist()                    # [l/min]
+        [48.0, 32.0]
+        """
         return np.asarray(self.shares, dtype=float) * flow
 
     def speeds(self, flow, areas):
-        """V_i = s_i·Q/A_i [m/s] of cylinders of areas ``areas`` [m²]."""
+        """V_i = s_i·Q/A_i [m/s] of cylinders of areas ``areas`` [m²].
+
+        Examples
+        --------
+        >>> from assur.drive import FlowDivider
+        >>> v = FlowDivider((0.5, 0.5)).speeds(80 / 60e3, [0.01, 0.005])   # [m³/s], [m²]
+        >>> v.round(6).tolist()                                            # [m/s]
+        [0.066667, 0.133333]
+        """
         return self.flows(flow) / np.asarray(areas, dtype=float)

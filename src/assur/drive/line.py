@@ -34,6 +34,14 @@ class LineLosses:
         The generalized coordinate of the cylinder whose branch this line is in
         (needed when the circuit drives more than one coordinate).
     name : str, optional
+
+    Examples
+    --------
+    >>> from assur.drive import LineLosses
+    >>> line = LineLosses(a1=2.7e5, a2=1.5e6, a3=3.5e7)   # [Pa·s²/m, Pa·s/m, Pa·s²/m²]
+    >>> a1, a2, a3 = line.loss_coefficients(area=0.0123, flow=8.64e-4)
+    >>> round((a2 * 0.0704 + a3 * 0.0704 ** 2) / 1e6, 3)   # Δp [MPa] at 70.4 mm/s, steady
+    0.279
     """
 
     a1: float = 0.0
@@ -50,7 +58,14 @@ class LineLosses:
         nonneg(self, "a1", "a2", "a3")
 
     def loss_coefficients(self, area, flow):
-        """(a1, a2, a3) as given (``area`` [m²] and ``flow`` [m³/s] are not used)."""
+        """(a1, a2, a3) as given (``area`` [m²] and ``flow`` [m³/s] are not used).
+
+        Examples
+        --------
+        >>> from assur.drive import LineLosses
+        >>> LineLosses(a2=1.5e6).loss_coefficients(area=0.0123, flow=8.64e-4)  # [SI]
+        (0.0, 1500000.0, 0.0)
+        """
         return float(self.a1), float(self.a2), float(self.a3)
 
 
@@ -123,17 +138,46 @@ class Line:
 
     @property
     def area(self) -> float:
-        """Bore area A_h = π·d²/4 [m²]."""
+        """Bore area A_h = π·d²/4 [m²].
+
+        Examples
+        --------
+        >>> from assur.drive import Line
+        >>> round(Line(length=5.0, diameter=0.016).area * 1e6, 2)   # [mm²] of a 16 mm bore
+        201.06
+        """
         return math.pi * self.diameter ** 2 / 4
 
     def reynolds(self, flow) -> float:
-        """Re = u·d/ν at the flow ``flow`` [m³/s]."""
+        """Re = u·d/ν at the flow ``flow`` [m³/s].
+
+        Examples
+        --------
+        >>> from assur.drive import Line
+        >>> line = Line(length=5.0, diameter=0.016, viscosity=46e-6)   # [m], [m], [m²/s]
+        >>> round(line.reynolds(8.64e-4)), round(line.reynolds(-8.64e-4))  # [-], either sense
+        (1495, 1495)
+        """
         return abs(flow) / self.area * self.diameter / self.viscosity
 
     def loss_coefficients(self, area, flow):
         """(a1, a2, a3) referred to the speed of a piston of area ``area`` [m²] at the
         working flow ``flow`` [m³/s] (which fixes the regime and f) [Pa·s²/m,
-        Pa·s/m, Pa·s²/m²]."""
+        Pa·s/m, Pa·s²/m²].
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.drive import Line
+        >>> line = Line(length=5.0, diameter=0.016, fittings=6)   # lab 6's hose [m]
+        >>> area = math.pi * 0.125 ** 2 / 4                       # piston [m²]
+        >>> a1, a2, a3 = line.loss_coefficients(area, flow=8.64e-4)   # laminar, Re = 1495
+        >>> round(a1), round(a2), round(a3)     # [Pa·s²/m, Pa·s/m, Pa·s²/m²]
+        (265503, 1526642, 9723008)
+        >>> a1, a2, a3 = line.loss_coefficients(area, flow=3e-3)      # turbulent
+        >>> a2, round(a3 / 1e6, 2)              # a2 [Pa·s/m]; a3 [MPa·s²/m²]
+        (0.0, 28.51)
+        """
         from fluids.friction import LAMINAR_TRANSITION_PIPE, friction_factor
         r = area / self.area
         rho, L, d = self.density, self.length, self.diameter

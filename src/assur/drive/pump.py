@@ -54,5 +54,14 @@ class GearPump:
                              f"in (0, 1]")
 
     def flow(self) -> float:
-        """Delivered flow Q = q·n·η0 [m³/s]."""
+        """Delivered flow Q = q·n·η0 [m³/s].
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.drive import GearPump
+        >>> pump = GearPump(32e-6, 1800 * 2 * math.pi / 60, 0.9)   # НШ-32 at 1800 rpm
+        >>> round(pump.flow() * 1e6, 1)      # [cm³/s]: 32 cm³ · 30 1/s · 0.9
+        864.0
+        """
         return self.displacement * self.speed / (2 * math.pi) * self.eta_volumetric

@@ -37,6 +37,14 @@ class ReliefValve:
         (without it the valve guards every branch: port relief valves of
         one setting).
     name : str, optional
+
+    Examples
+    --------
+    >>> from assur.drive import ReliefValve
+    >>> valve = ReliefValve(setting=16e6, regulation_range=1e6)   # [Pa]: lab 6's 16 MPa
+    >>> q = 51.84 / 60e3                 # the pump's flow [m³/s] (51.84 l/min)
+    >>> [round(float(valve.flow(p, q)) * 60e3, 2) for p in (15e6, 16.5e6, 17e6)]  # [l/min]
+    [0.0, 25.92, 51.84]
     """
 
     setting: float
@@ -58,11 +66,29 @@ class ReliefValve:
 
     def flow(self, p, nominal_flow):
         """Flow through the valve Q_r [m³/s] at the pressure p [Pa] (array or
-        scalar), with ``nominal_flow`` [m³/s] when the valve has none of its own."""
+        scalar), with ``nominal_flow`` [m³/s] when the valve has none of its own.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur.drive import ReliefValve
+        >>> valve = ReliefValve(16e6, 1e6, nominal_flow=1e-3)   # [Pa], [Pa], [m³/s]
+        >>> p = np.array([10e6, 16e6, 16.25e6, 18e6])             # [Pa]
+        >>> (valve.flow(p, nominal_flow=5e-4) * 1e3).round(6).tolist()   # its own Q_nom [l/s]
+        [0.0, 0.0, 0.25, 2.0]
+        """
         q = self.nominal_flow if self.nominal_flow is not None else nominal_flow
         return q * np.maximum(p - self.setting, 0.0) / self.regulation_range
 
     def conductance(self, nominal_flow):
-        """dQ_r/dp above the setting [m³/(s·Pa)]."""
+        """dQ_r/dp above the setting [m³/(s·Pa)].
+
+        Examples
+        --------
+        >>> from assur.drive import ReliefValve
+        >>> valve = ReliefValve(16e6, 1e6)     # [Pa]; Q_nom from the circuit
+        >>> round(valve.conductance(8.64e-4) * 1e9, 6)   # [l/s per MPa]: 0.864 l/s over 1 MPa
+        0.864
+        """
         q = self.nominal_flow if self.nominal_flow is not None else nominal_flow
         return q / self.regulation_range

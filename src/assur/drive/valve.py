@@ -42,6 +42,21 @@ class DirectionalValve:
         The generalized coordinate of the cylinder whose branch this valve is in
         (needed when the circuit drives more than one coordinate).
     name : str, optional
+
+    Examples
+    --------
+    >>> import math
+    >>> from assur.drive import DirectionalValve
+    >>> valve = DirectionalValve("raise", dp_nominal=0.3e6,      # 0.3 MPa [Pa]
+    ...                          nominal_flow=80 / 60e3)         # at 80 l/min [m³/s]
+    >>> area = math.pi * 0.125 ** 2 / 4            # lab 6's piston [m²]
+    >>> a3 = valve.loss_coefficients(area, None)[2]
+    >>> round(a3 * 0.0704 ** 2 / 1e6, 3)           # Δp [MPa] at the steady 70.4 mm/s
+    0.126
+    >>> DirectionalValve("hold")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: directional_valve: position must be one of: ['raise', 'lower'], got 'hold'
     """
 
     position: str = "raise"
@@ -56,7 +71,14 @@ class DirectionalValve:
 
     @property
     def sense(self) -> int:
-        """+1 (``raise``: the force pushes S up) or −1 (``lower``) [-]."""
+        """+1 (``raise``: the force pushes S up) or −1 (``lower``) [-].
+
+        Examples
+        --------
+        >>> from assur.drive import DirectionalValve
+        >>> DirectionalValve("raise").sense, DirectionalValve("lower").sense
+        (1, -1)
+        """
         return 1 if self.position == "raise" else -1
 
     def __post_init__(self):
@@ -69,5 +91,14 @@ class DirectionalValve:
     def loss_coefficients(self, area, flow):
         """(a1, a2, a3) of the valve's loss referred to the piston speed Ṡ of a
         piston area ``area`` [m²] (Δp = a1·S̈ + a2·Ṡ + a3·Ṡ|Ṡ|) [Pa·s²/m, Pa·s/m,
-        Pa·s²/m²]; ``flow`` (the working flow) is not needed by an orifice."""
+        Pa·s²/m²]; ``flow`` (the working flow) is not needed by an orifice.
+
+        Examples
+        --------
+        >>> from assur.drive import DirectionalValve
+        >>> valve = DirectionalValve(dp_nominal=0.3e6, nominal_flow=1e-3)   # [Pa], [m³/s]
+        >>> a1, a2, a3 = valve.loss_coefficients(area=0.01, flow=None)      # [m²]
+        >>> a1, a2, round(a3)        # a3 = 0.3e6·(0.01/1e-3)² [Pa·s²/m²]
+        (0.0, 0.0, 30000000)
+        """
         return 0.0, 0.0, self.dp_nominal * (area / self.nominal_flow) ** 2

@@ -36,6 +36,16 @@ class OilVolume:
         The generalized coordinate of the cylinder whose branch this oil volume is in
         (needed when the circuit drives more than one coordinate).
     name : str, optional
+
+    Examples
+    --------
+    >>> from assur.drive import OilVolume
+    >>> oil = OilVolume(volume=3e-3)            # lab 6: 3 l [m³]
+    >>> oil.bulk_modulus / 1e6                  # E_pr [MPa], lab 6's 2.0e8 Pa
+    200.0
+    >>> q = 8.64e-4                     # the pump's flow [m³/s], the piston held at S0
+    >>> round(oil.bulk_modulus * q / oil.volume_at(0.0123, 0.0) / 1e6, 1)   # ṗ1 [MPa/s], eq. (2)
+    57.6
     """
 
     volume: float
@@ -52,5 +62,15 @@ class OilVolume:
 
     def volume_at(self, area, stroke):
         """V = V0 + A·(S − S0) [m³] for the pistons' area ``area`` [m²] and the stroke
-        from the start ``stroke`` = S − S0 [m]."""
+        from the start ``stroke`` = S − S0 [m].
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.drive import OilVolume
+        >>> oil = OilVolume(volume=3e-3)                   # V0 [m³]
+        >>> area = math.pi * 0.125 ** 2 / 4                # piston [m²]
+        >>> round(oil.volume_at(area, 0.25) * 1e3, 3)      # [l] after a 250 mm stroke
+        6.068
+        """
         return self.volume + area * stroke

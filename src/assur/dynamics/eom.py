@@ -62,6 +62,17 @@ class EquationsOfMotion:
         Q(q) of the mechanism's loads (weights of the masses included), positive
         along the coordinates [N or N·m]; the actuators hold the mechanism still
         with F = −Q.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import equations_of_motion
+    >>> mech = io.load(io.bundled("adapter_lab6")).mechanism   # seed 001 lab 6
+    >>> eom = equations_of_motion(mech, [0.55, 0.675, 0.8])     # S [m]
+    >>> eom.coordinates, eom.g, eom.mass_matrix.shape           # g [m/s²]
+    (('S',), 9.81, (3, 1, 1))
+    >>> (eom.generalized_forces / 1e3).round(2).tolist()   # Q(S) [kN]: the weight resists
+    [-58.56, -58.94, -59.05]
     """
 
     def __init__(self, kin, g):
@@ -125,6 +136,19 @@ class EquationsOfMotion:
         qdot : array_like
             Coordinate rates q̇ [m/s or rad/s], broadcastable to ``shape`` (k = 1) or
             ``shape + (k,)``.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import equations_of_motion
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism   # seed 001 lab 6
+        >>> eom = equations_of_motion(mech, [0.55, 0.675, 0.8])     # S [m]
+        >>> h = eom.velocity_terms(0.0704)        # at lab 6's steady Ṡ [m/s]
+        >>> h.round(1).tolist()                   # ½·m'(S)·Ṡ² [N]
+        [-810.0, 41.1, 598.8]
+        >>> m, dm = eom.reduced_mass()
+        >>> bool(abs(h - 0.5 * dm * 0.0704 ** 2).max() < 1e-9)   # lab 6 eq. (7) [N]
+        True
         """
         qd = self._qd(qdot)
         dM = self._dM
@@ -133,13 +157,36 @@ class EquationsOfMotion:
         return self._out(h)
 
     def kinetic_energy(self, qdot):
-        """T = ½·q̇ᵀ·M·q̇ [J], shape ``shape``."""
+        """T = ½·q̇ᵀ·M·q̇ [J], shape ``shape``.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import equations_of_motion
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism   # seed 001 lab 6
+        >>> eom = equations_of_motion(mech, [0.55, 0.675, 0.8])     # S [m]
+        >>> eom.kinetic_energy(0.0704).round(1).tolist()   # at Ṡ = 0.0704 m/s [J]
+        [128.0, 97.4, 130.6]
+        """
         qd = self._qd(qdot)
         return self.kinematics.reshape(0.5 * np.einsum("mni,mnij,mnj->mn", qd, self._M, qd))
 
     def actuator_forces(self, qdot, qddot):
         """Inverse dynamics: the actuator forces F = M·q̈ + h − Q [N or N·m] that move
-        the mechanism with q̇, q̈ (shape as :meth:`velocity_terms`)."""
+        the mechanism with q̇, q̈ (shape as :meth:`velocity_terms`).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import equations_of_motion
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism   # seed 001 lab 6
+        >>> eom = equations_of_motion(mech, [0.55, 0.675, 0.8])     # S [m]
+        >>> F = eom.actuator_forces(0.0704, 0.0)   # Ṡ [m/s], S̈ = 0 [m/s²]
+        >>> (F / 1e3).round(2).tolist()            # the cylinder's push [kN]
+        [57.75, 58.99, 59.65]
+        >>> (eom.actuator_forces(0.0, 0.0) / 1e3).round(2).tolist()   # holding: −Q [kN]
+        [58.56, 58.94, 59.05]
+        """
         qd, qdd = self._qd(qdot), self._qd(qddot, "qddot")
         F = (np.einsum("mnij,mnj->mni", self._M, qdd)
              + np.einsum("mnijl,mnj,mnl->mni", self._dM, qd, qd)
@@ -154,6 +201,19 @@ class EquationsOfMotion:
         ------
         ModelError
             Where M is singular (a coordinate that moves no mass).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import equations_of_motion
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism   # seed 001 lab 6
+        >>> eom = equations_of_motion(mech, [0.55, 0.675, 0.8])     # S [m]
+        >>> hold = -eom.generalized_forces           # the force that holds it [N]
+        >>> eom.accelerations(0.0, hold).round(9).tolist()   # at rest [m/s²]
+        [0.0, 0.0, 0.0]
+        >>> F = 17e6 * 0.0122718                     # 17 MPa on the 125 mm piston [N]
+        >>> eom.accelerations(0.0, F).round(3).tolist()      # S̈ [m/s²]
+        [2.905, 3.807, 2.838]
         """
         qd, F = self._qd(qdot), self._qd(forces, "forces")
         h = (np.einsum("mnijl,mnj,mnl->mni", self._dM, qd, qd)
@@ -172,7 +232,20 @@ class EquationsOfMotion:
     # ---- one coordinate ---------------------------------------------------------------
     def reduced_mass(self):
         """m(q) and dm/dq for one coordinate (lab 6 eq. 6 and m'(S)) [kg, kg/m] — or
-        J_red and dJ_red/dφ for a crank [kg·m², kg·m²/rad]."""
+        J_red and dJ_red/dφ for a crank [kg·m², kg·m²/rad].
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import equations_of_motion
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism   # seed 001 lab 6
+        >>> eom = equations_of_motion(mech, [0.55, 0.675, 0.8])     # S [m]
+        >>> m, dm = eom.reduced_mass()
+        >>> (m / 1e3).round(3).tolist()    # m(S) [t], lab 6 eq. (6)
+        [51.646, 39.313, 52.709]
+        >>> (dm / 1e3).round(1).tolist()   # m'(S) [t/m]: least near mid-stroke
+        [-326.9, 16.6, 241.6]
+        """
         if self.kinematics.k != 1:
             raise ValueError(f"reduced_mass needs one coordinate; this mechanism has "
                              f"{list(self.coordinates)}")

@@ -110,6 +110,24 @@ class ReducedTable:
         Reduced mass [kg] and its exact derivative [kg/m] at the nodes.
     Q : ndarray, shape (n,)
         Generalized force of the loads [N] at the nodes.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.dynamics import equations_of_motion
+    >>> from assur.dynamics.simulate import ReducedTable
+    >>> mech = io.load(io.bundled("adapter_lab6")).mechanism     # seed 001 lab 6
+    >>> S = np.linspace(0.55, 0.8, 51)                            # nodes [m]
+    >>> eom = equations_of_motion(mech, S)
+    >>> m, dm = eom.reduced_mass()
+    >>> table = ReducedTable(S, m, dm, eom.generalized_forces)
+    >>> m_mid, dm_mid, Q_mid = table(0.6775)                      # between two nodes [m]
+    >>> round(float(m_mid), 2), round(float(Q_mid), 2)            # m [kg], Q [N]
+    (39358.64, -58977.48)
+    >>> exact = equations_of_motion(mech, [0.6775])               # solved there
+    >>> round(float(exact.reduced_mass()[0][0]), 2), round(float(exact.generalized_forces[0]), 2)
+    (39358.64, -58977.48)
     """
 
     def __init__(self, S, m, dm, Q):
@@ -121,7 +139,19 @@ class ReducedTable:
 
     @classmethod
     def from_mechanism(cls, mech, s_min, s_max, nodes=801, g=None):
-        """Solve ``mech`` at ``nodes`` lengths on [s_min, s_max] and tabulate."""
+        """Solve ``mech`` at ``nodes`` lengths on [s_min, s_max] and tabulate.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics.simulate import ReducedTable
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism    # seed 001 lab 6
+        >>> table = ReducedTable.from_mechanism(mech, 0.55, 0.8, nodes=51)   # stops [m]
+        >>> table.S.size, round(table.h * 1e3, 6)                    # nodes, spacing [mm]
+        (51, 5.0)
+        >>> round(float(table.m[0]), 1)                              # m(S_min) [kg]
+        51646.3
+        """
         S = np.linspace(s_min, s_max, int(nodes))
         eom = equations_of_motion(mech.solve(S), g=g)
         m, dm = eom.reduced_mass()
@@ -149,7 +179,21 @@ class ReducedTable:
 
     def mechanics(self, q):
         """M, ∂M/∂q and Q at the states' coordinates ``q`` (shape (1, m)) as arrays of
-        shapes (m, 1, 1), (m, 1, 1, 1), (m, 1) [kg, kg/m, N]."""
+        shapes (m, 1, 1), (m, 1, 1, 1), (m, 1) [kg, kg/m, N].
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.dynamics.simulate import ReducedTable
+        >>> mech = io.load(io.bundled("adapter_lab6")).mechanism    # seed 001 lab 6
+        >>> table = ReducedTable.from_mechanism(mech, 0.55, 0.8, nodes=51)
+        >>> M, dM, Q = table.mechanics(np.array([[0.55, 0.675, 0.8]]))   # S [m]
+        >>> M.shape, dM.shape, Q.shape
+        ((3, 1, 1), (3, 1, 1, 1), (3, 1))
+        >>> (M[:, 0, 0] / 1e3).round(3).tolist()      # m(S) at the nodes [t]
+        [51.646, 39.313, 52.709]
+        """
         if q.shape[1] == 1:  # the solver's hot path: one state, on Python floats
             m, dm, Q = self._scalar(float(q[0, 0]))
             return np.array([[[m]]]), np.array([[[[dm]]]]), np.array([[Q]])
@@ -186,6 +230,16 @@ class ExactEquations:
     mechanism : Mechanism
     g : float
         Gravity [m/s²].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.dynamics.simulate import ExactEquations
+    >>> exact = ExactEquations(io.load(io.bundled("adapter_lab6")).mechanism, g=9.81)
+    >>> M, dM, Q = exact.mechanics(np.array([[0.675]]))    # S [m], one state
+    >>> round(float(M[0, 0, 0]), 1), round(float(Q[0, 0]), 1)   # m [kg], Q [N]
+    (39313.4, -58944.8)
     """
 
     def __init__(self, mechanism, g):
@@ -201,6 +255,20 @@ class ExactEquations:
         ------
         AssemblyError
             A state where the mechanism does not assemble.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.dynamics.simulate import ExactEquations
+        >>> exact = ExactEquations(io.load(io.bundled("adapter_lab6")).mechanism, g=9.81)
+        >>> M, dM, Q = exact.mechanics(np.array([[0.55, 0.8]]))   # two states, S [m]
+        >>> (M[:, 0, 0] / 1e3).round(3).tolist(), (Q[:, 0] / 1e3).round(2).tolist()  # [t], [kN]
+        ([51.646, 52.709], [-58.56, -59.05])
+        >>> exact.mechanics(np.array([[2.0]]))   # far past the stroke [m]  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        assur.errors.AssemblyError: cylinder–lever group 'I (2,3)' (links 2, 3) cannot assemble at position 0 (S = 2): ...
         """
         k, m = self.k, q.shape[1]
         pos = q[0] if k == 1 else q.T
@@ -261,6 +329,19 @@ class SimulationResult:
         The first coordinate.
     steady_speed : float or ndarray
         s_j·Q_p/A_j along the coordinates [m/s] (lab 6: Q/A; seed 004 eqs. 65–66).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> model = io.load(io.bundled("adapter_lab6"))              # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 0.5, t_eval=[0.0, 0.25, 0.5])  # [s]
+    >>> r.status, r.message
+    (0, 'reached t_end')
+    >>> r.q.round(4).tolist()                   # S [m]
+    [0.55, 0.5576, 0.5818]
+    >>> [round(t, 3) for t in r.events["lift-off"]]   # [s]
+    [0.083]
     """
 
     status: int
@@ -292,24 +373,81 @@ class SimulationResult:
 
     @property
     def success(self) -> bool:
+        """True unless the integration failed (``status`` ≥ 0).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import simulate
+        >>> model = io.load(io.bundled("adapter_lab6"))              # seed 001 lab 6
+        >>> r = simulate(model.mechanism, model.drive, 0.5, t_eval=[0.0, 0.25, 0.5])  # [s]
+        >>> r.success, r.status
+        (True, 0)
+        """
         return self.status >= 0
 
     @property
     def coordinate(self) -> str:
+        """The first coordinate.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import simulate
+        >>> model = io.load(io.bundled("adapter_lab6"))              # seed 001 lab 6
+        >>> r = simulate(model.mechanism, model.drive, 0.5, t_eval=[0.0, 0.25, 0.5])  # [s]
+        >>> r.coordinate, r.coordinates
+        ('S', ('S',))
+        """
         return self.coordinates[0]
 
     @property
     def k(self) -> int:
+        """The number of coordinates (cylinders) k.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import simulate
+        >>> model = io.load(io.bundled("adapter_lab6"))              # seed 001 lab 6
+        >>> r = simulate(model.mechanism, model.drive, 0.5, t_eval=[0.0, 0.25, 0.5])  # [s]
+        >>> r.k, r.q.shape                # one coordinate: arrays of shape (n,)
+        (1, (3,))
+        """
         return len(self.coordinates)
 
     def column(self, a, j):
-        """The coordinate ``j``'s column of an array over the coordinates."""
+        """The coordinate ``j``'s column of an array over the coordinates (the array
+        itself for one coordinate).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import simulate
+        >>> model = io.load(io.bundled("adapter_lab6"))              # seed 001 lab 6
+        >>> r = simulate(model.mechanism, model.drive, 0.5, t_eval=[0.0, 0.25, 0.5])  # [s]
+        >>> (r.column(r.p1, 0) / 1e6).round(2).tolist()   # p1 of S [MPa]
+        [0.0, 8.18, 3.07]
+        """
         a = np.asarray(a)
         return a if self.k == 1 else a[:, j]
 
     def to_frame(self):
         """A pandas DataFrame of the time series (SI units, the seed's symbols; with
-        k > 1 coordinates a branch's columns end with its coordinate)."""
+        k > 1 coordinates a branch's columns end with its coordinate).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.dynamics import simulate
+        >>> model = io.load(io.bundled("adapter_lab6"))              # seed 001 lab 6
+        >>> r = simulate(model.mechanism, model.drive, 0.5, t_eval=[0.0, 0.25, 0.5])  # [s]
+        >>> df = r.to_frame()
+        >>> df.shape, list(df.columns[:7])
+        ((3, 15), ['t', 'S', 'dS', 'ddS', 'p1', 'p2', 'dp1'])
+        >>> round(float(df["Q_pump"].iloc[0]) * 60e3, 2)   # [l/min]
+        51.84
+        """
         import pandas as pd
         cols = {"t": self.t}
         for j, c in enumerate(self.coordinates):
