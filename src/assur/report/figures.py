@@ -679,15 +679,15 @@ def figures(analysis, lang="en", design=None, names=None) -> dict:
     >>> from assur import examples
     >>> from assur.report.figures import figures
     >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
-    >>> list(figures(a))  # the hitch names no distances
-    ['angles', 'analogs', 'transmission', 'capacity', 'force', 'pressure', 'reactions', 'hodograph', 'stability']
+    >>> print(*figures(a))  # the hitch names no distances
+    angles analogs transmission capacity force pressure reactions hodograph stability
     >>> figs = figures(a, "ru", names=["force"])
     >>> figs["force"].axes[0].get_title()
     'Сила на ГЦ'
-    >>> figures(a, names=["speed"])
+    >>> figures(a, names=["speed"])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: figure names must be among: ['angles', 'distances', 'analogs', 'transmission', 'capacity', 'force', 'pressure', 'reactions', 'hodograph', 'stability']; got ['speed']
+    ValueError: figure names must be among: ['angles', 'distances', ...]; got ['speed']
     """
     check_lang(lang)
     names = list(FIGURES) if names is None else list(names)

@@ -325,7 +325,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     >>> re.search(r"<title>(.*?)</title>", page).group(1)
     'Mini-tractor mounted-implement hitch (seed 003) — Analysis report'
     >>> rows = re.findall(r"<tr><td>0\\.420</td>.*?</tr>", page)  # S = 0.420 m of each table
-    >>> re.findall(r"<td>(.*?)</td>", rows[3])  # table 4.1 as seed 003 prints it [m, N, Pa, N, N, %]
+    >>> re.findall(r"<td>(.*?)</td>", rows[3])  # table 4.1 as printed [m, N, Pa, N, N, %]
     ['0.420', '129614', '15348729', '33139', '31354', '14.0']
     >>> '<html lang="ru"' in render_html(a, "ru", figures={}, drawing=False, animation=False)
     True

@@ -65,8 +65,10 @@ def figures(result, lang="en"):
     >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
     >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
     >>> figs = figures(r)
-    >>> [(name, f.axes[0].get_ylabel()) for name, f in figs.items()][:4]
-    [('pressure', 'p [MPa]'), ('pressure_rate', 'dp1/dt [MPa/s]'), ('coordinate', 'S [m]'), ('speed', 'dS/dt [m/s]')]
+    >>> print(*figs)
+    pressure pressure_rate coordinate speed acceleration reduced_mass
+    >>> [f.axes[0].get_ylabel() for f in figs.values()][:4]
+    ['p [MPa]', 'dp1/dt [MPa/s]', 'S [m]', 'dS/dt [m/s]']
     >>> [line.get_label() for line in figs["speed"].axes[0].lines]
     ['dS/dt', 'Q/A (steady speed)']
     >>> round(float(figs["speed"].axes[0].lines[1].get_ydata()[0]), 4)  # Q/A [m/s], lab 6: 0.0704

@@ -59,7 +59,8 @@ def display_scale(r, o):
     >>> from assur.report.tolerance import display_scale
     >>> m = examples.hitch_003()
     >>> tol = [Tolerance("X01", 0.5e-3), Tolerance("L4", 1e-3, "uniform")]  # ±t [m]
-    >>> r = monte_carlo(m, [0.45, 0.6], tol, outputs=["p(ГЦ)", "Y(56)", "G(ГЦ, S6)"], samples=200, seed=1)  # S [m]
+    >>> outputs = ["p(ГЦ)", "Y(56)", "G(ГЦ, S6)"]
+    >>> r = monte_carlo(m, [0.45, 0.6], tol, outputs=outputs, samples=200, seed=1)  # S [m]
     >>> r.units  # SI inside
     {'p(ГЦ)': 'Pa', 'Y(56)': 'm', 'G(ГЦ, S6)': 'N'}
     >>> [display_scale(r, o) for o in r.outputs]  # [SI per unit shown], unit shown
