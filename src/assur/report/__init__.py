@@ -32,7 +32,16 @@ FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")
 
 def report_steps(formats=FORMATS) -> list:
     """Names of the steps :func:`write_report` announces to ``progress``, in order
-    (so a progress bar can know its length)."""
+    (so a progress bar can know its length).
+
+    Examples
+    --------
+    >>> from assur.report import report_steps
+    >>> report_steps(("csv",))
+    ['tables', 'csv']
+    >>> report_steps()  # every format
+    ['tables', 'csv', 'xlsx', 'figures', 'drawing', 'animation', 'html']
+    """
     fm = set(formats)
     steps = ["tables"]
     if "csv" in fm:
@@ -80,6 +89,25 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
     -------
     dict of str to list of Path
         Files written, by format.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur import examples
+    >>> from assur.report import write_report
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> steps = []
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     files = write_report(a, d, formats=("csv", "xlsx"), progress=steps.append)
+    ...     sizes = [p.stat().st_size > 0 for p in files["csv"] + files["xlsx"]]
+    >>> steps
+    ['tables', 'csv', 'xlsx']
+    >>> [p.name for p in files["csv"]][:3], files["xlsx"][0].name, all(sizes)
+    (['table_2_1.csv', 'table_2_2.csv', 'table_3_1.csv'], 'tables.xlsx', True)
+    >>> write_report(a, "unused", formats=("pdf",))
+    Traceback (most recent call last):
+    ...
+    ValueError: formats must be among: ['csv', 'xlsx', 'html', 'png', 'svg', 'gif']; got ['pdf']
     """
     from . import drawing as _drawing
     from . import figures as _figures

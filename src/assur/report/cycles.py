@@ -37,7 +37,7 @@ figure              what
 ``static``          max |F_s1|, |F_s2|, the static parts (they do not depend on T_c)
 ==================  ==============================================================
 
-Forces are shown in kN in the figures and the HTML, in N in the CSV and XLSX.
+Forces are shown in kN in the figures, in N in the tables (HTML, CSV and XLSX).
 """
 
 from __future__ import annotations
@@ -227,7 +227,14 @@ _T = {
 
 
 def verdict_word(agrees, lang="en"):
-    """The verdict "agrees" or "does not agree" in ``lang``."""
+    """The verdict "agrees" or "does not agree" in ``lang``.
+
+    Examples
+    --------
+    >>> from assur.report.cycles import verdict_word
+    >>> verdict_word(True), verdict_word(False), verdict_word(False, "ru")
+    ('agrees', 'does not agree', 'не согласуется')
+    """
     return localize(_T["agrees" if agrees else "disagrees"], check_lang(lang))
 
 
@@ -243,13 +250,28 @@ class Verdict:
     Attributes
     ----------
     key : str
-        ``boom_excess``, ``stick_excess``, ``dynamic_fall`` or ``effective_below``.
+        ``boom_excess``, ``stick_excess``, ``dynamic_fall`` or ``effective_below``
+        (:func:`conclusions`); ``pump_forces`` or ``pump_dynamic``
+        (:func:`pump_conclusions`).
     claim, model, why : str
         The paper's statement, the model's figures, the reason (in the language
         asked).
     agrees : bool
     numbers : dict
         The computed values the verdict rests on.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.cycles import strokes, sweep
+    >>> from assur.report.cycles import conclusions
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> df = sweep(model.mechanism, *strokes(model.drive))  # T_c = 4…20 s, 4 scenarios
+    >>> v = conclusions(df)[0]
+    >>> v.key, v.agrees, v.model  # the boom's excess at T_c = 6 s; the paper: about 90 %
+    ('boom_excess', True, '+79 % with the stick first (a), +24 % with the boom first (b)')
+    >>> round(v.numbers["excess"]["separate_second"], 3)  # separate ÷ combined − 1 [-]
+    0.794
     """
 
     key: str
@@ -275,6 +297,24 @@ def conclusions(df, lang="en", paper=PAPER, about=ABOUT, effective=EFFECTIVE):
     ------
     ValueError
         A sweep without a scenario or without the paper's cycle time.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.cycles import strokes, sweep
+    >>> from assur.report.cycles import conclusions
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> df = sweep(model.mechanism, *strokes(model.drive))  # T_c = 4…20 s, 4 scenarios
+    >>> [v.key for v in conclusions(df)]
+    ['boom_excess', 'stick_excess', 'dynamic_fall', 'effective_below']
+    >>> [v.key for v in conclusions(df) if v.agrees]  # claims 1 (boom) and 2 hold
+    ['boom_excess', 'dynamic_fall']
+    >>> conclusions(df)[3].numbers["T_star"]  # combined motion gains ≥ 10 % up to [s]
+    9.0
+    >>> conclusions(df[df["T"] != 6.0])
+    Traceback (most recent call last):
+    ...
+    ValueError: the sweep has no cycle time T = 6.0 s (the paper's claim 1)
     """
     check_lang(lang)
     comb = _by(df, "combined_equal")
@@ -335,7 +375,22 @@ def drive_sweep(model, g=None):
     """Max |F_j| and |F_d,j| [N] of the cycles at the drive's own speeds
     (:func:`assur.dynamics.cycles.drive_cycles`), a DataFrame with columns
     ``scenario`` (``divider``, ``pump_second``, ``pump_first``), ``duration`` [s],
-    ``F1_max``, ``F2_max``, ``Fd1_max``, ``Fd2_max``."""
+    ``F1_max``, ``F2_max``, ``Fd1_max``, ``Fd2_max``.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.report.cycles import drive_sweep
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> dd = drive_sweep(model).set_index("scenario")
+    >>> dd.index.tolist()
+    ['divider', 'pump_second', 'pump_first']
+    >>> [round(float(x), 2) for x in dd["duration"]]  # the pump's 80 l/min [s]
+    [7.42, 5.59, 5.59]
+    >>> d = dd["Fd1_max"]  # twice the boom's speed: 4 times its dynamic force [-]
+    >>> round(float(d["pump_second"] / d["divider"]), 3)
+    4.0
+    """
     import pandas as pd
 
     from ..dynamics.cycles import cycle_forces, drive_cycles
@@ -353,7 +408,19 @@ def drive_sweep(model, g=None):
 def pump_conclusions(dd, lang="en", paper=PAPER, about=ABOUT):
     """The paper's conclusion 3 (the standard pump with a divider against separate
     motion) against :func:`drive_sweep`'s ``dd``: two :class:`Verdict` (``pump_forces``,
-    ``pump_dynamic``)."""
+    ``pump_dynamic``).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.report.cycles import drive_sweep, pump_conclusions
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> forces, dynamic = pump_conclusions(drive_sweep(model))
+    >>> forces.key, forces.agrees, dynamic.key, dynamic.agrees
+    ('pump_forces', True, 'pump_dynamic', True)
+    >>> [round(x, 2) for x in forces.numbers["ratios"]["pump_second"]]  # boom, stick [-]
+    [1.39, 1.43]
+    """
     check_lang(lang)
     d = dd.set_index("scenario")
     names = {"pump_second": "a" if lang == "en" else "а",
@@ -381,7 +448,23 @@ def pump_conclusions(dd, lang="en", paper=PAPER, about=ABOUT):
 def tables(df, lang="en"):
     """The sweep as :class:`assur.report.tables.Table` objects: one per scenario
     (T_c [s]; max |F|, |F_s|, |F_d| of both cylinders [N]; the duration [s]) and the
-    ratios separate ÷ combined (V1 = V2) of both orders."""
+    ratios separate ÷ combined (V1 = V2) of both orders.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.cycles import strokes, sweep
+    >>> from assur.report.cycles import tables
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> df = sweep(model.mechanism, *strokes(model.drive))  # T_c = 4…20 s, 4 scenarios
+    >>> tabs = tables(df)
+    >>> [t.id for t in tabs]
+    ['combined_equal', 'combined_ideal', 'separate_second', 'separate_first', 'ratios']
+    >>> tabs[0].title("en"), len(tabs[0])  # 17 cycle times
+    ('Max cylinder forces over the cycle: combined, V1 = V2 (eq. 60)', 17)
+    >>> round(float(tabs[-1]["F1_max_a/comb"][2]), 3)  # at T_c = 6 s: +79 % [-]
+    1.794
+    """
     check_lang(lang)
     out = []
     lab = {"T": ("cycle time", "время цикла"), "duration": ("until the last rod arrives",
@@ -421,7 +504,19 @@ def drive_speeds(circuit):
     """Rod speeds of a drive's cylinders fed by its pump (seed 004 eqs. 63–68): rows
     ``(coordinate, side, area [m²], combined speed [m/s], separate speed [m/s])``,
     combined = the divider's share s_j·Q/f, separate = the whole flow Q/f, for the
-    piston and the rod side of each cylinder."""
+    piston and the rod side of each cylinder.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.report.cycles import drive_speeds
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> rows = drive_speeds(model.drive)  # the pump's 80 l/min
+    >>> [(c, side, round(f * 1e4, 2)) for c, side, f, _, _ in rows][:2]  # area [cm²]
+    [('S1', 'piston', 78.54), ('S1', 'rod', 47.37)]
+    >>> [round(v, 4) for v in rows[0][3:]]  # boom rod, combined and separate [m/s]
+    [0.0849, 0.1698]
+    """
     Q = circuit.pump_flow()
     rows = []
     for b in circuit.branches:
@@ -447,7 +542,24 @@ def _curves(df, lang, key, col, title):
 
 
 def figures(df, lang="en"):
-    """``{name: Figure}`` of :data:`FIGURES` for a sweep."""
+    """``{name: Figure}`` of :data:`FIGURES` for a sweep.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.cycles import strokes, sweep
+    >>> from assur.report.cycles import figures
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> df = sweep(model.mechanism, *strokes(model.drive))  # T_c = 4…20 s, 4 scenarios
+    >>> figs = figures(df)
+    >>> list(figs)
+    ['max_F1', 'max_F2', 'dynamic_F1', 'dynamic_F2', 'static']
+    >>> ax = figs["max_F2"].axes[0]
+    >>> ax.get_title(), ax.get_ylabel(), len(ax.lines)  # a curve per scenario
+    ("Max force of the stick's cylinder |F2|", 'max |F2| [kN]', 4)
+    >>> round(float(ax.lines[0].get_ydata()[2]), 1)  # combined, T_c = 6 s [kN]
+    78.3
+    """
     check_lang(lang)
     out = {name: _curves(df, lang, name, (c,), name) for name, c in (
         ("max_F1", "F1_max"), ("max_F2", "F2_max"), ("dynamic_F1", "Fd1_max"),
@@ -520,6 +632,23 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
         A model without a drive (its strokes come from the cylinders' stops).
     ValueError
         A mechanism that is not of two coordinates.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur import io
+    >>> from assur.report.cycles import write_cycles_report
+    >>> model = io.load(io.bundled("crane_lv184a"))  # seed 004's ЛВ-184А manipulator
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     df, verdicts, files = write_cycles_report(model, d, formats=("csv",))
+    >>> len(df), [p.name for p in files][-3:]  # 4 scenarios × 17 cycle times
+    (68, ['cycles_ratios.csv', 'cycles_pump.csv', 'cycles_conclusions.csv'])
+    >>> [v.key for v in verdicts if v.agrees]
+    ['boom_excess', 'dynamic_fall', 'pump_forces', 'pump_dynamic']
+    >>> write_cycles_report(io.load(io.bundled("hitch_003")), "unused")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: model 'hitch_003' has no hydraulic drive: its cycle runs between ...
     """
     import jinja2
     import pandas as pd

@@ -51,7 +51,31 @@ TEXT = {
 
 def curves(problem, x):
     """The outputs the criteria read, over the problem's positions, for the design
-    ``x`` [SI]: ``{output: array (n,)}`` (SI)."""
+    ``x`` [SI]: ``{output: array (n,)}`` (SI).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.design import Problem, load_problem
+    >>> from assur.design.criteria import criterion
+    >>> from assur.quantities import Unit
+    >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
+    >>> m = base.mechanism
+    >>> objectives = [criterion("pressure", {"cylinder": "ГЦ"}, m, sense="minimize",
+    ...                         unit=Unit("MPa", 1e6)),
+    ...               criterion("bound", {"quantity": "Y(56)", "of": "max"}, m,
+    ...                         sense="maximize")]
+    >>> # the pivot 01 moved within ±30 mm, over 8 of the 50 positions (S = 0.42…0.67 m)
+    >>> pb = Problem(m, base.positions[::7], base.variables[:2], objectives=objectives)
+    >>> from assur.report.design import curves
+    >>> c = curves(pb, pb.x0)  # the original design
+    >>> list(c)
+    ['p(ГЦ)', 'Y(56)']
+    >>> round(float(c["p(ГЦ)"][-1]) / 1e6, 3)  # at S = 0.670 m [MPa], seed 003 table 4.1: 16.064
+    16.064
+    >>> [round(float(y), 3) for y in c["Y(56)"][[0, -1]]]  # lift range of 56 [m], seed: 0.200 low
+    [0.2, 1.043]
+    """
     mech = problem.mechanism.with_params(**{v.name: float(xi)
                                             for v, xi in zip(problem.variables, x)})
     f = mech.evaluate(problem.positions, outputs=list(problem.outputs))
@@ -81,7 +105,35 @@ def comparison_html(problem, result, title=None, lang="en"):
     """HTML comparing the best design of ``result`` (an
     :class:`~assur.design.search.OptimizeResult`) with the original: the variables,
     the objective, the constraints, and the curves of both over the positions;
-    labels in ``lang`` ("en" or "ru")."""
+    labels in ``lang`` ("en" or "ru").
+
+    Examples
+    --------
+    >>> import re
+    >>> from assur import io
+    >>> from assur.design import Problem, load_problem
+    >>> from assur.design.criteria import criterion
+    >>> from assur.quantities import Unit
+    >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
+    >>> m = base.mechanism
+    >>> objectives = [criterion("pressure", {"cylinder": "ГЦ"}, m, sense="minimize",
+    ...                         unit=Unit("MPa", 1e6)),
+    ...               criterion("bound", {"quantity": "Y(56)", "of": "max"}, m,
+    ...                         sense="maximize")]
+    >>> # the pivot 01 moved within ±30 mm, over 8 of the 50 positions (S = 0.42…0.67 m)
+    >>> pb = Problem(m, base.positions[::7], base.variables[:2], objectives=objectives)
+    >>> from assur.design.search import optimize
+    >>> res = optimize(pb, popsize=3, maxiter=2, seed=0, polish=False)  # a short search
+    >>> from assur.report.design import comparison_html
+    >>> page = comparison_html(pb, res)
+    >>> re.search(r"<p>(.*?)</p>", page).group(1)
+    'The best design is feasible. 18 designs evaluated in 4 batches over 2 generations; 8 positions each.'
+    >>> row = re.search(r"<td>minimize max p\\(ГЦ\\)</td><td>(.*?)</td>", page)
+    >>> row.group(1), res.value < 16.0637e6  # the original's peak pressure; the best is lower [Pa]
+    ('16.0637 MPa', True)
+    >>> page.count("<figure>")  # a curve of each output, original and best
+    2
+    """
     from .figures import new_figure, to_png_bytes   # matplotlib when a report is made
     from .html import data_uri
     if lang not in ("en", "ru"):
@@ -164,7 +216,33 @@ figure{{display:inline-block;margin:.5em}}</style></head><body>
 
 
 def write_comparison(path, problem, result, title=None, lang="en"):
-    """Write :func:`comparison_html` to ``path``; returns the path."""
+    """Write :func:`comparison_html` to ``path``; returns the path.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import io
+    >>> from assur.design import Problem, load_problem
+    >>> from assur.design.criteria import criterion
+    >>> from assur.quantities import Unit
+    >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
+    >>> m = base.mechanism
+    >>> objectives = [criterion("pressure", {"cylinder": "ГЦ"}, m, sense="minimize",
+    ...                         unit=Unit("MPa", 1e6)),
+    ...               criterion("bound", {"quantity": "Y(56)", "of": "max"}, m,
+    ...                         sense="maximize")]
+    >>> # the pivot 01 moved within ±30 mm, over 8 of the 50 positions (S = 0.42…0.67 m)
+    >>> pb = Problem(m, base.positions[::7], base.variables[:2], objectives=objectives)
+    >>> from assur.design.search import optimize
+    >>> res = optimize(pb, popsize=3, maxiter=2, seed=0, polish=False)  # a short search
+    >>> from assur.report.design import write_comparison
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = write_comparison(Path(d) / "design.html", pb, res, lang="ru")
+    ...     page = p.read_text(encoding="utf-8")
+    >>> p.name, "Переменные проектирования" in page, "минимизировать max p(ГЦ)" in page
+    ('design.html', True, True)
+    """
     from pathlib import Path
     p = Path(path)
     p.write_text(comparison_html(problem, result, title, lang), encoding="utf-8")
@@ -173,7 +251,36 @@ def write_comparison(path, problem, result, title=None, lang="en"):
 
 def pareto_figure(problem, result, path):
     """The Pareto front (two first objectives, in their units) with the original
-    design, saved to ``path`` (PNG or SVG)."""
+    design, saved to ``path`` (PNG or SVG).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import io
+    >>> from assur.design import Problem, load_problem
+    >>> from assur.design.criteria import criterion
+    >>> from assur.quantities import Unit
+    >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
+    >>> m = base.mechanism
+    >>> objectives = [criterion("pressure", {"cylinder": "ГЦ"}, m, sense="minimize",
+    ...                         unit=Unit("MPa", 1e6)),
+    ...               criterion("bound", {"quantity": "Y(56)", "of": "max"}, m,
+    ...                         sense="maximize")]
+    >>> # the pivot 01 moved within ±30 mm, over 8 of the 50 positions (S = 0.42…0.67 m)
+    >>> pb = Problem(m, base.positions[::7], base.variables[:2], objectives=objectives)
+    >>> from assur.design.search import pareto
+    >>> from assur.report.design import pareto_figure
+    >>> front = pareto(pb, pop_size=8, generations=3, seed=2)  # NSGA-II, short
+    >>> F = front.batch.objectives  # max p [Pa], max Y(56) [m] of each front design
+    >>> bool(F[:, 0].max() < 16.0637e6 and F[:, 1].min() > 1.043)  # both better than the original
+    True
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = pareto_figure(pb, front, Path(d) / "front.png")
+    ...     png = p.read_bytes()
+    >>> p.name, png[1:4]
+    ('front.png', b'PNG')
+    """
     from .figures import new_figure
     a, b = problem.objectives[:2]
     fig = new_figure(5.5, 4)

@@ -204,6 +204,24 @@ def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.
     Returns
     -------
     matplotlib.figure.Figure
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> from assur.report.drawing import draw
+    >>> ax = draw(a).axes[0]  # the first (S = 0.42 m) and the last position
+    >>> print(ax.get_title())
+    Mini-tractor mounted-implement hitch (seed 003)
+    S = 0.42 m; S = 0.67 m
+    >>> [text.get_text() for text in ax.texts][:10]  # links, then frame pivots
+    ['2', '3', '4', '5', '6', '7', '01', '03', '05', '07']
+    >>> draw(a, positions=[4], lang="ru").axes[0].get_title().splitlines()[1]  # S [м]
+    'S = 0.5311 м'
+    >>> draw(a, positions=[10])
+    Traceback (most recent call last):
+    ...
+    ValueError: positions must be in 0…9, got 10
     """
     check_lang(lang)
     v = _View(analysis, design)
@@ -262,6 +280,17 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     Returns
     -------
     list of PIL.Image.Image
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.drawing import render_frames
+    >>> a = examples.hitch_003().analyze([0.42, 0.67])  # S [m]
+    >>> frames = render_frames(a, frames=2, dpi=40)  # 6.4 × 5.0 in at 40 dpi
+    >>> len(frames), frames[0].size, frames[0].mode
+    (2, (256, 200), 'RGB')
+    >>> frames[0].tobytes() != frames[1].tobytes()  # the hitch moved
+    True
     """
     from PIL import Image
 
@@ -313,6 +342,23 @@ def write_gif(frames, path, duration=120, bounce=True) -> Path:
         Time per frame [ms].
     bounce : bool
         Play forward then backward (the mechanism goes up and down).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from PIL import Image
+    >>> from assur.report.drawing import write_gif
+    >>> frames = [Image.new("RGB", (64, 48), c) for c in ("white", "grey", "black")]
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     with Image.open(write_gif(frames, Path(d) / "m.gif")) as gif:
+    ...         n, loop, ms = gif.n_frames, gif.info["loop"], gif.info["duration"]
+    >>> n, loop, ms  # 3 forward, 1 back (the ends not repeated); loops forever; [ms]
+    (4, 0, 120)
+    >>> write_gif([], "m.gif")
+    Traceback (most recent call last):
+    ...
+    ValueError: no frames to write
     """
     if not frames:
         raise ValueError("no frames to write")
@@ -325,7 +371,21 @@ def write_gif(frames, path, duration=120, bounce=True) -> Path:
 
 
 def frames_png_bytes(frames) -> list:
-    """The frames as small palette PNGs (bytes), for the HTML player."""
+    """The frames as small palette PNGs (bytes), for the HTML player.
+
+    Examples
+    --------
+    >>> import io
+    >>> from PIL import Image
+    >>> from assur.report.drawing import frames_png_bytes
+    >>> frames = [Image.new("RGB", (64, 48), c) for c in ("white", "grey", "black")]
+    >>> pngs = frames_png_bytes(frames)
+    >>> len(pngs), [p[1:4] for p in pngs][0]
+    (3, b'PNG')
+    >>> img = Image.open(io.BytesIO(pngs[1]))
+    >>> img.mode, img.size, img.convert("RGB").getpixel((0, 0))  # palette; size [px]; grey
+    ('P', (64, 48), (128, 128, 128))
+    """
     out = []
     for f in _palette(list(frames)):
         buf = io.BytesIO()

@@ -52,7 +52,23 @@ def _xlabel(lang, coordinate="φ"):
 def centre_of_mass(dynamics, lang="en", balancing=None):
     """The common centre of mass of the moving links over the turn, about its mean
     position [mm] (seed 001 lab 3 fig. 3.3), before and, with ``balancing``, after
-    the counter-masses (the dot marks the first position)."""
+    the counter-masses (the dot marks the first position).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> from assur.report.dynamics import centre_of_mass
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> ax = centre_of_mass(dyn).axes[0]
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('x − x̄ [mm]', 'y − ȳ [mm]')
+    >>> print(ax.lines[0].get_label())  # amplitudes [mm], area [mm²], mean position [mm]
+    without counter-masses: A_x = 3.95 mm, A_y = 3.74 mm, area 3.71 mm²
+    about its mean (x̄, ȳ) = (889.8, 46.2) mm
+    """
     lang = check_lang(lang)
     fig = new_figure(6.4, 5.0)
     mm = _u("mm", lang)
@@ -81,7 +97,25 @@ def hodographs(dynamics, lang="en", reactions=None):
 
     ``reactions``: ``{name: (i, j)}`` (the force of link i on link j); default the
     model's named reactions (``tables["reactions"]``), else every joint with the
-    frame."""
+    frame.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> from assur.report.dynamics import hodographs
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> ax = hodographs(dyn).axes[0]
+    >>> [line.get_label() for line in ax.lines[:-1:2]]  # the model's named reactions
+    ['R34', 'R38', 'R89', 'R01', 'R03']
+    >>> len(ax.lines[0].get_xdata())  # 361 positions, closed
+    362
+    >>> ax = hodographs(dyn, reactions={"R01": ("0", "1")}).axes[0]  # frame on crank 1
+    >>> ax.lines[0].get_label(), ax.get_xlabel()
+    ('R01', 'R_x [N]')
+    """
     lang = check_lang(lang)
     if reactions is None:
         reactions = dynamics.statics.named_reactions() or {
@@ -102,7 +136,23 @@ def hodographs(dynamics, lang="en", reactions=None):
 
 def reduced_moment(dynamics, lang="en"):
     """Reduced moment of all loads (inertia included) and without inertia, and the
-    driving moment from the reactions [N·m], against the crank angle [°]."""
+    driving moment from the reactions [N·m], against the crank angle [°].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> from assur.report.dynamics import reduced_moment
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> ax = reduced_moment(dyn).axes[0]
+    >>> ax.get_xlabel(), ax.get_ylabel(), len(ax.lines)
+    ('crank angle j1 [deg]', 'M [N·m]', 3)
+    >>> round(float(np.max(ax.lines[0].get_ydata())), 1)  # largest M_red, inertia included [N·m]
+    349.7
+    """
     lang = check_lang(lang)
     fig = new_figure()
     ax = titled_axes(fig, _t("f_mred", lang), _xlabel(lang, dynamics.coordinate),
@@ -119,7 +169,24 @@ def reduced_moment(dynamics, lang="en"):
 
 
 def reduced_inertia(dynamics, lang="en"):
-    """J_red [kg·m²] and dJ_red/dφ [kg·m²/rad] against the crank angle [°]."""
+    """J_red [kg·m²] and dJ_red/dφ [kg·m²/rad] against the crank angle [°].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> from assur.report.dynamics import reduced_inertia
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> fig = reduced_inertia(dyn)
+    >>> len(fig.axes), fig.axes[0].get_title()  # J_red, and dJ_red/dφ on a twin axis
+    (2, 'Reduced moment of inertia')
+    >>> J = fig.axes[0].lines[0].get_ydata()
+    >>> round(float(np.min(J)), 4), round(float(np.max(J)), 4)  # J_red over the turn [kg·m²]
+    (0.0074, 0.7909)
+    """
     lang = check_lang(lang)
     fig = new_figure()
     ax = titled_axes(fig, _t("f_jred", lang), _xlabel(lang, dynamics.coordinate),
@@ -138,7 +205,23 @@ def reduced_inertia(dynamics, lang="en"):
 def energy_mass(flywheel, lang="en"):
     """Wittenbauer's energy–mass diagram: ΔE [J] against J_red [kg·m²], with the
     tangents of slopes ω_max²/2 and ω_min²/2 meeting at (−J_f, −T0); and the crank
-    speed |ω| [rad/s] over the turn with that flywheel."""
+    speed |ω| [rad/s] over the turn with that flywheel.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> from assur.report.dynamics import energy_mass
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> fw = dyn.flywheel(0.05)  # coefficient of speed fluctuation δ = 0.05
+    >>> fig = energy_mass(fw)
+    >>> [ax.get_title() for ax in fig.axes]
+    ['Energy–mass diagram and the flywheel', 'crank speed |ω|']
+    >>> fig.axes[0].lines[-1].get_label()  # the flywheel's moment of inertia [kg·m²]
+    'they meet at (−J_f, −T0): J_f = 7.569 kg·m², δ = 0.05'
+    """
     lang = check_lang(lang)
     fig = new_figure(9.6, 4.2)
     ax, ax2 = fig.subplots(1, 2)
@@ -189,6 +272,20 @@ def figures(dynamics, lang="en", flywheel=None, balancing=None):
         :meth:`CrankDynamics.flywheel`.
     balancing : Balancing, optional
         :func:`assur.balancing.balance`.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.inertia import crank_dynamics
+    >>> from assur.report.dynamics import figures
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> list(figures(dyn))
+    ['centre_of_mass', 'hodographs', 'reduced_moment', 'reduced_inertia']
+    >>> figs = figures(dyn, "ru", flywheel=dyn.flywheel(0.05))  # δ = 0.05
+    >>> list(figs)[-1], figs["reduced_moment"].axes[0].get_xlabel()
+    ('energy_mass', 'угол кривошипа j1 [град]')
     """
     lang = check_lang(lang)
     if dynamics.kinematics.m != 1:

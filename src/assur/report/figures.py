@@ -280,7 +280,21 @@ class _Plot:
 
 
 def angles(analysis, lang="en", design=None):
-    """Link angles φ [°] against the coordinate (seed 003 table 2.1)."""
+    """Link angles φ [°] against the coordinate (seed 003 table 2.1).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import angles
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = angles(a).axes[0]
+    >>> ax.get_title(), ax.get_xlabel(), ax.get_ylabel()
+    ('Link angles', 'cylinder length S [m]', 'angle φ [deg]')
+    >>> len(ax.lines)  # links 2, 3, 34, 4, 5, 6, 7
+    7
+    >>> [round(float(y), 1) for y in ax.lines[2].get_ydata()[:2]]  # φ34 [deg], table 2.1
+    [-18.2, -8.4]
+    """
     p = _Plot(analysis, lang, design)
     kin = p.v.kin
     fig, ax = p.axes(t("f_angles", lang), t("y_angle", lang), "deg")
@@ -298,7 +312,20 @@ _TITLES = {"f_distances": {"en": "Named distances", "ru": "Расстояния 
 
 def distances(analysis, lang="en", design=None):
     """Named distances [m] against the coordinate (seed 002: the helper vectors l7 =
-    |C–O6|, l9 = |A–O3|); None without named distances."""
+    |C–O6|, l9 = |A–O3|); None without named distances.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import distances
+    >>> a = examples.combine_002().analyze(examples.combine_002_range())  # seed 002
+    >>> ax = distances(a).axes[0]
+    >>> [line.get_label() for line in ax.lines], ax.get_ylabel()
+    (['l9', 'l7'], 'distance [m]')
+    >>> hitch = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> distances(hitch) is None  # the hitch names no distances
+    True
+    """
     p = _Plot(analysis, lang, design)
     v = p.v
     if not v.mech.distances:
@@ -311,7 +338,23 @@ def distances(analysis, lang="en", design=None):
 
 
 def analogs(analysis, lang="en", design=None):
-    """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S))."""
+    """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S)).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import analogs
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = analogs(a).axes[0]
+    >>> ax.get_ylabel()
+    'analog dφ/dS [rad/m]'
+    >>> [round(float(y), 3) for y in ax.lines[1].get_ydata()[:3]]  # dφ3 [rad/m], table 3.1
+    [6.719, 5.743, 5.294]
+    >>> ax.lines[2].get_linestyle()  # dφ34 = dφ3 (one lever): drawn dashed over it
+    '--'
+    >>> round(float(ax.lines[2].get_ydata()[0]), 3)  # dφ34 at S = 0.420 m [rad/m]
+    6.719
+    """
     p = _Plot(analysis, lang, design)
     kin, v = p.v.kin, p.v
     ylabel = t("y_analog", lang, p.c)
@@ -332,7 +375,19 @@ def analogs(analysis, lang="en", design=None):
 
 def transmission(analysis, lang="en", design=None):
     """Transmission numbers I = dY/dq of the model's transmission points (seed 003
-    fig. 3.2 I56, IS6); None without transmission points."""
+    fig. 3.2 I56, IS6); None without transmission points.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import transmission
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = transmission(a).axes[0]
+    >>> ax.get_ylabel(), len(ax.lines)  # I56 and IS6
+    ('transmission number I [-]', 2)
+    >>> [round(float(y), 3) for y in ax.lines[1].get_ydata()[:3]]  # IS6 [-], table 3.1
+    [4.713, 4.483, 4.419]
+    """
     p = _Plot(analysis, lang, design)
     kin, v = p.v.kin, p.v
     pts = list(v.mech.tables.get("transmissions", ()))
@@ -354,7 +409,19 @@ def transmission(analysis, lang="en", design=None):
 
 def capacity(analysis, lang="en", design=None):
     """Lift capacity G [kN] at the transmission points with the load acting there
-    (seed 003 fig. 4.1); None without cylinders."""
+    (seed 003 fig. 4.1); None without cylinders.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import capacity
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = capacity(a).axes[0]
+    >>> [line.get_label() for line in ax.lines][1:]
+    ['G S6', 'load P6 = 27.5 kN']
+    >>> round(float(ax.lines[1].get_ydata()[-1]), 2)  # GS6 at S = 0.670 m [kN], table 4.1: 29.959
+    29.96
+    """
     from .tables import _capacity
 
     p = _Plot(analysis, lang, design)
@@ -385,7 +452,19 @@ def capacity(analysis, lang="en", design=None):
 
 def force(analysis, lang="en", design=None):
     """Cylinder force [kN] by virtual work with the available force F_max (seed 003
-    fig. 4.2); None without cylinders."""
+    fig. 4.2); None without cylinders.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import force
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = force(a).axes[0]
+    >>> ax.get_ylabel(), ax.lines[1].get_label()  # F_max: the cylinder's available force
+    ('force F [kN]', 'available $F_{max}$ = 147.8 kN')
+    >>> round(float(ax.lines[0].get_ydata()[0]), 1)  # Fgc at S = 0.420 m [kN], table 4.1: 129.614
+    129.6
+    """
     p = _Plot(analysis, lang, design)
     v = p.v
     if not v.a.cylinders:
@@ -408,7 +487,19 @@ def force(analysis, lang="en", design=None):
 
 def pressure(analysis, lang="en", design=None):
     """Cylinder pressure [MPa] with the largest working pressure p_max (seed 003
-    fig. 4.3); None without cylinders."""
+    fig. 4.3); None without cylinders.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import pressure
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = pressure(a).axes[0]
+    >>> ax.get_ylabel(), ax.lines[1].get_label()
+    ('pressure p [MPa]', '$p_{max}$ = 17.5 MPa')
+    >>> round(float(max(ax.lines[0].get_ydata())), 2)  # largest Pgc [MPa], table 4.1: 16.064
+    16.06
+    """
     p = _Plot(analysis, lang, design)
     v = p.v
     if not v.a.cylinders:
@@ -438,7 +529,19 @@ def _reactions(v):
 
 
 def reactions(analysis, lang="en", design=None):
-    """Magnitudes of the joint reactions [kN] (seed 003 fig. 5.4); None without loads."""
+    """Magnitudes of the joint reactions [kN] (seed 003 fig. 5.4); None without loads.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import reactions
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = reactions(a).axes[0]
+    >>> ax.get_ylabel(), len(ax.lines)  # one curve per joint
+    ('reaction |R| [kN]', 9)
+    >>> round(float(ax.lines[0].get_ydata()[0]), 2)  # R56 at S = 0.420 m [kN], table 5.1: 48.480
+    48.48
+    """
     p = _Plot(analysis, lang, design)
     v = p.v
     if not v.mech.loads:
@@ -459,7 +562,21 @@ def hodograph(analysis, lang="en", design=None):
     """Hodograph of the largest frame reaction: its y against its x component [kN]
     (the force of the frame on the link) over the positions, equal scales, with the
     first and last positions marked and the direction of travel; None without
-    loads."""
+    loads.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import hodograph
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = hodograph(a).axes[0]
+    >>> ax.get_title()  # the largest frame reaction: the cylinder's pivot 01
+    'Hodograph of reaction R01 (0 → 2)'
+    >>> [line.get_label() for line in ax.lines[1:]]
+    ['start: S = 0.42 m', 'end: S = 0.67 m']
+    >>> round(float(ax.lines[0].get_ydata()[0]), 2)  # R01y at S = 0.420 m [kN], table 5.1: 129.558
+    129.56
+    """
     p = _Plot(analysis, lang, design)
     v = p.v
     if not v.mech.loads:
@@ -510,7 +627,19 @@ def hodograph(analysis, lang="en", design=None):
 
 def stability(analysis, lang="en", design=None):
     """Share of the total weight on the steered axle [%] with the rule's limit
-    (seed 003 fig. 6.2); None without machine data."""
+    (seed 003 fig. 6.2); None without machine data.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import stability
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = stability(a).axes[0]
+    >>> [line.get_label() for line in ax.lines]
+    ['steered axle A', 'limit 20 %']
+    >>> [round(float(y), 1) for y in ax.lines[0].get_ydata()[:3]]  # dRa [%], table 6.1
+    [23.8, 23.5, 23.5]
+    """
     p = _Plot(analysis, lang, design)
     v = p.v
     st = v.a.stability
@@ -544,6 +673,21 @@ def figures(analysis, lang="en", design=None, names=None) -> dict:
         Design of a batch (required for a batch).
     names : iterable of str, optional
         A subset of :data:`FIGURES`.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import figures
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> print(*figures(a))  # the hitch names no distances
+    angles analogs transmission capacity force pressure reactions hodograph stability
+    >>> figs = figures(a, "ru", names=["force"])
+    >>> figs["force"].axes[0].get_title()
+    'Сила на ГЦ'
+    >>> figures(a, names=["speed"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: figure names must be among: ['angles', 'distances', ...]; got ['speed']
     """
     check_lang(lang)
     names = list(FIGURES) if names is None else list(names)
@@ -562,7 +706,26 @@ _FORMATS = ("png", "svg")
 
 
 def save(fig, path, dpi=110) -> Path:
-    """Write a figure as PNG or SVG, chosen by the file suffix."""
+    """Write a figure as PNG or SVG, chosen by the file suffix.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import examples
+    >>> from assur.report.figures import save, stability
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> fig = stability(a)
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = save(fig, Path(d) / "fig_stability.svg")
+    ...     head = p.read_text(encoding="utf-8")[:200]
+    >>> p.name, "<svg" in head
+    ('fig_stability.svg', True)
+    >>> save(fig, "fig_stability.pdf")
+    Traceback (most recent call last):
+    ...
+    ValueError: the file suffix must be one of: ['.png', '.svg']; got 'fig_stability.pdf'
+    """
     path = Path(path)
     fmt = path.suffix.lower().lstrip(".")
     if fmt not in _FORMATS:
@@ -575,7 +738,18 @@ def save(fig, path, dpi=110) -> Path:
 
 def to_png_bytes(fig, dpi=110, bbox_inches=None) -> bytes:
     """The figure as PNG bytes (for embedding); ``bbox_inches="tight"`` crops it to
-    its drawn parts."""
+    its drawn parts.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report.figures import stability, to_png_bytes
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> fig = stability(a)  # 6.4 × 4.0 in
+    >>> png = to_png_bytes(fig, dpi=50)
+    >>> png[1:4], int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+    (b'PNG', 320, 200)
+    """
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None},
                 bbox_inches=bbox_inches)

@@ -313,7 +313,23 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 
 def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, animation=None,
                 design=None, interval=120) -> str:
-    """The report as an HTML string (see :func:`write_html`)."""
+    """The report as an HTML string (see :func:`write_html`).
+
+    Examples
+    --------
+    >>> import re
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> from assur.report.html import render_html
+    >>> page = render_html(a, figures={}, drawing=False, animation=False)  # tables only
+    >>> re.search(r"<title>(.*?)</title>", page).group(1)
+    'Mini-tractor mounted-implement hitch (seed 003) — Analysis report'
+    >>> rows = re.findall(r"<tr><td>0\\.420</td>.*?</tr>", page)  # S = 0.420 m of each table
+    >>> re.findall(r"<td>(.*?)</td>", rows[3])  # table 4.1 as printed [m, N, Pa, N, N, %]
+    ['0.420', '129614', '15348729', '33139', '31354', '14.0']
+    >>> '<html lang="ru"' in render_html(a, "ru", figures={}, drawing=False, animation=False)
+    True
+    """
     import jinja2
 
     from . import drawing as _drawing
@@ -379,6 +395,22 @@ def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=Non
     Returns
     -------
     Path
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> from assur.report.html import write_html
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = write_html(a, Path(d) / "report.html", lang="ru", figures={}, drawing=False,
+    ...                    animation=False)
+    ...     page = p.read_text(encoding="utf-8")
+    >>> p.name, page.startswith("<!DOCTYPE html>"), 'src="http' in page  # self-contained
+    ('report.html', True, False)
+    >>> "Механизм навески мини-трактора" in page  # the model's title in Russian
+    True
     """
     text = render_html(analysis, lang, figures, tables, drawing, animation, design)
     path = Path(path)

@@ -12,7 +12,24 @@ __all__ = ["lift_test_figure"]
 
 def lift_test_figure(analysis, lang="en"):
     """The lift test's forces [kN] against the hitch point's height [m], or None when
-    the analysis has no lift test (:func:`assur.analysis.add_lift_test`)."""
+    the analysis has no lift test (:func:`assur.analysis.add_lift_test`).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.analysis import add_lift_test
+    >>> from assur.report.lift import lift_test_figure
+    >>> model = io.load(io.bundled("hitch_003"))  # its [lift_test]: point 56 and frame F610
+    >>> m = model.mechanism
+    >>> a = m.analyze(model.range)
+    >>> lift_test_figure(a) is None  # no lift test added
+    True
+    >>> ax = lift_test_figure(add_lift_test(a, model.lift_test)).axes[0]
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('y 56 [m]', '[kN]')
+    >>> [text.get_text() for text in ax.texts]  # the minima over the lift range [kN]
+    ['min 29.8 kN', 'min 28.7 kN']
+    """
     lang = check_lang(lang)
     lt = getattr(analysis, "lift_test", None)
     if lt is None:

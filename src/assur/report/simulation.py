@@ -55,7 +55,25 @@ def _tx(key, lang, *args):
 
 def figures(result, lang="en"):
     """``{name: Figure}`` of :data:`FIGURES` for a simulation result (with k > 1
-    coordinates every branch's curve, labelled by its coordinate)."""
+    coordinates every branch's curve, labelled by its coordinate).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.report.simulation import figures
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> figs = figures(r)
+    >>> print(*figs)
+    pressure pressure_rate coordinate speed acceleration reduced_mass
+    >>> [f.axes[0].get_ylabel() for f in figs.values()][:4]
+    ['p [MPa]', 'dp1/dt [MPa/s]', 'S [m]', 'dS/dt [m/s]']
+    >>> [line.get_label() for line in figs["speed"].axes[0].lines]
+    ['dS/dt', 'Q/A (steady speed)']
+    >>> round(float(figs["speed"].axes[0].lines[1].get_ydata()[0]), 4)  # Q/A [m/s], lab 6: 0.0704
+    0.0704
+    """
     check_lang(lang)
     cs = result.coordinates
     k = len(cs)
@@ -125,7 +143,23 @@ def time_series(result):
     S [m], dS/dt [m/s], d²S/dt² [m/s²], p1, p2 [MPa], dp1/dt [MPa/s], flows [l/min],
     force and load [kN], m [kg], m' [kg/m]); with k > 1 coordinates a branch's
     columns carry its coordinate (``p1 S2 [MPa]``), and the pump's pressure
-    ``p_pump [MPa]`` is added."""
+    ``p_pump [MPa]`` is added.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.report.simulation import time_series
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> df = time_series(r)
+    >>> list(df.columns[:5])
+    ['t [s]', 'S [m]', 'dS/dt [m/s]', 'd2S/dt2 [m/s2]', 'p1 [MPa]']
+    >>> [round(float(x), 3) for x in df["S [m]"]]  # the rod from its stop S = 0.55 m [m]
+    [0.55, 0.582, 0.615]
+    >>> [round(float(x), 2) for x in df["p1 [MPa]"]]  # pump pressure rising [MPa]
+    [0.0, 3.07, 4.64]
+    """
     import pandas as pd
     cs = result.coordinates
     k = len(cs)
@@ -153,7 +187,23 @@ def time_series(result):
 
 
 def summary(result, lang="en"):
-    """Rows ``(label, value, unit)`` of the status, events and energy balance."""
+    """Rows ``(label, value, unit)`` of the status, events and energy balance.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.report.simulation import summary
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> rows = summary(r)
+    >>> rows[0]
+    ('status: reached t_end', '', '')
+    >>> rows[2]  # the rod leaves its stop [s]
+    ('lift-off from the stop', '0.0828', 's')
+    >>> [row[0] for row in rows][3:5]  # then the energy balance [J]
+    ['work of the pump', 'lost in the relief valve']
+    """
     rows = [(t("sim_status", lang, result.message), "", "")]
     if len(result.coordinates) == 1:
         rows.append((t("sim_steady_line", lang, result.steady_speed, result.nfev), "", ""))
@@ -188,6 +238,24 @@ def write_simulation_report(result, outdir, title="", lang="en",
     -------
     list of Path
         The files written.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import pandas as pd
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.report.simulation import write_simulation_report
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     files = write_simulation_report(r, d, formats=("csv",))
+    ...     items = pd.read_csv(files[1])["item"].tolist()
+    ...     n = len(pd.read_csv(files[0]))
+    >>> [p.name for p in files], n  # the time series: one row per time of t_eval
+    (['simulation.csv', 'simulation_summary.csv'], 3)
+    >>> items[2]
+    'lift-off from the stop'
     """
     check_lang(lang)
     out = Path(outdir)

@@ -142,6 +142,20 @@ class Column:
     printed_sign : int
         +1, or −1 where the model's source prints these values with the opposite
         sign (its sign map, ``tables["signs"]``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> phi3 = seed_tables(a)[0].column("phi3")  # table 2.1
+    >>> phi3.unit, phi3.label["en"], len(phi3.values)
+    ('deg', 'angle of link 3', 10)
+    >>> round(float(phi3.values[0]), 1)  # φ3 at S = 0.420 m [deg], seed 003 table 2.1: -40.2
+    -40.2
+    >>> r05x = seed_tables(a)[4].column("R05x")  # table 5.1: the seed prints R05 negated
+    >>> r05x.printed_sign, phi3.printed_sign
+    (-1, 1)
     """
 
     symbol: str
@@ -152,7 +166,16 @@ class Column:
 
     @property
     def header(self) -> str:
-        """``symbol [unit]``, the CSV and XLSX header."""
+        """``symbol [unit]``, the CSV and XLSX header.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> Column("phi3", "deg", np.zeros(3)).header
+        'phi3 [deg]'
+        >>> Column("U43", "-", np.zeros(3)).header  # a ratio: no unit
+        'U43 [-]'
+        """
         return f"{self.symbol} [{self.unit}]"
 
 
@@ -172,6 +195,17 @@ class Table:
         The first column(s) are the generalized coordinate(s).
     notes : tuple of dict
         Notes by language (singular positions, seed signs, flagged formulas).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> t = seed_tables(a)[3]
+    >>> t.id, len(t), t.symbols  # 10 positions of S
+    ('4.1', 10, ['S', 'Fgc', 'Pgc', 'G56', 'GS6', 'dGS65'])
+    >>> round(float(t["dGS65"][-1]), 1)  # reserve at S = 0.670 m [%], seed 003 table 4.1: 8.9
+    8.9
     """
 
     id: str
@@ -180,21 +214,81 @@ class Table:
     notes: tuple = ()
 
     def title(self, lang="en") -> str:
+        """The title in ``lang`` ("en" or "ru").
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.report import seed_tables
+        >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+        >>> seed_tables(a)[0].title("en")
+        'Geometric analysis: link angles'
+        >>> seed_tables(a)[0].title("de")
+        Traceback (most recent call last):
+        ...
+        ValueError: lang must be one of: ['en', 'ru']; got 'de'
+        """
         return self.titles[check_lang(lang)]
 
     @property
     def title_en(self) -> str:
+        """The English title.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.report import seed_tables
+        >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+        >>> seed_tables(a)[6].title_en
+        'Check of the kinematics through the instantaneous centre'
+        """
         return self.titles["en"]
 
     @property
     def title_ru(self) -> str:
+        """The Russian title.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.report import seed_tables
+        >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+        >>> seed_tables(a)[0].title_ru
+        'Результаты геометрического анализа (углы наклона звеньев)'
+        """
         return self.titles["ru"]
 
     @property
     def symbols(self) -> list:
+        """The columns' symbols, in order.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.report import seed_tables
+        >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+        >>> seed_tables(a)[0].symbols  # table 2.1: S [m], then link angles [deg]
+        ['S', 'phi2', 'phi3', 'phi34', 'phi4', 'phi5', 'phi6', 'phi7']
+        """
         return [c.symbol for c in self.columns]
 
     def column(self, symbol) -> Column:
+        """The column of ``symbol``; KeyError naming the table's columns if none.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.report import seed_tables
+        >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+        >>> t = seed_tables(a)[3]  # table 4.1
+        >>> c = t.column("Pgc")
+        >>> c.unit, round(float(c.values[0]) / 1e6, 2)  # [MPa] at S = 0.420 m, seed: 15.35
+        ('Pa', 15.35)
+        >>> t.column("p")
+        Traceback (most recent call last):
+        ...
+        KeyError: "table 4.1 has no column 'p'; columns: ['S', 'Fgc', 'Pgc', 'G56', 'GS6', 'dGS65']"
+        """
         for c in self.columns:
             if c.symbol == symbol:
                 return c
@@ -207,7 +301,19 @@ class Table:
         return len(self.columns[0].values) if self.columns else 0
 
     def to_frame(self):
-        """pandas DataFrame with the ``symbol [unit]`` headers."""
+        """pandas DataFrame with the ``symbol [unit]`` headers.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.report import seed_tables
+        >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+        >>> df = seed_tables(a)[3].to_frame()  # table 4.1
+        >>> df.shape, list(df.columns[:3])
+        ((10, 6), ['S [m]', 'Fgc [N]', 'Pgc [Pa]'])
+        >>> round(float(df["Fgc [N]"].iloc[-1]))  # at S = 0.670 m [N], seed 003 table 4.1: 135652
+        135652
+        """
         import pandas as pd
         return pd.DataFrame({c.header: c.values for c in self.columns})
 
@@ -215,7 +321,16 @@ class Table:
 def grid_of(q1, q2):
     """The full grid behind positions ``(q1, q2)``, shape (n,) each: ``(u1, u2, i1, i2)``
     with the sorted distinct values of each coordinate and every position's indices
-    into them — or None when the positions are not a full grid (paired paths)."""
+    into them — or None when the positions are not a full grid (paired paths).
+
+    Examples
+    --------
+    >>> u1, u2, i1, i2 = grid_of([0.4, 0.5, 0.4, 0.5], [1.0, 1.0, 2.0, 2.0])  # S1, S2 [m]
+    >>> u1.tolist(), u2.tolist(), i1.tolist(), i2.tolist()
+    ([0.4, 0.5], [1.0, 2.0], [0, 1, 0, 1], [0, 0, 1, 1])
+    >>> grid_of([0.4, 0.5, 0.6], [1.0, 1.5, 2.0]) is None  # a path: both move together
+    True
+    """
     q1, q2 = np.asarray(q1, dtype=float), np.asarray(q2, dtype=float)
     u1, u2 = np.unique(q1), np.unique(q2)
     if len(u1) < 2 or len(u2) < 2 or len(u1) * len(u2) != q1.size:
@@ -967,7 +1082,18 @@ def _with_signs(v, tables):
 
 # ---- files -------------------------------------------------------------------------
 def table_filename(table, ext="csv") -> str:
-    """``table_2_1.csv``, ``table_ic.csv``."""
+    """``table_2_1.csv``, ``table_ic.csv``.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> [table_filename(t) for t in seed_tables(a)][::3]
+    ['table_2_1.csv', 'table_4_1.csv', 'table_ic.csv']
+    >>> table_filename(seed_tables(a)[0], "xlsx")
+    'table_2_1.xlsx'
+    """
     return f"table_{table.id.replace('.', '_').lower()}.{ext}"
 
 
@@ -983,6 +1109,25 @@ def write_csv(table, path) -> Path:
     """Write one table as CSV: header ``symbol [unit]``, numbers with ``repr`` (exact).
 
     NaN (undefined, e.g. a singular ratio) is written ``nan``, infinity ``inf``.
+
+    Examples
+    --------
+    >>> import csv, tempfile
+    >>> from pathlib import Path
+    >>> from assur import examples
+    >>> from assur.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> t = seed_tables(a)[3]  # table 4.1
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = write_csv(t, Path(d) / "table_4_1.csv")
+    ...     with open(p, encoding="utf-8") as f:
+    ...         rows = list(csv.reader(f))
+    >>> rows[0]
+    ['S [m]', 'Fgc [N]', 'Pgc [Pa]', 'G56 [N]', 'GS6 [N]', 'dGS65 [%]']
+    >>> len(rows), float(rows[1][0]), round(float(rows[1][1]))  # S [m], Fgc [N]; seed: 129614
+    (11, 0.42, 129614)
+    >>> float(rows[-1][5]) == float(t["dGS65"][-1])  # exact: written with repr [%]
+    True
     """
     path = Path(path)
     with open(path, "w", newline="", encoding="utf-8") as f:
@@ -1003,6 +1148,25 @@ def write_xlsx(tables, path) -> Path:
     Row 1 holds the ``symbol [unit]`` headers, the rows below the numbers as floats
     (integers for flags); NaN and infinite values, which Excel cannot store, are
     left as empty cells.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from openpyxl import load_workbook
+    >>> from assur import examples
+    >>> from assur.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> tables = seed_tables(a)
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     wb = load_workbook(write_xlsx(tables, Path(d) / "tables.xlsx"))
+    ...     ws = wb["4.1"]
+    ...     head, s, fgc = ws["A1"].value, ws["A2"].value, ws["B2"].value
+    ...     wb.close()
+    >>> wb.sheetnames
+    ['2.1', '2.2', '3.1', '4.1', '5.1', '6.1', 'IC']
+    >>> head, s, round(fgc)  # S [m], Fgc [N]; seed 003 table 4.1: 129614
+    ('S [m]', 0.42, 129614)
     """
     from openpyxl import Workbook
     from openpyxl.utils import get_column_letter
