@@ -355,6 +355,16 @@ class Formula:
         -------
         value
             Of the type ``terms`` gives [SI].
+
+        Examples
+        --------
+        Over plain numbers (a stand-in for the kinematics):
+
+        >>> from assur.columns import Formula
+        >>> f = Formula("Fx", "P*cos(phi(3)) + X(56)")
+        >>> terms = {"name": {"P": 2.0}.get, "phi": lambda l: 0.0, "X": lambda p: 0.5}
+        >>> float(f.compute(terms))
+        2.5
         """
         def walk(node):
             if isinstance(node, ast.Expression):

@@ -81,7 +81,18 @@ _NAME = re.compile(r"^\s*([^\W\d]\w*)\s*$")
 def parse_output(text: str) -> tuple:
     """``"Rx(0, 5)"`` → ``("Rx", ("0", "5"))``, ``"Xc"`` → ``("Xc", ())``, the name of
     a formula ``"p_c"`` → ``("formula", ("p_c",))`` (whether the model has it is checked
-    where the mechanism is known); raises :class:`ModelError`."""
+    where the mechanism is known); raises :class:`ModelError`.
+
+    Examples
+    --------
+    >>> from assur.fused import parse_output
+    >>> parse_output("Rx(0, 5)"), parse_output("Xc"), parse_output("p_c")
+    (('Rx', ('0', '5')), ('Xc', ()), ('formula', ('p_c',)))
+    >>> parse_output("Q(56)")
+    Traceback (most recent call last):
+        ...
+    assur.errors.ModelError: unknown output 'Q(56)': expected one of X(…), Y(…), dX(…), dY(…), I(…), phi(…), dphi(…), length(…), dlength(…), F(…), Fr(…), Rx(…), Ry(…), R(…), Rm(…), p(…), G(…), reserve(…), Xc, Yc or the name of a formula of the model's [[tables.formulas]]
+    """
     bare = _NAME.match(str(text))
     if bare:
         name = bare.group(1)
@@ -101,7 +112,15 @@ def parse_output(text: str) -> tuple:
 
 def formula_of(mech, name):
     """The :class:`assur.columns.Formula` of ``mech`` named ``name``; raises
-    :class:`ModelError` naming the formulas it has."""
+    :class:`ModelError` naming the formulas it has.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.fused import formula_of
+    >>> formula_of(examples.hitch_003(), "GS6max").unit          # seed 003 table 6.1
+    'N'
+    """
     from .columns import formulas_of
     fs = formulas_of(mech)
     for f in fs:
@@ -116,7 +135,18 @@ def formula_of(mech, name):
 def resolve_output(mech, text) -> tuple:
     """:func:`parse_output` of ``text`` for ``mech``: a formula's name becomes
     ``("formula", (name, expression))`` — the expression is part of the kernel's key —
-    after checking that ``mech`` has it and that its names exist."""
+    after checking that ``mech`` has it and that its names exist.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.fused import resolve_output
+    >>> m = examples.hitch_003()
+    >>> resolve_output(m, "G(ГЦ, S6)")
+    ('G', ('ГЦ', 'S6'))
+    >>> resolve_output(m, "GS6max")[1][1]                       # the expression: its key
+    '(P_mcxa*b + P_gr*(a + L) - 0.2*(P6 + P_mcxa + P_gr)) / X(S6)'
+    """
     fn, args = text if isinstance(text, tuple) else parse_output(text)
     if fn == "formula":
         f = formula_of(mech, args[0])
@@ -127,7 +157,16 @@ def resolve_output(mech, text) -> tuple:
 
 def output_unit(mech, text) -> str:
     """The SI unit of an output (``"q"`` for the coordinate's unit in analogs): a
-    formula's own unit when its scale is 1, else ``"SI"``."""
+    formula's own unit when its scale is 1, else ``"SI"``.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.fused import output_unit
+    >>> m = examples.hitch_003()
+    >>> output_unit(m, "p(ГЦ)"), output_unit(m, "dY(56)"), output_unit(m, "GS6max")
+    ('Pa', 'm/q', 'N')
+    """
     fn, args = resolve_output(mech, text)
     if fn == "formula":
         f = formula_of(mech, args[0])
@@ -144,6 +183,18 @@ class OutputContext(ReactionContextBase):
     ``jet(p, a)`` (the analogs ∂(X, Y)/∂q_a of a point), ``vw`` (the generalized forces
     of the loads, one per coordinate [N or N·m]), ``has_point(p)`` and
     ``cylinder_terms(name)`` → ``(Cylinder, η_mech, k·A·η_hyd [m²], F_max·η_mech [N])``.
+
+    Examples
+    --------
+    :func:`assur.sensitivity.jet_context` gives the context over dual numbers (its
+    ``plain`` turns a value into arrays); the fused kernel's is the same over symbols:
+
+    >>> from assur import examples
+    >>> from assur.sensitivity import jet_context
+    >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m]
+    >>> F, _ = ctx.plain(ctx.output("F", ("S",)))               # Fgc [N], table 4.1
+    >>> [round(float(v)) for v in F[0]]
+    [129614, 135652]
     """
 
     def __init__(self, mech, rod_ends):
@@ -155,16 +206,65 @@ class OutputContext(ReactionContextBase):
         self._frame = frozenset(mech.frame_points)
 
     def has_point(self, p):
+        """Whether the mechanism has point ``p`` (a subclass's; the outputs check it).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> ctx.has_point("56"), ctx.has_point("99")
+        (True, False)
+        """
         raise NotImplementedError
 
     def cylinder_terms(self, name):
+        """``(Cylinder, η_mech [-], k·A·η_hyd [m²], F_max·η_mech [N])`` of a cylinder
+        (a subclass's): the constants of ``p(cyl)``, ``G`` and ``reserve``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> c, eta_m, kAeta, fmax = ctx.cylinder_terms("ГЦ")
+        >>> c.name, round(float(kAeta) * 1e4, 2), round(float(fmax))  # [cm²], [N]
+        ('ГЦ', 84.45, 147781)
+        """
         raise NotImplementedError
 
     def record(self, i, j, pt, fx, fy, mz=0.0):
+        """Keep the force (fx, fy) [N] and moment mz [N·m] of link ``i`` on link ``j``
+        at point ``pt`` (a group's reactions call it; ``Rx(i, j)`` reads it).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> ctx.record("9", "8", "56", 1.0, 2.0)
+        >>> ctx.joints[("9", "8")]
+        ('56', 1.0, 2.0, 0.0)
+        """
         self.joints[(i, j)] = (pt, fx, fy, mz)
 
     # loads (assur.loads contract): the wrench on the body and the virtual work ------
     def force(self, link, point, fx, fy):
+        """A load's force (fx, fy) [N] on ``link`` at ``point``: into the link's wrench
+        and, through the point's analogs, into the generalized forces ``vw``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> before, _ = ctx.plain(ctx.vw[0])
+        >>> ctx.force("5", "56", 0.0, -1000.0)          # 1 kN down at the axis 56
+        >>> after, _ = ctx.plain(ctx.vw[0])
+        >>> I, _ = ctx.plain(ctx.output("I", ("56",)))  # dY56/dS [m/m], table 3.1
+        >>> bool(abs((after - before)[0, 0] + 1000.0 * I[0, 0]) < 1e-6)
+        True
+        """
         self.apply(link, point, fx, fy)
         if point not in self._frame:  # a frame point does not move: no work
             for a in range(self.k):
@@ -172,20 +272,66 @@ class OutputContext(ReactionContextBase):
                 self.vw[a] = self.vw[a] + fx * jx + fy * jy
 
     def couple(self, link, M):
+        """A load's couple M [N·m] on ``link``: into its wrench and, through the link's
+        angular analog, into ``vw``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> before, _ = ctx.plain(ctx.vw[0])
+        >>> ctx.couple("3", 100.0)
+        >>> after, _ = ctx.plain(ctx.vw[0])
+        >>> w, _ = ctx.plain(ctx.omega("3", 0))            # dφ3/dS [rad/m]
+        >>> bool(abs((after - before)[0, 0] - 100.0 * w[0, 0]) < 1e-9)
+        True
+        """
         self.apply_moment(link, M)
         for a in range(self.k):
             self.vw[a] = self.vw[a] + M * self.omega(link, a)
 
     def spring(self, load, T, L):
-        pass
+        """A spring's tension T [N] at length L [m] (its forces come through
+        :meth:`force`); nothing more is needed by the outputs.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> ctx.spring(None, 10.0, 0.3) is None
+        True
+        """
 
     def rate(self, link, coordinate=None):
-        """∂φ/∂q of a link along a coordinate (the only one by default)."""
+        """∂φ/∂q of a link along a coordinate (the only one by default) [rad/m or
+        rad/rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> w, _ = ctx.plain(ctx.rate("3"))
+        >>> [round(float(v), 3) for v in w[0]]
+        [6.719, 6.239]
+        """
         a = 0 if coordinate is None else self.mech.coordinates.index(coordinate)
         return self.omega(link, a)
 
     def omega(self, body, a):
-        """Angular analog ∂φ/∂q_a of a body (0 for the frame)."""
+        """Angular analog ∂φ/∂q_a of a body (0 for the frame) [rad/m or rad/rad].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> w, _ = ctx.plain(ctx.omega("3", 0))
+        >>> [round(float(v), 3) for v in w[0]], ctx.omega("0", 0)
+        ([6.719, 6.239], 0.0)
+        """
         pq = self.mech.topology.angle_points(body)
         if pq is None:
             return 0.0
@@ -196,6 +342,21 @@ class OutputContext(ReactionContextBase):
 
     # outputs ------------------------------------------------------------------------
     def coord_index(self, args, fn):
+        """Index of the coordinate an analog output names (``dY(p, S)``), or 0 with
+        one coordinate; raises :class:`ModelError` otherwise.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> ctx.coord_index(("56",), "dY"), ctx.coord_index(("56", "S"), "dY")
+        (0, 0)
+        >>> ctx.coord_index(("56", "T"), "dY")
+        Traceback (most recent call last):
+            ...
+        assur.errors.ModelError: output dY('56', 'T'): 'T' is not a coordinate ('S',)
+        """
         if len(args) > 1:
             if args[1] not in self.mech.coordinates:
                 raise ModelError(f"output {fn}{args}: {args[1]!r} is not a coordinate "
@@ -207,6 +368,17 @@ class OutputContext(ReactionContextBase):
         return 0
 
     def angle_points(self, link):
+        """The two points whose direction is the angle of ``link`` (a named link of
+        ``[links]``, else a body of the topology).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> ctx.angle_points("3")
+        ('03', '23')
+        """
         for lk in self.mech.links:
             if lk.name == link:
                 return lk.tail, lk.head
@@ -221,7 +393,19 @@ class OutputContext(ReactionContextBase):
     def formula_terms(self):
         """The kinematic quantities of a :class:`assur.columns.Formula` as this
         context's values (the outputs ``X``, ``Y``, ``I``, ``phi``, ``dphi``,
-        ``length``, ``dlength``; second analogs are not in the fused kernel)."""
+        ``length``, ``dlength``; second analogs are not in the fused kernel).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.fused import formula_of
+        >>> from assur.sensitivity import jet_context
+        >>> m = examples.hitch_003()
+        >>> ctx = jet_context(m, [0.42])
+        >>> v = formula_of(m, "GS6max").compute(ctx.formula_terms())
+        >>> round(float(ctx.plain(v)[0][0, 0]))         # [N], seed 003 table 6.1
+        50645
+        """
         def out(fn):
             return lambda ref: self.output(fn, (ref,))
 
@@ -233,6 +417,18 @@ class OutputContext(ReactionContextBase):
                 "ddist": out("dlength"), "name": self.value}
 
     def output(self, fn, args):
+        """The value of output ``fn(args)`` (the module docstring's table) in this
+        context's kind of number [SI].
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> G, _ = ctx.plain(ctx.output("G", ("ГЦ", "S6")))   # GS6 [N], table 4.1
+        >>> [round(float(v)) for v in G[0]]
+        [31354, 29959]
+        """
         if fn in ("X", "Y", "dX", "dY", "I") and not self.has_point(args[0]):
             raise ModelError(f"output {fn}({', '.join(args)}): unknown point {args[0]!r}")
         if fn in ("X", "Y"):
@@ -572,6 +768,15 @@ class Fused:
         (all positions assembled).
     failures : int ndarray
         Number of failed positions per design.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> f = examples.hitch_003().evaluate([0.42, 0.67], outputs=["p(ГЦ)", "Y(56)"])
+    >>> [round(float(v) / 1e6, 2) for v in f["p(ГЦ)"]], f.units["p(ГЦ)"]   # table 4.1 [MPa]
+    ([15.35, 16.06], 'Pa')
+    >>> f.ok.tolist(), f.failures.tolist()
+    ([True, True], [0])
     """
 
     def __init__(self, outputs, units, values, reduced, ok, failures, shape):
@@ -604,19 +809,59 @@ class Fused:
         return self._reduced[op][self._key(name)]
 
     def min(self, name):
-        """Smallest value over the positions of each design that assembled, shape (m,)."""
+        """Smallest value over the positions of each design that assembled, shape (m,).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> S = [0.42, 0.5, 0.6, 0.67]                   # cylinder lengths [m]
+        >>> r = examples.hitch_003().evaluate(S, outputs=["reserve(ГЦ, S6, P6)"],
+        ...                                    reduce=True)
+        >>> [round(float(v), 1) for v in r.min("reserve(ГЦ, S6, P6)")]   # ΔGS65 [%]
+        [8.9]
+        """
         return self._red(name, "min")
 
     def max(self, name):
-        """Largest value over the positions of each design, shape (m,)."""
+        """Largest value over the positions of each design, shape (m,).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> S = [0.42, 0.5, 0.6, 0.67]                   # cylinder lengths [m]
+        >>> r = examples.hitch_003().evaluate(S, outputs=["reserve(ГЦ, S6, P6)"],
+        ...                                    reduce=True)
+        >>> [round(float(v), 1) for v in r.max("reserve(ГЦ, S6, P6)")]   # [%]
+        [21.4]
+        """
         return self._red(name, "max")
 
     def argmin(self, name):
-        """Position index of the smallest value per design (−1: none assembled)."""
+        """Position index of the smallest value per design (−1: none assembled).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> S = [0.42, 0.5, 0.6, 0.67]                   # cylinder lengths [m]
+        >>> r = examples.hitch_003().evaluate(S, outputs=["reserve(ГЦ, S6, P6)"],
+        ...                                    reduce=True)
+        >>> r.argmin("reserve(ГЦ, S6, P6)").tolist()      # at S = 0.67 m, table 4.1
+        [3]
+        """
         return self._red(name, "argmin")
 
     def argmax(self, name):
-        """Position index of the largest value per design (−1: none assembled)."""
+        """Position index of the largest value per design (−1: none assembled).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> S = [0.42, 0.5, 0.6, 0.67]                   # cylinder lengths [m]
+        >>> r = examples.hitch_003().evaluate(S, outputs=["reserve(ГЦ, S6, P6)"],
+        ...                                    reduce=True)
+        >>> r.argmax("reserve(ГЦ, S6, P6)").tolist()      # at S = 0.5 m
+        [1]
+        """
         return self._red(name, "argmax")
 
     def __repr__(self):
@@ -666,6 +911,19 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     Returns
     -------
     Fused
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.fused import evaluate
+    >>> m = examples.hitch_003()
+    >>> f = evaluate(m, [0.42, 0.67], outputs=["G(ГЦ, S6)", "reserve(ГЦ, S6, P6)"])
+    >>> [round(float(v)) for v in f["G(ГЦ, S6)"]]              # GS6 [N], table 4.1
+    [31354, 29959]
+    >>> [round(float(v), 1) for v in f["reserve(ГЦ, S6, P6)"]]  # ΔGS65 [%], table 4.1
+    [14.0, 8.9]
+    >>> [round(float(v)) for v in evaluate(m, [0.42], outputs=["GS6max"])["GS6max"]]
+    [50645]
     """
     from .analysis import gravity_of
     from . import inputs

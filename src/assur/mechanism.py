@@ -1301,100 +1301,6 @@ class Mechanism:
                 f"{len(self.groups)} groups, {len(self.links)} links)")
 
 
-#: examples of the builder methods whose group class has none of its own (the
-#: positions by the plain-numpy formulas, :meth:`Mechanism.evaluate_positions`)
-_BUILDER_EXAMPLES = {
-    "crank": """
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
-        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",)))  # [m]
-        >>> A = m.evaluate_positions({"j1": math.radians(30)})["A"]   # j1 [rad]
-        >>> [round(float(v), 4) for v in A]                           # [m]
-        [0.0866, 0.05]
-        """,
-    "slider_input": """
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("rod", coordinates=("s",)).frame("O", 0.0, 0.0)
-        ...      .slider_input("rod", origin="O", out="B", s="s", offset=0.1,
-        ...                    direction=math.radians(90), links=("1",)))  # offset [m]
-        >>> B = m.evaluate_positions({"s": 0.25})["B"]                # s [m]
-        >>> [round(float(v), 4) for v in B]                           # [m]
-        [0.0, 0.35]
-        """,
-    "rigid_point": """
-        A point of the crank 0.2 m from O, 90° ahead of the crank's direction O → A:
-
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
-        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
-        ...      .rigid_point("P", origin="O", toward="A", out="P", length=0.2,
-        ...                   angle=math.radians(90), links=("1",)))   # [m], [rad]
-        >>> P = m.evaluate_positions({"j1": math.radians(30)})["P"]   # j1 [rad]
-        >>> [round(float(v), 4) for v in P]                           # [m]
-        [-0.1, 0.1732]
-        """,
-    "slider_dyad": """
-        A slider-crank: rod 2 of 0.3 m from the crank pin A to the slider B on the
-        x axis:
-
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("slider-crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
-        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
-        ...      .slider_dyad("II", a="A", out="B", radius=0.3, line_point="O",
-        ...                   direction=0.0, branch=1, links=("2", "3")))   # [m], [rad]
-        >>> B = m.evaluate_positions({"j1": math.radians(90)})["B"]   # j1 [rad]
-        >>> [round(float(v), 4) for v in B]                # x = √(0.3² − 0.1²) [m]
-        [0.2828, 0.0]
-        """,
-    "pose_point": """
-        A point of the crank given by its offset (0.05, 0) m from O at j1 = 0:
-
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("crank", coordinates=("j1",)).frame("O", 0.0, 0.0)
-        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
-        ...      .pose_point("S", origin="O", toward="A", out="S", dx=0.05, dy=0.0,
-        ...                  at=0.0, links=("1",)))                     # [m], j1 [rad]
-        >>> S = m.evaluate_positions({"j1": math.radians(90)})["S"]   # j1 [rad]
-        >>> [round(float(v), 4) for v in S]                           # [m]
-        [0.0, 0.05]
-        """,
-    "rpr_dyad": """
-        A slotted lever: the rod pinned at the crank pin A slides through a sleeve
-        pivoted at B; the point E of the rod 0.5 m from A:
-
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("slotted lever", coordinates=("j1",))
-        ...      .frame("O", 0.0, 0.0).frame("B", 0.3, 0.0)
-        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
-        ...      .rpr_dyad("II", a="A", b="B", out="E", length=0.5, branch=1,
-        ...                links=("2", "3")))                           # [m]
-        >>> E = m.evaluate_positions({"j1": math.radians(90)})["E"]   # j1 [rad]
-        >>> [round(float(v), 4) for v in E]         # A + 0.5·(B − A)/|B − A| [m]
-        [0.4743, -0.0581]
-        """,
-    "prp_dyad": """
-        A Scotch yoke: the yoke's pin C on the vertical line through the crank pin
-        A and on the horizontal line through O:
-
-        >>> import math
-        >>> from assur import Mechanism
-        >>> m = (Mechanism("yoke", coordinates=("j1",)).frame("O", 0.0, 0.0)
-        ...      .crank("c", pivot="O", out="A", radius=0.1, q="j1", links=("1",))
-        ...      .prp_dyad("yoke", a="A", b="O", out="C", direction_a=math.radians(90),
-        ...                direction_b=0.0, links=("2", "3")))          # [m], [rad]
-        >>> C = m.evaluate_positions({"j1": math.radians(30)})["C"]   # j1 [rad]
-        >>> [round(float(v), 4) for v in C]                # (0.1·cos j1, 0) [m]
-        [0.0866, 0.0]
-        """,
-}
-
-
 def _builder(cls):
     def method(self, name, **kw):
         return self.add_group(cls.type_name, name, **kw)
@@ -1403,9 +1309,6 @@ def _builder(cls):
     method.__qualname__ = f"Mechanism.{cls.type_name}"
     # the class's docstring dedented, so that it reads as the method's own
     doc = inspect.cleandoc(cls.__doc__ or "")
-    example = _BUILDER_EXAMPLES.get(cls.type_name)
-    if example and ">>>" not in doc:   # the group's own example, where it has one
-        doc += "\n\nExamples\n--------\n" + inspect.cleandoc(example)
     method.__doc__ = (f"Add a {cls.kind} (:class:`{cls.__module__}.{cls.__name__}`); "
                       f"keywords: {params}, links.\n\n" + doc)
     return method

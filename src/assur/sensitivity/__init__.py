@@ -71,7 +71,7 @@ from ..fused import OutputContext, output_unit, resolve_output
 from ..groups.base import is_number, signed_name
 from .dual import Dual, base, variables
 
-__all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs"]
+__all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs", "jet_context"]
 
 _SI = {"length": "m", "angle": "rad", "force": "N", "pressure": "Pa", "mass": "kg",
        "moment": "N·m", "stiffness": "N/m", "inertia": "kg·m²", "number": "-",
@@ -145,6 +145,10 @@ class _JetContext(OutputContext):
 
     def value(self, ref):
         return self._value(ref)
+
+    def plain(self, v):
+        """``(values, derivatives)`` of a dual of this context (:func:`_plain`)."""
+        return _plain(v, self.size, len(self.params))
 
     def inv(self, x):
         return 1.0 / x
@@ -338,6 +342,49 @@ def jet_outputs(mech, q, params, outputs, g=None, values=None, step=None):
     >>> [round(float(v), 3) for v in value[0]], [round(float(v), 4) for v in der[0, :, 0]]
     ([0.2, 1.043], [-2.1958, -1.9565])
     """
+    specs = [resolve_output(mech, o) for o in outputs]
+    need = any(fn in ("Rx", "Ry", "R", "Rm", "Fr") for fn, _ in specs)
+    ctx = jet_context(mech, q, params, g=g, values=values, step=step, reactions=need)
+    res = [ctx.plain(ctx.output(fn, args)) for fn, args in specs]
+    return res, ctx.q3, ctx.shape, ctx.mech
+
+
+def jet_context(mech, q, params=(), *, g=None, values=None, step=None, reactions=True):
+    """The outputs' context (:class:`assur.fused.OutputContext`) over dual numbers: the
+    positions and their analogs at ``q`` as duals in ``params`` (and, nested, in the
+    coordinates), the loads applied and, with ``reactions``, the joint reactions of
+    the reverse pass — the engine of :func:`jet_outputs`.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    q : array_like
+        Positions as for :meth:`Mechanism.solve` [m or rad].
+    params : sequence of str, optional
+        Parameters to differentiate with respect to (none: derivatives of length 0).
+    g, values, step
+        As for :func:`jet_outputs`.
+    reactions : bool, optional
+        Run the groups' reactions in reverse order (needed by ``Rx``, ``Ry``, ``R``,
+        ``Rm``, ``Fr``). Default True.
+
+    Returns
+    -------
+    OutputContext
+        Its ``output(fn, args)`` gives a dual; ``plain(v)`` turns one into
+        ``(values, derivatives)`` arrays, shape (designs, positions) and
+        (designs, positions, len(params)). ``mech`` (with ``values`` applied),
+        ``params``, ``q3`` (k, designs, positions) and ``shape`` are attributes.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.sensitivity import jet_context
+    >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67], ["L4"])
+    >>> y, dy = ctx.plain(ctx.output("Y", ("56",)))   # Y56 [m], ∂Y56/∂L4 [m/m]
+    >>> [round(float(v), 3) for v in y[0]], [round(float(v), 4) for v in dy[0, :, 0]]
+    ([0.2, 1.043], [-2.1958, -1.9565])
+    """
     from .. import inputs
     from ..analysis import gravity_of
 
@@ -346,7 +393,6 @@ def jet_outputs(mech, q, params, outputs, g=None, values=None, step=None):
     if unknown:
         raise ModelError(f"{mech.name}: {unknown} are not parameters; parameters: "
                          f"{list(mech.params)}")
-    specs = [resolve_output(mech, o) for o in outputs]
     if values:
         inputs.check_params(mech, values)
         mech = mech.with_params(**values)
@@ -394,17 +440,12 @@ def jet_outputs(mech, q, params, outputs, g=None, values=None, step=None):
     ctx = _JetContext(mech, pts, value, g, rod_ends)
     for ld in mech.loads:
         ld.apply(ctx)
-    need_reactions = any(fn in ("Rx", "Ry", "R", "Rm", "Fr") for fn, _ in specs)
-    if need_reactions:
+    if reactions:
         for g_ in reversed(mech.groups):
             ctx.links = topo.group_links[g_.name]
             g_.reactions(ctx)
-    P = len(params)
-    res = []
-    for fn, args in specs:
-        v = ctx.output(fn, args)
-        res.append(_plain(v, (m, n), P))
-    return res, q3, shape, mech
+    ctx.params, ctx.q3, ctx.shape, ctx.size = params, q3, shape, (m, n)
+    return ctx
 
 
 def _plain(v, shape, P):
