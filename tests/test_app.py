@@ -234,6 +234,9 @@ def test_repr_html_of_mechanism_result_and_model():
     a = m.analyze(np.linspace(0.42, 0.67, 4))
     h = a._repr_html_()
     assert h.count("<svg") == 1 and 'id="pt-56"' in h and "Table 4.1" in h
+    from assur.display import analysis_html
+    ru = analysis_html(a, "ru")   # the word "table" in the report's language too
+    assert "Таблица 4.1" in ru and "Table 4.1" not in ru
     k = m.solve(np.linspace(0.42, 0.67, 4))
     assert "<svg" in k._repr_html_()
     h = aio.load(bundled("hitch_003"))._repr_html_()

@@ -73,6 +73,9 @@ def test_line_turbulent_uses_the_darcy_factor():
 def test_components_refuse_bad_values():
     with pytest.raises(ModelError, match="diameter"):
         Line(length=5.0, diameter=0.0)
+    # an unnamed component's message has no stray space before the colon
+    with pytest.raises(ModelError, match=r"^line: diameter = 0\.0 must be a finite number > 0$"):
+        Line(length=5.0, diameter=0.0)
     with pytest.raises(ModelError, match="regulation_range"):
         registry()["relief_valve"](16e6, 0.0)
     with pytest.raises(ModelError, match="position must be one of"):

@@ -217,3 +217,12 @@ def test_coordinates_must_be_real_finite_numbers():
         m.solve([0.5, np.nan])
     with pytest.raises(ModelError, match="must be numbers"):
         m.solve(["half a metre"])
+
+
+def test_reactions_of_links_without_a_joint_name_the_joints():
+    """``reaction`` and ``reaction_moment`` both say which joints there are (the moment
+    raised a bare ``KeyError(('2', '6'))``)."""
+    st = examples.hitch_003().analyze([0.42]).statics
+    for f in (st.reaction, st.reaction_moment):
+        with pytest.raises(KeyError, match=r"links '6' and '2' share no joint; joints: .*'5', '6'"):
+            f("6", "2")

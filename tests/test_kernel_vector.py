@@ -153,3 +153,15 @@ def test_check_of_a_bundled_model_imports_no_heavy_module():
     out = subprocess.run([sys.executable, "-c", CHECK], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "[]", out.stdout
+
+
+def test_calls_left_is_a_plain_int():
+    """The module's own elementwise ``max`` is numpy's: ``calls_left`` used it and
+    returned an ``np.int64`` where its annotation says ``int`` (found writing its
+    doctest)."""
+    KV.set_calls(7)
+    try:
+        left = KV.calls_left()
+        assert type(left) is int and left in (0, 7)
+    finally:
+        KV.set_calls(None)

@@ -112,10 +112,10 @@ class Target:
         tol = np.broadcast_to(np.asarray(self.tolerance, dtype=float), v.shape)
         if not (np.all(tol > 0) and np.all(np.isfinite(tol)) and self.scale > 0):
             raise ModelError(f"target {self.name!r}: tolerance and scale must be positive")
-        object.__setattr__(self, "tolerance", tuple(tol) if np.ndim(self.tolerance)
+        object.__setattr__(self, "tolerance", tuple(tol.tolist()) if np.ndim(self.tolerance)
                            else float(self.tolerance))
-        object.__setattr__(self, "positions", tuple(q))
-        object.__setattr__(self, "values", tuple(v))
+        object.__setattr__(self, "positions", tuple(q.tolist()))  # plain floats (their repr)
+        object.__setattr__(self, "values", tuple(v.tolist()))
         object.__setattr__(self, "_formula", Formula(self.name, self.expr))
 
     def residual(self, kin):

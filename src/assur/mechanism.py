@@ -733,9 +733,10 @@ class Mechanism:
 
     def owner(self, point):
         """The link that owns ``point``: loads at the point and later groups attached
-        there act on it. Frame points belong to "0"; a dyad's middle joint to its
-        second link; a rigid point to its link; a crank or slider end to the crank
-        or slider.
+        there act on it. Frame points belong to "0"; an RRR dyad's middle joint to
+        its second link (an RRP dyad's slider joint to its first; each group type
+        says, :meth:`~assur.groups.base.Group.topology`); a rigid point to its link;
+        a crank or slider end to the crank or slider.
 
         Examples
         --------

@@ -231,7 +231,9 @@ class Statics:
         i, j = str(i), str(j)
         if (i, j) in self._joints:
             return self._o(self._joints[(i, j)][3])
-        return -self._o(self._joints[(j, i)][3])
+        if (j, i) in self._joints:
+            return -self._o(self._joints[(j, i)][3])
+        raise KeyError(f"links {i!r} and {j!r} share no joint; joints: {sorted(self._joints)}")
 
     def reaction_magnitude(self, i, j):
         """|R_ij| [N].

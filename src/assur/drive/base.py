@@ -102,8 +102,9 @@ def _check(obj, field, ok, rule):
     v = getattr(obj, field)
     if not (isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
             and ok(v)):
-        raise ModelError(f"{obj.type_name} {getattr(obj, 'name', None) or ''}: "
-                         f"{field} = {v!r} must be a finite number {rule}".replace("  ", " "))
+        who = " ".join(x for x in (obj.type_name, getattr(obj, "name", None) or "") if x)
+        raise ModelError(f"{who}: {field} = {v!r} must be a finite number"
+                         + (f" {rule}" if rule else ""))
 
 
 def positive(obj, *fields):

@@ -5,8 +5,8 @@ Arithmetic on symbols and numbers, and the numpy ufuncs the group and load code
 uses (``np.hypot``, ``np.cos``, ``np.arctan2``…, dispatched through
 ``__array_ufunc__``), emit one assignment each into an
 :class:`~assur.kernel.emit.Emitter` and return the symbol of the result. Numbers
-combine with numbers in Python (constants are folded), so a load that is zero
-costs nothing. This lets one implementation of a group's reactions or of a load
+combine with numbers in Python (constants are folded): only what involves a symbol
+is written (a symbol plus 0.0 is still one line; the compiler sees it). This lets one implementation of a group's reactions or of a load
 serve both the array evaluation and the fused kernel (:mod:`assur.fused`).
 """
 

@@ -33,6 +33,7 @@ as they are in the compiled code.
 
 from __future__ import annotations
 
+import builtins
 import re
 import sys
 
@@ -104,7 +105,7 @@ def calls_left() -> int:
     if "numba" in sys.modules:  # its import is paid: the compiled kernels are cheap now
         return 0
     limit = CALLS if _state["limit"] is None else _state["limit"]
-    return max(0, limit - _state["calls"])
+    return builtins.max(0, limit - _state["calls"])  # the module's max is numpy's
 
 
 def wanted(elements: int) -> bool:

@@ -9,11 +9,15 @@ matplotlib.
 * :mod:`assur.report.drawing` — drawings and animation of the mechanism;
 * :mod:`assur.report.html` — one self-contained HTML file.
 
->>> from assur import examples                                   # doctest: +SKIP
->>> a = examples.hitch_003().analyze(examples.hitch_003_range())  # doctest: +SKIP
->>> files = write_report(a, "hitch-report", lang="ru")            # doctest: +SKIP
->>> files["html"]                                                 # doctest: +SKIP
-[PosixPath('hitch-report/report.html')]
+>>> import tempfile
+>>> from pathlib import Path
+>>> from assur import examples
+>>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+>>> with tempfile.TemporaryDirectory() as d:
+...     files = write_report(a, Path(d) / "hitch-report", formats=("csv",), lang="ru")
+...     names = [p.name for p in files["csv"]]
+>>> len(names) > 5, names[0]
+(True, 'table_2_1.csv')
 """
 
 from __future__ import annotations

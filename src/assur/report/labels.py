@@ -283,6 +283,7 @@ TEXT = {
               "ru": "Приведённая масса m({0}) и её производная m'({0})"},
     "sim_steady": {"en": "Q/A (steady speed)", "ru": "Q/A (установившаяся скорость)"},
     "sim_status": {"en": "status: {0}", "ru": "результат: {0}"},
+    "sim_reached": {"en": "reached t_end", "ru": "расчёт доведён до t_end"},
     "sim_events": {"en": "Events", "ru": "События"},
     "sim_energy": {"en": "Energy balance", "ru": "Энергетический баланс"},
     "sim_ev_lift-off": {"en": "lift-off from the stop", "ru": "отрыв от упора"},

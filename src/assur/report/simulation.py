@@ -203,8 +203,14 @@ def summary(result, lang="en"):
     ('lift-off from the stop', '0.0828', 's')
     >>> [row[0] for row in rows][3:5]  # then the energy balance [J]
     ['work of the pump', 'lost in the relief valve']
+    >>> summary(r, "ru")[0]
+    ('результат: расчёт доведён до t_end', '', '')
     """
-    rows = [(t("sim_status", lang, result.message), "", "")]
+    # a run that reached its end says so in the report's language; any other message
+    # (a stop, a solver failure) is the engine's own text
+    done = result.status == 0 and result.message == "reached t_end"
+    rows = [(t("sim_status", lang, t("sim_reached", lang) if done else result.message),
+             "", "")]
     if len(result.coordinates) == 1:
         rows.append((t("sim_steady_line", lang, result.steady_speed, result.nfev), "", ""))
         for name, times in result.events.items():
