@@ -32,7 +32,13 @@ def force(monkeypatch):
         monkeypatch.setattr(P, "_KERNELS", {})
         monkeypatch.setattr(P, "_PROGRAMS", {})
 
-    return set_path
+    yield set_path
+    # a mechanism of assur.examples (cached) keeps the programs compiled while the path
+    # was forced: forget it, or a later test in this process gets the composed kernel
+    # where it expects the fused one (the doctest of assur.kernel.compose.checks_continuity)
+    for f in vars(examples).values():
+        if callable(getattr(f, "cache_clear", None)):
+            f.cache_clear()
 
 
 def _execute(mech, q, check=True):
