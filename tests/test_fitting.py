@@ -132,3 +132,25 @@ def test_assur_fit_on_the_command_line(tmp_path):
     bad = CliRunner().invoke(app, ["fit", str(io.bundled("spout_lab5")), str(p),
                                    "--fit", "L13=a:b"])
     assert bad.exit_code == 1 and "NAME=LOW:HIGH" in bad.output
+
+
+def test_the_fit_jacobian_is_exact():
+    """The refinement's Jacobian comes from the dual numbers (not differences): it
+    equals central differences of the residuals, and is None for ddphi (second
+    analogs are not carried; the fit differences then)."""
+    from assur import examples
+    from assur.fitting import _jacobian, _residuals
+    m = examples.hitch_003()
+    S = np.array([0.42, 0.47, 0.52, 0.60])
+    targets = [Target("phi6", "phi(6)", S, [88.458, 90.028, 92.817, 99.0], scale=np.pi / 180),
+               Target("U", "dphi(6)/dphi(3)", S, [1.0, 1.0, 1.0, 1.0], tolerance=0.01),
+               Target("y", "Y(56) + 0.1*X(S6)", S, [0.2, 0.3, 0.5, 0.8])]
+    names = ["L7", "L6", "X07"]
+    x = np.array([m.params[n] for n in names], dtype=float)
+    J = _jacobian(m, names, x, targets, S)
+    h = 1e-6
+    fd = np.stack([(_residuals(m, names, (x + h * e)[None], targets, S)[0][0]
+                    - _residuals(m, names, (x - h * e)[None], targets, S)[0][0]) / (2 * h)
+                   for e in np.eye(len(names))], axis=1)
+    np.testing.assert_allclose(J, fd, rtol=1e-5, atol=1e-6 * np.abs(fd).max())
+    assert _jacobian(m, names, x, [Target("a", "ddphi(3)", S, [0.0] * 4)], S) is None

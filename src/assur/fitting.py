@@ -248,6 +248,30 @@ def _residuals(mech, names, x, targets, q):
     return out, ok
 
 
+def _jacobian(mech, names, x, targets, q):
+    """∂(residuals)/∂x at one design ``x`` (shape (p,)), shape (Σn, p) [1/SI]: exact,
+    the targets' formulas over the forward-mode dual numbers of :mod:`assur.sensitivity`
+    (:meth:`assur.columns.Formula.compute`); zeros where the design does not assemble
+    (the residuals are the constant FAIL_RESIDUAL there). None when a formula needs
+    what the dual numbers do not carry (``ddphi``): the caller differences instead."""
+    from .sensitivity import jet_context
+    jac = np.zeros((sum(len(t.values) for t in targets), len(names)))
+    if not _residuals(mech, names, x[None, :], targets, q)[1][0]:
+        return jac
+    ctx = jet_context(mech.with_params(**dict(zip(names, x))), q, names, reactions=False)
+    j = 0
+    try:
+        for t in targets:
+            idx = np.searchsorted(q, np.asarray(t.positions))
+            _, der = ctx.plain(t._formula.compute(ctx.formula_terms()))
+            tol = np.broadcast_to(np.asarray(t.tolerance, dtype=float), (len(idx),))
+            jac[j:j + len(idx)] = der.reshape(-1, len(names))[idx] / (t.scale * tol[:, None])
+            j += len(idx)
+    except ModelError:
+        return None
+    return jac
+
+
 def _cost(r):
     """The soft-l1 cost per design (f_scale = 1): Σ 2(√(1 + r²) − 1)."""
     return np.sum(2.0 * (np.sqrt(1.0 + r * r) - 1.0), axis=-1)
@@ -340,10 +364,16 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
     def assembles(x):
         return bool(_residuals(mech, names, x[None, :], targets, q)[1][0])
 
+    exact = _jacobian(mech, names, x0s[0], targets, q) is not None
+
+    def jac(x, keep=slice(None)):
+        return _jacobian(mech, names, x, targets, q)[keep] if exact else "2-point"
+
     for x0 in x0s:
         sol = least_squares(lambda x: _residuals(mech, names, x[None, :], targets, q)[0][0],
-                            x0, bounds=(lo, hi), loss=loss, f_scale=1.0, x_scale="jac",
-                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
+                            x0, jac=jac if exact else "2-point", bounds=(lo, hi), loss=loss,
+                            f_scale=1.0, x_scale="jac", xtol=1e-14, ftol=1e-14, gtol=1e-14,
+                            max_nfev=2000)
         if not assembles(sol.x):   # never return a design that cannot assemble
             continue
         if best is None or sol.cost < best.cost:
@@ -358,8 +388,9 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
         def kept(x):
             return _residuals(mech, names, x[None, :], targets, q)[0][0][keep]
 
-        sol = least_squares(kept, best.x, bounds=(lo, hi), loss=loss, f_scale=1.0,
-                            x_scale="jac", xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
+        sol = least_squares(kept, best.x, jac=(lambda x: jac(x, keep)) if exact else "2-point",
+                            bounds=(lo, hi), loss=loss, f_scale=1.0, x_scale="jac",
+                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=2000)
         if assembles(sol.x):
             best = sol
         r = _residuals(mech, names, best.x[None, :], targets, q)[0][0]

@@ -36,7 +36,7 @@ import numpy as np
 from .errors import ModelError
 from .groups.base import signed_name
 
-__all__ = ["max_memory", "fmt_bytes", "bytes_per_position", "check_memory", "coordinates_array",
+__all__ = ["params_problem", "mark_checked", "is_checked", "max_memory", "fmt_bytes", "bytes_per_position", "check_memory", "coordinates_array",
            "span_problem", "check_params", "check_finite", "SPANS", "MAX_MEMORY_ENV"]
 
 #: environment variable holding the memory limit of one request
@@ -401,6 +401,72 @@ def check_params(mech, params: Mapping | None = None) -> None:
     ...
     assur.errors.ModelError: mechanism 'hitch_003': parameter 'eta' (used as cylinder 'ГЦ'.eta_hyd): expected an efficiency in [0.01, 1], found 1.2 [-] (design 1)
     """
+    _problem(mech, params)
+    if not params:
+        _CHECKED.add(mech)
+
+
+def params_problem(mech, params: Mapping | None = None):
+    """The message :func:`check_params` would raise for ``params`` (None: no problem).
+
+    Once a mechanism's own values have passed, only the overrides ``params`` are
+    checked again (a search or a fit evaluates thousands of them one by one).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.inputs import params_problem
+    >>> m = examples.hitch_003()
+    >>> params_problem(m, {"L4": 0.7}) is None                       # [m]
+    True
+    >>> params_problem(m, {"L4": 0.0})
+    "mechanism 'hitch_003': parameter 'L4' (used as RRR dyad 'II (4,5)'.ra): expected a length of at least 1e-06 m, found 0.0 [m]"
+    """
+    try:
+        _problem(mech, params)
+    except ModelError as e:
+        return str(e)
+    return None
+
+
+def mark_checked(parent, child, changed: Mapping) -> None:
+    """Record ``child`` (``parent`` with the values ``changed``, same structure) as
+    checked when ``parent`` is and the changed values pass; otherwise
+    :func:`check_params` checks the child's values on its first use, as for any
+    mechanism.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.inputs import is_checked
+    >>> m = examples.hitch_003()
+    >>> good, bad = m.with_params(L4=0.7), m.with_params(L4=-0.7)   # [m]
+    >>> is_checked(good), is_checked(bad)
+    (True, False)
+    """
+    if parent not in _CHECKED and params_problem(parent) is None:
+        _CHECKED.add(parent)   # once per parent: then only the changed values are checked
+    if parent in _CHECKED and (not changed or params_problem(parent, changed) is None):
+        _CHECKED.add(child)
+
+
+def is_checked(mech) -> bool:
+    """Whether ``mech``'s own parameter values have passed :func:`check_params`.
+
+    Examples
+    --------
+    >>> from assur import Mechanism
+    >>> from assur.inputs import check_params, is_checked
+    >>> m = Mechanism("m", coordinates=("j1",), params={"l1": 0.2}).frame("O", 0.0, 0.0)
+    >>> before = is_checked(m)
+    >>> check_params(m)
+    >>> before, is_checked(m)
+    (False, True)
+    """
+    return mech in _CHECKED
+
+
+def _problem(mech, params):
     if not params and mech in _CHECKED:
         return  # the mechanism's own values, checked on an earlier call
     name = f"mechanism {mech.name!r}"
@@ -414,9 +480,12 @@ def check_params(mech, params: Mapping | None = None) -> None:
             raise ModelError(f"{name}: unknown parameter(s) {unknown}; known: "
                              f"{sorted(mech.params)}")
         merged.update(params)
-    roles = _roles(mech)
+    roles = mech.memo(("roles",), lambda: _roles(mech))
+    own_checked = bool(params) and mech in _CHECKED
     arrays = {}
     for p, v in merged.items():
+        if own_checked and p not in params:
+            continue  # the mechanism's own value, checked before
         if p not in roles and not (params and p in params):
             continue  # checked finite by Mechanism itself; no role to check it against
         if isinstance(v, (str, bytes, bool)) or v is None:
@@ -443,6 +512,8 @@ def check_params(mech, params: Mapping | None = None) -> None:
                 a = -arrays[base] if base else arrays[ref]
                 label = f"parameter {ref!r} (used as {where})"
             else:
+                if own_checked:
+                    continue  # a literal of the mechanism's own, checked before
                 try:
                     a = np.atleast_1d(np.asarray(raw, dtype=float))
                 except (TypeError, ValueError):
@@ -454,8 +525,6 @@ def check_params(mech, params: Mapping | None = None) -> None:
                 raise ModelError(f"{name}: {label}: {span_problem(kind, x, pos)}, found "
                                  f"{x!r} [{_SI.get(kind, '-')}]"
                                  + (f" (design {bad})" if a.size > 1 else ""))
-    if not params:
-        _CHECKED.add(mech)
 
 
 def _first_outside(kind, a, positive):

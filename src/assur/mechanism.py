@@ -141,13 +141,16 @@ class Mechanism:
             new = object.__new__(Mechanism)
             new.__dict__.update(self.__dict__)
             # same structure: the programs hold; the prepared tables do not
-            new._cache = {k: v for k, v in self._cache.items() if k[0] == "program"}
+            if "params" in kw:   # one program and one set of roles for every variant
+                self.program()
+            new._cache = {k: v for k, v in self._cache.items() if k[0] in ("program", "roles")}
             for k, v in kw.items():
                 setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables", "units")
                         else tuple(v) if k in ("notes", "motions") else v)
             if "params" in kw:
-                new._check_params({n: v for n, v in kw["params"].items()
-                                   if v is not self.params[n]})
+                changed = {n: v for n, v in kw["params"].items() if v is not self.params[n]}
+                new._check_params(changed)
+                inputs.mark_checked(self, new, changed)
             if "gravity" in kw or "gravity_direction" in kw:
                 new._check_gravity()
             if "motions" in kw:
