@@ -29,10 +29,10 @@ chromium:
 	bash .ci/chromium.sh
 
 test: $(STAMP) chromium
-	$(PY) -m pytest -n 2 --durations=10
+	$(PY) -m pytest -n 2 --dist worksteal --durations=10
 
 test-fast: $(STAMP) chromium
-	$(PY) -m pytest -n 2 -m "not slow"
+	$(PY) -m pytest -n 2 --dist worksteal -m "not slow"
 
 bench: $(STAMP)
 	$(PY) benchmarks/run.py
