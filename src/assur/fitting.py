@@ -367,7 +367,7 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
     exact = _jacobian(mech, names, x0s[0], targets, q) is not None
 
     def jac(x, keep=slice(None)):
-        return _jacobian(mech, names, x, targets, q)[keep] if exact else "2-point"
+        return _jacobian(mech, names, x, targets, q)[keep]
 
     for x0 in x0s:
         sol = least_squares(lambda x: _residuals(mech, names, x[None, :], targets, q)[0][0],

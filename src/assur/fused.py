@@ -60,19 +60,19 @@ from .kernel.sym import Sym, Tracer, code
 from .statics import GRAVITY, ReactionContextBase, gravity_unit
 
 __all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS", "parse_output",
-           "resolve_output", "output_unit", "formula_of"]
+           "resolve_output", "output_unit", "display_unit", "formula_of"]
 
 FORMAT = "7"
 REDUCTIONS = ("min", "max", "argmin", "argmax")
 #: unit of each output function (SI; "q" stands for the coordinate's unit)
 OUTPUT_UNITS = {"X": "m", "Y": "m", "dX": "m/q", "dY": "m/q", "I": "m/q", "phi": "rad",
-                "dphi": "rad/q", "length": "m", "dlength": "m/q", "F": "N", "Fr": "N", "Rx": "N", "Ry": "N",
-                "R": "N", "Rm": "N·m", "p": "Pa", "G": "N", "reserve": "%", "Xc": "m",
-                "Yc": "m", "formula": "SI"}
+                "dphi": "rad/q", "length": "m", "dlength": "m/q", "F": "N", "Fr": "N",
+                "Rx": "N", "Ry": "N", "R": "N", "Rm": "N·m", "p": "Pa", "G": "N",
+                "reserve": "%", "Xc": "m", "Yc": "m", "formula": "SI"}
 _ARITY = {"X": (1,), "Y": (1,), "dX": (1, 2), "dY": (1, 2), "I": (1, 2), "phi": (1,),
-          "dphi": (1, 2), "length": (1,), "dlength": (1, 2), "F": (1,), "Fr": (1,), "Rx": (2,), "Ry": (2,),
-          "R": (2,), "Rm": (2,), "p": (1,), "G": (2,), "reserve": (3,), "Xc": (0,),
-          "Yc": (0,)}
+          "dphi": (1, 2), "length": (1,), "dlength": (1, 2), "F": (1,), "Fr": (1,),
+          "Rx": (2,), "Ry": (2,), "R": (2,), "Rm": (2,), "p": (1,), "G": (2,),
+          "reserve": (3,), "Xc": (0,), "Yc": (0,)}
 _CALL = re.compile(r"^\s*([A-Za-z]+)\s*\((.*)\)\s*$")
 _NAME = re.compile(r"^\s*([^\W\d]\w*)\s*$")
 
@@ -156,8 +156,10 @@ def resolve_output(mech, text) -> tuple:
 
 
 def output_unit(mech, text) -> str:
-    """The SI unit of an output (``"q"`` for the coordinate's unit in analogs): a
-    formula's own unit when its scale is 1, else ``"SI"``.
+    """The SI unit of an output's values: ``"q"`` of :data:`OUTPUT_UNITS` becomes the
+    coordinate's unit (``m`` for a cylinder, ``rad`` for a crank), ``F``/``Fr`` of an
+    angle coordinate are moments [N·m]; a formula's own unit when its scale is 1,
+    else ``"SI"``.
 
     Examples
     --------
@@ -165,13 +167,41 @@ def output_unit(mech, text) -> str:
     >>> from assur.fused import output_unit
     >>> m = examples.hitch_003()
     >>> output_unit(m, "p(ГЦ)"), output_unit(m, "dY(56)"), output_unit(m, "GS6max")
-    ('Pa', 'm/q', 'N')
+    ('Pa', 'm/m', 'N')
+    >>> output_unit(examples.combine_002(), "F(j1)")      # the crank's driving moment
+    'N·m'
     """
     fn, args = resolve_output(mech, text)
     if fn == "formula":
         f = formula_of(mech, args[0])
         return f.unit if f.scale == 1.0 else "SI"
-    return OUTPUT_UNITS[fn]
+    u = OUTPUT_UNITS[fn]
+    if "q" in u:
+        c = args[1] if len(args) > 1 else mech.coordinates[0]
+        u = u.replace("q", "rad" if mech.coordinate_kind(c) == "angle" else "m")
+    if fn in ("F", "Fr") and mech.coordinate_kind(args[0]) == "angle":
+        u = "N·m"
+    return u
+
+
+def display_unit(mech, text):
+    """The :class:`assur.quantities.Unit` to show an output in: a formula's own unit
+    and scale (``p_c`` in kN/m if the formula says so), else :func:`output_unit`.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.fused import display_unit
+    >>> m = examples.hitch_003()
+    >>> display_unit(m, "GS6max").text, display_unit(m, "dY(56)").text
+    ('N', 'm/m')
+    """
+    from .quantities import Unit
+    fn, args = resolve_output(mech, text)
+    if fn == "formula":
+        f = formula_of(mech, args[0])
+        return Unit(f.unit, f.scale)
+    return Unit(output_unit(mech, (fn, args)))
 
 
 class OutputContext(ReactionContextBase):

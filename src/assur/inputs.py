@@ -36,7 +36,8 @@ import numpy as np
 from .errors import ModelError
 from .groups.base import signed_name
 
-__all__ = ["params_problem", "mark_checked", "is_checked", "max_memory", "fmt_bytes", "bytes_per_position", "check_memory", "coordinates_array",
+__all__ = ["params_problem", "mark_checked", "is_checked", "max_memory", "fmt_bytes",
+           "bytes_per_position", "check_memory", "coordinates_array",
            "span_problem", "check_params", "check_finite", "SPANS", "MAX_MEMORY_ENV"]
 
 #: environment variable holding the memory limit of one request

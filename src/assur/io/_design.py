@@ -40,7 +40,7 @@ from pydantic import BaseModel, ConfigDict, Field, StrictBool, StrictInt, Strict
 
 from ..errors import ModelError
 from . import _schema as S
-from ._units import (ANGLE, FORCE, LENGTH, NUMBER, PRESSURE, KINDS, Raw, UnitError,
+from ._units import (ANGLE, FORCE, LENGTH, MOMENT, NUMBER, PRESSURE, KINDS, Raw, UnitError,
                      display_unit, parse, to_si)
 
 __all__ = ["DesignSection", "DesignSpec", "build_design", "parse_var", "write_design_file"]
@@ -111,8 +111,8 @@ def _kind_of_output(text, mech):
     from ..fused import output_unit, resolve_output
     if resolve_output(mech, text)[0] == "formula":
         return None
-    return {"m": LENGTH, "N": FORCE, "Pa": PRESSURE, "rad": ANGLE, "%": NUMBER}.get(
-        output_unit(mech, text))
+    return {"m": LENGTH, "N": FORCE, "N·m": MOMENT, "Pa": PRESSURE, "rad": ANGLE,
+            "%": NUMBER}.get(output_unit(mech, text))
 
 
 _CRITERION_KIND = {"capacity": FORCE, "pressure": PRESSURE, "transmission_angle": ANGLE,
@@ -253,15 +253,11 @@ def _criterion(c, key, mech, criterion, Limit):
 
 def _output_unit(quantity, mech):
     """Unit("%") for an output in percent (a reserve), a formula's own unit, else None."""
-    from ..fused import formula_of, output_unit, resolve_output
-    from ..quantities import Unit
+    from ..fused import display_unit, resolve_output
     if not quantity:
         return None
-    fn, args = resolve_output(mech, quantity)
-    if fn == "formula":
-        f = formula_of(mech, args[0])
-        return Unit(f.unit, f.scale)
-    return Unit("%") if output_unit(mech, quantity) == "%" else None
+    u = display_unit(mech, quantity)
+    return u if resolve_output(mech, quantity)[0] == "formula" or u.text == "%" else None
 
 
 def _default_unit(kind):

@@ -86,19 +86,8 @@ def _unit_of(problem, output):
     for c in problem.constraints + problem.objectives:
         if output in c.outputs and c.unit is not None:
             return c.unit
-    from ..fused import formula_of, output_unit, resolve_output
-    from ..quantities import Unit
-    mech = problem.mechanism
-    fn, args = resolve_output(mech, output)
-    if fn == "formula":
-        f = formula_of(mech, args[0])
-        return Unit(f.unit, f.scale)
-    text = output_unit(mech, output)
-    if "/q" in text:  # an analog: per metre of a cylinder, per radian of a crank
-        mech = problem.mechanism
-        c = args[1] if len(args) > 1 else mech.coordinates[0]
-        text = text.replace("/q", "/rad" if mech.coordinate_kind(c) == "angle" else "/m")
-    return Unit(text)
+    from ..fused import display_unit
+    return display_unit(problem.mechanism, output)
 
 
 def comparison_html(problem, result, title=None, lang="en"):

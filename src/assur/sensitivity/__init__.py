@@ -103,17 +103,6 @@ def _param_unit(mech, name) -> str:
     return _SI.get(q, "-")
 
 
-def _unit_of(fn, mech, args):
-    u = output_unit(mech, (fn, args))
-    if "q" in u and fn != "formula":
-        c = args[1] if len(args) > 1 else mech.coordinates[0]
-        qu = "rad" if mech.coordinate_kind(c) == "angle" else "m"
-        u = u.replace("q", qu)
-    if fn == "F" and mech.coordinate_kind(args[0]) == "angle":
-        u = "N·m"
-    return u
-
-
 def _qderiv(x, a):
     """∂x/∂q_a of a dual in the parameters whose parts are duals in q (0 if constant)."""
     if not isinstance(x, Dual):
@@ -130,11 +119,13 @@ class _JetContext(OutputContext):
     symbolic one): the loads' virtual work, the reverse-order pass and the outputs,
     with the formulas of :mod:`assur.fused` (its docstring lists them)."""
 
-    def __init__(self, mech, pts, value, g, rod_ends):
+    def __init__(self, mech, pts, value, g, rod_ends, params, q3, shape):
         super().__init__(mech, rod_ends)
         self.pts = pts
         self._value = value
         self.g = g
+        self.params, self.q3, self.shape = tuple(params), q3, tuple(shape)
+        self.size = q3.shape[1:]   # (designs, positions)
 
     def point(self, p):
         return self.pts[p]
@@ -437,14 +428,13 @@ def jet_context(mech, q, params=(), *, g=None, values=None, step=None, reactions
 
     rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
                                                                is_coord)}
-    ctx = _JetContext(mech, pts, value, g, rod_ends)
+    ctx = _JetContext(mech, pts, value, g, rod_ends, params, q3, shape)
     for ld in mech.loads:
         ld.apply(ctx)
     if reactions:
         for g_ in reversed(mech.groups):
             ctx.links = topo.group_links[g_.name]
             g_.reactions(ctx)
-    ctx.params, ctx.q3, ctx.shape, ctx.size = params, q3, shape, (m, n)
     return ctx
 
 
@@ -537,7 +527,6 @@ def sensitivities(source, q=None, params=None, outputs=(), *, values=None, g=Non
     jac = jac.reshape(out_shape + (len(outputs), len(params)))
     qs = q3[0].reshape(out_shape) if len(m2.coordinates) == 1 else \
         np.moveaxis(q3, 0, -1).reshape(out_shape + (len(m2.coordinates),))
-    units = {o: _unit_of(fn, m2, args) for o, (fn, args) in
-             zip(outputs, (resolve_output(m2, o) for o in outputs))}
+    units = {o: output_unit(m2, o) for o in outputs}
     return Sensitivities(tuple(outputs), params, val, jac, qs, units,
                          {p: _param_unit(m2, p) for p in params})
