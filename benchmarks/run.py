@@ -841,8 +841,10 @@ def main(argv=None):
           "no position stored")
     print(f"    peer:  analyze(S, params) + .reserve('S6', P6).min(axis=1) on the first {md} "
           "designs (the array pass)")
-    print(f"    memory per position: 16 B (q, status) + {4 * 8 * len(out_d)} B per "
-          f"{256}-position chunk for the reductions")
+    from assur.kernel.source import CHUNK
+    print(f"    memory per position: 16 B (q, status) + {4 * 8 * len(out_d)} B per work item "
+          f"(a run of ≤ {CHUNK} positions of one design: here one per design) for the "
+          f"reductions")
     reduce_d()
     array_d()
     best, reps, last = time_interleaved({"d": reduce_d, "a": array_d}, 3, args.budget)

@@ -390,9 +390,13 @@ def _limit(r0: float, w0: float, c: np.ndarray, m: float, masks=None) -> np.ndar
     ``masks``: ``(m − c, m − c > 0)`` when the caller has them (both limits of
     :func:`axle_reactions` share them)."""
     den, pos = masks if masks is not None else (m - c, None)
+    excess = r0 - m * w0          # R_0 − m·W_0 [N]
+    if isinstance(den, float):    # one position: the same cases on a number
+        if excess >= 0:
+            return excess / den if den > 0 else math.inf
+        return math.inf if den < 0 else 0.0
     if pos is None:
         pos = den > 0
-    excess = r0 - m * w0          # R_0 − m·W_0 [N]
     if excess >= 0:  # bounded where den > 0 (excess/den), unbounded where den ≤ 0
         out = np.empty(np.shape(den))
         out.fill(np.inf)
@@ -468,7 +472,10 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
             p = np.broadcast_to(p, shape)
     if not np.isfinite(x).all():
         raise ValueError("implement_x [m] must be finite")
-    if x.shape != shape:
+    one = isinstance(p, float) and x.size == 1
+    if one:   # one position (dynamics, the page): the formulas below on numbers
+        x = float(x.reshape(-1)[0])
+    elif x.shape != shape:
         x = np.broadcast_to(x, shape)
 
     s = machine.steered
@@ -485,13 +492,22 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
     shares = {n: reactions[n] * per_cent for n in machine.axles}
     m = machine.min_share
     steerable = r_s >= m * total
-    if not isinstance(total, np.ndarray):
-        total, w = np.empty(shape), total
-        total.fill(w)
     den = m - c                               # m − ∂R_s/∂P [-]
-    masks = (den, den > 0)
+    masks = (den, None if one else den > 0)
     g_cw = _limit(r_cw, weight, c, m, masks)
     g_bare = _limit(r_bare, w_bare, c, m, masks)
+    if one:   # the numbers as arrays of the input's shape, made in one call
+        names = list(machine.axles)
+        rows = np.array([*(reactions[n] for n in names), *(shares[n] for n in names),
+                         total, g_cw, g_bare]).reshape((-1, *shape))
+        k = len(names)
+        reactions = dict(zip(names, rows[:k]))
+        shares = dict(zip(names, rows[k:2 * k]))
+        total, g_cw, g_bare = rows[2 * k:]
+        steerable = np.array(steerable).reshape(shape)
+    elif not isinstance(total, np.ndarray):
+        total, w = np.empty(shape), total
+        total.fill(w)
     return StabilityResult(
         reactions=reactions, shares=shares, steered=s, min_share=m,
         total_weight=total, steered_share=shares[s], steerable=steerable,

@@ -253,6 +253,18 @@ def unwrap_rows(sv, rows, n):
             for job in range(rows.shape[0] * m):
                 r = rows[job // m]
                 d = job % m
+                # most angles never step by more than π between positions: a
+                # vectorized read-only count first, the sequential pass only if needed
+                # (1-D views and a zero-based index: numba's 2-D indexing with i − 1
+                # kept the loop scalar, 8× slower)
+                nxt = sv[r, d * n + 1:(d + 1) * n]
+                prv = sv[r, d * n:(d + 1) * n - 1]
+                jumps = 0
+                for i in range(nxt.shape[0]):
+                    step = nxt[i] - prv[i]
+                    jumps += (step > math.pi) | (step < -math.pi)
+                if jumps == 0:
+                    continue
                 off = 0.0
                 prev = sv[r, d * n]
                 for i in range(d * n + 1, (d + 1) * n):

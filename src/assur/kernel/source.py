@@ -28,21 +28,29 @@ import re
 from ..groups import group_type
 from .emit import (CODES_PER_OP, CONTINUITY_TOL, FAIL_COINCIDENT, FAIL_CONTINUITY,
                    Emitter, d, dd, fail, pt)
+from .fold import fold
 from .select import branchless
+from .stream import STREAM_MIN
 
 __all__ = ["generate", "hoisted", "chunk_loop", "continuity_check", "emit_atan2", "emit_measure",
-           "quantities", "status_out", "CHUNK", "BUF_ROW", "FORMAT"]
+           "quantities", "status_out", "copy_out", "CHUNK", "BUF_PAD", "BUF_ROW", "FORMAT"]
 
-#: elements per work item of the element loop
-CHUNK = 256
+#: elements per work item of the element loop: long enough that each output row's
+#: copy is a run of 8 kB (runs of 2 kB halved the copy's bandwidth), short enough
+#: that the chunk buffer of a few dozen rows stays in a core's L2 cache
+CHUNK = 1024
 
-#: row length of a kernel's chunk buffer: CHUNK plus one cache line, so that the rows
-#: written at one position fall into different L1 sets (a stride of 2048 bytes put
-#: them all into two sets of the 12-way L1)
-BUF_ROW = CHUNK + 8
+#: columns a kernel's chunk buffer has beyond the run of positions it holds: the
+#: element before the run (the continuity check's left end) and one cache line, so
+#: that the rows written at one position fall into different L1 sets (a stride of a
+#: power of two put them all into two sets of the L1)
+BUF_PAD = 9
+
+#: row length of a kernel's chunk buffer when its runs are whole chunks
+BUF_ROW = CHUNK + BUF_PAD
 
 #: bump when the generator changes what it emits
-FORMAT = "23"
+FORMAT = "24"
 
 
 #: Cephes atan (S. L. Moshier, atan.c): atan(x) = x + x·z·P(z)/Q(z), z = x², for
@@ -58,9 +66,9 @@ _PI_LO = 1.2246467991473532e-16  # π − fl(π)
 
 
 def emit_atan2(E, out, y, x, t):
-    """``out = atan2(y, x)`` [rad] as branch-free code (selects, no libm call), so the
-    element loop stays vectorized: within 2 ulp of :func:`numpy.arctan2` (signed zeros
-    as numpy); ``t`` prefixes the temporaries.
+    """``out = atan2(y, x)`` [rad] as branch-free code (selects, no libm call, two
+    divisions), so the element loop stays vectorized: within 2 ulp of
+    :func:`numpy.arctan2` (signed zeros as numpy); ``t`` prefixes the temporaries.
 
     Examples
     --------
@@ -84,9 +92,13 @@ def emit_atan2(E, out, y, x, t):
     E(f"{t}ax = abs({x})")
     E(f"{t}ay = abs({y})")
     E(f"{t}mx = max({t}ax, {t}ay)")
-    E(f"{t}r = min({t}ax, {t}ay) / {t}mx if {t}mx > 0.0 else 0.0")  # in [0, 1]
-    E(f"{t}big = {t}r > 0.66")
-    E(f"{t}u = ({t}r - 1.0) / ({t}r + 1.0) if {t}big else {t}r")
+    E(f"{t}mn = min({t}ax, {t}ay)")
+    # r = mn/mx in [0, 1]; above 0.66 the argument is (r − 1)/(r + 1), written
+    # (mn − mx)/(mn + mx): one division instead of two (and mn − mx is exact there)
+    E(f"{t}big = {t}mn > 0.66 * {t}mx")
+    E(f"{t}un = {t}mn - {t}mx if {t}big else {t}mn")
+    E(f"{t}ud = {t}mn + {t}mx if {t}big else {t}mx")
+    E(f"{t}u = {t}un / {t}ud if {t}mx > 0.0 else 0.0")
     E(f"{t}z = {t}u * {t}u")
     E(f"{t}pz = (((({p0} * {t}z + {p1}) * {t}z + {p2}) * {t}z + {p3}) * {t}z + {p4})")
     E(f"{t}qz = ((((({t}z + {q0}) * {t}z + {q1}) * {t}z + {q2}) * {t}z + {q3}) * {t}z"
@@ -198,6 +210,35 @@ def status_out(indent: str, offset: str = "") -> str:
             f"{indent}    status[e0 + j] = sbuf[j{offset}]\n")
 
 
+def copy_out(nrows: str, offset: str = "", indent: str = "        ") -> str:
+    """The copy of a work item's ``nrows`` staged output rows ``buf`` to ``out``
+    (after the element loop; ``offset`` as in :func:`status_out`): with streaming
+    stores when the kernel's ``stream`` is set (:mod:`assur.kernel.stream`), else
+    element by element.
+
+    Examples
+    --------
+    >>> from assur.kernel.source import copy_out
+    >>> print(copy_out("NQ"), end="")
+            if stream:
+                for r in range(NQ):
+                    _stream(out, r, e0, buf, r, 0, e1 - e0)
+            else:
+                for r in range(NQ):
+                    for j in range(e1 - e0):
+                        out[r, e0 + j] = buf[r, j]
+    """
+    col = f"0{offset}" if offset else "0"
+    col = col.replace("0 + ", "")
+    return (f"{indent}if stream:\n"
+            f"{indent}    for r in range({nrows}):\n"
+            f"{indent}        _stream(out, r, e0, buf, r, {col}, e1 - e0)\n"
+            f"{indent}else:\n"
+            f"{indent}    for r in range({nrows}):\n"
+            f"{indent}        for j in range(e1 - e0):\n"
+            f"{indent}            out[r, e0 + j] = buf[r, j{offset}]\n")
+
+
 def chunk_loop(hoist: str, lead: bool = False) -> str:
     """The loop over work items (runs of ≤ CHUNK positions of one design: per-design
     values are loop-invariant, the element loop a plain counted loop), with the
@@ -212,11 +253,11 @@ def chunk_loop(hoist: str, lead: bool = False) -> str:
     --------
     >>> from assur.kernel.source import chunk_loop
     >>> print(chunk_loop("            P28 = params[28, d]\\n"), end="")
-        cpd = (npd + 256 - 1) // 256
+        cpd = (npd + 1024 - 1) // 1024
         for c in range(c_start, c_end):
             d = c // cpd
-            e0 = d * npd + (c % cpd) * 256
-            e1 = min(d * npd + npd, e0 + 256)
+            e0 = d * npd + (c % cpd) * 1024
+            e1 = min(d * npd + npd, e0 + 1024)
             ep = e0
             if e1 > e0:
                 P28 = params[28, d]
@@ -338,6 +379,7 @@ def emit_program(rows, measures, K):
     for j, (kind, s_, P, Q) in enumerate(measures):
         E(f"# measure {j}: {kind}")
         emit_measure(E, n + j, kind, s_, P, Q)
+    E.lines = fold(E.lines)
     return E, cont
 
 
@@ -408,6 +450,7 @@ import math
 import numpy as np
 from numba import njit
 from assur.kernel.select import sel as _sel
+from assur.kernel.stream import store_fence as _fence, stream_copy as _stream
 
 CHECKS_CONTINUITY = True  # see assur.kernel.compose.checks_continuity
 # buf rows of the squared heights of the groups checked for continuity, their codes
@@ -427,15 +470,17 @@ def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
     NQ = {nq}
     if out.shape[0] != NQ or out.shape[1] != E or (check and amount.shape[0] != E):
         raise ValueError("assur kernel: output arrays do not match the program")
+    # constant shapes: a buffer row stride known at compile time lets LLVM vectorize
+    # the element loop's stores (a run-time stride made the loop 4× slower)
     buf = np.empty(({max(len(qs), 1)}, {BUF_ROW}))
     sbuf = np.empty({CHUNK + 1}, dtype=np.int64)
+    stream = NQ * E >= {STREAM_MIN}  # outputs far beyond the caches: streaming stores
     nfail = 0
     # work items are runs of ≤ {CHUNK} positions of one design: the per-design values
     # are loop-invariant and the element loop is a plain counted loop (vectorizable)
 {chunk_loop(hoist, lead=bool(cont))}''' + "\n".join(body) + "\n" + "\n".join(out) + "\n" + (
         "            if check:\n" + check if check else "") + status_out(" " * 8, " + e0 - ep") + \
-        '''        for r in range(NQ):
-            for j in range(e1 - e0):
-                out[r, e0 + j] = buf[r, j + e0 - ep]
+        copy_out("NQ", " + e0 - ep") + '''    if stream:
+        _fence()
     return nfail
 '''
