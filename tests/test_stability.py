@@ -299,3 +299,24 @@ def test_machine_follows_the_parameters():
         ra = (9000.0 * (0.5 + L[d]) + 56000.0 * 1.7 - 27500.0 * xs6[d]) / L[d]
         assert np.allclose(a.stability.reaction("A")[d], ra, rtol=1e-12)
     assert a.stability.max_implement_weight.shape == (2, 10)
+
+
+@pytest.mark.parametrize("x", [np.array([-1.0]), np.array([[0.0]]), np.array(3.0),
+                               np.array([1.0]), np.array([2.5])])
+def test_one_position_equals_the_array_path(x):
+    """One position (a number path in axle_reactions) gives what the same position
+    gives among others (the array path), field by field, shapes included: bounded,
+    unbounded (np.inf) and zero limits."""
+    m = Machine({"A": 0.0, "B": 2.0}, steered="B", weights=[("body", 10000.0, 0.2)],
+                counterweights=[("ballast", 3000.0, 2.6)])
+    one = axle_reactions(m, 5000.0, x)
+    many = axle_reactions(m, 5000.0, np.stack([x.reshape(-1)[0] + np.zeros(x.shape),
+                                               np.full(x.shape, 0.7)]))
+    for f in ("total_weight", "steered_share", "steerable", "max_implement_weight",
+              "max_implement_weight_without_counterweights"):
+        a, b = getattr(one, f), getattr(many, f)[0]
+        assert a.shape == x.shape and a.dtype == b.dtype, f
+        assert np.array_equal(a, b), f
+    for n in ("A", "B"):
+        assert np.array_equal(one.reactions[n], many.reactions[n][0])
+        assert np.array_equal(one.shares[n], many.shares[n][0])

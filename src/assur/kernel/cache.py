@@ -15,7 +15,7 @@ import sys
 import threading
 from pathlib import Path
 
-__all__ = ["cache_dir", "set_cache_dir", "load_source", "load_keyed"]
+__all__ = ["cache_dir", "set_cache_dir", "load_source", "load_keyed", "helpers_tag"]
 
 _lock = threading.RLock()  # a driver's import loads its group functions
 _loaded: dict[str, object] = {}
@@ -56,6 +56,30 @@ def cache_dir() -> Path:
     p = Path(base) / "kernels"
     p.mkdir(parents=True, exist_ok=True)
     return p
+
+
+_tag: list = []
+
+
+def helpers_tag() -> str:
+    """Hash of the modules whose numba intrinsics the generated kernels call
+    (:mod:`assur.kernel.select`, :mod:`assur.kernel.stream`). Generated sources carry
+    it in their first line: numba's disk cache checks a kernel's own file only, so a
+    change to an intrinsic must change the file.
+
+    Examples
+    --------
+    >>> from assur.kernel.cache import helpers_tag
+    >>> len(helpers_tag()), helpers_tag() == helpers_tag()
+    (12, True)
+    """
+    if not _tag:
+        from . import select, stream
+        h = hashlib.sha1()
+        for m in (select, stream):
+            h.update(Path(m.__file__).read_bytes())
+        _tag.append(h.hexdigest()[:12])
+    return _tag[0]
 
 
 def load_source(src: str, name: str = "kernel"):

@@ -236,16 +236,17 @@ _version: list = []
 
 def _code_version() -> str:
     """Hash of the source of every module that shapes the emitted code (the group
-    types, :mod:`assur.kernel.emit`, ``source``, ``select`` and this one): a change
-    to any of them is a new cache entry."""
+    types, :mod:`assur.kernel.emit`, ``source``, ``fold``, ``select`` and this one): a
+    change to any of them is a new cache entry."""
     if not _version:
         import hashlib
         from pathlib import Path
 
         from .. import groups
-        from . import emit, select, source
+        from . import emit, fold, select, source
         mods = {sys.modules[c.__module__] for c in groups.registry().values()}
-        mods |= {sys.modules[__name__], emit, select, source, sys.modules["assur.groups.base"]}
+        mods |= {sys.modules[__name__], emit, fold, select, source,
+                 sys.modules["assur.groups.base"]}
         h = hashlib.sha1()
         for f in sorted(str(m.__file__) for m in mods):
             h.update(Path(f).read_bytes())
