@@ -38,7 +38,8 @@ from .groups.base import signed_name
 
 __all__ = ["params_problem", "mark_checked", "is_checked", "max_memory", "fmt_bytes",
            "bytes_per_position", "check_memory", "coordinates_array",
-           "span_problem", "check_params", "check_finite", "SPANS", "MAX_MEMORY_ENV"]
+           "span_problem", "check_params", "check_finite", "all_finite", "SPANS",
+           "MAX_MEMORY_ENV"]
 
 #: environment variable holding the memory limit of one request
 MAX_MEMORY_ENV = "ASSUR_MAX_MEMORY"
@@ -548,9 +549,19 @@ def _first_outside(kind, a, positive):
 
 
 # ---- results ------------------------------------------------------------------------
-def _all_finite(v) -> bool:
+def all_finite(v) -> bool:
     """True if every value of ``v`` (a number or an array) is finite: a few values
-    (one position) by ``math.isfinite``, a fifth of numpy's per-call cost."""
+    (one position) by ``math.isfinite``, a fifth of numpy's per-call cost.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.inputs import all_finite
+    >>> all_finite(np.array([0.5])), all_finite(np.array([0.5, np.nan])), all_finite(np.inf)
+    (True, False, False)
+    >>> all_finite(np.linspace(0.42, 0.67, 1000))               # numpy for many values
+    True
+    """
     if isinstance(v, np.ndarray) and v.size <= 4:
         return all(map(math.isfinite, v.ravel().tolist()))
     if isinstance(v, float):
@@ -602,7 +613,7 @@ def check_finite(analysis) -> None:
         items.append(("largest force of cylinder", name_, cyl.force_max))
     for what, *whose, vals in items:
         for v in (vals if isinstance(vals, tuple) else (vals,)):
-            if _all_finite(v):
+            if all_finite(v):
                 continue
             a = np.asarray(v, dtype=float).ravel()
             i = int(np.flatnonzero(~np.isfinite(a))[0])

@@ -1263,7 +1263,7 @@ class Mechanism:
         k = len(self.coordinates)
         if (k == 1 and m_params == 1 and type(q) is np.ndarray and q.ndim == 1
                 and q.dtype == np.float64 and 0 < q.size <= 4096 and q.flags.c_contiguous
-                and np.isfinite(q).all()):
+                and inputs.all_finite(q)):
             return q.reshape(1, q.size), q.shape, 1, q.size   # the common small case
         # real, finite floats of a size that fits in memory, or a ModelError
         a = inputs.coordinates_array(q, self, m_params, per_position)
