@@ -320,3 +320,5 @@ def test_one_position_equals_the_array_path(x):
     for n in ("A", "B"):
         assert np.array_equal(one.reactions[n], many.reactions[n][0])
         assert np.array_equal(one.shares[n], many.shares[n][0])
+    with pytest.raises(ValueError, match="implement_x"):
+        axle_reactions(m, 5000.0, np.full(x.shape, np.nan))

@@ -470,12 +470,12 @@ def axle_reactions(machine: Machine, implement_weight: ArrayLike,
         shape = np.broadcast_shapes(p.shape, x.shape)
         if p.shape != shape:
             p = np.broadcast_to(p, shape)
-    if not np.isfinite(x).all():
-        raise ValueError("implement_x [m] must be finite")
     one = isinstance(p, float) and x.size == 1
     if one:   # one position (dynamics, the page): the formulas below on numbers
         x = float(x.reshape(-1)[0])
-    elif x.shape != shape:
+    if not (math.isfinite(x) if one else np.isfinite(x).all()):
+        raise ValueError("implement_x [m] must be finite")
+    if not one and x.shape != shape:
         x = np.broadcast_to(x, shape)
 
     s = machine.steered
