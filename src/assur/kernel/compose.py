@@ -38,6 +38,7 @@ import re
 from ..groups import group_type
 from .cache import helpers_tag, load_source
 from .emit import CODES_PER_OP, Emitter
+from .fold import fold
 from .source import CHUNK, FORMAT, emit_measure, generate, quantities
 
 __all__ = ["THRESHOLD", "BLOCK", "canonical", "generate_composed", "is_fused",
@@ -199,7 +200,7 @@ def generate_composed(rows, measures, K, out_pts, out_sca):
     state: dict[str, int] = {}
     calls = []  # (function number, loc rows, param rows, trig rows, status base)
     for lines, sb in items:
-        body, names, inputs, outputs, prows, trows = canonical(lines)
+        body, names, inputs, outputs, prows, trows = canonical(fold(lines))
         src = _group_source(body, names, inputs, outputs, len(prows), len(trows))
         if src not in keys:
             keys[src] = len(srcs)
