@@ -391,7 +391,8 @@ def _limit(r0: float, w0: float, c: np.ndarray, m: float, masks=None) -> np.ndar
     :func:`axle_reactions` share them)."""
     den, pos = masks if masks is not None else (m - c, None)
     excess = r0 - m * w0          # R_0 − m·W_0 [N]
-    if isinstance(den, float):    # one position: the same cases on a number
+    if type(den) is float:        # one position: the same cases on a number (a numpy
+        # scalar, e.g. from a 0-d array, keeps the array path and returns an array)
         if excess >= 0:
             return excess / den if den > 0 else math.inf
         return math.inf if den < 0 else 0.0
