@@ -42,7 +42,7 @@ def measure(kind: str, n: int, threshold=None) -> dict:
     from structures import with_groups
 
     from assur.kernel import source
-    from assur.program import compile_program
+    from assur.core.program import compile_program
 
     m = with_groups(kind, n)
     q = np.linspace(0.50, 0.55, 3)

@@ -15,7 +15,7 @@ within ±30 mm; 50 positions of S over [0.42, 0.67] m):
 (f) one differential evolution run (popsize 15, 150 generations, seed 1): its wall
     time, the designs evaluated, the batches, and the optimum's minimum reserve
     against the seed's 8.9 % (table 4.1); then the SLSQP polish of that optimum with
-    exact gradients (``assur.design.polish``): DE → polished value, iterations,
+    exact gradients (``assur.synthesis.search.polish``): DE → polished value, iterations,
     gradient evaluations and its wall time.
 
 Figures are printed for people to read; nothing here is a test.
@@ -33,9 +33,9 @@ import time
 import numpy as np
 
 from assur import io
-from assur.design import load_problem
-from assur.design.polish import polish
-from assur.design.search import optimize
+from assur.synthesis.search import load_problem
+from assur.synthesis.search.polish import polish
+from assur.synthesis.search.search import optimize
 
 TARGET_E = 10.0  # s for 1e6 designs × 50 positions
 

@@ -5,7 +5,7 @@ Three figures, each the median of N changes of a link length to values not seen
 before (so nothing is reused: the edited file is read, its three [[solve]]
 conditions solved again, the hitch analyzed at 101 positions and its tables built):
 
-* **server**: :meth:`assur.app.session.PageModel.compute`, in process, next to its
+* **server**: :meth:`assur.views.page.session.PageModel.compute`, in process, next to its
   peer run interleaved in the same process — the bare engine call a script would
   make for the same change (``io.loads`` of the edited text and ``Model.analyze``
   at the same 101 positions); the ratio is the page's own overhead (the
@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from assur.app.server import create_app, running
-from assur.app.session import PageModel
+from assur.views.page.server import create_app, running
+from assur.views.page.session import PageModel
 from assur.io import bundled, loads
 
 N = 15

@@ -222,7 +222,7 @@ def where_b(mech, n, budget):
     the same size (the first touch of each page, which the OS zeroes) — the part of a
     fresh result that no kernel can avoid."""
     from assur.kernel import run as KR
-    from assur.program import execute
+    from assur.core.program import execute
 
     prog = mech.program()
     ptab, trig, _ = mech.prepared(prog)
@@ -296,7 +296,7 @@ def fused_outputs():
 
 def fused_pipeline(mech, S, outs, stability):
     """(c'): ``mech.evaluate(S, outputs=…)`` — one fused kernel writes only these
-    values — then the axle reactions from X(S6) (``assur.stability.axle_reactions``)."""
+    values — then the axle reactions from X(S6) (``assur.machines.stability.axle_reactions``)."""
     f = mech.evaluate(S, outputs=outs)
     machine, weight = stability
     st = stability_module().axle_reactions(machine, weight, f["X(S6)"])
@@ -309,7 +309,7 @@ def fused_pipeline(mech, S, outs, stability):
 
 
 def stability_module():
-    from assur import stability
+    from assur.machines import stability
     return stability
 
 
@@ -499,7 +499,7 @@ TARGET_CHECK = 0.5  # s, issue 7: a warm `assur check` of a bundled model
 HEAVY = ("numba", "pint", "scipy", "matplotlib", "pandas", "jinja2", "openpyxl")
 _CHECK_MODULES = """
 import sys
-from assur.cli import app
+from assur.views.cli import app
 sys.argv = ["assur", "check", sys.argv[1]]
 try:
     app()
@@ -529,7 +529,7 @@ def startup_section(reps):
     # PYTHONDONTWRITEBYTECODE, which makes every import compile its module again)
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     cmds = {"assur check hitch_003.toml": [sys.executable, "-m", "assur", "check", model],
-            "python -c 'import assur.cli'": [sys.executable, "-c", "import assur.cli"],
+            "python -c 'import assur.views.cli'": [sys.executable, "-c", "import assur.views.cli"],
             "python -c 'import assur'": [sys.executable, "-c", "import assur"],
             "python -c 'import numpy' (floor)": [sys.executable, "-c", "import numpy"]}
     print(f"command start-up (fresh processes: one warm-up run, then best / median of {reps}; "
@@ -630,7 +630,7 @@ def main(argv=None):
     peer.hitch(S0)
     t_cold_np = time.perf_counter() - t0
     t_cold_c, how_c = cold(lambda: assur_pipeline(hitch, S0, peer.LOAD["P6"]), dirs)
-    from assur.columns import column_signs
+    from assur.core.columns import column_signs
     printed = column_signs(hitch)
     same_signs = hitch.analyze(S0[:2]).statics.named_reactions() == \
         {n: (i, j) for n, (i, j, _) in signs.items()} and \

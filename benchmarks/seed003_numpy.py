@@ -220,7 +220,7 @@ def pipeline(S, p=PARAMS, q=LOAD):
         R34, R45, R03, R01, R23 [N] (components of R05, R34, R45 with the seed's
         printed sign);
         §6: Ra, Rb [N], dRa, dRb [%], GS6max [as printed; N·m/m − N/m, see
-        ``assur.stability.SEED003_GS6MAX_FLAGS``], and — not in the seed — Gmax,
+        ``assur.machines.stability.SEED003_GS6MAX_FLAGS``], and — not in the seed — Gmax,
         the dimensionally correct limit of the 20 % rule [N].
     """
     g = hitch(S, p)
@@ -296,7 +296,7 @@ def pipeline(S, p=PARAMS, q=LOAD):
     R_amin = 0.2 * W
     GS6max = (P_mcxa * b + P_gr * (a + L) - R_amin) / XS6
     # not in the seed: the 20 % rule solved for the implement weight
-    # (assur.stability module notes), compared with StabilityResult.max_implement_weight
+    # (assur.machines.stability module notes), compared with StabilityResult.max_implement_weight
     Gmax = (P_mcxa * b + P_gr * (a + L) - 0.2 * L * (P_mcxa + P_gr)) / (XS6 + 0.2 * L)
 
     g.update(

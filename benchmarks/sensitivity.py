@@ -1,6 +1,6 @@
 """Timing of the exact sensitivities and of the tolerance Monte Carlo (issue 12).
 
-(a) ``assur.sensitivity.sensitivities`` of the seed-003 pipeline — capacity at 56 and
+(a) ``assur.synthesis.sensitivity.sensitivities`` of the seed-003 pipeline — capacity at 56 and
 S6, pressure, Y of 56 and S6, the reactions R05 (x, y) and R56 — with respect to all
 29 numeric parameters of hitch_003.toml, per position, against the peer in the same
 process: complex step of the same pipeline (``jet_outputs`` with one parameter given
@@ -19,9 +19,9 @@ import time
 import numpy as np
 
 from assur import examples, io
-from assur.sensitivity import numeric_parameters, sensitivities
-from assur.sensitivity.cstep import complex_step
-from assur.tolerance import monte_carlo
+from assur.synthesis.sensitivity import numeric_parameters, sensitivities
+from assur.synthesis.sensitivity.cstep import complex_step
+from assur.synthesis.tolerance import monte_carlo
 
 OUTPUTS = ["G(ГЦ, 56)", "G(ГЦ, S6)", "p(ГЦ)", "Y(56)", "Y(S6)", "Rx(0, 5)", "Ry(0, 5)",
            "R(5, 6)"]

@@ -7,7 +7,7 @@ build, and the API reference comes from the numpydoc docstrings.
 
 Some pages are generated here before the build, from the code itself, so they cannot
 go out of date: the command reference (from typer's app), the drawings of every group
-type (from the group registry, drawn by :mod:`assur.report.drawing`) and the list of
+type (from the group registry, drawn by :mod:`assur.views.report.drawing`) and the list of
 optional guide pages that exist. The build is offline: no intersphinx inventories are
 fetched.
 """

@@ -12,11 +12,11 @@ from typer.testing import CliRunner
 
 from assur import io
 from assur.analysis import add_dynamics
-from assur.cli import app
+from assur.views.cli import app
 from assur.errors import ModelError
-from assur.inertia import crank_dynamics
-from assur.report import seed_tables
-from assur.report.html import render_html
+from assur.dynamics.crank import crank_dynamics
+from assur.views.report import seed_tables
+from assur.views.report.html import render_html
 
 
 @pytest.fixture(scope="module")

@@ -1,6 +1,6 @@
 """One position at a time (as dynamics and the page call it) gives what the array
 path gives: ``Mechanism.analyze`` of single positions — after
-:data:`assur.statics.FUSED_AFTER` calls through the fused statics kernel (static
+:data:`assur.core.statics.FUSED_AFTER` calls through the fused statics kernel (static
 loads; with a rod's [motion] the array pass with inertia loads), with the
 cylinders' constants and the stability machine made once per mechanism — equals the
 analysis of all the positions at once with the array pass of the statics, for the
@@ -13,7 +13,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from assur import io, statics
+from assur import io
+from assur.core import statics
 from assur.analysis import gravity_of
 
 MODELS = ["hitch_003", "header_000_fixed", "steering_lab4", "spout_lab5", "adapter_lab6",
@@ -95,7 +96,7 @@ def _limit_reference(r0, w0, c, m):
 @pytest.mark.parametrize("r0, w0", [(5000.0, 20000.0), (4000.0, 20000.0), (3000.0, 20000.0),
                                     (0.0, 0.0), (-0.0, 0.0), (1e-300, 0.0)])
 def test_stability_limit_equals_its_first_form(r0, w0):
-    from assur.stability import _limit
+    from assur.machines.stability import _limit
     c = np.array([-1.0, 0.0, 0.1, 0.2, 0.2 + 1e-17, 0.3, 1.0, 5.0])
     for cc in (c, c[:1].reshape(()), c.reshape(2, 4)):
         got, want = _limit(r0, w0, cc, 0.2), _limit_reference(r0, w0, cc, 0.2)

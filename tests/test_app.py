@@ -10,14 +10,14 @@ from fastapi.testclient import TestClient
 
 from assur import examples
 from assur import io as aio
-from assur.app.session import PageModel
+from assur.views.page.session import PageModel
 from assur.io import bundled
-from assur.report.tables import seed_tables
+from assur.views.report.tables import seed_tables
 
 
 @pytest.fixture(scope="module")
 def client():
-    from assur.app.server import create_app
+    from assur.views.page.server import create_app
     return TestClient(create_app(bundled("hitch_003")), raise_server_exceptions=False)
 
 
@@ -106,7 +106,7 @@ def test_nan_and_unknown_names_are_refused(client):
 
 
 def test_bodies_and_arrays_are_bounded(client):
-    from assur.app.api import MAX_BODY
+    from assur.views.page.api import MAX_BODY
     r = client.post("/api/analyze", content=b"{" + b" " * MAX_BODY + b"}",
                     headers={"content-type": "application/json"})
     assert r.status_code == 413
@@ -165,7 +165,7 @@ def test_dxf_download_reads_back_with_pivots_at_the_solved_points(client, tmp_pa
 def test_write_dxf_layers_per_link_and_points(tmp_path):
     import ezdxf
 
-    from assur.app.dxf import write_dxf
+    from assur.views.page.dxf import write_dxf
     kin = examples.hitch_003().solve(np.linspace(0.42, 0.67, 6))
     path = write_dxf(kin, tmp_path / "hitch.dxf", positions=[0, 5])
     doc = ezdxf.readfile(path)
@@ -192,7 +192,7 @@ def test_cli_dxf(tmp_path):
     import ezdxf
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     out = tmp_path / "h.dxf"
     r = CliRunner().invoke(app, ["dxf", str(bundled("hitch_003")), "--at", "0.42,0.5",
                                  "-o", str(out)])
@@ -208,7 +208,7 @@ def test_cli_dxf(tmp_path):
 def test_cli_serve_refuses_bad_options():
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     r = CliRunner().invoke(app, ["serve", str(bundled("hitch_003")), "--lang", "de"])
     assert r.exit_code == 1 and "--lang must be one of" in r.output
     r = CliRunner().invoke(app, ["serve", str(bundled("hitch_003")), "--port", "70000"])
@@ -234,7 +234,7 @@ def test_repr_html_of_mechanism_result_and_model():
     a = m.analyze(np.linspace(0.42, 0.67, 4))
     h = a._repr_html_()
     assert h.count("<svg") == 1 and 'id="pt-56"' in h and "Table 4.1" in h
-    from assur.display import analysis_html
+    from assur.views.notebook import analysis_html
     ru = analysis_html(a, "ru")   # the word "table" in the report's language too
     assert "Таблица 4.1" in ru and "Table 4.1" not in ru
     k = m.solve(np.linspace(0.42, 0.67, 4))
@@ -263,7 +263,7 @@ def test_display_does_not_import_matplotlib():
 def test_other_machines_on_the_page(name, ok):
     """A crank (angles), a grid of two cylinders, the crane, and a file that cannot
     assemble as printed (seed 000: its message, not a drawing)."""
-    from assur.app.server import create_app
+    from assur.views.page.server import create_app
     c = TestClient(create_app(bundled(name)), raise_server_exceptions=False)
     info = c.get("/api/model").json()
     out = c.post("/api/analyze", json={"params": {}, "positions": 21}).json()

@@ -24,7 +24,7 @@ _client = None
 def client():
     global _client
     if _client is None:
-        from assur.app.server import create_app
+        from assur.views.page.server import create_app
         _client = TestClient(create_app(bundled("hitch_003")), raise_server_exceptions=False)
     return _client
 

@@ -10,7 +10,7 @@ import pytest
 from typer.testing import CliRunner
 
 from assur import io
-from assur.cli import app
+from assur.views.cli import app
 
 MODELS = sorted(p.stem for p in Path(io.bundled("hitch_003")).parent.glob("*.toml"))
 #: the bundled files kept as their seed prints them: they load, and cannot assemble

@@ -5,7 +5,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from assur.cli import app
+from assur.views.cli import app
 from assur.io import bundled
 
 from seed_tables import T003_2_1, T003_3_1a, T003_4_1, assert_printed

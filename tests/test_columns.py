@@ -1,4 +1,4 @@
-"""Extra columns a model declares (``assur.columns``; DESIGN.md §11): formulas
+"""Extra columns a model declares (``assur.core.columns``; DESIGN.md §11): formulas
 evaluated by a whitelisted expression walker (never ``eval``), column sign maps,
 ``[model] gravity`` — general hooks, so that no seed is named in the core."""
 
@@ -10,10 +10,10 @@ import pytest
 
 from assur import examples, io
 from assur.analysis import gravity_of
-from assur.columns import Formula, FormulaError, SignMap, parse
+from assur.core.columns import Formula, FormulaError, SignMap, parse
 from assur.io import ModelFileError
-from assur.report import seed_tables
-from assur.statics import GRAVITY
+from assur.views.report import seed_tables
+from assur.core.statics import GRAVITY
 
 ROOT = pathlib.Path(__file__).parent.parent
 LIFT = re.search(r"```toml\n(.*?)```", (ROOT / "docs" / "model-format.md").read_text(),

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from assur import Mechanism, PosePoint, examples
-from assur import program as P
+from assur.core import program as P
 from assur.kernel import compose
 
 # the structures of the compile-time benchmark, defined once (benchmarks/structures.py)

@@ -10,10 +10,10 @@ from conftest import examples as n_examples
 from hypothesis import given, settings, strategies as st
 
 from assur import io
-from assur.conditioner import (flattest_spring, grips, min_roller_diameter,
+from assur.machines.conditioner import (flattest_spring, grips, min_roller_diameter,
                                specific_pressure, speed_ratio, spring_stroke, wedge_angle)
 from assur.errors import ModelError
-from assur.report import seed_tables
+from assur.views.report import seed_tables
 
 L_ROLLER = 1.6     # Lr of the files [m]
 TARGET = 20e3      # p_target [N/m]
@@ -154,7 +154,7 @@ def test_bad_inputs_are_refused():
 
 
 def test_the_csv_files_hold_no_nan_or_inf(tmp_path, analysis):
-    from assur.report import write_report
+    from assur.views.report import write_report
     files = write_report(analysis, tmp_path, formats=("csv",))
     csvs = sorted(tmp_path.glob("*.csv"))
     assert csvs and files
@@ -164,7 +164,7 @@ def test_the_csv_files_hold_no_nan_or_inf(tmp_path, analysis):
 
 
 def test_distance_functions_of_formulas_are_checked():
-    from assur.columns import Formula, FormulaError
+    from assur.core.columns import Formula, FormulaError
     m = io.load(io.bundled("conditioner_lab2")).mechanism
     kin = m.solve([0.21, 0.22])
     np.testing.assert_array_equal(Formula("l", "dist(lam)").evaluate(kin), kin.length("lam"))

@@ -14,11 +14,11 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from assur import AssemblyError, Mechanism, ModelError, examples, io
-from assur.cli import app
+from assur.views.cli import app
 from assur.errors import ModelWarning
-from assur.motion import Motion
-from assur.report import figures as F
-from assur.report.tables import seed_tables, wrap_degrees
+from assur.core.motion import Motion
+from assur.views.report import figures as F
+from assur.views.report.tables import seed_tables, wrap_degrees
 
 runner = CliRunner()
 
@@ -366,7 +366,7 @@ def test_draw_at_in_degrees(tmp_path):
                             "--format", "png", "--draw-at", "14.679,188.229"])
     assert r.exit_code == 0, r.output
     assert (out / "mechanism.png").exists()
-    from assur.cli import _positions
+    from assur.views.cli import _positions
     a = examples.combine_002().analyze(examples.combine_002_range())
     assert _positions(a, "188.229,344.679°,-15.321") == [12, 1, 1]
     r = runner.invoke(app, ["analyze", str(io.bundled("hitch_003")), "-o", str(out),
@@ -380,7 +380,7 @@ def test_draw_at_refuses_angles_far_from_every_position(tmp_path):
     a = m.analyze(np.radians(np.linspace(0, 40, 5)))
     import typer
 
-    from assur.cli import _positions
+    from assur.views.cli import _positions
     assert _positions(a, "20") == [2]
     with pytest.raises(typer.Exit):
         _positions(a, "200")

@@ -1,4 +1,4 @@
-"""Crank dynamics (:mod:`assur.inertia`, :mod:`assur.flywheel`, :mod:`assur.balancing`).
+"""Crank dynamics (:mod:`assur.dynamics.crank`, :mod:`assur.dynamics.flywheel`, :mod:`assur.dynamics.balancing`).
 
 Seed 001 lab 3 (001_4447446e88a18ffc.txt, §3) gives the method (kinetostatics with
 inertia by Assur groups, reduced moment on the crank, flywheel and irregularity,
@@ -43,10 +43,10 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from assur import io
-from assur.balancing import CounterMass, balance, common_centre, shoelace
+from assur.dynamics.balancing import CounterMass, balance, common_centre, shoelace
 from assur.errors import ModelError
-from assur.flywheel import flywheel, periodic_integral
-from assur.inertia import LinkMass, crank_dynamics, reduced_inertia, with_masses
+from assur.dynamics.flywheel import flywheel, periodic_integral
+from assur.dynamics.crank import LinkMass, crank_dynamics, reduced_inertia, with_masses
 
 from test_analogs_random import SETTINGS, _floats
 from test_statics_random import crank_family, prepare

@@ -122,7 +122,7 @@ def test_the_drive_sets_the_papers_strokes():
 def test_verdicts_follow_the_numbers(lv184a_sweep):
     """Each verdict is computed from the sweep: claim 1's excess is the ratio of the
     max forces at 6 s; changing the numbers (or the claim) changes the verdict."""
-    from assur.report.cycles import ABOUT, conclusions
+    from assur.views.report.cycles import ABOUT, conclusions
     df = lv184a_sweep
     v = {x.key: x for x in conclusions(df)}
     at6 = df[df["T"] == 6.0].set_index("scenario")
@@ -153,8 +153,8 @@ def test_cli_cycles_writes_tables_figures_and_report(tmp_path, lang, crane):
     import pandas as pd
     from typer.testing import CliRunner
 
-    from assur.cli import app
-    from assur.report.cycles import FIGURES
+    from assur.views.cli import app
+    from assur.views.report.cycles import FIGURES
     r = CliRunner().invoke(app, ["cycles", str(io.bundled(crane)), "-o", str(tmp_path),
                                  "--lang", lang])
     assert r.exit_code == 0, r.output
@@ -182,7 +182,7 @@ def test_cli_cycles_writes_tables_figures_and_report(tmp_path, lang, crane):
 def test_cli_cycles_without_a_drive_fails_with_one_message(tmp_path):
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     r = CliRunner().invoke(app, ["cycles", str(io.bundled("hitch_003")), "-o",
                                  str(tmp_path)])
     assert r.exit_code == 1
@@ -194,7 +194,7 @@ def test_pump_verdicts_follow_the_drives_speeds():
     against the whole flow to one cylinder at a time (V = Q/f). The cycles run at the
     drive's speeds, and the verdicts rest on their forces' ratios."""
     from assur.dynamics.cycles import drive_cycles
-    from assur.report.cycles import drive_sweep, pump_conclusions
+    from assur.views.report.cycles import drive_sweep, pump_conclusions
     model = io.load(io.bundled("crane_lv184a"))
     cs = drive_cycles(model.drive)
     Q = model.drive.pump_flow()

@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from assur import io
-from assur.design import load_problem
-from assur.design.problem import ASSEMBLY, CONSTRAINT, FEASIBLE
-from assur.design.search import optimize, pareto
+from assur.synthesis.search import load_problem
+from assur.synthesis.search.problem import ASSEMBLY, CONSTRAINT, FEASIBLE
+from assur.synthesis.search.search import optimize, pareto
 from assur.errors import ModelError
 
 HITCH = io.bundled("hitch_003_design")
@@ -75,8 +75,8 @@ def test_engine_refusal_is_isolated():
     a pose S = Sp where the cylinder cannot reach — is split off the batch with the
     engine's message; the rest of the batch is evaluated (and the problem needs no
     constraint)."""
-    from assur.design import Problem, Variable, criterion
-    from assur.design.problem import ENGINE
+    from assur.synthesis.search import Problem, Variable, criterion
+    from assur.synthesis.search.problem import ENGINE
     mech = io.load(io.bundled("hitch_003")).mechanism
     obj = criterion("bound", {"quantity": "Y(S6)", "of": "max"}, mech, sense="maximize")
     S = np.linspace(0.42, 0.67, 8)
@@ -123,7 +123,7 @@ def test_nsga2_pareto_front():
         p.write_text(text, encoding="utf-8")
         pb = load_problem(p)
         res = pareto(pb, pop_size=24, generations=8, seed=2)
-        from assur.report.design import pareto_figure
+        from assur.views.report.design import pareto_figure
         png = pareto_figure(pb, res, Path(d) / "front.png")
         assert png.stat().st_size > 1000
     assert len(res.X) >= 1 and res.batch.feasible.all()
@@ -201,7 +201,7 @@ y = ["-1 m", "2 m"]
 
 def test_cli_optimize_writes_a_loadable_best_design(tmp_path):
     from typer.testing import CliRunner
-    from assur.cli import app
+    from assur.views.cli import app
     r = CliRunner().invoke(app, ["optimize", str(HITCH), "--popsize", "6", "--maxiter", "15",
                                  "--seed", "3", "--workers", "0", "-o", str(tmp_path)])
     assert r.exit_code == 0, r.output
@@ -212,8 +212,8 @@ def test_cli_optimize_writes_a_loadable_best_design(tmp_path):
     assert b.feasible[0] and b.objectives[0, 0] > 8.95
     html = (tmp_path / "design.html").read_text(encoding="utf-8")
     assert "Variables" in html and "X01" in html and "data:image/png;base64" in html
-    from assur.report.design import comparison_html
-    from assur.design.search import optimize
+    from assur.views.report.design import comparison_html
+    from assur.synthesis.search.search import optimize
     res = optimize(pb, popsize=4, maxiter=3, seed=0)
     ru = comparison_html(pb, res, lang="ru")
     assert "Переменные проектирования" in ru and "максимизировать" in ru
@@ -222,7 +222,7 @@ def test_cli_optimize_writes_a_loadable_best_design(tmp_path):
 def test_cli_sweep_in_process_to_parquet(tmp_path):
     import pandas as pd
     from typer.testing import CliRunner
-    from assur.cli import app
+    from assur.views.cli import app
     out = tmp_path / "s.parquet"
     r = CliRunner().invoke(app, ["sweep", str(HITCH), "--samples", "500", "--workers", "0",
                                  "-o", str(out)])
@@ -253,7 +253,7 @@ def test_reductions_equal_the_array_pass(problem):
 
 def test_cli_refuses_a_bad_var_with_one_message(tmp_path):
     from typer.testing import CliRunner
-    from assur.cli import app
+    from assur.views.cli import app
     r = CliRunner().invoke(app, ["sweep", str(HITCH), "--var", "L44=1:2", "--workers", "0",
                                  "-o", str(tmp_path / "x.parquet")])
     assert r.exit_code == 1
@@ -265,8 +265,8 @@ def test_capacity_constraint_and_a_point_that_does_not_rise():
     """A capacity at the lever's point 23 (Python API): where 23 goes down with S
     (I(23) ≤ 0) the design is infeasible with that reason; elsewhere the minimum
     capacity equals the array pass's."""
-    from assur.design import Limit, Problem, Variable, criterion
-    from assur.design.problem import LIFT
+    from assur.synthesis.search import Limit, Problem, Variable, criterion
+    from assur.synthesis.search.problem import LIFT
     mech = io.load(io.bundled("hitch_003")).mechanism
     cap = criterion("capacity", {"cylinder": "ГЦ", "point": "23"}, mech,
                     limit=Limit(60e3, "at_least"))
@@ -295,7 +295,7 @@ def test_written_design_file_loads_with_the_values(tmp_path):
     own unit (an angle in degrees, a length in m or mm, a plain number) and loads
     back to the same values."""
     from assur.io._design import write_design_file
-    from assur.quantities import display_units
+    from assur.core.quantities import display_units
     base = io.bundled("hitch_003")
     mech = io.load(base).mechanism
     values = {"phiBD": 0.40123456789, "X01": 0.4123456789, "eta": 0.8512345, "Dgc": 0.0812345}

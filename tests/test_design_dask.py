@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 from assur import io
-from assur.design import load_problem
-from assur.design.scale import Executor, sweep
+from assur.synthesis.search import load_problem
+from assur.synthesis.search.scale import Executor, sweep
 
 
 @pytest.mark.slow
@@ -16,7 +16,7 @@ def test_local_cluster_equals_in_process():
     X[::7, pb.names.index("X03")] += 0.8  # some designs that do not assemble
     here = sweep(pb, X)
     seen = []
-    from assur.design.search import optimize
+    from assur.synthesis.search.search import optimize
     de_here = optimize(pb, popsize=5, maxiter=8, seed=6)
     with Executor(workers=2, chunk=700, progress=lambda d, t: seen.append(d)) as ex:
         there = sweep(pb, X, executor=ex)

@@ -8,11 +8,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import io
-from assur.design import CRITERIA, Limit, Problem, Variable, criterion, load_problem
-from assur.design.criteria import _Kind
-from assur.design.problem import CONSTRAINT, FEASIBLE
-from assur.design.polish import missing_gradients, polish
-from assur.design.search import optimize
+from assur.synthesis.search import CRITERIA, Limit, Problem, Variable, criterion, load_problem
+from assur.synthesis.search.criteria import _Kind
+from assur.synthesis.search.problem import CONSTRAINT, FEASIBLE
+from assur.synthesis.search.polish import missing_gradients, polish
+from assur.synthesis.search.search import optimize
 from assur.errors import ModelError
 from conftest import examples as n_examples
 
@@ -215,7 +215,7 @@ def test_a_criterion_without_gradient_skips_the_polish(monkeypatch):
 def test_transmission_angle_in_line_has_no_derivative():
     """Links in line at the active position: the transmission angle's gradient is a
     ModelError naming the criterion and the position, not an infinite number."""
-    from assur.design.criteria import Reductions
+    from assur.synthesis.search.criteria import Reductions
     mech = io.load(io.bundled("hitch_003")).mechanism
     mu = criterion("transmission_angle", {"links": ["4", "5"]}, mech,
                    limit=Limit(0.3, "at_least"))
@@ -235,7 +235,7 @@ def test_cli_optimize_polish_and_no_polish(tmp_path):
     and the report); ``--no-polish`` does not polish."""
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     args = ["optimize", str(HITCH), "--popsize", "5", "--maxiter", "5", "--seed", "0",
             "--workers", "0"]
     r = CliRunner().invoke(app, args + ["--polish", "-o", str(tmp_path / "a")])
@@ -264,7 +264,7 @@ def test_design_polish_key_and_its_override(tmp_path):
     error naming the key."""
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     text = HITCH.read_text(encoding="utf-8").replace(
         'extends = "hitch_003.toml"', f'extends = "{(HITCH.parent / "hitch_003.toml").as_posix()}"')
     f = tmp_path / "off.toml"

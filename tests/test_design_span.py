@@ -4,15 +4,15 @@ pressure; lab 3: centre-of-mass excursion)".
 Two outputs of the fused kernel make them design quantities:
 
 * ``Xc``, ``Yc`` — the common centre of mass of the masses on moving links
-  (001 lab 3), equal to :func:`assur.balancing.common_centre`;
+  (001 lab 3), equal to :func:`assur.dynamics.balancing.common_centre`;
 * a formula of the model's ``[[tables.formulas]]`` by its name — lab 2's specific
   roller pressure ``p_c`` (eq. 4) — equal to its report column.
 
 Both carry exact sensitivities (the same formulas over dual numbers), and the two
 bundled design files ``conditioner_lab2_design.toml`` and
 ``cleaning_lab3_design.toml`` minimise their span; each optimum is checked by code
-that does not go through the fused kernel (:mod:`assur.conditioner`,
-:mod:`assur.balancing` over :meth:`Mechanism.solve`).
+that does not go through the fused kernel (:mod:`assur.machines.conditioner`,
+:mod:`assur.dynamics.balancing` over :meth:`Mechanism.solve`).
 """
 from __future__ import annotations
 
@@ -20,13 +20,13 @@ import numpy as np
 import pytest
 
 from assur import io
-from assur.balancing import common_centre
-from assur.columns import formulas_of
-from assur.conditioner import specific_pressure
-from assur.design import load_problem
-from assur.design.search import optimize
+from assur.dynamics.balancing import common_centre
+from assur.core.columns import formulas_of
+from assur.machines.conditioner import specific_pressure
+from assur.synthesis.search import load_problem
+from assur.synthesis.search.search import optimize
 from assur.errors import ModelError
-from assur.sensitivity import sensitivities
+from assur.synthesis.sensitivity import sensitivities
 
 LAB2 = io.bundled("conditioner_lab2")
 LAB3 = io.bundled("cleaning_lab3")

@@ -26,7 +26,7 @@ import pytest
 from typer.testing import CliRunner
 
 import assur
-from assur.cli import app
+from assur.views.cli import app
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"

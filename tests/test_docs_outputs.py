@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from assur import io
-from assur.report import seed_tables, write_report
+from assur.views.report import seed_tables, write_report
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "outputs.md"
 

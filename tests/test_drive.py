@@ -1,4 +1,4 @@
-"""Hydraulic components (:mod:`assur.drive`): the contract of the registry, the
+"""Hydraulic components (:mod:`assur.dynamics.drive`): the contract of the registry, the
 line's loss coefficients against independent formulas, and seed 004's flow-divider
 speeds (eqs. 63–68) at the paper's printed precision."""
 
@@ -12,8 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from assur.drive import FlowDivider, Line, registry
-from assur.drive.base import ROLES
+from assur.dynamics.drive import FlowDivider, Line, registry
+from assur.dynamics.drive.base import ROLES
 from assur.errors import ModelError
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -83,7 +83,7 @@ def test_components_refuse_bad_values():
     with pytest.raises(ModelError, match="shares"):
         FlowDivider((0.7, 0.7))
     with pytest.raises(ValueError, match="component type must be one of"):
-        from assur.drive import component_type
+        from assur.dynamics.drive import component_type
         component_type("gear_pmp")
 
 

@@ -5,13 +5,13 @@ with random masses on every moving link:
 1. ∂M/∂q (from the second analogs) against fourth-order central differences of M
    (from the first analogs) at neighbouring positions;
 2. inverse dynamics M·q̈ + h − Q against the d'Alembert route of
-   :func:`assur.statics.virtual_work_forces` (inertia forces −m·a_S, moments −J·ε
+   :func:`assur.core.statics.virtual_work_forces` (inertia forces −m·a_S, moments −J·ε
    of every link from a = J·q̈ + q̇ᵀ·H·q̇: no mass matrix involved);
 3. the kinetic-energy identity dT/dt = q̇ᵀ·(M·q̈ + h) with dT/dt by central
    differences of T = ½·q̇ᵀ·M·q̇ along q(t) = q0 + q̇·t + ½·q̈·t², and the
    skew property q̇ᵀ·h = ½·q̇ᵀ·Ṁ·q̇;
 4. forward dynamics inverts inverse dynamics;
-5. k = 1: M and dM/dq are :func:`assur.inertia.reduced_inertia`'s J_red, J_red'.
+5. k = 1: M and dM/dq are :func:`assur.dynamics.crank.reduced_inertia`'s J_red, J_red'.
 """
 
 from __future__ import annotations
@@ -21,10 +21,11 @@ import pytest
 from hypothesis import event, given
 from hypothesis import strategies as st
 
-from assur import io, statics
+from assur import io
+from assur.core import statics
 from assur.dynamics import equations_of_motion
 from assur.errors import ModelError
-from assur.inertia import reduced_inertia
+from assur.dynamics.crank import reduced_inertia
 from test_analogs_random import SETTINGS, _floats, analogs, fd_steps
 from test_statics_random import crank_family, cylinder_lever_family, cylinder_radius_family, \
     draw_rates, prepare, slider_family
@@ -151,7 +152,7 @@ def check_eom(case, data):
     assert np.abs(dTdt - power).max() <= RTOL_FD * psc + ABS_FLOOR
 
     event("all checks")
-    # 5. k = 1: the reduced inertia of assur.inertia
+    # 5. k = 1: the reduced inertia of assur.dynamics.crank
     if k == 1:
         Jr, dJr = reduced_inertia(kin)
         m, dm = eom.reduced_mass()
@@ -168,7 +169,7 @@ def test_equations_of_motion_on_random_mechanisms(family, data):
 
 
 def test_lab3_cleaning_mechanism_reduced_inertia():
-    """The bundled lab-3 crank machine: M = J_red, ∂M/∂φ = J_red' (assur.inertia),
+    """The bundled lab-3 crank machine: M = J_red, ∂M/∂φ = J_red' (assur.dynamics.crank),
     and h = ½·J_red'·ω² at ω = −30 rad/s."""
     model = io.load(io.bundled("cleaning_lab3"))
     kin = model.mechanism.solve(model.range)

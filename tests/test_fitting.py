@@ -1,11 +1,11 @@
-"""assur.fitting: parameters fitted to a table, robust to a misprint (issue 10)."""
+"""assur.synthesis.fitting: parameters fitted to a table, robust to a misprint (issue 10)."""
 
 import numpy as np
 import pytest
 
 from assur import io
 from assur.errors import ModelError
-from assur.fitting import Target, fit_parameters
+from assur.synthesis.fitting import Target, fit_parameters
 from test_columns import LIFT
 
 DEG = np.pi / 180
@@ -120,7 +120,7 @@ def test_a_bad_table_is_located(tmp_path, text, message):
 def test_assur_fit_on_the_command_line(tmp_path):
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     p = tmp_path / "t51.csv"
     p.write_text(T51, encoding="utf-8")
     r = CliRunner().invoke(app, ["fit", str(io.bundled("spout_lab5")), str(p),
@@ -139,7 +139,7 @@ def test_the_fit_jacobian_is_exact():
     equals central differences of the residuals, and is None for ddphi (second
     analogs are not carried; the fit differences then)."""
     from assur import examples
-    from assur.fitting import _jacobian, _residuals
+    from assur.synthesis.fitting import _jacobian, _residuals
     m = examples.hitch_003()
     S = np.array([0.42, 0.47, 0.52, 0.60])
     targets = [Target("phi6", "phi(6)", S, [88.458, 90.028, 92.817, 99.0], scale=np.pi / 180),

@@ -20,9 +20,9 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from assur import io
-from assur.cli import app
+from assur.views.cli import app
 from assur.errors import AssemblyError, ModelError, SingularPositionError
-from assur.report.tables import seed_tables
+from assur.views.report.tables import seed_tables
 
 runner = CliRunner()
 FILES = {name: io.bundled(name).read_text(encoding="utf-8")

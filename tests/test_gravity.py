@@ -23,7 +23,7 @@ def model(gravity, text=NO_WEIGHT):
 def mass_force(m, method=None):
     """The actuator force of the mass alone [N] (the lift has no other load here)."""
     kin = m.mechanism.solve(m.range)
-    from assur import statics
+    from assur.core import statics
     from assur.analysis import gravity_of
     return kin, statics.solve(kin, g=gravity_of(m.mechanism), method=method).actuator_force("S")
 

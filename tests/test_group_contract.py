@@ -53,7 +53,8 @@ from conftest import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from assur import AssemblyError, Mechanism, statics
+from assur import AssemblyError, Mechanism
+from assur.core import statics
 from assur.groups import registry
 
 from test_analogs_random import SETTINGS, Builder, _dir, _norm, _point, check
@@ -360,7 +361,7 @@ def test_failure_names_the_group(type_name, data):
 
 
 def test_failure_names_default_and_carrier_links():
-    """Regression (found by this file, fixed in assur.diagnostics): an assembly
+    """Regression (found by this file, fixed in assur.core.diagnostics): an assembly
     failure named only the links given by the user (``Group.group_links()``): with
     ``links=`` omitted the message and ``AssemblyError.links`` named none (the
     topology calls them "bad:a", "bad:b"), and a rigid point never named the link
@@ -374,7 +375,7 @@ def test_failure_names_default_and_carrier_links():
                         # (th = 0.1): … — no links; err.links == ()
 
     Fix: messages and ``AssemblyError.links`` take the group's links from the
-    topology (:func:`assur.diagnostics.group_links`)."""
+    topology (:func:`assur.core.diagnostics.group_links`)."""
     base = (Mechanism("x", coordinates=("th",)).frame("A0", 0.0, 0.0).frame("B0", 1.0, 0.0)
             .crank("c", pivot="A0", out="A", radius=0.3, q="th"))
     with pytest.raises(AssemblyError) as info:

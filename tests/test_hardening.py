@@ -14,8 +14,9 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from assur import examples, inputs, io
-from assur.cli import app
+from assur import examples, io
+from assur.core import inputs
+from assur.views.cli import app
 from assur.errors import AssemblyError, ModelError
 
 runner = CliRunner()
@@ -258,12 +259,12 @@ def test_python_api_params_and_memory():
 def test_false_continuity_error_near_a_dead_point(monkeypatch):
     """The cubic Hermite check between two positions can overshoot where analogs are
     huge (near another group's dead point, ~1/sin μ) although the triangle stays open.
-    A flagged interval is therefore solved again on a finer grid (assur.program,
+    A flagged interval is therefore solved again on a finer grid (assur.core.program,
     REFINE_POINTS × REFINE_DEPTH levels) and the flag stands only if the group fails
     there too: a spurious flag is cleared, a real one (the dyad opens between the
     samples) is still reported."""
     from assur import Mechanism
-    from assur import program
+    from assur.core import program
     from assur.kernel import run as KR
 
     m = (Mechanism("crank-dyad", coordinates=("q",), params=dict(ra=2.65, rb=0.6))

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from assur import Mechanism, ModelError
-from assur.hydraulics import piston_area
+from assur.machines.cylinders import piston_area
 
 
 def boom(m_str=120.0):

@@ -4,7 +4,7 @@ docs/crank-dynamics.md): values in SI, errors with the file, line and key."""
 import pytest
 
 from assur import io
-from assur.balancing import CounterMass
+from assur.dynamics.balancing import CounterMass
 
 BASE = io.bundled("cleaning_lab3").read_text(encoding="utf-8")
 HEAD = BASE[:BASE.index("[dynamics]")]

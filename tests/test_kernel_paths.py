@@ -1,7 +1,7 @@
 """The fast paths of issue 7's speed work give the same answers as the paths they
 replace: the continuity check inside the fused kernel (across work items and
 designs) against the separate pass of composed kernels; the fused statics a
-mechanism switches to after :data:`assur.statics.FUSED_AFTER` small analyses against
+mechanism switches to after :data:`assur.core.statics.FUSED_AFTER` small analyses against
 the array pass; small kernel calls in the calling thread; and the generated element
 loop stores only to kernel-local buffers (LLVM's run-time overlap check against the
 caller's arrays sent it to the 4× slower scalar loop, depending on the addresses)."""
@@ -12,8 +12,9 @@ import re
 
 import numpy as np
 
-from assur import Mechanism, examples, statics
-from assur import program as P
+from assur import Mechanism, examples
+from assur.core import statics
+from assur.core import program as P
 from assur.kernel import compose
 from assur.kernel import emit as KE
 from assur.kernel import run as KR

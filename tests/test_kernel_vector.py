@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import io
-from assur import program as P
+from assur.core import program as P
 from assur.groups import registry
 from assur.kernel import emit as KE
 from assur.kernel import run as KR
@@ -140,7 +140,7 @@ def test_the_numpy_path_is_taken_a_limited_number_of_times(monkeypatch):
 CHECK = """
 import sys
 from typer.testing import CliRunner
-from assur.cli import app
+from assur.views.cli import app
 from assur import io
 r = CliRunner().invoke(app, ["check", str(io.bundled("hitch_003"))])
 assert r.exit_code == 0, r.output

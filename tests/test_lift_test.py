@@ -10,8 +10,8 @@ from assur import io
 from assur.analysis import add_lift_test
 from assur.errors import ModelError
 from assur.io import ModelFileError
-from assur.lift_test import LiftTest, lift_test
-from assur.report import seed_tables
+from assur.machines.hitch_lift import LiftTest, lift_test
+from assur.views.report import seed_tables
 
 HITCH = io.bundled("hitch_003").read_text(encoding="utf-8")
 

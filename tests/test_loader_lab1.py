@@ -20,10 +20,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import ModelError, examples, io
-from assur.capacity import farthest_reach, lifts
-from assur.chains import link_coordinates, point_coordinates
-from assur.hydraulics import piston_area
-from assur.report.tables import seed_tables
+from assur.machines.capacity import farthest_reach, lifts
+from assur.core.chains import link_coordinates, point_coordinates
+from assur.machines.cylinders import piston_area
+from assur.views.report.tables import seed_tables
 
 
 @pytest.fixture(scope="module")

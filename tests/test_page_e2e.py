@@ -35,7 +35,7 @@ def browser():
 
 @pytest.fixture(scope="module")
 def url():
-    from assur.app.server import create_app, running
+    from assur.views.page.server import create_app, running
     with running(create_app(bundled("hitch_003"))) as u:
         yield u
 

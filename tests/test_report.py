@@ -1,10 +1,10 @@
-"""Reports (``assur.report``): the seed-003 tables written as CSV and XLSX match the
+"""Reports (``assur.views.report``): the seed-003 tables written as CSV and XLSX match the
 printed tables of ``003_b1551261b108abd1.txt`` at the printed precision (read back
 from the files), the HTML report is one self-contained file, the figures are valid
 PNG and SVG files, Russian labels with ``lang="ru"``, and mechanisms without
 cylinders, loads or machine data get only the tables whose data exist.
 
-Symbols (``assur.report.tables``): the CSV columns carry the seed's symbols — the
+Symbols (``assur.views.report.tables``): the CSV columns carry the seed's symbols — the
 generic ``F_S``, ``p_S``, ``dGS6``, ``I56_ic``/``IS6_ic`` are renamed Fgc, Pgc, dGS65,
 Imp, lsp by the model file's ``[tables] symbols``. Reactions are assur's force of link i on link j; seed 003 prints R05, R34,
 R45 with the opposite sign (the model file's sign map, ``mechanism.tables["signs"]``).
@@ -22,10 +22,10 @@ import pandas as pd
 import pytest
 
 from assur import Mechanism, examples
-from assur.columns import column_signs, formulas_of, signs_of
-from assur.report import FORMATS, report_steps, seed_tables, write_report
-from assur.report import figures as report_figures
-from assur.report.html import write_html
+from assur.core.columns import column_signs, formulas_of, signs_of
+from assur.views.report import FORMATS, report_steps, seed_tables, write_report
+from assur.views.report import figures as report_figures
+from assur.views.report.html import write_html
 
 from seed_tables import (T003_6_1, T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
                          T003_3_1b, T003_4_1, T003_5_1, T003_IC, assert_printed, table)

@@ -1,14 +1,14 @@
-"""Dynamics figures (:mod:`assur.report.dynamics`): every figure in both languages
+"""Dynamics figures (:mod:`assur.views.report.dynamics`): every figure in both languages
 from the bundled cleaning example, angles in degrees, one design at a time."""
 
 import numpy as np
 import pytest
 
 from assur import io
-from assur.balancing import CounterMass, balance
-from assur.inertia import crank_dynamics
-from assur.report.dynamics import DYNAMICS_FIGURES, figures
-from assur.report.figures import save
+from assur.dynamics.balancing import CounterMass, balance
+from assur.dynamics.crank import crank_dynamics
+from assur.views.report.dynamics import DYNAMICS_FIGURES, figures
+from assur.views.report.figures import save
 
 
 @pytest.fixture(scope="module")

@@ -21,11 +21,11 @@ import pytest
 from assur import Mechanism, io
 from assur.analysis import analyze
 from assur.io import ModelFileError
-from assur.loads import Cylinder, Weight
-from assur.quantities import Unit, display_units, parameter_quantities, unit_text
-from assur.report.html import render_html
-from assur.report.labels import unit
-from assur.report.values import solved_line
+from assur.core.loads import Cylinder, Weight
+from assur.core.quantities import Unit, display_units, parameter_quantities, unit_text
+from assur.views.report.html import render_html
+from assur.views.report.labels import unit
+from assur.views.report.values import solved_line
 from assur.texts import Text, localize, text
 
 
@@ -93,7 +93,7 @@ def test_russian_report_is_russian_throughout(hitch):
     mech = a.mechanism
     en = visible(render_html(a, lang="en", figures={}, animation=False))
     ru = visible(render_html(a, lang="ru", figures={}, animation=False))
-    from assur.columns import formulas_of, signs_of
+    from assur.core.columns import formulas_of, signs_of
     texts = [mech.title, *mech.notes, *(m.note for m in signs_of(mech)),
              *(x for f in formulas_of(mech) for x in f.flags)]
     assert len(texts) >= 6
@@ -188,7 +188,7 @@ def _bundled():
 def test_every_bundled_model_speaks_russian(name):
     """The Russian report of a bundled model is Russian throughout: its title, notes,
     formula labels and flags, and sign notes all carry a Russian text."""
-    from assur.columns import formulas_of, signs_of
+    from assur.core.columns import formulas_of, signs_of
     mech = io.load(io.bundled(name)).mechanism
     texts = [mech.title, *mech.notes, *(m.note for m in signs_of(mech) if m.note),
              *(x for f in formulas_of(mech) for x in (f.label, *f.flags) if x)]
@@ -200,7 +200,7 @@ def test_every_bundled_model_speaks_russian(name):
 def test_column_names_unique_when_a_coordinate_is_named_like_a_link(tmp_path):
     """A crank coordinate named phi1 beside the angle of its link 1: the link's column
     becomes phi1_link (noted), every header of the CSV is unique."""
-    from assur.report import seed_tables, write_report
+    from assur.views.report import seed_tables, write_report
     text = io.bundled("cleaning_lab3").read_text(encoding="utf-8")
     text = re.sub(r'\bj1\b', "phi1", text)
     model = io.loads(text, name="c.toml")
@@ -218,8 +218,8 @@ def test_column_names_unique_when_a_coordinate_is_named_like_a_link(tmp_path):
 
 
 def test_no_negative_zero_in_files_or_terminal(tmp_path):
-    from assur.cli import _fmt_cell
-    from assur.report.tables import Column, Table, write_csv, write_xlsx
+    from assur.views.cli import _fmt_cell
+    from assur.views.report.tables import Column, Table, write_csv, write_xlsx
     tab = Table("2.1", {"en": "t", "ru": "t"}, (Column("S", "m", np.array([-0.0, 1.0])),
                                                  Column("phi3", "deg", np.array([0.0, -0.0]))))
     text = write_csv(tab, tmp_path / "t.csv").read_text(encoding="utf-8")

@@ -68,7 +68,7 @@ def test_header_000_intermediate_seed_constants():
 def test_piston_areas_and_max_forces():
     """Seed 000 §2.1: SS = π·D²/4 = 5.02655e-3 m²; Fmax = p·SS·kg/9.81 (in kgf):
     Fmax1 = 4.576e3 (D1 = 63 mm), Fmax2 = 2.882e3 (D2 = 50 mm)."""
-    from assur.hydraulics import piston_area
+    from assur.machines.cylinders import piston_area
     assert f"{piston_area(0.080):.5e}" == "5.02655e-03"
     p, kg = 15e6, 0.96
     assert round(p * piston_area(0.063) * kg / 9.81, 0) == 4576
@@ -136,7 +136,7 @@ def test_table_4_5_formulas_on_a_corrected_header():
     FS = p["P"] * Is / p["km"]
     c = a.cylinder()
     assert np.allclose(FS, c.force_required, rtol=1e-9)
-    from assur.hydraulics import piston_area
+    from assur.machines.cylinders import piston_area
     for D in (0.080, 0.063, 0.050):
         Fmax = p["p"] * piston_area(D) * p["kg"]
         assert np.allclose(FS / (2 * Fmax), c.share(bore=D), rtol=1e-9)

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from assur import AssemblyError, examples, io
-from assur.report.tables import seed_tables
+from assur.views.report.tables import seed_tables
 
 D = np.radians
 #: seed 002 table 2.2 (l2 corrected to 1.0 m) and the restored fixed angles (the note
@@ -239,7 +239,7 @@ def test_tables_show_angles_distances_wrapped_as_printed(seed):
 def test_csv_and_xlsx_carry_the_distances(seed, tmp_path):
     from openpyxl import load_workbook
 
-    from assur.report.tables import write_csv, write_xlsx
+    from assur.views.report.tables import write_csv, write_xlsx
     tabs = seed_tables(seed)
     t21 = tabs[0]
     text = write_csv(t21, tmp_path / "t.csv").read_text(encoding="utf-8")

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from assur import examples
-from assur.columns import column_signs, signs_of
+from assur.core.columns import column_signs, signs_of
 
 from seed_tables import T003_4_1, T003_5_1, assert_printed
 
@@ -106,7 +106,7 @@ def test_batch_of_designs_forces():
 def test_blocked_reverse_pass_equals_the_whole(monkeypatch):
     """Large ranges are solved in blocks of positions: the blocks give the same
     reactions, forces and residuals as one pass (static and with inertia, batch too)."""
-    from assur import statics
+    from assur.core import statics
     s = np.linspace(0.42, 0.67, 11)
     m = examples.hitch_003(P6=np.array([20000.0, 27500.0])).mass("6", 2800.0, "S6", J=900.0)
     kin = m.solve(s)

@@ -1,4 +1,4 @@
-"""Exact sensitivities (:mod:`assur.sensitivity`) against complex step and against
+"""Exact sensitivities (:mod:`assur.synthesis.sensitivity`) against complex step and against
 central differences of the compiled kernel.
 
 References and why they are independent of the code under test:
@@ -26,11 +26,11 @@ from hypothesis import strategies as st
 
 from assur import examples
 from assur.errors import AssemblyError, ModelError
-from assur.sensitivity import numeric_parameters, sensitivities
-from assur.sensitivity.cstep import H as H_CS
-from assur.sensitivity.cstep import complex_step
-from assur.sensitivity.dual import Dual, base, variables
-from assur.statics import solve
+from assur.synthesis.sensitivity import numeric_parameters, sensitivities
+from assur.synthesis.sensitivity.cstep import H as H_CS
+from assur.synthesis.sensitivity.cstep import complex_step
+from assur.synthesis.sensitivity.dual import Dual, base, variables
+from assur.core.statics import solve
 from conftest import examples as n_examples
 import test_statics_random as TS  # the random mechanism families and loads
 
@@ -266,7 +266,7 @@ def test_slsqp_with_exact_gradients_refines_the_hitch():
     form: the smallest capacity at S6 over the stroke, frame pivots 01 and 03 within
     ±30 mm, pressure ≤ 17.5 MPa at every position. It converges, the design is
     feasible (solved again by the kernel), and better than the seed's."""
-    from assur.sensitivity.refine import local_refine
+    from assur.synthesis.sensitivity.refine import local_refine
 
     m = examples.hitch_003()
     q = np.linspace(0.42, 0.67, 26)

@@ -1,5 +1,5 @@
 """The lab-6 lift (seed 001 lab 6, examples/adapter_lab6.toml): hydraulic drive +
-mechanism simulated in time (:mod:`assur.dynamics.simulate`, :mod:`assur.drive`).
+mechanism simulated in time (:mod:`assur.dynamics.simulate`, :mod:`assur.dynamics.drive`).
 
 What is checked, and against what:
 
@@ -24,7 +24,7 @@ import numpy as np
 import pytest
 
 from assur import io
-from assur.drive import Circuit, LineLosses, registry
+from assur.dynamics.drive import Circuit, LineLosses, registry
 from assur.dynamics import simulate, simulate_model
 from assur.dynamics.simulate import METHODS, ReducedTable
 from assur.errors import ModelError
@@ -163,8 +163,8 @@ def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
     import pandas as pd
     from typer.testing import CliRunner
 
-    from assur.cli import app
-    from assur.report.simulation import FIGURES
+    from assur.views.cli import app
+    from assur.views.report.simulation import FIGURES
     r = CliRunner().invoke(app, ["simulate", str(io.bundled("adapter_lab6")), "-o",
                                  str(tmp_path), "--lang", "ru"])
     assert r.exit_code == 0, r.output
@@ -188,7 +188,7 @@ def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
 def test_cli_simulate_without_a_drive_fails_with_one_message(tmp_path):
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     r = CliRunner().invoke(app, ["simulate", str(io.bundled("hitch_003")), "-o",
                                  str(tmp_path)])
     assert r.exit_code == 1
@@ -346,8 +346,8 @@ def test_cli_simulate_the_crane(tmp_path):
     import pandas as pd
     from typer.testing import CliRunner
 
-    from assur.cli import app
-    from assur.report.simulation import FIGURES
+    from assur.views.cli import app
+    from assur.views.report.simulation import FIGURES
     for lang, word in (("ru", "потери в делителе потока"),):
         out = tmp_path / lang
         r = CliRunner().invoke(app, ["simulate", str(io.bundled("crane_lv184a")), "-o",

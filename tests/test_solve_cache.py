@@ -11,7 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from assur import io, synthesis
+from assur import io
+from assur.synthesis import conditions as synthesis
 from assur.io import _solve_cache
 
 HITCH = io.bundled("hitch_003")

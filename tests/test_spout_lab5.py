@@ -1,7 +1,7 @@
 """Seed 001 lab 5 (001_4447446e88a18ffc.txt, §5): the silage-spout rotation mechanism.
 
 Table 5.1 is reproduced by the bundled spout_lab5.toml, whose dimensions the tool's
-own fitting (assur.fitting) found; the lab's φ3'' without the power 3/2 is checked
+own fitting (assur.synthesis.fitting) found; the lab's φ3'' without the power 3/2 is checked
 against the exact value and a finite difference of φ3'; the pressure of eq. (4) from
 the inertia load M5 = J·ε5 at the file's rod motion."""
 
@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from assur import examples, io
-from assur.fitting import Target, fit_parameters
+from assur.synthesis.fitting import Target, fit_parameters
 from assur.io import ModelFileError
-from assur.report import seed_tables
+from assur.views.report import seed_tables
 
 # seed 001 table 5.1 (S [m], φ5 [°], φ3' [1/m], φ5' [1/m], U53 [-]), printed to 3 digits
 S = np.array([0.35, 0.37, 0.39, 0.41, 0.43, 0.45, 0.47, 0.49, 0.51])
@@ -176,7 +176,7 @@ def test_a_rod_speed_table_gives_the_acceleration_term():
 
 
 def test_the_csv_files_hold_no_nan_or_inf(tmp_path):
-    from assur.report import write_report
+    from assur.views.report import write_report
     a = examples.spout_lab5().analyze(examples.spout_lab5_range())
     write_report(a, tmp_path, formats=("csv",))
     csvs = sorted(tmp_path.glob("*.csv"))
@@ -234,7 +234,7 @@ def test_a_law_beyond_the_range_is_refused():
 
 def test_a_spline_that_turns_back_is_refused():
     from assur.errors import ModelError
-    from assur.motion import Motion
+    from assur.core.motion import Motion
     # monotonic samples whose not-a-knot spline overshoots between them
     with pytest.raises(ModelError, match="turns back"):
         Motion("S", kind="length", law_t=(0, 1, 2, 3, 4), law_q=(0.0, 0.001, 0.002, 0.9, 1.0))

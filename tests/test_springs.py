@@ -8,7 +8,7 @@ from hypothesis import given, settings, strategies as st
 
 from assur import io
 from assur.io import ModelFileError
-from assur.report import seed_tables
+from assur.views.report import seed_tables
 from test_columns import LIFT
 
 SPRING = ('[[loads]]\ntype = "spring"\nname = "k1"\na = "03"\nb = "45"\nrate = "20 kN/m"\n'
@@ -89,7 +89,7 @@ def test_second_order_must_be_true_or_false():
 
 @pytest.mark.parametrize("count", ["", "count = 3"])
 def test_the_fused_kernel_counts_the_springs_too(count):
-    from assur import statics
+    from assur.core import statics
     m = lift(count)
     kin = m.mechanism.solve(m.range)
     fa = statics.solve(kin, method="array")

@@ -1,4 +1,4 @@
-"""Machine stability (``assur.stability``): seed 003 §6 table 6.1, seed 001 lab 1
+"""Machine stability (``assur.machines.stability``): seed 003 §6 table 6.1, seed 001 lab 1
 eqs. (15)–(18), the balance of forces and moments, limits and input checks.
 
 Seed 003 (``003_b1551261b108abd1.txt``, §1.6 and §6): a = 0.6 m, b = 1.62 m,
@@ -17,8 +17,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import examples
-from assur.columns import formulas_of
-from assur.stability import Machine, axle_reactions
+from assur.core.columns import formulas_of
+from assur.machines.stability import Machine, axle_reactions
 
 from seed_tables import T003_6_1, assert_printed, table
 

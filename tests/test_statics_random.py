@@ -1,4 +1,4 @@
-"""Property-based checks of the kinetostatics (:mod:`assur.statics`) on random mechanisms.
+"""Property-based checks of the kinetostatics (:mod:`assur.core.statics`) on random mechanisms.
 
 For random *assemblable* mechanisms (hypothesis; the structures, strategies and
 dead-point guard of ``test_analogs_random``: single designs and batches of 1–3,
@@ -46,7 +46,7 @@ the groups' definitions (pins at a dyad's three joints, a crank's pivot with its
 drive moment, a prismatic pair with normal force and moment, a cylinder split
 into its two halves joined by a prismatic pair whose axial force *is* the
 actuator force) and solves all links together; the loads enter as they are
-documented in :mod:`assur.loads` (a spring pulls its ends together with
+documented in :mod:`assur.core.loads` (a spring pulls its ends together with
 T = preload + rate·(L − free length); a mass has weight m·g, inertia −m·a and
 −J·ε), from the loads this test drew, not from ``Mechanism.loads``. It uses only
 the positions of the kinematics and, with inertia, the point accelerations of
@@ -96,7 +96,7 @@ from conftest import examples
 from hypothesis import Phase, assume, given, settings, target
 from hypothesis import strategies as st
 
-from assur import statics
+from assur.core import statics
 from assur.groups import Crank, CylinderLever, DoubleSliderDyad, Dyad, SleeveDyad, SliderDyad, \
     SliderInput
 
@@ -497,7 +497,7 @@ class Motion:
 
 def resolve_loads(mot, loads, dynamic):
     """The loads as point forces [(link, point, f (M, n, 2))] and moments
-    [(link, M (M, n))], by the conventions documented in assur.loads."""
+    [(link, M (M, n))], by the conventions documented in assur.core.loads."""
     shape = mot.case.Q.shape[:2]
     forces, couples = [], []
 
@@ -1047,7 +1047,7 @@ def test_prp_dyad(data):
 
 
 # ---------------------------------------------------------------------------------
-# the fused kinematics + statics kernel (assur.fused) against the array pass
+# the fused kinematics + statics kernel (assur.core.outputs) against the array pass
 # ---------------------------------------------------------------------------------
 #: relative tolerance of the fused kernel against the separate reverse pass
 RTOL_FUSED = 1e-9
@@ -1060,7 +1060,7 @@ FUSED_SETTINGS = settings(SETTINGS, max_examples=max(3, examples(6)))
 
 def check_fused(case, data):
     """The fused kernel's reactions (every joint: Rx, Ry, Rm) and actuator forces (F by
-    virtual work, Fr from the reactions) equal those of :func:`assur.statics.solve`
+    virtual work, Fr from the reactions) equal those of :func:`assur.core.statics.solve`
     (the separate reverse pass over arrays) to RTOL_FUSED × the reaction scale R or
     the actuator scale A of the module docstring (static loads: the fused kernel has
     no inertia)."""
@@ -1109,7 +1109,7 @@ def test_fused_kernel_reactions_equal_the_reverse_pass(family, data):
 @BUG_SETTINGS
 @given(st.data())
 def test_load_at_a_cylinder_rod_end_carried_by_the_cylinder(data):
-    """Regression (found by this file, fixed in assur.statics.solve): a load at the moving end of a cylinder that the
+    """Regression (found by this file, fixed in assur.core.statics.solve): a load at the moving end of a cylinder that the
     cylinder itself carries (``link=`` the cylinder, or by default where the
     cylinder owns the point: the middle joint of an RRR dyad whose second radius is
     a coordinate, the joint of an RRP dyad whose radius is one) makes
@@ -1125,7 +1125,7 @@ def test_load_at_a_cylinder_rod_end_carried_by_the_cylinder(data):
     reference's split cylinder give. Minimal reproducer::
 
         from assur import Mechanism
-        from assur.statics import solve
+        from assur.core.statics import solve
         m = (Mechanism("cl", coordinates=("S",), params={"L3": 0.2})
              .frame("01", 0.415, 0.563).frame("03", 0.25, 1.112)
              .cylinder_lever("lever", base="01", pivot="03", out="23", lever="L3",
@@ -1161,7 +1161,7 @@ def test_load_at_a_cylinder_rod_end_carried_by_the_cylinder(data):
 @BUG_SETTINGS
 @given(st.data())
 def test_slider_input_batch_with_a_direction_per_design(data):
-    """Regression (found by this file, fixed in the SliderInput branch of assur.statics.solve): in a batch of designs whose
+    """Regression (found by this file, fixed in the SliderInput branch of assur.core.statics.solve): in a batch of designs whose
     slider direction is a parameter with one value per design, the reactions and
     the reaction-derived drive force use ``cos/sin(direction)`` of shape (m,)
     against arrays of shape (m, n): the directions are broadcast over the
@@ -1170,7 +1170,7 @@ def test_slider_input_batch_with_a_direction_per_design(data):
     branch reshapes ``beta[:, None]``; this one does not.) Minimal reproducer::
 
         from assur import Mechanism
-        from assur.statics import solve
+        from assur.core.statics import solve
         m = (Mechanism("slider", coordinates=("s",), params={"dir": [0.0, 1.0]})
              .frame("O", 0.0, 0.0)
              .slider_input("slider", origin="O", out="B", s="s", direction="dir",
@@ -1187,14 +1187,14 @@ def test_slider_input_batch_with_a_direction_per_design(data):
 @BUG_SETTINGS
 @given(st.data())
 def test_inertia_without_qddot_two_coordinates(data):
-    """Regression (found by this file, fixed in assur.statics.applied_loads): with k ≥ 2 coordinates, ``qdot`` given and
+    """Regression (found by this file, fixed in assur.core.statics.applied_loads): with k ≥ 2 coordinates, ``qdot`` given and
     ``qddot`` omitted (documented as optional: steady rates) every force is NaN —
     ``np.asarray(qddot, float)`` of None is NaN for k > 1 (k = 1 uses 0). It must
     equal ``qddot = 0``. Minimal reproducer::
 
         import numpy as np
         from assur import Mechanism
-        from assur.statics import solve
+        from assur.core.statics import solve
         m = (Mechanism("k2", coordinates=("th", "S2"))
              .frame("A0", 0.0, 0.0).frame("B0", 0.8, 0.1)
              .crank("c", pivot="A0", out="A", radius=0.3, q="th", links=("1",))

@@ -2,7 +2,7 @@
 steering_lab4.toml (base drive, two cylinders in one closed chain, eqs. 1–17) and
 steering_lab4_modern.toml (slider-crank drive, one double-rod cylinder, eqs. 16–25),
 and the general pieces they use: passive cylinders and supply lines, double-rod
-cylinders, resisting moments, signed parameter references, assur.steering."""
+cylinders, resisting moments, signed parameter references, assur.machines.steering."""
 
 from __future__ import annotations
 
@@ -15,10 +15,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import Mechanism, io
-from assur import statics as S
-from assur import steering
+from assur.core import statics as S
+from assur.machines import steering
 from assur.errors import ModelError
-from assur.hydraulics import supply_pressure_from_reactions
+from assur.machines.cylinders import supply_pressure_from_reactions
 
 SEED = "seed 001_4447446e88a18ffc.txt, lab 4"
 
@@ -378,7 +378,7 @@ def test_signed_reference_errors():
 def test_examples_analyze_without_nan(name, tmp_path):
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     out = tmp_path / name
     r = CliRunner().invoke(app, ["analyze", str(io.bundled(name)), "-o", str(out),
                                  "--format", "csv,html"])

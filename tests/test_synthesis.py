@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from assur import examples
-from assur.synthesis import Condition, DesignError, solve_conditions
+from assur.synthesis.conditions import Condition, DesignError, solve_conditions
 
 SEED_003_CONDITIONS = [
     # φ6(Sp) = 90°  (L7 := Find(L7_0), L7_0 = 0.56)

@@ -1,11 +1,11 @@
-"""Tolerance analysis (:mod:`assur.tolerance`) on the seed 003 hitch: the Monte Carlo
+"""Tolerance analysis (:mod:`assur.synthesis.tolerance`) on the seed 003 hitch: the Monte Carlo
 over manufacturing tolerances against the first-order stack-up from the exact
 sensitivities, the model file's ``[tolerances]`` section and its errors, and the
 command ``assur tolerance``.
 
 Why the comparison can fail: the Monte Carlo evaluates every drawn machine through
 the compiled fused kernel; the stack-up uses derivatives from the dual numbers
-(:mod:`assur.sensitivity`). For an output linear in the toleranced parameters
+(:mod:`assur.synthesis.sensitivity`). For an output linear in the toleranced parameters
 (the pressure in the implement's weight P6, the capacity in the relief setting) the
 sample σ and the first-order σ with the sample's own covariance agree to rounding;
 for small geometric tolerances they agree within the sampling error of σ
@@ -20,7 +20,7 @@ import pytest
 
 from assur import examples, io
 from assur.errors import ModelError
-from assur.tolerance import Tolerance, monte_carlo
+from assur.synthesis.tolerance import Tolerance, monte_carlo
 
 Q = np.linspace(0.425, 0.665, 6)
 
@@ -132,7 +132,7 @@ def test_errors_name_the_key_and_line(section, key, problem):
 def test_cli_writes_tables_histograms_and_report(tmp_path):
     from typer.testing import CliRunner
 
-    from assur.cli import app
+    from assur.views.cli import app
     out = tmp_path / "tol"
     res = CliRunner().invoke(app, ["tolerance", str(io.bundled("hitch_003_tolerances")), "-o",
                                    str(out), "--samples", "300", "--seed", "2", "--lang", "ru"])

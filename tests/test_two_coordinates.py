@@ -11,9 +11,9 @@ import pytest
 from typer.testing import CliRunner
 
 from assur import io
-from assur.cli import app
-from assur.report import figures as F
-from assur.report.tables import grid_of, seed_tables
+from assur.views.cli import app
+from assur.views.report import figures as F
+from assur.views.report.tables import grid_of, seed_tables
 
 runner = CliRunner()
 LOADER = io.bundled("loader_lab1")
@@ -190,7 +190,7 @@ def test_chains_of_one_coordinate_machines():
     """With one coordinate every moving point is moved by it and the frame by none —
     nothing is left out of the seed machines' tables (hitch 003, combine 002)."""
     from assur import examples
-    from assur.chains import link_coordinates, point_coordinates
+    from assur.core.chains import link_coordinates, point_coordinates
     for mech in (examples.hitch_003(), examples.combine_002()):
         (c,) = mech.coordinates
         for p in mech.points:

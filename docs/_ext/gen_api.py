@@ -7,47 +7,59 @@ from pathlib import Path
 
 #: (section, [(module, one line)]) — the public modules, in reading order
 SECTIONS = [
-    ("Building and solving a mechanism", [
+    ("The package and its base", [
         ("assur", "the package: the builder, the results, the errors"),
-        ("assur.mechanism", "Mechanism: frame points, structural groups, loads; solve, analyze"),
-        ("assur.groups", "structural group types behind one contract and registry"),
-        ("assur.kinematics", "positions and exact analogs as named arrays"),
-        ("assur.topology", "the bodies (links) of a mechanism"),
         ("assur.errors", "typed exceptions"),
-        ("assur.examples", "the seed machines, loaded from the bundled model files"),
-        ("assur.io", "model files: TOML, units, validation"),
-        ("assur.synthesis", "design conditions (Given/Find)"),
-        ("assur.fitting", "parameters fitted to a printed table"),
-        ("assur.design", "synthesis: searching the design space"),
-        ("assur.sensitivity", "exact sensitivities to the parameters"),
-        ("assur.tolerance", "tolerance analysis"),
-    ]),
-    ("Forces, cylinders, machines", [
-        ("assur.analysis", "one call for the whole worksheet"),
-        ("assur.loads", "loads and actuators (descriptions)"),
-        ("assur.statics", "virtual work and joint reactions by Assur groups"),
-        ("assur.fused", "the fused kernel: only the outputs asked for"),
-        ("assur.hydraulics", "areas, pressure, available force, lift capacity"),
-        ("assur.capacity", "lift capacity of several cylinders"),
-        ("assur.stability", "axle reactions and the 20 % steerability rule"),
-        ("assur.lift_test", "the standard lift test of a three-point hitch"),
-        ("assur.steering", "Ackermann relation, turning radius, resisting moment"),
-        ("assur.conditioner", "the spring pressing device (lab 2)"),
-    ]),
-    ("Crank machines and dynamics", [
-        ("assur.motion", "a crank's direction and speed"),
-        ("assur.inertia", "masses, inertia loads, reduced moment"),
-        ("assur.flywheel", "the flywheel (energy–mass method)"),
-        ("assur.balancing", "common centre of mass and counter-masses"),
-        ("assur.dynamics", "equations of motion, simulation, work cycles"),
-        ("assur.drive", "hydraulic drive components"),
-    ]),
-    ("Outputs", [
-        ("assur.report", "tables, figures, drawings, HTML"),
-        ("assur.columns", "extra table columns: formulas and sign maps"),
         ("assur.texts", "English and Russian user text"),
-        ("assur.cli", "the command line"),
-        ("assur.app", "the interactive page, inline displays, DXF drawings"),
+        ("assur.examples", "the seed machines, loaded from the bundled model files"),
+    ]),
+    ("Groups and the kernel", [
+        ("assur.groups", "structural group types behind one contract and registry"),
+        ("assur.kernel", "generated, compiled kernels: code emission and the disk cache"),
+    ]),
+    ("Core: a mechanism and what follows from it alone", [
+        ("assur.core.mechanism", "Mechanism: frame points, structural groups, loads; solve, analyze"),
+        ("assur.core.topology", "the bodies (links) of a mechanism"),
+        ("assur.core.kinematics", "positions and exact analogs as named arrays"),
+        ("assur.core.loads", "loads and actuators (descriptions)"),
+        ("assur.core.statics", "virtual work and joint reactions by Assur groups"),
+        ("assur.core.outputs", "the outputs contract and the fused kernel: only the outputs asked for"),
+        ("assur.core.columns", "extra table columns: formulas and sign maps"),
+        ("assur.core.motion", "a crank's direction and speed"),
+    ]),
+    ("Machines", [
+        ("assur.machines.cylinders", "areas, pressure, available force, lift capacity"),
+        ("assur.machines.capacity", "lift capacity of several cylinders"),
+        ("assur.machines.stability", "axle reactions and the 20 % steerability rule"),
+        ("assur.machines.hitch_lift", "the standard lift test of a three-point hitch"),
+        ("assur.machines.steering", "Ackermann relation, turning radius, resisting moment"),
+        ("assur.machines.conditioner", "the spring pressing device (lab 2)"),
+    ]),
+    ("Dynamics", [
+        ("assur.dynamics", "equations of motion, simulation, work cycles"),
+        ("assur.dynamics.crank", "masses, inertia loads, reduced moment of crank machines"),
+        ("assur.dynamics.flywheel", "the flywheel (energy–mass method)"),
+        ("assur.dynamics.balancing", "common centre of mass and counter-masses"),
+        ("assur.dynamics.drive", "hydraulic drive components"),
+    ]),
+    ("The whole worksheet", [
+        ("assur.analysis", "one call for the whole worksheet"),
+    ]),
+    ("Synthesis", [
+        ("assur.synthesis.conditions", "design conditions (Given/Find)"),
+        ("assur.synthesis.fitting", "parameters fitted to a printed table"),
+        ("assur.synthesis.sensitivity", "exact sensitivities to the parameters"),
+        ("assur.synthesis.tolerance", "tolerance analysis"),
+        ("assur.synthesis.search", "searching the design space"),
+    ]),
+    ("Files", [
+        ("assur.io", "model files: TOML, units, validation"),
+    ]),
+    ("Views", [
+        ("assur.views.report", "tables, figures, drawings, HTML"),
+        ("assur.views.notebook", "how results show themselves in a notebook"),
+        ("assur.views.cli", "the command line"),
+        ("assur.views.page", "the interactive page, inline displays, DXF drawings"),
     ]),
 ]
 

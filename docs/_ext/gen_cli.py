@@ -1,4 +1,4 @@
-"""The command reference, generated from typer's app (:data:`assur.cli.app`).
+"""The command reference, generated from typer's app (:data:`assur.views.cli.app`).
 
 Every command the app has gets a section with its usage, its help text and a table
 of its arguments and options, so a new command appears here by itself.
@@ -10,7 +10,7 @@ from pathlib import Path
 
 import typer
 
-from assur import cli
+from assur.views import cli
 
 
 def _cell(text) -> str:
@@ -41,7 +41,7 @@ def render() -> str:
     group = typer.main.get_command(cli.app)
     ctx = typer.Context(group, info_name="assur")
     lines = ["# Command reference", "",
-             "Generated from the command-line app (`assur.cli.app`) when the documentation "
+             "Generated from the command-line app (`assur.views.cli.app`) when the documentation "
              "is built: every command of `assur` and every option, as `assur COMMAND --help` "
              "prints them. `python -m assur` is the same command.", "",
              "Exit status: 0 on success, 1 for every failure a user can cause (a malformed "

@@ -3,7 +3,7 @@
 For each type of :func:`assur.groups.registry` the page shows the type's fields (from
 its :class:`~assur.groups.base.Field` list, as the model file reads them), a small model
 file that uses it, and the drawing of that model at two positions made by
-:func:`assur.report.drawing.draw` — the engine's own drawing code. The model files
+:func:`assur.views.report.drawing.draw` — the engine's own drawing code. The model files
 below are the samples: a registered type without one stops the build, so a new group
 type cannot be left out of the documentation.
 """
@@ -287,7 +287,7 @@ def write(page: Path, folder: Path) -> None:
 
     from assur import io
     from assur.groups import registry
-    from assur.report.drawing import draw
+    from assur.views.report.drawing import draw
 
     missing = sorted(set(registry()) - set(SAMPLES))
     if missing:
@@ -298,7 +298,7 @@ def write(page: Path, folder: Path) -> None:
              "Generated from the group registry (`assur.groups.registry()`) when the "
              "documentation is built: for each structural group type its fields as the "
              "model file's `[[groups]]` entry reads them, a small model file using it, and "
-             "the drawing of that model (`assur.report.drawing.draw`, the drawing of the "
+             "the drawing of that model (`assur.views.report.drawing.draw`, the drawing of the "
              "reports) at its first position in colour and its last one as an outline. "
              "Lengths in metres, angles in degrees in the file (`\"30 deg\"`), branches "
              "`+1`/`-1` as the [model file format](../model-format.md) explains.", ""]

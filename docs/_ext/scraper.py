@@ -1,6 +1,6 @@
 """A sphinx-gallery image scraper for the figures assur's reports make.
 
-:mod:`assur.report` draws on plain :class:`matplotlib.figure.Figure` objects with an
+:mod:`assur.views.report` draws on plain :class:`matplotlib.figure.Figure` objects with an
 Agg canvas (no pyplot: reports run in servers and threads), which sphinx-gallery's
 matplotlib scraper does not see. This scraper looks at the example's variables after
 each code block and saves every such figure it has not saved yet — a figure bound

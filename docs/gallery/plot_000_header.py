@@ -79,7 +79,7 @@ for i in range(6):
 # L4 = 0.652 m. It assembles, and the whole worksheet follows: transmission numbers,
 # the force on the two cylinders and the share of their maximum force for the
 # seed's candidate bores D = 80, 63, 50 mm (its table 5).
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 a = fixed.mechanism.analyze(S)
 drawn = drawing.draw(a)

@@ -53,7 +53,7 @@ assert abs(d3[0]) < 5e-4 and abs(d3[12]) < 5e-4 and np.all(np.abs(d3[1:12]) > 0.
 # %%
 # The drawing at the two extremes of the rocker (``--draw-at 14.679,188.229`` on the
 # command line):
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 drawn = drawing.draw(a, positions=[0, 12])
 

@@ -58,9 +58,9 @@ for s_, c, p in zip(S, phi6, PHI6_PRINTED):
 assert agrees(phi6, PHI6_PRINTED, 1).all()
 
 # %%
-# The drawing of the reports (:func:`assur.report.drawing.draw`), at the first and
+# The drawing of the reports (:func:`assur.views.report.drawing.draw`), at the first and
 # the last position, in English and in Russian (the reports' two languages):
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 drawings = [drawing.draw(a, lang=lang) for lang in ("en", "ru")]
 

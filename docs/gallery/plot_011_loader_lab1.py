@@ -20,7 +20,7 @@ reports them (≈ 11.5 kN at the suspension axis, ≈ 800 kg).
 import numpy as np
 
 from assur import ModelError, io
-from assur.capacity import farthest_reach
+from assur.machines.capacity import farthest_reach
 
 model = io.load(io.bundled("loader_lab1"))
 m = model.mechanism
@@ -34,7 +34,7 @@ print(f"the boom turns through {np.ptp(phi3):.1f}° (the lab: 75–80°)")
 assert 75 <= np.ptp(phi3) <= 80
 
 # %%
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 drawn = drawing.draw(a)
 

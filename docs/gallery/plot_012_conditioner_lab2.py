@@ -7,7 +7,7 @@ springs; the specific pressure p_c(Y) on the crop layer (eq. 4) follows from the
 spring force and the transmission number I = dY/dλ along the spring's stroke
 (eq. 5). The lab prints no dimensions: ``conditioner_lab2.toml`` (a four-bar) and
 ``conditioner_lab2_sixbar.toml`` (the six-bar of the lab's fig. 2.2) are
-illustrative. Their springs are the ones :func:`assur.conditioner.flattest_spring`
+illustrative. Their springs are the ones :func:`assur.machines.conditioner.flattest_spring`
 finds: the rate and preload that keep p_c closest to 20 kN/m.
 
 Лабораторная работа 2: удельное давление вальцов p_c(Y), передаточное число вдоль
@@ -20,8 +20,8 @@ finds: the rate and preload that keep p_c closest to 20 kN/m.
 import numpy as np
 
 from assur import io
-from assur.conditioner import flattest_spring, specific_pressure
-from assur.report import seed_tables
+from assur.machines.conditioner import flattest_spring, specific_pressure
+from assur.views.report import seed_tables
 
 L_ROLLER, TARGET = 1.6, 20e3  # roller length [m] and the wanted p_c [N/m] (the files')
 
@@ -70,7 +70,7 @@ assert d6.spread < 0.2 * d4.spread
 
 import matplotlib.pyplot as plt  # noqa: E402
 
-from assur.report import drawing  # noqa: E402
+from assur.views.report import drawing  # noqa: E402
 
 fig, ax = plt.subplots(figsize=(6.4, 4.0))
 ax.plot(Y * 1e3, d4.pressure / 1e3, label="four-bar / четырёхзвенник")
@@ -92,8 +92,8 @@ drawn = drawing.draw(six.mechanism.analyze(six.range))
 # The spring's pins, rate and preload chosen so that p_c (the model's formula, a
 # fused-kernel output by its name) varies least over the gap range, within ±5 % of
 # p_target (``assur optimize``; a small budget here):
-from assur.design import load_problem  # noqa: E402
-from assur.design.search import optimize  # noqa: E402
+from assur.synthesis.search import load_problem  # noqa: E402
+from assur.synthesis.search.search import optimize  # noqa: E402
 
 pb = load_problem(io.bundled("conditioner_lab2_design"))
 res = optimize(pb, popsize=8, maxiter=40, seed=1)

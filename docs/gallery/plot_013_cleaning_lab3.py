@@ -21,8 +21,8 @@ the common centre of mass swings by a few millimetres like the lab's
 import numpy as np
 
 from assur import io
-from assur.balancing import balance
-from assur.inertia import crank_dynamics
+from assur.dynamics.balancing import balance
+from assur.dynamics.crank import crank_dynamics
 
 model = io.load(io.bundled("cleaning_lab3"))
 kin = model.mechanism.solve(model.range)  # one clockwise turn, 1° steps
@@ -57,7 +57,7 @@ assert b.after.amplitude_x < Ax and b.after.amplitude_y < Ay
 
 # %%
 # The figures of the report (lab 3 figs. 3.3, 3.4), in Russian as the lab draws them:
-from assur.report.dynamics import figures  # noqa: E402
+from assur.views.report.dynamics import figures  # noqa: E402
 
 dynamics_figures = figures(dyn, "ru", flywheel=fw, balancing=b)
 print(sorted(dynamics_figures))
@@ -70,9 +70,9 @@ print(sorted(dynamics_figures))
 # mass over a turn (the span of the fused output ``Xc``, 2·A_x) least, with the
 # vertical one no larger and every sieve's stroke at least the original's
 # (``assur optimize``; a small budget here).
-from assur.balancing import common_centre  # noqa: E402
-from assur.design import load_problem  # noqa: E402
-from assur.design.search import optimize  # noqa: E402
+from assur.dynamics.balancing import common_centre  # noqa: E402
+from assur.synthesis.search import load_problem  # noqa: E402
+from assur.synthesis.search.search import optimize  # noqa: E402
 
 pb = load_problem(io.bundled("cleaning_lab3_design"))
 res = optimize(pb, popsize=6, maxiter=30, seed=1)

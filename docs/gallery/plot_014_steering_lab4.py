@@ -23,8 +23,9 @@ import math
 
 import numpy as np
 
-from assur import io, steering
-from assur.hydraulics import supply_pressure_from_reactions
+from assur import io
+from assur.machines import steering
+from assur.machines.cylinders import supply_pressure_from_reactions
 
 mc = steering.resisting_moment(27560.0, 0.070, 0.500, 0.8)
 print(f"eq. 17: Mc = {mc:.1f} N·m (the lab prints 2932 N·m)")
@@ -66,7 +67,7 @@ dev = steering.ackermann_deviation(alpha, beta, 1.456, 2.534)
 print(f"Ackermann deviation {np.nanmin(dev):+.3f} … {np.nanmax(dev):+.3f}")
 
 # %%
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 drawn = drawing.draw(a)
 pressure_figure = figures.pressure(a)

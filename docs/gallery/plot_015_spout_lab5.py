@@ -6,7 +6,7 @@ Lab 5 of the practicum: a cylinder turns the spout of a forage harvester through
 about 225° by a lever and a link. The lab prints table 5.1 — φ5, the analogs φ3',
 φ5' and the ratio U53 at nine rod lengths — but not all the dimensions:
 ``spout_lab5.toml`` holds dimensions that assur's own fitting
-(:func:`assur.fitting.fit_parameters`, robust least squares) found from that table.
+(:func:`assur.synthesis.fitting.fit_parameters`, robust least squares) found from that table.
 They reproduce it at its printed precision, except three printed values that do not
 follow from the table itself.
 
@@ -78,7 +78,7 @@ p = a.cylinder().pressure
 print(f"pressure {p.min() / 1e6:+.3f} … {p.max() / 1e6:+.3f} MPa; the same force from the "
       f"reactions: {np.allclose(a.statics.actuator_force_from_reactions('S'), a.statics.actuator_force('S'), rtol=1e-9)}")
 
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 drawn = drawing.draw(a)
 analogs_figure = figures.analogs(a)

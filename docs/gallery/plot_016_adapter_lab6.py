@@ -62,7 +62,7 @@ assert abs(e["residual"]) <= 1e-3 * e["pump"]
 
 # %%
 # The report's figures (lab 6 figs. 6.3–6.7), in English and the first in Russian:
-from assur.report import simulation  # noqa: E402
+from assur.views.report import simulation  # noqa: E402
 
 simulation_figures = simulation.figures(r, "en")
 print(sorted(simulation_figures))

@@ -21,7 +21,7 @@ manufacturing tolerances and asks how the capacity scatters when it is built.
 import numpy as np
 
 from assur import io
-from assur.design import load_problem
+from assur.synthesis.search import load_problem
 
 seed = io.load(io.bundled("hitch_003"))
 a = seed.mechanism.analyze(seed.range)
@@ -53,7 +53,7 @@ assert 0 < feasible.sum() < feasible.size
 # 500 machines drawn from the file's tolerances, evaluated as one batch of designs;
 # the Monte Carlo scatter of the least capacity at the centre of mass against the
 # linear stack-up from the exact sensitivities:
-from assur.tolerance import monte_carlo  # noqa: E402
+from assur.synthesis.tolerance import monte_carlo  # noqa: E402
 
 tol = io.load(io.bundled("hitch_003_tolerances"))
 r = monte_carlo(tol.mechanism, tol.range, tol.tolerances, outputs=["G(ГЦ, S6)"],

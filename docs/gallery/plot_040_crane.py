@@ -20,7 +20,7 @@ assumption — and gives F = h(q, q̇) − Q(q) from the engine's equations of m
 import numpy as np
 
 from assur import io
-from assur.drive import FlowDivider
+from assur.dynamics.drive import FlowDivider
 from assur.dynamics.cycles import cycle, cycle_forces, sweep
 
 model = io.load(io.bundled("crane_lv184a"))
@@ -30,7 +30,7 @@ start = (float(p["S01"]), float(p["S2_53"]))   # boom down, stick at the table's
 end = (float(p["Smax1"]), float(p["S2_146"]))  # boom up, stick at 146°
 print(f"boom S1 {start[0]:.3f} → {end[0]:.3f} m, stick S2 {start[1]:.3f} → {end[1]:.3f} m")
 
-from assur.report import drawing  # noqa: E402
+from assur.views.report import drawing  # noqa: E402
 
 drawn = drawing.draw(m.analyze(np.array([start, end])))
 

@@ -72,10 +72,10 @@ print(batch.phi("5").shape)
 # %%
 # A report
 # --------
-# :func:`assur.report.write_report` writes what ``assur analyze`` writes: the seed's
+# :func:`assur.views.report.write_report` writes what ``assur analyze`` writes: the seed's
 # tables (CSV, XLSX), figures, the drawing, an animation and one HTML file. The
 # figures are also available one by one:
-from assur.report import drawing, figures  # noqa: E402
+from assur.views.report import drawing, figures  # noqa: E402
 
 drawn = drawing.draw(a, lang="ru")
 transmission_figure = figures.transmission(a)

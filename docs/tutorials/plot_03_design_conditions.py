@@ -6,7 +6,7 @@ A Mathcad worksheet fixes unknown lengths with Given/Find blocks. A model file
 writes each as a ``[[solve]]`` condition: choose the parameter ``unknown`` inside
 ``bracket`` so that ``quantity`` equals ``equals`` at the position ``at``.
 Conditions are solved in dependency order by a scan of the bracket and Brent's
-method (:mod:`assur.synthesis`); no root, or more than one, in the bracket is an
+method (:mod:`assur.synthesis.conditions`); no root, or more than one, in the bracket is an
 error that names the condition and its line.
 """
 
@@ -16,7 +16,7 @@ error that names the condition and its line.
 # ``hitch_003.toml`` (§2.2–2.3 of the seed): L4 such that Y56(Smin) = 0.2 m, the
 # working stroke Sp such that Y56(Sp) = 0.4 m, L7 such that φ6(Sp) = 90°:
 from assur import io
-from assur.report.values import solved_line
+from assur.views.report.values import solved_line
 
 model = io.load(io.bundled("hitch_003"))
 text = io.bundled("hitch_003").read_text(encoding="utf-8")

@@ -10,16 +10,29 @@
 #: the package's version: the one place it is written (pyproject.toml reads it)
 __version__ = "0.1.0"
 
-from . import groups, kinematics
+from . import _moved
+from . import groups
+from .core import kinematics
 from .errors import AssemblyError, ModelError, SingularPositionError
 from .groups import (Crank, CylinderLever, DoubleSliderDyad, Dyad, Frame, PosePoint, RigidPoint,
                      SleeveDyad, SliderDyad, SliderInput)
-from .kinematics import Kinematics
-from .mechanism import Mechanism
-from .topology import Topology
+from .core.kinematics import Kinematics
+from .core.mechanism import Mechanism
+from .core.topology import Topology
 from . import examples
 
 __all__ = ["Mechanism", "Kinematics", "Topology", "AssemblyError", "ModelError",
            "SingularPositionError", "Frame", "CylinderLever", "Dyad", "Crank", "SliderInput",
            "SliderDyad", "RigidPoint", "PosePoint", "SleeveDyad", "DoubleSliderDyad", "groups",
            "kinematics", "examples", "__version__"]
+
+_moved.install()
+
+
+def __getattr__(name):
+    """An old module name of the package (``assur.hydraulics``…): its new module, with
+    a :class:`DeprecationWarning` (:mod:`assur._moved`)."""
+    import importlib
+    if _moved.new_name(f"{__name__}.{name}") is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return importlib.import_module(f"{__name__}.{name}")

@@ -1,6 +1,6 @@
-"""``python -m assur …`` is the ``assur`` command (see :mod:`assur.cli`)."""
+"""``python -m assur …`` is the ``assur`` command (see :mod:`assur.views.cli`)."""
 
-from .cli import app
+from .views.cli import app
 
 if __name__ == "__main__":
     app(prog_name="assur")

@@ -6,10 +6,10 @@ as result objects (tables, reports and the page are views of it).
 
 from __future__ import annotations
 
-from . import statics as _statics
-from .inputs import check_finite
-from .hydraulics import cylinder_results
-from .motion import rod_rates
+from .core import statics as _statics
+from .core.inputs import check_finite
+from .machines.cylinders import cylinder_results
+from .core.motion import rod_rates
 
 __all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics", "add_lift_test"]
 
@@ -29,11 +29,11 @@ class Analysis:
         The design conditions a model file fixed (shown in reports).
     dynamics : CrankDynamics or None
         Kinetostatics with inertia of a crank machine at its ``[motion]`` speed
-        (:func:`add_dynamics`, :mod:`assur.inertia`).
+        (:func:`add_dynamics`, :mod:`assur.dynamics.crank`).
     flywheel : Flywheel or None
-        The flywheel of ``[dynamics]`` (:mod:`assur.flywheel`).
+        The flywheel of ``[dynamics]`` (:mod:`assur.dynamics.flywheel`).
     balancing : Balancing or None
-        The counter-masses of ``[dynamics]`` (:mod:`assur.balancing`).
+        The counter-masses of ``[dynamics]`` (:mod:`assur.dynamics.balancing`).
     lift_test : LiftTestResult or None
         The standard lift test of a hitch (ISO 789-2; :func:`add_lift_test`).
     notes : list of str
@@ -58,7 +58,7 @@ class Analysis:
         self.statics = statics
         self.cylinders = cylinders
         self.stability = stability
-        #: design conditions solved for the model (:class:`assur.synthesis.SolvedCondition`)
+        #: design conditions solved for the model (:class:`assur.synthesis.conditions.SolvedCondition`)
         self.solved = tuple(solved)
         self.dynamics = None
         self.flywheel = None
@@ -84,7 +84,7 @@ class Analysis:
 
     def formula(self, name):
         """Values of the model's extra formula ``name`` over the positions [SI]
-        (:class:`assur.columns.Formula`, ``[[tables.formulas]]``).
+        (:class:`assur.core.columns.Formula`, ``[[tables.formulas]]``).
 
         Raises
         ------
@@ -105,7 +105,7 @@ class Analysis:
         ...
         KeyError: "no formula 'G_max'; the model declares: ['GS6max']"
         """
-        from .columns import formulas_of
+        from .core.columns import formulas_of
         found = {f.name: f for f in formulas_of(self.mechanism)}
         if name not in found:
             raise KeyError(f"no formula {name!r}; the model declares: {sorted(found)}")
@@ -132,15 +132,15 @@ class Analysis:
         return self.cylinders[name]
 
     def _repr_html_(self):
-        """Summary, drawing and the seed-like tables in a notebook (:mod:`assur.display`)."""
-        from .display import analysis_html
+        """Summary, drawing and the seed-like tables in a notebook (:mod:`assur.views.notebook`)."""
+        from .views.notebook import analysis_html
         return analysis_html(self)
 
 
 def gravity_of(mech) -> float:
     """The acceleration of gravity of a mechanism [m/s²]: the model's own
     (:attr:`Mechanism.gravity`, ``[model] gravity`` of a model file), else
-    :data:`assur.statics.GRAVITY` (9.81).
+    :data:`assur.core.statics.GRAVITY` (9.81).
 
     Examples
     --------
@@ -157,7 +157,7 @@ def gravity_of(mech) -> float:
 def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     """Solve positions and analogs, forces, reactions, cylinders and stability.
 
-    Parameters are those of :meth:`Mechanism.solve` and :func:`assur.statics.solve`;
+    Parameters are those of :meth:`Mechanism.solve` and :func:`assur.core.statics.solve`;
     ``g`` [m/s²] defaults to the model's gravity (:func:`gravity_of`).
 
     Examples
@@ -196,7 +196,7 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
 def add_dynamics(analysis, spec=None):
     """Add the crank dynamics to ``analysis`` (in place; returns it): the kinetostatics
     with inertia at the crank's speed, the reduced moment and moment of inertia, the
-    common centre of mass (:func:`assur.inertia.crank_dynamics`), the flywheel and the
+    common centre of mass (:func:`assur.dynamics.crank.crank_dynamics`), the flywheel and the
     balancing that ``spec`` asks for (seed 001 lab 3; docs/crank-dynamics.md).
 
     They apply to a mechanism of one crank-angle coordinate with masses on its moving
@@ -250,7 +250,7 @@ def add_dynamics(analysis, spec=None):
     assur.errors.ModelError: hitch_003: [dynamics] needs one crank-angle coordinate and ...
     """
     from .errors import ModelError
-    from .inertia import crank_dynamics, masses_of
+    from .dynamics.crank import crank_dynamics, masses_of
 
     kin = analysis.kinematics
     mech = kin.mechanism
@@ -278,7 +278,7 @@ def add_dynamics(analysis, spec=None):
     if spec is not None and (spec.delta is not None or spec.flywheel is not None):
         analysis.flywheel = dyn.flywheel(delta=spec.delta, J_flywheel=spec.flywheel)
     if spec is not None and spec.counter_masses:
-        from .balancing import balance
+        from .dynamics.balancing import balance
         analysis.balancing = balance(kin, spec.counter_masses, spec.objective)
     check_finite(analysis)
     return analysis
@@ -286,7 +286,7 @@ def add_dynamics(analysis, spec=None):
 
 def add_lift_test(analysis, test, s_range=None):
     """Add the standard lift test of a three-point hitch (ISO 789-2 / SAE J283,
-    :func:`assur.lift_test.lift_test`) to ``analysis`` (in place; returns it).
+    :func:`assur.machines.hitch_lift.lift_test`) to ``analysis`` (in place; returns it).
 
     Parameters
     ----------
@@ -314,7 +314,7 @@ def add_lift_test(analysis, test, s_range=None):
     """
     if test is None:
         return analysis
-    from .lift_test import lift_test
+    from .machines.hitch_lift import lift_test
     kin = analysis.kinematics
     if s_range is None:
         q = kin.q()

@@ -73,7 +73,7 @@ class AssemblyError(ValueError):
         self.design = design
         self.position = position
         self.amount = amount
-        #: per-element failure description (see :class:`assur.kinematics.Failures`)
+        #: per-element failure description (see :class:`assur.core.kinematics.Failures`)
         self.failures = failures
 
 

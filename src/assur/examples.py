@@ -31,7 +31,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .mechanism import Mechanism
+from .core.mechanism import Mechanism
 
 __all__ = ["hitch_003", "hitch_003_range", "header_000", "header_000_fixed", "header_000_range",
            "combine_002", "combine_002_printed", "combine_002_range", "combine_002_turn_range",
@@ -198,7 +198,7 @@ def combine_002(**params) -> Mechanism:
     O3 = O1 + l10∠j10; loop 2 (eq. 2.4): l4 = O3→C continues the rocker beyond O3
     (j4 = j3), l5 = CD, l6 = D→O6 with O6 = O3 + l8∠j8. The helper vectors l9 = A→O3
     and l7 = C→O6 (eqs. 2.5, 2.9–2.10) are named distances with their angles j9, j7.
-    The crank turns clockwise (φ1' = −1, eq. 2.20): its :class:`assur.motion.Motion`.
+    The crank turns clockwise (φ1' = −1, eq. 2.20): its :class:`assur.core.motion.Motion`.
 
     Generalized coordinate ``j1``: the crank angle [rad].
 
@@ -389,7 +389,7 @@ def spout_lab5(**params) -> Mechanism:
     ``001_4447446e88a18ffc.txt`` lab 5 (bundled file ``spout_lab5.toml``): the
     cylinder turns the arc lever 3 about 03; its arm 34 drives the arc lever 4 and the
     spout's base radius 5 about the spout axis 05. Dimensions fitted to the lab's
-    table 5.1 by :func:`assur.fitting.fit_parameters`; in a horizontal plane (no
+    table 5.1 by :func:`assur.synthesis.fitting.fit_parameters`; in a horizontal plane (no
     gravity), with an illustrative rod motion and spout inertia."""
     return _mechanism("spout_lab5", params)
 
@@ -404,14 +404,14 @@ def conditioner_lab2(**params) -> Mechanism:
     ``001_4447446e88a18ffc.txt`` lab 2, the four-bar (bundled file
     ``conditioner_lab2.toml``, illustrative): k springs pull the upper roller's rocker;
     the coordinate Y is the distance between the rollers' centres
-    (:mod:`assur.conditioner`)."""
+    (:mod:`assur.machines.conditioner`)."""
     return _mechanism("conditioner_lab2", params)
 
 
 def conditioner_lab2_sixbar(**params) -> Mechanism:
     """The same device as a six-bar (lab 2 fig. 2.2; ``conditioner_lab2_sixbar.toml``
     extends ``conditioner_lab2.toml``): the springs act on a lever that drives the
-    rocker through a link; its lever geometry fitted (:mod:`assur.fitting`) so that
+    rocker through a link; its lever geometry fitted (:mod:`assur.synthesis.fitting`) so that
     p_c stays at 20 kN/m over Y (illustrative)."""
     return _mechanism("conditioner_lab2_sixbar", params)
 

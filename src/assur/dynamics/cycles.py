@@ -52,7 +52,7 @@ def strokes(circuit):
 
     Parameters
     ----------
-    circuit : assur.drive.Circuit
+    circuit : assur.dynamics.drive.Circuit
 
     Returns
     -------

@@ -1,7 +1,7 @@
 """Equations of motion of a mechanism with masses, from the engine's exact analogs.
 
 For a mechanism of k generalized coordinates q (cylinder lengths [m] or crank
-angles [rad]) whose links carry :class:`assur.loads.Mass` loads (mass m, centre S,
+angles [rad]) whose links carry :class:`assur.core.loads.Mass` loads (mass m, centre S,
 moment of inertia J about S), Lagrange's equations of the second kind are
 
 .. math::
@@ -18,14 +18,14 @@ with (DESIGN.md §2: v_S = J_S·q̇, a_S = J_S·q̈ + q̇ᵀ·H_S·q̇; ω = φ'
   ``h_i = Σ_jl (∂M_ij/∂q_l − ½·∂M_jl/∂q_i)·q̇_j·q̇_l``;
 * the generalized forces of the loads by virtual work ``Q_j = Σ F·∂r/∂q_j +
   Σ M·∂φ/∂q_j`` (weights m·g, forces, couples, springs;
-  :func:`assur.statics.virtual_work_forces`);
+  :func:`assur.core.statics.virtual_work_forces`);
 * F the actuator forces along the coordinates (a cylinder's push [N], a crank's
   driving moment [N·m]).
 
 For one coordinate S this is lab 6's eq. (7) (seed 001): ``M = m(S)`` is the
 reduced mass (eq. 6: ``m(S) = m6·I_v² + J6·φ6'²``), ``h = ½·m'(S)·Ṡ²`` and
 ``Q = −P6·I(S)``; for a crank it is ``J_red·ε + ½·J_red'·ω² = M_drive + M_red``
-(:func:`assur.inertia.reduced_inertia`).
+(:func:`assur.dynamics.crank.reduced_inertia`).
 
 Nothing is differentiated numerically: M and ∂M/∂q are sums of products of the
 kernel's first and second analogs.
@@ -36,7 +36,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import ModelError
-from ..inertia import design_value, masses_of
+from .crank import design_value, masses_of
 
 __all__ = ["EquationsOfMotion", "equations_of_motion"]
 
@@ -76,7 +76,7 @@ class EquationsOfMotion:
     """
 
     def __init__(self, kin, g):
-        from .. import statics
+        from ..core import statics
         self.kinematics = kin
         self.coordinates = kin.coordinates
         self.g = float(g)
@@ -279,7 +279,7 @@ def equations_of_motion(source, q=None, g=None):
     >>> import numpy as np
     >>> from assur import io
     >>> from assur.dynamics import equations_of_motion
-    >>> from assur.inertia import reduced_inertia
+    >>> from assur.dynamics.crank import reduced_inertia
     >>> model = io.load(io.bundled("cleaning_lab3"))
     >>> kin = model.mechanism.solve(model.range)
     >>> eom = equations_of_motion(kin)
@@ -289,7 +289,7 @@ def equations_of_motion(source, q=None, g=None):
     True
     """
     from ..analysis import gravity_of
-    from ..kinematics import kinematics_of
+    from ..core.kinematics import kinematics_of
     kin = kinematics_of(source, q, "equations_of_motion")
     if g is None:
         g = gravity_of(kin.mechanism)

@@ -3,7 +3,7 @@ adapter lift (one cylinder) and seed 004's crane (boom and stick, two cylinders 
 by one pump through a flow divider).
 
 The machine has k generalized coordinates, the cylinders' pin-to-pin lengths q_j
-[m], each moved by one branch of the circuit (:class:`assur.drive.Branch`: its
+[m], each moved by one branch of the circuit (:class:`assur.dynamics.drive.Branch`: its
 valve, lines, lumped oil volume and relief valve). Its mathematical model is lab
 6's system (2), (3), (7) for every branch, with the turbulent term corrected
 (BRIEF.md), coupled through the mechanism's equations of motion:
@@ -637,7 +637,7 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
     mechanism : Mechanism
         Its generalized coordinates are the cylinders' lengths [m], with masses
         (its ``mass`` loads) and any other loads.
-    circuit : assur.drive.Circuit
+    circuit : assur.dynamics.drive.Circuit
         The drive: a pump, and per cylinder its branch (valve, lines, oil volume,
         relief valve); a flow divider for several cylinders.
     t_end : float

@@ -135,7 +135,7 @@ def ref_value(params, ref):
         if isinstance(v, (int, float, np.floating, np.integer, list, tuple)) or (
                 isinstance(v, np.ndarray) and not np.iscomplexobj(v)):
             return -np.asarray(v, dtype=float)
-        return -v  # a complex step or a jet (assur.sensitivity) keeps its derivatives
+        return -v  # a complex step or a jet (assur.synthesis.sensitivity) keeps its derivatives
     return params[ref]
 
 
@@ -450,12 +450,12 @@ class Group:
     # ---- structure --------------------------------------------------------------
     def topology(self, t) -> tuple[str, ...]:
         """Create the group's bodies in the topology builder ``t`` and return the
-        group's links (see :class:`assur.topology.TopologyBuilder`).
+        group's links (see :class:`assur.core.topology.TopologyBuilder`).
 
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> m = examples.hitch_003()
         >>> t = TopologyBuilder(m.name, m.coordinates)
         >>> [g.topology(t) for g in m.groups[:6]]      # 4 frame points, group I, arm 34
@@ -491,12 +491,12 @@ class Group:
 
     def compile(self, c) -> tuple[int, ...]:
         """The program row after the op code: integers only (slots, parameter rows,
-        coordinate indices, signs). See :class:`assur.program.CompileContext`.
+        coordinate indices, signs). See :class:`assur.core.program.CompileContext`.
 
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> m = examples.combine_002()
         >>> c = CompileContext(m.coordinates, tuple(m.params))
         >>> rows = [g.compile(c) for g in m.groups[:4]]   # frames O1, O3, O6, crank 1
@@ -553,7 +553,7 @@ class Group:
 
     def prepare(self, data, ptab, positions_at) -> None:
         """Pre-pass before the kernel runs: fill derived per-design rows of ``ptab``
-        registered at compile time (:meth:`assur.program.CompileContext.prepare`).
+        registered at compile time (:meth:`assur.core.program.CompileContext.prepare`).
         ``positions_at(qpose, points)`` solves the groups before this one at other
         coordinates. Only groups that register a pre-pass implement it.
 
@@ -613,11 +613,11 @@ class Group:
     def reactions(self, r) -> None:
         """Solve the group's joint reactions from the loads on its links (reverse
         order), record them and pass the joint forces on to the links it is attached
-        to (see :class:`assur.statics.ReactionContext`).
+        to (see :class:`assur.core.statics.ReactionContext`).
 
         Examples
         --------
-        The reverse pass of :mod:`assur.statics` by hand: the hitch at S = 0.42 m
+        The reverse pass of :mod:`assur.core.statics` by hand: the hitch at S = 0.42 m
         holding the implement's weight P6 at S6:
 
         >>> from assur import examples, statics

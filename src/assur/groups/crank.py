@@ -116,7 +116,7 @@ class Crank(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> m = examples.combine_002()
         >>> t = TopologyBuilder(m.name, m.coordinates)
         >>> for g in m.groups[:3]:                     # the frame points O1, O3, O6
@@ -158,7 +158,7 @@ class Crank(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> m = examples.combine_002()
         >>> c = CompileContext(m.coordinates, tuple(m.params))
         >>> c.slot("O1")

@@ -167,7 +167,7 @@ class CylinderLever(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> t = TopologyBuilder("hitch_003", ("S",))
         >>> g = examples.hitch_003().group("I (2,3)")   # cylinder 2, lever 3
         >>> g.topology(t)
@@ -206,7 +206,7 @@ class CylinderLever(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> g = examples.hitch_003().group("I (2,3)")
         >>> c = CompileContext(("S",), ("L3",))
         >>> c.slot("01"), c.slot("03")
@@ -293,7 +293,7 @@ class CylinderLever(Group):
         the transmission ``∂y23/∂S`` (virtual work):
 
         >>> from assur import Mechanism
-        >>> from assur.statics import ReactionContext
+        >>> from assur.core.statics import ReactionContext
         >>> m = (Mechanism("lift", coordinates=("S",))
         ...      .frame("01", 0.0, 0.0).frame("03", 0.40, 0.25)
         ...      .cylinder_lever("I", base="01", pivot="03", out="23", lever=0.22, s="S",

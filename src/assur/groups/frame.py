@@ -183,7 +183,7 @@ class Frame(Group):
         --------
         >>> from assur import examples
         >>> from assur.groups import Frame
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> m = examples.combine_002()
         >>> t = TopologyBuilder(m.name, m.coordinates)
         >>> [g.topology(t) for g in m.groups[:4]]       # O1, O3, O6, the crank
@@ -230,7 +230,7 @@ class Frame(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> m = examples.combine_002()
         >>> c = CompileContext(m.coordinates, tuple(m.params))
         >>> m.group("O1").compile(c)       # slot 0; x = y = the literal 0 [m]

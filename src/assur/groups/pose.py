@@ -129,7 +129,7 @@ class PosePoint(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> m = examples.hitch_003()
         >>> t = TopologyBuilder(m.name, m.coordinates)
         >>> for g in m.groups[:9]:                 # the groups before S6
@@ -188,7 +188,7 @@ class PosePoint(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> m = examples.hitch_003()
         >>> c = CompileContext(m.coordinates, tuple(m.params))
         >>> for g in m.groups[:9]:

@@ -131,7 +131,7 @@ class DoubleSliderDyad(Group):
 
         Examples
         --------
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> import math
         >>> from assur import Mechanism
         >>> m = (Mechanism("wedge", coordinates=("s",))
@@ -196,7 +196,7 @@ class DoubleSliderDyad(Group):
 
         Examples
         --------
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> import math
         >>> from assur.groups import DoubleSliderDyad
         >>> g = DoubleSliderDyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
@@ -343,7 +343,7 @@ class DoubleSliderDyad(Group):
         ...      .slider_input("slider 1", origin="C0", out="P", s="s", links=("1",))
         ...      .prp_dyad("II", a="P", b="B0", out="C", direction_a=math.pi / 2,
         ...                direction_b=math.pi / 4, links=("2", "3")))
-        >>> from assur.statics import ReactionContext
+        >>> from assur.core.statics import ReactionContext
         >>> r = ReactionContext(m.solve([0.2]), set())          # s [m]
         >>> r.links = m.topology.group_links["II"]
         >>> r.apply("3", "C", 0.0, -100.0)                      # [N]

@@ -256,7 +256,7 @@ class RigidPoint(Group):
         --------
         >>> import dataclasses
         >>> from assur import examples
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> m = examples.hitch_003()
         >>> t = TopologyBuilder(m.name, m.coordinates)
         >>> for g in m.groups[:5]:                 # the frame points and group I (2,3)
@@ -326,7 +326,7 @@ class RigidPoint(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> m = examples.header_000_fixed()
         >>> c = CompileContext(m.coordinates, tuple(m.params))
         >>> for g in m.groups[:4]:                 # 01, 03, 05 and group I (2,3)

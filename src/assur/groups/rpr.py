@@ -142,7 +142,7 @@ class SleeveDyad(Group):
         Examples
         --------
         >>> from assur.groups import SleeveDyad
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> t = TopologyBuilder("slotted lever", ("j1",))
         >>> SleeveDyad("II", a="A", b="B", out="E", length=0.55, links=("2", "3")).topology(t)
         ('2', '3')
@@ -186,7 +186,7 @@ class SleeveDyad(Group):
 
         Examples
         --------
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> from assur.groups import SleeveDyad
         >>> g = SleeveDyad("II", a="A", b="B", out="E", length=0.55)
         >>> c = CompileContext(("j1",), ())
@@ -336,7 +336,7 @@ class SleeveDyad(Group):
         A) with 100 N down at E: the sleeve takes 44 N·m / 0.2 m = 220 N:
 
         >>> import numpy as np
-        >>> from assur.statics import ReactionContext
+        >>> from assur.core.statics import ReactionContext
         >>> from assur import Mechanism
         >>> m = (Mechanism("slotted lever", coordinates=("j1",))
         ...      .frame("A0", 0.0, 0.0).frame("B", 0.16, 0.0)

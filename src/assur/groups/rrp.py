@@ -37,7 +37,7 @@ def line_direction(r, direction, line_link):
 
     >>> import numpy as np
     >>> from assur.groups.rrp import line_direction
-    >>> from assur.statics import ReactionContext
+    >>> from assur.core.statics import ReactionContext
     >>> from assur import Mechanism
     >>> m = (Mechanism("slider-crank", coordinates=("j1",))
     ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)
@@ -151,7 +151,7 @@ class SliderDyad(Group):
 
         Examples
         --------
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> from assur import Mechanism
         >>> m = (Mechanism("slider-crank", coordinates=("j1",))
         ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)
@@ -212,7 +212,7 @@ class SliderDyad(Group):
 
         Examples
         --------
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> from assur.groups import SliderDyad
         >>> g = SliderDyad("II", a="A", out="C", radius=0.40, line_point="L0")
         >>> c = CompileContext(("j1",), ())
@@ -384,7 +384,7 @@ class SliderDyad(Group):
         The slider-crank at j1 = 0 (rod A–C along (0.8, −0.6)) with 100 N against the
         slider: the rod carries 125 N, the guide holds the block with 75 N:
 
-        >>> from assur.statics import ReactionContext
+        >>> from assur.core.statics import ReactionContext
         >>> from assur import Mechanism
         >>> m = (Mechanism("slider-crank", coordinates=("j1",))
         ...      .frame("A0", 0.0, 0.0).frame("L0", 0.0, -0.24)

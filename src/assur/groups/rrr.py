@@ -199,7 +199,7 @@ def dyad_reactions_block(r, a, b, c, la, lb, ra_ref, rb_ref):
     A and B 0.5 m apart, 100 N down at C. The bars carry 80 N and 60 N (3-4-5):
 
     >>> from assur import Mechanism
-    >>> from assur.statics import ReactionContext
+    >>> from assur.core.statics import ReactionContext
     >>> from assur.groups.rrr import dyad_reactions_block
     >>> m = (Mechanism("truss", coordinates=("S",))
     ...      .frame("A", 0.0, 0.0).frame("B", 0.5, 0.0)
@@ -328,7 +328,7 @@ class Dyad(Group):
         Examples
         --------
         >>> from assur.groups import Dyad
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> t = TopologyBuilder("truss", ("S",))
         >>> Dyad("II", a="A", b="B", out="C", ra="S", rb=0.4, links=("2", "3")).topology(t)
         ('2', '3')
@@ -368,7 +368,7 @@ class Dyad(Group):
         Examples
         --------
         >>> from assur.groups import Dyad
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> c = CompileContext(("S",), ("L7",))
         >>> c.slot("56"), c.slot("07")
         (0, 1)
@@ -455,7 +455,7 @@ class Dyad(Group):
         (B–C) 0.4 m, A and B 0.5 m apart, 100 N down at C: the cylinder pushes 80 N:
 
         >>> from assur import Mechanism
-        >>> from assur.statics import ReactionContext
+        >>> from assur.core.statics import ReactionContext
         >>> m = (Mechanism("truss", coordinates=("S",))
         ...      .frame("A", 0.0, 0.0).frame("B", 0.5, 0.0)
         ...      .dyad("II", a="A", b="B", out="C", ra="S", rb=0.4, links=("2", "3")))

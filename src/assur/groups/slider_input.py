@@ -115,7 +115,7 @@ class SliderInput(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.topology import TopologyBuilder
+        >>> from assur.core.topology import TopologyBuilder
         >>> m = examples.steering_lab4_modern()
         >>> t = TopologyBuilder(m.name, m.coordinates)
         >>> for g in m.groups[:3]:                     # the frame points 03, 04, C0
@@ -157,7 +157,7 @@ class SliderInput(Group):
         Examples
         --------
         >>> from assur import examples
-        >>> from assur.program import CompileContext
+        >>> from assur.core.program import CompileContext
         >>> m = examples.steering_lab4_modern()
         >>> names = m.program().param_names        # the parameters, then −a_half, −h_rod
         >>> c = CompileContext(m.coordinates, names)

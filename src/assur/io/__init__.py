@@ -42,7 +42,7 @@ from typing import Mapping
 
 import numpy as np
 
-from ..mechanism import Mechanism
+from ..core.mechanism import Mechanism
 from ._build import Builder
 from ._errors import ModelFileError, key_path
 from ._extends import resolve as resolve_extends
@@ -78,9 +78,9 @@ class Model:
         :mod:`assur.io._dynamics`, docs/crank-dynamics.md), None without one.
     lift_test : LiftTest or None
         The ``[lift_test]`` section (the standard lift test of a hitch, ISO 789-2;
-        :mod:`assur.lift_test`), None without one.
+        :mod:`assur.machines.hitch_lift`), None without one.
     drive : Circuit or None
-        The ``[[drive]]`` components as an :class:`assur.drive.Circuit`
+        The ``[[drive]]`` components as an :class:`assur.dynamics.drive.Circuit`
         (:mod:`assur.io._drive`, docs/simulation.md), None without them.
     simulation : SimulationSpec or None
         The ``[simulation]`` section, None without one.
@@ -89,7 +89,7 @@ class Model:
         (:mod:`assur.io._design`, docs/design.md), None without one.
     tolerances : tuple of Tolerance
         The ``[tolerances]`` section (:mod:`assur.io._tolerances`,
-        :mod:`assur.tolerance`), empty without one.
+        :mod:`assur.synthesis.tolerance`), empty without one.
     warnings : tuple of str
         What the file allows but probably does not mean — a parameter that nothing
         uses (``file:line: params.<name>: …``). ``assur check`` and ``assur analyze``
@@ -187,8 +187,8 @@ class Model:
         return analysis
 
     def _repr_html_(self):
-        """Solved conditions, drawing and tables in a notebook (:mod:`assur.display`)."""
-        from ..display import model_html
+        """Solved conditions, drawing and tables in a notebook (:mod:`assur.views.notebook`)."""
+        from ..views.notebook import model_html
         return model_html(self)
 
     def __repr__(self):
@@ -494,7 +494,7 @@ def bundled(name: str) -> Path:
 
 def read_targets(path, mechanism):
     """A printed table (CSV, ``quantity [unit]`` headers) as targets of
-    :func:`assur.fitting.fit_parameters`; see :mod:`assur.io._fit_table`.
+    :func:`assur.synthesis.fitting.fit_parameters`; see :mod:`assur.io._fit_table`.
 
     Examples
     --------

@@ -15,8 +15,8 @@ Four passes over the file's tables (:class:`Builder`):
    point and link name checked against those defined before it; anything the
    mechanism itself refuses is reported at the entry being added.
 4. *Solve and range.* The ``[[solve]]`` conditions become
-   :class:`~assur.synthesis.Condition` objects solved by
-   :func:`~assur.synthesis.solve_conditions`; a failure is reported at its
+   :class:`~assur.synthesis.conditions.Condition` objects solved by
+   :func:`~assur.synthesis.conditions.solve_conditions`; a failure is reported at its
    ``[[solve]]`` entry. The range is evaluated with the solved parameters.
 """
 
@@ -29,11 +29,11 @@ import numpy as np
 from ..errors import AssemblyError, ModelError
 from ..groups import group_type
 from ..groups.base import ref_value, signed_name
-from ..inputs import bytes_per_position, check_memory, span_problem
-from ..loads import LOAD_TYPES, Cylinder
-from ..mechanism import Mechanism
-from ..stability import Machine
-from ..statics import GRAVITY
+from ..core.inputs import bytes_per_position, check_memory, span_problem
+from ..core.loads import LOAD_TYPES, Cylinder
+from ..core.mechanism import Mechanism
+from ..machines.stability import Machine
+from ..core.statics import GRAVITY
 from ..texts import text
 from . import _schema as S
 from ._errors import ModelFileError, key_path
@@ -89,14 +89,14 @@ def _group_inputs(g, gp):
 
 
 #: ``{type: {field: (kind, flag)}}`` and ``{type: point fields}`` of the load types, and
-#: the cylinder's value fields — from each type's own declarations (:mod:`assur.loads`)
+#: the cylinder's value fields — from each type's own declarations (:mod:`assur.core.loads`)
 _LOAD_VALUES = {t: {f: (KINDS[q], cls.flags.get(f)) for f, q in cls.quantities.items()}
                 for t, cls in LOAD_TYPES.items()}
 _LOAD_POINTS = {t: tuple(cls.point_fields) for t, cls in LOAD_TYPES.items()}
 _CYLINDER_VALUES = {f: (KINDS[q], Cylinder.flags.get(f)) for f, q in Cylinder.quantities.items()}
 
 
-#: the kind of span (:data:`assur.inputs.SPANS`) a flag asks for
+#: the kind of span (:data:`assur.core.inputs.SPANS`) a flag asks for
 _SPAN_OF_FLAG = {"fraction": "efficiency", "count": "count"}
 
 
@@ -773,7 +773,7 @@ class Builder:
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
         if t.dead_loads is not None:  # links whose loads every capacity carries
-            from ..capacity import load_link
+            from ..machines.capacity import load_link
             for k, b in enumerate(t.dead_loads):
                 path = tp + ("dead_loads", k)
                 if b not in bodies or b == "0":
@@ -788,9 +788,9 @@ class Builder:
         return mech.with_tables(**out)
 
     def extra_columns(self, mech):
-        """``[[tables.formulas]]`` and ``[[tables.signs]]``: :mod:`assur.columns`."""
-        from ..columns import Formula, FormulaError, SignMap
-        from ..columns import TABLE_IDS
+        """``[[tables.formulas]]`` and ``[[tables.signs]]``: :mod:`assur.core.columns`."""
+        from ..core.columns import Formula, FormulaError, SignMap
+        from ..core.columns import TABLE_IDS
         t = self.spec.tables
         tp = ("tables",)
         out = {}
@@ -843,7 +843,7 @@ class Builder:
         return q
 
     def conditions(self, mech):
-        from ..synthesis import Condition
+        from ..synthesis.conditions import Condition
         conds = []
         solved_by = {}
         quantities = self.quantities(mech)
@@ -913,7 +913,7 @@ class Builder:
             raise self.error(path, _unreadable(e, f"{what} for {unknown}", v)) from None
 
     def solve(self, mech):
-        from ..synthesis import DesignError, solve_conditions
+        from ..synthesis.conditions import DesignError, solve_conditions
         from . import _solve_cache
         conds = self.conditions(mech)
         if not conds:
@@ -929,7 +929,7 @@ class Builder:
 
     def memory(self, mech, paths, count, counts):
         """Refuse a range whose grid (with the coordinates before it, ``counts``) would
-        need more memory than :func:`assur.inputs.max_memory`, before allocating."""
+        need more memory than :func:`assur.core.inputs.max_memory`, before allocating."""
         total = count
         for c in counts.values():
             total = max(total, c) if self.paired else total * c
@@ -1019,7 +1019,7 @@ class Builder:
         """Warnings (``file:line: params.<name>: …``) for the parameters that nothing
         uses: no group, frame point, load, cylinder, machine value, range, motion,
         ``[[solve]]`` condition (unknown, bracket, target) or table formula."""
-        from ..columns import formulas_of
+        from ..core.columns import formulas_of
         used = set(self.param_use)
         for s in self.spec.solve:
             used.add(s.unknown)

@@ -1,5 +1,5 @@
 """The ``[design]`` section of a model file: design variables, constraints and
-objectives of a search (:mod:`assur.design`, docs/design.md).
+objectives of a search (:mod:`assur.synthesis.search`, docs/design.md).
 
 ```toml
 [design]
@@ -89,13 +89,13 @@ class DesignSpec:
 
     Attributes
     ----------
-    variables : tuple of assur.design.Variable
-    constraints, objectives : tuple of assur.design.criteria.Criterion
+    variables : tuple of assur.synthesis.search.Variable
+    constraints, objectives : tuple of assur.synthesis.search.criteria.Criterion
     positions : int or None
         Number of positions over the range (None: the range's own).
     polish : bool or None
         Polish the optimum of differential evolution by SLSQP with exact gradients
-        (None: not written, the default of :func:`assur.design.search.optimize`).
+        (None: not written, the default of :func:`assur.synthesis.search.search.optimize`).
     """
 
     def __init__(self, variables, constraints, objectives, positions, polish=None):
@@ -108,7 +108,7 @@ class DesignSpec:
 
 def _kind_of_output(text, mech):
     """The quantity of an output's limits (None for a formula: its value's own unit)."""
-    from ..fused import output_unit, resolve_output
+    from ..core.outputs import output_unit, resolve_output
     if resolve_output(mech, text)[0] == "formula":
         return None
     return {"m": LENGTH, "N": FORCE, "N·m": MOMENT, "Pa": PRESSURE, "rad": ANGLE,
@@ -120,7 +120,7 @@ _CRITERION_KIND = {"capacity": FORCE, "pressure": PRESSURE, "transmission_angle"
 
 
 def _param_kind(mech, name):
-    from ..quantities import parameter_quantities
+    from ..core.quantities import parameter_quantities
     q = parameter_quantities(mech).get(name)
     return KINDS.get(q) if q else None
 
@@ -156,9 +156,9 @@ def build_design(builder, mech, path_prefix=("design",)):
     if errors:
         path, problem = errors[0]
         raise err(path, problem)
-    from ..design.criteria import Limit, criterion
-    from ..design.problem import Variable
-    from ..quantities import display_units
+    from ..synthesis.search.criteria import Limit, criterion
+    from ..synthesis.search.problem import Variable
+    from ..core.quantities import display_units
     units = display_units(mech)
     variables = []
     for name, b in spec.variables.items():
@@ -227,7 +227,7 @@ def _criterion(c, key, mech, criterion, Limit):
     kind = _kind_of_output(c.quantity, mech) if c.type == "bound" else _CRITERION_KIND[c.type]
     if sense is None:
         if c.type == "pressure":  # the relief setting, shown in the unit the file gave it
-            from ..quantities import display_units
+            from ..core.quantities import display_units
             cyl = [x for x in mech.cylinders if x.name == (c.cylinder or mech.cylinders[0].name)]
             relief = cyl[0].p_relief if cyl else None
             unit = display_units(mech).get(relief) if isinstance(relief, str) else None
@@ -253,7 +253,7 @@ def _criterion(c, key, mech, criterion, Limit):
 
 def _output_unit(quantity, mech):
     """Unit("%") for an output in percent (a reserve), a formula's own unit, else None."""
-    from ..fused import display_unit, resolve_output
+    from ..core.outputs import display_unit, resolve_output
     if not quantity:
         return None
     u = display_unit(mech, quantity)
@@ -261,7 +261,7 @@ def _output_unit(quantity, mech):
 
 
 def _default_unit(kind):
-    from ..quantities import DEFAULT_UNITS, Unit
+    from ..core.quantities import DEFAULT_UNITS, Unit
     return DEFAULT_UNITS.get(kind.name, Unit("-")) if kind is not None else Unit("-")
 
 
@@ -271,15 +271,15 @@ def parse_var(text, mech):
 
     Returns
     -------
-    assur.design.Variable
+    assur.synthesis.search.Variable
 
     Raises
     ------
     ModelError
         Naming the option and what is wrong.
     """
-    from ..design.problem import Variable
-    from ..quantities import display_units
+    from ..synthesis.search.problem import Variable
+    from ..core.quantities import display_units
     name, sep, rest = str(text).partition("=")
     name = name.strip()
     if not sep or not name:
@@ -317,7 +317,7 @@ def write_design_file(path, base, values, units, header=()):
         The original model file (written relative to ``path``'s directory).
     values : mapping of str to float
         Parameter values [SI].
-    units : mapping of str to assur.quantities.Unit
+    units : mapping of str to assur.core.quantities.Unit
         The unit to write each value in (the original file's).
     header : sequence of str
         Comment lines at the top.

@@ -1,10 +1,10 @@
 """The ``[[drive]]`` entries and the ``[simulation]`` section of a model file: the
 hydraulic circuit driving the mechanism and the simulation of its motion in time
-(:mod:`assur.drive`, :mod:`assur.dynamics.simulate`, docs/simulation.md).
+(:mod:`assur.dynamics.drive`, :mod:`assur.dynamics.simulate`, docs/simulation.md).
 
 ```toml
 [[drive]]
-type = "gear_pump"                 # one entry per component, by type (assur.drive.registry)
+type = "gear_pump"                 # one entry per component, by type (assur.dynamics.drive.registry)
 displacement = "32 cm^3"           # НШ-32
 speed = "1800 rpm"
 eta_volumetric = 0.9
@@ -28,7 +28,7 @@ outputs = 2001                     # output times, evenly spaced
 Kept apart from the rest of the schema: :mod:`assur.io._schema` only admits the
 entries, :mod:`assur.io._build` calls :func:`build_drive` once the mechanism is
 built, and the results are :attr:`assur.io.Model.drive` (an
-:class:`assur.drive.Circuit`) and :attr:`assur.io.Model.simulation`. Values take
+:class:`assur.dynamics.drive.Circuit`) and :attr:`assur.io.Model.simulation`. Values take
 units (or are parameter names), and every error names the file, line and key.
 """
 
@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 from pydantic import BaseModel, ConfigDict, Field, StrictInt
 
-from .. import drive as _drive
+from ..dynamics import drive as _drive
 from ..dynamics.simulate import METHODS
 from ..errors import ModelError
 from . import _schema as S
@@ -100,7 +100,7 @@ class SimulationSpec:
 
 def build_drive(builder, mech):
     """``(circuit, simulation)`` of the file ``builder`` reads: an
-    :class:`assur.drive.Circuit` (None without ``[[drive]]`` entries) and a
+    :class:`assur.dynamics.drive.Circuit` (None without ``[[drive]]`` entries) and a
     :class:`SimulationSpec` (None without a ``[simulation]`` table)."""
     raw = builder.data.get("drive")
     sim = builder.data.get("simulation")

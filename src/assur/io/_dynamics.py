@@ -29,7 +29,7 @@ from typing import Optional
 from pydantic import BaseModel, ConfigDict, model_validator
 from pydantic_core import PydanticCustomError
 
-from ..balancing import OBJECTIVES, CounterMass
+from ..dynamics.balancing import OBJECTIVES, CounterMass
 from . import _schema as S
 from ..groups.base import ref_value
 from ._units import INERTIA, LENGTH, MASS, NUMBER
@@ -73,7 +73,7 @@ class DynamicsSpec:
     flywheel : float or None
         A given flywheel's moment of inertia J_f [kg·m²].
     objective : str
-        Balancing objective (:data:`assur.balancing.OBJECTIVES`).
+        Balancing objective (:data:`assur.dynamics.balancing.OBJECTIVES`).
     counter_masses : tuple of CounterMass
         Where counter-masses may go, with their bounds [kg, m, m].
     """

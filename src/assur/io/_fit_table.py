@@ -1,4 +1,4 @@
-"""A printed table read as fitting targets (:mod:`assur.fitting`, ``assur fit``).
+"""A printed table read as fitting targets (:mod:`assur.synthesis.fitting`, ``assur fit``).
 
 The CSV's first row is the header: the coordinate, then one column per quantity,
 each ``expression [unit]`` — the expression as in ``[[tables.formulas]]``
@@ -49,7 +49,7 @@ def _tolerance(cell):
 
 
 def read_targets(path, mechanism):
-    """Targets of :func:`assur.fitting.fit_parameters` from a CSV table as printed.
+    """Targets of :func:`assur.synthesis.fitting.fit_parameters` from a CSV table as printed.
 
     Parameters
     ----------
@@ -93,7 +93,7 @@ def read_targets(path, mechanism):
             raise ModelError(f"{path}: row {i + 1}, column {j + 1}: not finite: {cell!r}")
         return v
 
-    from ..fitting import Target
+    from ..synthesis.fitting import Target
 
     targets = []
     for j, (expr, unit, scale) in enumerate(head[1:], start=1):

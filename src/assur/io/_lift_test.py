@@ -1,5 +1,5 @@
 """The ``[lift_test]`` section of a model file: the standard lift-capacity test of a
-three-point hitch (ISO 789-2 / SAE J283; :mod:`assur.lift_test`).
+three-point hitch (ISO 789-2 / SAE J283; :mod:`assur.machines.hitch_lift`).
 
 ```toml
 [lift_test]
@@ -23,7 +23,7 @@ from typing import Optional
 from pydantic import BaseModel, ConfigDict, Field, StrictInt
 
 from ..errors import ModelError
-from ..lift_test import LiftTest
+from ..machines.hitch_lift import LiftTest
 from . import _schema as S
 from ._units import NUMBER
 
@@ -41,7 +41,7 @@ class LiftTestSection(BaseModel):
 
 
 def build_lift_test(builder, mech):
-    """The :class:`assur.lift_test.LiftTest` of the file ``builder`` reads (None without
+    """The :class:`assur.machines.hitch_lift.LiftTest` of the file ``builder`` reads (None without
     a ``[lift_test]`` table); ``mech`` is the mechanism built from it."""
     raw = builder.data.get("lift_test")
     if raw is None:

@@ -228,7 +228,7 @@ def _speed(v):
 
 
 def _law(v):
-    """A law of motion ``{ t = [...], q = [...] }`` (:mod:`assur.motion`)."""
+    """A law of motion ``{ t = [...], q = [...] }`` (:mod:`assur.core.motion`)."""
     if not isinstance(v, dict) or set(v) != {"t", "q"}:
         raise PydanticCustomError("law", "expected a law of motion { t = [...], q = [...] }: "
                                          "times and the coordinate's values")
@@ -244,7 +244,7 @@ def _law(v):
 
 class MotionSpec(_Table):
     """``[motion]`` of one coordinate: direction and speed, or a law of motion q(t)
-    (:mod:`assur.motion`)."""
+    (:mod:`assur.core.motion`)."""
     direction: typing.Literal["ccw", "cw", "extend", "retract"] = None
     speed: Annotated[Any, AfterValidator(_speed)] = None
     start: Value = None
@@ -476,7 +476,7 @@ class MachineSpec(_Table):
 
 # ---- [tables], [[solve]], the file ---------------------------------------------------
 class FormulaSpec(_Table):
-    """An extra column computed by an expression (:class:`assur.columns.Formula`)."""
+    """An extra column computed by an expression (:class:`assur.core.columns.Formula`)."""
     name: Name
     expr: StrictStr
     unit: StrictStr = "-"
@@ -486,7 +486,7 @@ class FormulaSpec(_Table):
 
 
 class SignSpec(_Table):
-    """Columns printed with a sign, and why (:class:`assur.columns.SignMap`)."""
+    """Columns printed with a sign, and why (:class:`assur.core.columns.SignMap`)."""
     columns: Annotated[list[Name], Field(min_length=1)]
     sign: Sign
     note: Text = ""

@@ -1,6 +1,6 @@
 """Cached roots of a model file's ``[[solve]]`` conditions, verified before use.
 
-Solving the conditions (:func:`assur.synthesis.solve_conditions`: a scan of each
+Solving the conditions (:func:`assur.synthesis.conditions.solve_conditions`: a scan of each
 bracket, then Brent's method) is most of a warm ``assur check`` and needs
 :mod:`scipy.optimize`. The roots depend only on the model file, so they are kept
 in ``<assur cache>/solve/<key>.json`` (beside the kernels,
@@ -9,7 +9,7 @@ SHA-256 of the file's data after ``extends`` (every base file's keys included),
 the conditions and the assur version.
 
 A cached entry is never trusted as such: each condition's residual is evaluated
-once at the cached roots (:func:`assur.synthesis.condition_residual`, no scipy)
+once at the cached roots (:func:`assur.synthesis.conditions.condition_residual`, no scipy)
 and must assemble and be within :data:`RESIDUAL_TOL`; otherwise — and for an entry
 that is missing, unreadable, corrupt or for other conditions — the conditions are
 solved and the entry written again (atomically: a temporary file replaced). A
@@ -75,7 +75,7 @@ def _verified(mech, conditions, roots):
     """``(mechanism, solved)`` at the cached roots if every condition holds there
     (assembles, |residual| ≤ RESIDUAL_TOL), else None."""
     from ..errors import AssemblyError, ModelError
-    from ..synthesis import SolvedCondition, condition_residual
+    from ..synthesis.conditions import SolvedCondition, condition_residual
 
     by_unknown = {c.unknown: c for c in conditions}
     try:

@@ -1,5 +1,5 @@
 """The ``[tolerances]`` section of a model file: manufacturing tolerances of the
-parameters (:mod:`assur.tolerance`).
+parameters (:mod:`assur.synthesis.tolerance`).
 
 ```toml
 [tolerances]
@@ -19,7 +19,7 @@ key.
 from __future__ import annotations
 
 from ..errors import ModelError
-from ..tolerance import DISTRIBUTIONS, Tolerance
+from ..synthesis.tolerance import DISTRIBUTIONS, Tolerance
 from . import _schema as S
 from ._units import LENGTH
 
@@ -43,7 +43,7 @@ def _number(builder, path, text, kind):
 
 def build_tolerances(builder, mech):
     """The tolerances of the file ``builder`` reads, a tuple of
-    :class:`assur.tolerance.Tolerance` (empty without a ``[tolerances]`` table)."""
+    :class:`assur.synthesis.tolerance.Tolerance` (empty without a ``[tolerances]`` table)."""
     raw = builder.data.get("tolerances")
     if raw is None:
         return ()

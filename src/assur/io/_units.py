@@ -338,10 +338,10 @@ def to_si(raw: Raw, kind: Kind | None):
 
 
 def display_unit(raw: Raw, kind: Kind | None):
-    """The :class:`assur.quantities.Unit` to show a value written as ``raw`` in, used as
+    """The :class:`assur.core.quantities.Unit` to show a value written as ``raw`` in, used as
     ``kind``: the unit the file wrote (``"27.5 kN"`` → kN), or for a plain number the
     kind's default (an angle in degrees, otherwise SI)."""
-    from ..quantities import DEFAULT_UNITS, Unit, unit_text
+    from ..core.quantities import DEFAULT_UNITS, Unit, unit_text
 
     name = kind.name if kind is not None else (unit_kind(raw).name
                                                if raw.unit and unit_kind(raw) else None)

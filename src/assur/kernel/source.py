@@ -1,6 +1,6 @@
 """Source of the compiled position/analog kernel of a program structure.
 
-A compiled mechanism (:class:`assur.program.Program`) is a table of integer rows,
+A compiled mechanism (:class:`assur.core.program.Program`) is a table of integer rows,
 one per structural group in solving order (the op code of its type first), plus the
 measures (link angles, distances) to output. This module asks each group type to
 emit its straight-line code (:meth:`assur.groups.base.Group.emit`, through the
@@ -13,7 +13,7 @@ requested outputs are written to memory.
 Every conditional expression of the emitted code becomes a branch-free select
 (:mod:`assur.kernel.select`): the element loop is one basic block, which keeps
 numba's compile time linear in its length. Large structures get a composed kernel
-instead (:mod:`assur.kernel.compose`, chosen by ``assur.program``).
+instead (:mod:`assur.kernel.compose`, chosen by ``assur.core.program``).
 
 The source depends only on the structure (group types, connections, k and the
 requested outputs), never on parameter values: it is cached on disk and compiled

@@ -7,7 +7,7 @@ uses (``np.hypot``, ``np.cos``, ``np.arctan2``…, dispatched through
 :class:`~assur.kernel.emit.Emitter` and return the symbol of the result. Numbers
 combine with numbers in Python (constants are folded): only what involves a symbol
 is written (a symbol plus 0.0 is still one line; the compiler sees it). This lets one implementation of a group's reactions or of a load
-serve both the array evaluation and the fused kernel (:mod:`assur.fused`).
+serve both the array evaluation and the fused kernel (:mod:`assur.core.outputs`).
 """
 
 from __future__ import annotations
@@ -169,7 +169,7 @@ class Sym:
             return inputs[0]
         if ufunc is np.hypot:
             # √(a² + b²): a libm hypot call would keep the element loop from being
-            # vectorized; the lengths of a model are bounded (assur.inputs), no overflow
+            # vectorized; the lengths of a model are bounded (assur.core.inputs), no overflow
             a, b = (code(x) for x in inputs)
             return tracer.new(f"math.sqrt({a} * {a} + {b} * {b})")
         if ufunc in _CALLS:

@@ -1,0 +1,546 @@
+"""Loads and actuators of a mechanism: descriptions only (immutable dataclasses).
+
+Sign conventions
+----------------
+* Forces are vectors in the mechanism's x–y frame [N]; a *weight* ``P`` at a point
+  is the force ``P·u`` along the direction of gravity ``u`` — ``(0, −P)`` by default
+  (``[model] gravity``, :meth:`Mechanism.with_gravity`).
+* Moments are counter-clockwise positive [N·m].
+* A spring between points ``a`` and ``b`` pulls them together with its tension
+  ``T = preload + rate·(|ab| − free_length)`` [N] (a negative T pushes them apart)::
+
+      a o--> T      T <--o b
+
+* The actuator force of a cylinder (generalized coordinate = its pin-to-pin length
+  S) is positive when it pushes (extends); for a crank coordinate it is the driving
+  moment, counter-clockwise positive.
+
+Every value may be a number or the name of a model parameter (so it may vary over
+a batch of designs).
+
+Each load applies itself through :meth:`apply` to a *load context* (the contract):
+``value(ref)``, ``point(p)`` → (x, y), ``owner(p)``, ``force(link, point, fx, fy)``,
+``couple(link, M)``, ``nonzero(L, what)``, ``spring(load, T, L)``, ``g`` [m/s²],
+``gravity_unit`` (the direction of gravity, a unit vector ``(u_x, u_y)``, default
+``(0, −1)``: :func:`assur.core.statics.gravity_unit`), ``rate(link, coordinate)`` →
+∂φ_link/∂q (the link's angular-velocity analog along a coordinate, 0 for the frame), ``moving`` and, when moving, ``acceleration(point)`` →
+(a_x, a_y) and ``angular_acceleration(link)`` → ε. Each load type also declares its
+model-file ``type_name``, the ``quantities`` and ``flags`` of its value fields and the
+fields that name points (``point_fields``) and links (``link_fields``), and may check
+itself against the mechanism (``check(mech)`` → a problem or None): validation, the
+file schema's checks and the report derive from these, never from a list of types.
+The same code then serves the array evaluation
+(:func:`assur.core.statics.applied_loads`) and the generated fused kernel
+(:mod:`assur.core.outputs`), where the values are symbols of the emitted code.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar, Union
+
+import numpy as np
+
+__all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass", "Cylinder",
+           "LOAD_TYPES", "names_in"]
+
+Ref = Union[str, float, int]
+
+
+def _along_gravity(c, P):
+    """The force of magnitude P along the context's direction of gravity: (fx, fy),
+    an exact zero for a zero component (so the default weight is (0, −P))."""
+    ux, uy = c.gravity_unit
+    return (0.0 if ux == 0 else P * ux), (0.0 if uy == 0 else P * uy)
+
+
+@dataclass(frozen=True)
+class Weight:
+    """Weight ``P`` [N] acting along gravity at ``point`` — downward unless the model
+    turns gravity (``[model] gravity``, :func:`assur.core.statics.gravity_unit`) —, carried
+    by ``link`` (by default the link that owns the point).
+
+    Examples
+    --------
+    1000 N at the implement's centre of mass S6 of the seed-003 hitch: the cylinder
+    pushes P·IS6.
+
+    >>> from assur import examples
+    >>> from assur.core.loads import Weight
+    >>> m = examples.hitch_003().with_loads([Weight("S6", 1000.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [4713.2, 4932.8]
+    """
+
+    point: str
+    P: Ref
+    link: str | None = None
+    name: str | None = None
+
+    type_name: ClassVar = "weight"
+    #: the quantity of each value field (:mod:`assur.core.quantities`)
+    quantities: ClassVar = {"P": "force"}
+    #: what a value field must be (a file's check): "nonneg", "positive" or absent
+    flags: ClassVar = {"P": "nonneg"}
+    #: the fields that name points, and links (a name, None or a tuple of names)
+    point_fields: ClassVar = ("point",)
+    link_fields: ClassVar = ("link",)
+
+    def apply(self, c):
+        """Apply the weight to the load context ``c``: the force P·u at the point, u
+        the direction of gravity (module notes).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import Weight
+        >>> from assur.core.statics import applied_loads   # calls apply with its context
+        >>> m = examples.hitch_003().with_loads([Weight("S6", "P6")])
+        >>> forces, _, _ = applied_loads(m.solve([0.42]))
+        >>> [(link, pt, float(fx), float(fy)) for link, pt, fx, fy in forces]  # [N]
+        [('6', 'S6', 0.0, -27500.0)]
+        """
+        P = c.value(self.P)
+        c.force(self.link or c.owner(self.point), self.point, *_along_gravity(c, P))
+
+
+@dataclass(frozen=True)
+class PointForce:
+    """Force ``(fx, fy)`` [N] at ``point``, carried by ``link`` (default: owner).
+
+    Examples
+    --------
+    A downward 1000 N at the hitch's suspension axis 56 asks P·I56 of the cylinder:
+
+    >>> from assur import examples
+    >>> from assur.core.loads import PointForce
+    >>> m = examples.hitch_003().with_loads([PointForce("56", fy=-1000.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [4459.4, 2621.3]
+    """
+
+    point: str
+    fx: Ref = 0.0
+    fy: Ref = 0.0
+    link: str | None = None
+    name: str | None = None
+
+    type_name: ClassVar = "force"
+    quantities: ClassVar = {"fx": "force", "fy": "force"}
+    flags: ClassVar = {}
+    point_fields: ClassVar = ("point",)
+    link_fields: ClassVar = ("link",)
+
+    def apply(self, c):
+        """Apply the force to the load context ``c`` at its point.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import PointForce
+        >>> from assur.core.statics import applied_loads
+        >>> m = examples.hitch_003().with_loads([PointForce("56", fx=1000.0)])
+        >>> forces, _, _ = applied_loads(m.solve([0.42]))
+        >>> [(link, pt, float(fx), float(fy)) for link, pt, fx, fy in forces]  # [N]
+        [('5', '56', 1000.0, 0.0)]
+        """
+        c.force(self.link or c.owner(self.point), self.point, c.value(self.fx),
+                c.value(self.fy))
+
+
+@dataclass(frozen=True)
+class Couple:
+    """Moment ``M`` [N·m], counter-clockwise positive, acting on ``link``.
+
+    Examples
+    --------
+    100 N·m counter-clockwise on the hitch's lever 3: the cylinder holds −M·∂φ3/∂S.
+
+    >>> from assur import examples
+    >>> from assur.core.loads import Couple
+    >>> m = examples.hitch_003().with_loads([Couple("3", 100.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [-671.9, -623.9]
+    """
+
+    link: str
+    M: Ref
+    name: str | None = None
+
+    type_name: ClassVar = "moment"
+    quantities: ClassVar = {"M": "moment"}
+    flags: ClassVar = {}
+    point_fields: ClassVar = ()
+    link_fields: ClassVar = ("link",)
+
+    def apply(self, c):
+        """Apply the moment to the load context ``c``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import Couple
+        >>> from assur.core.statics import applied_loads
+        >>> m = examples.hitch_003().with_loads([Couple("3", 100.0)])
+        >>> _, couples, _ = applied_loads(m.solve([0.42]))
+        >>> [(link, float(M)) for link, M in couples]   # [N·m]
+        [('3', 100.0)]
+        """
+        c.couple(self.link, c.value(self.M))
+
+
+@dataclass(frozen=True)
+class ResistingMoment:
+    """A moment of magnitude ``M`` [N·m] on ``link`` that opposes the link's turn
+    while the coordinate ``coordinate`` travels in the direction ``travel`` — the
+    resisting moment of a steered wheel (seed 001 lab 4 eq. 17: M_c turns against
+    the wheel whichever way it is steered)::
+
+        travel = +1 (q grows):  φ' > 0  →  moment −M  (clockwise)
+                                φ' < 0  →  moment +M  (counter-clockwise)
+
+    that is ``moment = −M·sign(travel·∂φ_link/∂q)``; its virtual work along the
+    travel, −M·|∂φ/∂q|, is never positive. ``travel = −1`` (q shrinks: the other
+    turn) flips it. Where the link stands still (∂φ/∂q = 0) its work is zero either way.
+
+    Parameters
+    ----------
+    link : str
+    M : float or str
+        Magnitude of the resisting moment [N·m] (≥ 0).
+    travel : {1, -1}
+        Direction of travel of the coordinate: +1 while it grows, −1 while it shrinks.
+    coordinate : str, optional
+        The coordinate whose travel is meant (default: the only one).
+    name : str, optional
+
+    Examples
+    --------
+    The hitch's lever 3 turns counter-clockwise while S grows (∂φ3/∂S > 0), so 100 N·m
+    resisting it is −100 N·m, and the cylinder must push more to overcome it:
+
+    >>> from assur import examples
+    >>> from assur.core.loads import ResistingMoment
+    >>> m = examples.hitch_003().with_loads([ResistingMoment("3", 100.0)])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [671.9, 623.9]
+    """
+
+    link: str
+    M: Ref
+    travel: int = 1
+    coordinate: str | None = None
+    name: str | None = None
+
+    type_name: ClassVar = "resisting_moment"
+    quantities: ClassVar = {"M": "moment"}
+    flags: ClassVar = {"M": "nonneg"}
+    point_fields: ClassVar = ()
+    link_fields: ClassVar = ("link",)
+
+    def check(self, mech):
+        """A problem with this load in ``mech`` (a message), or None.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import ResistingMoment
+        >>> m = examples.hitch_003()
+        >>> print(ResistingMoment("3", 100.0).check(m))
+        None
+        >>> ResistingMoment("3", 100.0, travel=2).check(m)
+        'travel must be 1 (the coordinate grows) or -1, got 2'
+        >>> ResistingMoment("3", 100.0, coordinate="L3").check(m)
+        "coordinate 'L3' is not a generalized coordinate ['S']"
+        """
+        if self.travel not in (1, -1):
+            return f"travel must be 1 (the coordinate grows) or -1, got {self.travel!r}"
+        if self.coordinate is None and len(mech.coordinates) > 1:
+            return (f"name the coordinate whose travel it resists, one of "
+                    f"{list(mech.coordinates)}")
+        if self.coordinate is not None and self.coordinate not in mech.coordinates:
+            return (f"coordinate {self.coordinate!r} is not a generalized coordinate "
+                    f"{list(mech.coordinates)}")
+        return None
+
+    def apply(self, c):
+        """Apply the moment ``−M·sign(travel·∂φ_link/∂q)`` to the load context ``c``.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import ResistingMoment
+        >>> from assur.core.statics import applied_loads
+        >>> for travel in (1, -1):     # S grows, then S shrinks
+        ...     m = examples.hitch_003().with_loads([ResistingMoment("3", 100.0, travel)])
+        ...     _, couples, _ = applied_loads(m.solve([0.42]))
+        ...     print([(link, float(M.ravel()[0])) for link, M in couples])   # [N·m]
+        [('3', -100.0)]
+        [('3', 100.0)]
+        """
+        w = c.rate(self.link, self.coordinate)
+        c.couple(self.link, -np.copysign(c.value(self.M), self.travel * w))
+
+
+@dataclass(frozen=True)
+class Spring:
+    """Linear spring(s) between points ``a`` and ``b`` (links ``links`` or the owners).
+
+    Tension of one spring ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate``
+    [N/m], ``free_length`` [m], ``preload`` [N]. ``count`` identical springs act in
+    parallel (seed 001 lab 2 eq. 4: k springs): the points are pulled together by
+    ``count·T``.
+
+    Examples
+    --------
+    A spring along the hitch's cylinder, from 01 to 23 (its length is S): the
+    cylinder must push with its tension.
+
+    >>> from assur import examples
+    >>> from assur.core.loads import Spring
+    >>> s = Spring("s", "01", "23", rate=1000.0, free_length=0.5, preload=50.0)
+    >>> m = examples.hitch_003().with_loads([s])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [-30.0, 220.0]
+    """
+
+    name: str
+    a: str
+    b: str
+    rate: Ref
+    free_length: Ref
+    preload: Ref = 0.0
+    links: tuple[str, str] | None = None
+    count: Ref = 1
+
+    type_name: ClassVar = "spring"
+    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force",
+                            "count": "number"}
+    flags: ClassVar = {"rate": "nonneg", "free_length": "nonneg", "count": "count"}
+    point_fields: ClassVar = ("a", "b")
+    link_fields: ClassVar = ("links",)
+
+    def tension(self, c, L):
+        """Tension of one spring [N] at the length ``L`` [m] (context values).
+
+        Examples
+        --------
+        ``c`` needs only ``value`` here (a parameter's value, a number as it is):
+
+        >>> from types import SimpleNamespace
+        >>> from assur.core.loads import Spring
+        >>> c = SimpleNamespace(value=lambda ref: {"k": 2000.0}.get(ref, ref))
+        >>> s = Spring("s", "01", "23", rate="k", free_length=0.5, preload=100.0)
+        >>> round(float(s.tension(c, 0.6)), 6)    # 100 + 2000·(0.6 − 0.5) [N]
+        300.0
+        """
+        return c.value(self.preload) + c.value(self.rate) * (L - c.value(self.free_length))
+
+    def apply(self, c):
+        """Apply the spring to the load context ``c``: ``count·T`` along a→b at ``a``,
+        the opposite at ``b``, and report its tension and length (``c.spring``).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import Spring
+        >>> from assur.core.statics import applied_loads
+        >>> s = Spring("s", "01", "23", rate=1000.0, free_length=0.5, preload=50.0, count=2)
+        >>> m = examples.hitch_003().with_loads([s])
+        >>> forces, _, springs = applied_loads(m.solve([0.67]))
+        >>> [(link, pt) for link, pt, _, _ in forces]      # the two ends' links
+        [('0', '01'), ('3', '23')]
+        >>> _, T, L = springs[0]
+        >>> round(float(T.ravel()[0]), 1), round(float(L.ravel()[0]), 3)   # one spring [N], [m]
+        (220.0, 0.67)
+        """
+        (ax, ay), (bx, by) = c.point(self.a), c.point(self.b)
+        dx, dy = bx - ax, by - ay
+        L = np.hypot(dx, dy)
+        c.nonzero(L, f"spring {self.name!r}: its ends {self.a!r} and {self.b!r} coincide")
+        T = self.tension(c, L)
+        n = c.value(self.count)
+        F = T if is_one(n) else n * T
+        ux, uy = dx / L, dy / L
+        la, lb = self.links or (c.owner(self.a), c.owner(self.b))
+        c.force(la, self.a, F * ux, F * uy)
+        c.force(lb, self.b, -F * ux, -F * uy)
+        c.spring(self, T, L)
+
+
+def is_one(v) -> bool:
+    """True for the plain number 1 (a count that changes nothing)."""
+    return isinstance(v, (int, float, np.floating, np.integer)) and float(v) == 1.0
+
+
+@dataclass(frozen=True)
+class Mass:
+    """Mass ``m`` [kg] of a link with its centre of mass at ``point`` and moment of
+    inertia ``J`` [kg·m²] about it: its weight m·g, and for a motion in time its
+    inertia force −m·a and moment −J·ε (d'Alembert).
+
+    Examples
+    --------
+    1000 kg at S6 of the hitch weighs 9810 N (g = 9.81 m/s²):
+
+    >>> from assur import examples
+    >>> from assur.core.loads import Mass
+    >>> m = examples.hitch_003().with_loads([Mass("6", 1000.0, "S6")])
+    >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
+    [46236.8, 48390.7]
+    """
+
+    link: str
+    m: Ref
+    point: str
+    J: Ref = 0.0
+
+    type_name: ClassVar = "mass"
+    quantities: ClassVar = {"m": "mass", "J": "inertia"}
+    flags: ClassVar = {"m": "positive", "J": "nonneg"}
+    point_fields: ClassVar = ("point",)
+    link_fields: ClassVar = ("link",)
+
+    def apply(self, c):
+        """Apply the weight m·g to the load context ``c`` and, when it is moving, the
+        inertia force −m·a and moment −J·ε.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import Mass
+        >>> from assur.core.statics import applied_loads
+        >>> m = examples.hitch_003().with_loads([Mass("6", 1000.0, "S6", J=50.0)])
+        >>> forces, couples, _ = applied_loads(m.solve([0.42]))    # static: weight only
+        >>> [(link, pt, float(fx), round(float(fy), 1)) for link, pt, fx, fy in forces]  # [N]
+        [('6', 'S6', 0.0, -9810.0)]
+        >>> forces, couples, _ = applied_loads(m.solve([0.42]), qdot=0.1)   # S moving [m/s]
+        >>> len(forces), len(couples)       # + the inertia force and moment
+        (2, 1)
+        """
+        m = c.value(self.m)
+        c.force(self.link, self.point, *_along_gravity(c, m * c.g))
+        if c.moving:
+            acc_x, acc_y = c.acceleration(self.point)
+            c.force(self.link, self.point, -m * acc_x, -m * acc_y)
+            c.couple(self.link, -c.value(self.J) * c.angular_acceleration(self.link))
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """Hydraulic cylinder(s) acting as the generalized coordinate ``coordinate`` — or,
+    passive, on a length the mechanism determines (``distance``).
+
+    A cylinder's force is positive when it pushes (its length grows under it)::
+
+        piston side pressurised:   base o==[ p→ |=====o rod end     push  +p·A_piston
+        rod side pressurised:      base o==[ ←p |=====o rod end     pull  −p·A_rod
+
+    Parameters
+    ----------
+    name : str
+    coordinate : str, optional
+        The generalized coordinate (the cylinders' pin-to-pin length, or a slider's
+        travel) [m]. Give it, or ``distance``.
+    distance : str, optional
+        A passive cylinder: the named distance (``[distances]``) that is its
+        pin-to-pin length [m]; it follows the mechanism (seed 001 lab 4: the right
+        cylinder S2 follows S1) and pushes with the pressure of its ``supply`` line.
+    supply : str, optional
+        The supply line: cylinders naming one line share one pressure, solved by
+        virtual work with every cylinder of the line as an actuator (seed 001 lab 4
+        eq. 15); one of them drives a coordinate, the others are passive.
+    bore : float or str
+        Piston diameter D [m].
+    rod : float or str
+        Rod diameter d [m] (used when the rod side is pressurised).
+    rod2 : float or str
+        A double-rod cylinder: the diameter of the second rod, on the piston side [m]
+        (seed 001 lab 4, the modernised drive); its pushing area is π·(D² − d2²)/4.
+    count : int or str
+        Number of identical cylinders acting in parallel, k [-] (seed 003 k_gc = 2).
+    eta_mech : float or str
+        Mechanical efficiency of the linkage η_m [-]: the rod must push F/η_m
+        (seed 000 km = 0.85).
+    eta_hyd : float or str
+        Hydraulic efficiency η_h [-]: pressure p = F/(k·A·η_h) (seed 003 η = 0.84,
+        seed 000 kg = 0.96).
+    p_relief : float or str
+        Relief-valve setting p_relief [Pa].
+    dp_throttle, dp_line : float or str
+        Pressure losses at the throttle and in the line [Pa]; the largest working
+        pressure is p_max = p_relief − (Δp_throttle + Δp_line) (001 lab 1 eq. 1).
+    side : {"piston", "rod", "auto"}
+        Which chamber is pressurised: piston area π·(D² − d2²)/4 (pushes) or annulus
+        π·(D² − d²)/4 (pulls); ``"auto"``: the one that gives the force the loads
+        need at each position (a double-rod cylinder steering either way).
+
+    Examples
+    --------
+    The seed-003 hitch's two cylinders (values are model parameters):
+
+    >>> from assur import examples
+    >>> c = examples.hitch_003().cylinders[0]
+    >>> c.name, c.coordinate, c.bore, c.count, c.side
+    ('ГЦ', 'S', 'Dgc', 'kgc', 'piston')
+    >>> from assur.core.loads import Cylinder
+    >>> Cylinder("ГЦ", coordinate="S", bore=0.08, count=2, eta_hyd=0.84, p_relief=17.5e6).bore
+    0.08
+    """
+
+    name: str
+    coordinate: str | None = None
+    bore: Ref = 0.0
+    rod: Ref = 0.0
+    count: Ref = 1
+    eta_mech: Ref = 1.0
+    eta_hyd: Ref = 1.0
+    p_relief: Ref = 0.0
+    dp_throttle: Ref = 0.0
+    dp_line: Ref = 0.0
+    side: str = "piston"
+    distance: str | None = None
+    supply: str | None = None
+    rod2: Ref = 0.0
+
+    quantities: ClassVar = {"bore": "length", "rod": "length", "rod2": "length",
+                            "count": "number", "eta_mech": "number", "eta_hyd": "number",
+                            "p_relief": "pressure", "dp_throttle": "pressure",
+                            "dp_line": "pressure"}
+    flags: ClassVar = {"bore": "positive", "rod": "nonneg", "rod2": "nonneg", "count": "count",
+                       "eta_mech": "fraction", "eta_hyd": "fraction", "p_relief": "nonneg",
+                       "dp_throttle": "nonneg", "dp_line": "nonneg"}
+
+    @property
+    def length(self) -> str:
+        """The name of the cylinder's length: its coordinate or its distance.
+
+        Examples
+        --------
+        >>> from assur.core.loads import Cylinder
+        >>> Cylinder("ГЦ1", coordinate="S1", bore=0.05).length
+        'S1'
+        >>> Cylinder("ГЦ2", distance="S2", supply="P", side="rod", bore=0.05).length  # passive
+        'S2'
+        """
+        return self.coordinate if self.coordinate is not None else self.distance
+
+
+#: the load types by their model-file ``type`` (each declares ``type_name``,
+#: ``quantities``, ``flags``, ``point_fields``, ``link_fields`` and ``apply(c)``)
+LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring, Mass,
+                                             ResistingMoment)}
+
+
+def names_in(value) -> tuple:
+    """The names a point or link field holds: none (None), one (a str) or a tuple.
+
+    Examples
+    --------
+    >>> from assur.core.loads import names_in
+    >>> names_in(None), names_in("3"), names_in(["0", "3"])
+    ((), ('3',), ('0', '3'))
+    """
+    if value is None:
+        return ()
+    return (value,) if isinstance(value, str) else tuple(value)

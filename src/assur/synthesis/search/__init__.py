@@ -1,0 +1,21 @@
+"""Synthesis: search the design space of a mechanism (issue 12, docs/design.md).
+
+* :mod:`assur.synthesis.search.problem` — design variables, a :class:`Problem` and the
+  evaluation of whole batches of designs in the fused kernel (:class:`Batch`:
+  values, feasibility, and for every infeasible design its reason);
+* :mod:`assur.synthesis.search.criteria` — the constraints and objectives (one registry),
+  their values and exact gradients;
+* :mod:`assur.synthesis.search.search` — differential evolution over whole populations
+  (scipy, ``vectorized=True``) and NSGA-II (pymoo) for several objectives;
+* :mod:`assur.synthesis.search.polish` — the SLSQP polish of differential evolution's optimum
+  with the criteria's exact gradients (:mod:`assur.synthesis.sensitivity`);
+* :mod:`assur.synthesis.search.scale` — chunks of designs on Dask (a LocalCluster or an
+  existing scheduler), results to Parquet.
+"""
+
+from .criteria import CRITERIA, Criterion, Limit, criterion
+from .problem import Batch, Problem, Variable
+from ...io.problems import load_problem
+
+__all__ = ["Problem", "Variable", "Batch", "Criterion", "Limit", "CRITERIA", "criterion",
+           "load_problem"]

@@ -1,0 +1,305 @@
+"""The FastAPI application behind ``assur serve``.
+
+Routes (all JSON unless noted):
+
+========================  ==============================================================
+``GET /``                 the page (``static/index.html``; ``?lang=ru`` for Russian)
+``GET /static/…``         its script and style sheet
+``GET /api/model``        title, coordinates, parameters by group with units, the
+                          page's labels in both languages
+``POST /api/analyze``     :class:`~assur.views.page.api.AnalyzeRequest` → the drawing over the
+                          positions, the tables, the solved conditions; or
+                          ``{"ok": false, "error": {"kind", "message"}}`` when the edited
+                          model cannot be built or assembled (HTTP 200: the request was
+                          valid, the design is not)
+``POST /api/export/csv``  one table of the edited model over the file's range (file)
+``POST /api/export/xlsx`` all its tables (file)
+``POST /api/export/toml`` the edited model file (file)
+``POST /api/export/dxf``  the drawing at chosen coordinate values (file)
+========================  ==============================================================
+
+Safety: request bodies over :data:`~assur.views.page.api.MAX_BODY` bytes are refused with
+413 before they are read whole; request models forbid unknown keys and bound every
+array; values are only written into the model's TOML text (never evaluated);
+errors are messages, never tracebacks (an unexpected exception answers 500 with a
+fixed text and is logged on the server). ``assur serve`` binds to 127.0.0.1.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+from importlib import resources
+
+from fastapi import FastAPI
+from fastapi.exceptions import RequestValidationError
+from fastapi.responses import HTMLResponse, JSONResponse, Response
+
+from ...errors import AssemblyError, ModelError, SingularPositionError
+from .api import MAX_BODY, AnalyzeRequest, DxfRequest, ExportRequest
+from .session import PageModel
+from .texts import page_texts
+
+__all__ = ["create_app", "running"]
+
+log = logging.getLogger("assur.views.page")
+
+
+def _static(name: str) -> bytes:
+    return (resources.files("assur.views.page") / "static" / name).read_bytes()
+
+
+class _BodyLimit:
+    """ASGI middleware: refuse a request body longer than ``MAX_BODY`` bytes with 413,
+    by its declared length or while it is read (the body is then replayed)."""
+
+    def __init__(self, app):
+        self.app = app
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] != "http" or scope["method"] not in ("POST", "PUT", "PATCH"):
+            return await self.app(scope, receive, send)
+        headers = dict(scope.get("headers") or [])
+        length = headers.get(b"content-length")
+        if length is not None:
+            try:
+                declared = int(length)
+            except ValueError:
+                return await JSONResponse({"detail": "bad Content-Length"},
+                                          status_code=400)(scope, receive, send)
+            if declared > MAX_BODY:
+                return await _too_large()(scope, receive, send)
+        body, more = b"", True
+        while more:
+            message = await receive()
+            if message["type"] == "http.disconnect":
+                return None
+            body += message.get("body", b"")
+            more = message.get("more_body", False)
+            if len(body) > MAX_BODY:
+                return await _too_large()(scope, receive, send)
+        sent = False
+
+        async def replay():
+            nonlocal sent
+            if sent:
+                return await receive()
+            sent = True
+            return {"type": "http.request", "body": body, "more_body": False}
+        return await self.app(scope, replay, send)
+
+
+def _too_large():
+    return JSONResponse({"detail": f"request body larger than {MAX_BODY} bytes"},
+                        status_code=413)
+
+
+def _download(data: bytes, media: str, filename: str) -> Response:
+    return Response(data, media_type=media, headers={
+        "Content-Disposition": f'attachment; filename="{filename}"',
+        "Cache-Control": "no-store"})
+
+
+def _user_error(e) -> JSONResponse:
+    kind = ("assembly" if isinstance(e, AssemblyError) else
+            "singular" if isinstance(e, SingularPositionError) else "model")
+    return JSONResponse({"ok": False, "error": {"kind": kind, "message": str(e)}})
+
+
+def create_app(model, lang: str = "en") -> FastAPI:
+    """The application serving one model file.
+
+    Parameters
+    ----------
+    model : str, Path or PageModel
+        The model file (read once; the page edits a copy of its text).
+    lang : {"en", "ru"}
+        The page's language by default.
+
+    Raises
+    ------
+    ModelError, FileNotFoundError
+        When the file cannot be read or is not a valid model.
+
+    Examples
+    --------
+    >>> from assur.io import bundled
+    >>> from assur.views.page.server import create_app
+    >>> app = create_app(bundled("hitch_003"), lang="ru")
+    >>> sorted(r.path for r in app.routes if r.path.startswith("/api/"))
+    ['/api/analyze', '/api/export/dxf', '/api/export/{fmt}', '/api/model', '/api/openapi.json']
+    >>> route = {r.path: r.endpoint for r in app.routes}
+    >>> info = route["/api/model"]()              # what GET /api/model answers
+    >>> info["file"], info["lang"], info["coordinates"]
+    ('hitch_003.toml', 'ru', [{'name': 'S', 'kind': 'length'}])
+    >>> create_app(bundled("hitch_003"), lang="de")
+    Traceback (most recent call last):
+    ...
+    ValueError: lang must be one of: ['en', 'ru']; got 'de'
+    """
+    pm = model if isinstance(model, PageModel) else PageModel.from_path(model)
+    if lang not in ("en", "ru"):
+        raise ValueError(f"lang must be one of: ['en', 'ru']; got {lang!r}")
+    app = FastAPI(title="assur", docs_url=None, redoc_url=None, openapi_url="/api/openapi.json")
+    app.add_middleware(_BodyLimit)
+    app.state.page_model = pm
+
+    @app.exception_handler(RequestValidationError)
+    async def _invalid(request, exc):
+        # the messages without the input echoed back (it may be large)
+        errors = [{"loc": list(e.get("loc", ())), "msg": e.get("msg", "")}
+                  for e in exc.errors()][:20]
+        return JSONResponse({"ok": False, "error": {
+            "kind": "validation",
+            "message": "; ".join(f"{'.'.join(str(x) for x in e['loc'][1:]) or 'body'}: "
+                                 f"{e['msg']}" for e in errors)},
+            "detail": errors}, status_code=422)
+
+    @app.exception_handler(Exception)
+    async def _unexpected(request, exc):  # pragma: no cover - a bug: no traceback out
+        log.exception("unexpected error on %s", request.url.path)
+        return JSONResponse({"ok": False, "error": {
+            "kind": "internal", "message": "internal error (logged by the server)"}},
+            status_code=500)
+
+    @app.get("/", response_class=HTMLResponse)
+    def index(lang: str = lang):
+        html = _static("index.html").decode("utf-8")
+        return HTMLResponse(html.replace("{{LANG}}", lang if lang in ("en", "ru") else "en"))
+
+    @app.get("/favicon.ico")
+    def favicon():
+        return Response(status_code=204)
+
+    @app.get("/static/{name}")
+    def static(name: str):
+        types = {"page.js": "text/javascript", "page.css": "text/css"}
+        if name not in types:
+            return JSONResponse({"detail": "not found"}, status_code=404)
+        return Response(_static(name), media_type=f"{types[name]}; charset=utf-8")
+
+    @app.get("/api/model")
+    def model_info():
+        m = pm.model.mechanism
+        from ...texts import localize
+        return {
+            "name": m.name,
+            "file": pm.name,
+            "title": {lg: localize(m.title, lg) for lg in ("en", "ru")},
+            "coordinates": [{"name": c, "kind": m.coordinate_kind(c)} for c in m.coordinates],
+            "parameters": pm.parameters(),
+            "texts": page_texts(),
+            "lang": lang,
+        }
+
+    @app.post("/api/analyze")
+    def analyze(req: AnalyzeRequest):
+        out = pm.compute(dict(req.params), positions=req.positions, lang=req.lang)
+        # serialized here: the payload is plain (lists of floats, None for NaN), and
+        # FastAPI's generic encoder would walk it element by element
+        return Response(json.dumps(out, allow_nan=False, separators=(",", ":")),
+                        media_type="application/json")
+
+    @app.post("/api/export/dxf")
+    def export_dxf(req: DxfRequest):
+        from .dxf import dxf_bytes
+        try:
+            model = pm.model_on(pm.load(dict(req.params)), req.positions)
+            kin = model.mechanism.solve(model.range)
+            idx = _nearest(model, kin, list(req.at))
+            data = dxf_bytes(kin, positions=idx)
+        except (ModelError, AssemblyError, SingularPositionError) as e:
+            return _user_error(e)
+        stem = pm.name.removesuffix(".toml") or "model"
+        return _download(data, "image/vnd.dxf", f"{stem}.dxf")
+
+    @app.post("/api/export/{fmt}")
+    def export(fmt: str, req: ExportRequest):
+        try:
+            if fmt == "toml":
+                text = pm.edited_text(dict(req.params))
+                return _download(text.encode("utf-8"), "application/toml; charset=utf-8",
+                                 pm.name if pm.name.endswith(".toml") else "model.toml")
+            if fmt not in ("csv", "xlsx"):
+                return JSONResponse({"ok": False, "error": {
+                    "kind": "validation",
+                    "message": f"format must be one of: csv, xlsx, toml, dxf; got {fmt!r}"}},
+                    status_code=404)
+            data, media, name = pm.export_tables(dict(req.params), fmt, req.table, req.lang)
+            return _download(data, media, name)
+        except (ModelError, AssemblyError, SingularPositionError) as e:
+            return _user_error(e)
+
+    return app
+
+
+def _nearest(model, kin, at):
+    """Indices of the positions nearest the coordinate values ``at`` (m, or degrees
+    for a crank); all positions' first and last when ``at`` is empty."""
+    import numpy as np
+    n = kin.shape[-1]
+    if not at:
+        return sorted({0, n - 1})
+    if kin.k != 1:
+        raise ModelError("at: coordinate values need a model with one coordinate")
+    c = kin.coordinates[0]
+    q = kin.q(c)
+    if model.mechanism.coordinate_kind(c) == "angle":
+        q = np.degrees(q)
+    lo, hi = float(np.min(q)), float(np.max(q))
+    bad = [v for v in at if not lo - 1e-9 <= v <= hi + 1e-9]
+    if bad:
+        raise ModelError(f"at: {bad} outside the range of {c}: {lo:.6g} … {hi:.6g}")
+    return [int(np.abs(q - v).argmin()) for v in at]
+
+
+class running:
+    """A context manager that serves ``app`` with uvicorn in a background thread on
+    ``host`` (loopback) and a free port; ``with running(app) as url: …`` — for tests,
+    benchmarks and notebooks. The server stops when the block ends.
+
+    Examples
+    --------
+    Nothing is served until the ``with`` block starts (``url`` is then
+    ``http://127.0.0.1:<port>``); the defaults bind to the loopback only, on a port
+    the system picks:
+
+    >>> from assur.io import bundled
+    >>> from assur.views.page.server import create_app, running
+    >>> server = running(create_app(bundled("hitch_003")))
+    >>> server.host, server.port               # port 0: any free port
+    ('127.0.0.1', 0)
+    """
+
+    def __init__(self, app, host: str = "127.0.0.1", port: int = 0):
+        self.app, self.host, self.port = app, host, port
+
+    def __enter__(self) -> str:
+        import socket
+        import threading
+        import time
+
+        import uvicorn
+        sock = socket.socket(socket.AF_INET)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        sock.bind((self.host, self.port))
+        self.sock = sock
+        port = sock.getsockname()[1]
+        config = uvicorn.Config(self.app, log_level="warning", lifespan="off")
+        self.server = uvicorn.Server(config)
+        self.server.install_signal_handlers = lambda: None  # not the main thread
+        self.thread = threading.Thread(target=self.server.run, kwargs={"sockets": [sock]},
+                                       daemon=True)
+        self.thread.start()
+        t0 = time.monotonic()
+        while not self.server.started:
+            if not self.thread.is_alive() or time.monotonic() - t0 > 30:
+                raise RuntimeError("the server did not start")
+            time.sleep(0.02)
+        return f"http://{self.host}:{port}"
+
+    def __exit__(self, *exc):
+        self.server.should_exit = True
+        self.thread.join(timeout=10)
+        self.sock.close()
+        return False

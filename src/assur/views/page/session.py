@@ -1,0 +1,518 @@
+"""One model file being edited on the page: its parameters, the edited text, the payload.
+
+A :class:`PageModel` holds the file's text as a :mod:`tomlkit` document (comments,
+order and layout kept). The page sends new values of parameters of ``[params]``
+in the unit the file gives each one (``L5 = 0.48`` for ``L5 = "0.480 m"``,
+``phiBD = 22`` for ``"22 deg"``); :meth:`PageModel.edited_text` writes them into
+the text (``L5 = "0.5 m"``) and :meth:`PageModel.load` reads that text with
+:func:`assur.io.loads` — the same TOML parser, pydantic schema
+(:mod:`assur.io._schema`) and builder as a file on disk. Nothing the page sends is
+executed: values are finite numbers, names must be parameters of the file.
+
+:meth:`PageModel.compute` analyzes the edited model over ``positions`` evenly
+spaced values of its coordinate (one coordinate; the file's own positions for
+more) and returns the page's payload: the drawing (:mod:`assur.views.page.geometry`),
+the seed-like tables (:func:`assur.views.report.tables.seed_tables`) and the solved
+design conditions; a model that cannot be built or assembled gives
+``{"ok": False, "error": {...}}`` with the message of its :class:`ModelError`
+or :class:`AssemblyError` (never a traceback).
+
+Examples
+--------
+>>> from assur.io import bundled
+>>> pm = PageModel.from_path(bundled("hitch_003"))
+>>> [p["name"] for p in pm.parameters()[:3]], pm.parameters()[0]["unit"]
+(['X01', 'Y01', 'X03'], 'm')
+>>> 'L5 = "0.5 m"' in pm.edited_text({"L5": 0.5})
+True
+>>> out = pm.compute({"L5": 0.3}, positions=11)
+>>> out["ok"], out["error"]["kind"]
+(False, 'assembly')
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import re
+import threading
+import time
+from collections import OrderedDict
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["PageModel", "MAX_POSITIONS", "MAX_PARAMS"]
+
+#: most positions a page may ask for (the drawing, the plots and the live table)
+MAX_POSITIONS = 1001
+#: most parameters one request may set
+MAX_PARAMS = 512
+#: loaded models kept, by their edited text (least recently used dropped)
+MODELS_KEPT = 16
+
+#: a value with an optional unit as a model file writes it: "0.48 m", "22 deg", "17.5 MPa"
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\d\s].*)?$")
+
+
+def _number_and_unit(value):
+    """``(number, unit text)`` of a TOML value that is a plain number or a number with a
+    unit; None for anything else (a parameter name, an expression, a table)."""
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, (int, float)):
+        return float(value), ""
+    if isinstance(value, str):
+        m = _QUANTITY.match(value)
+        if m:
+            return float(m.group(1)), (m.group(2) or "").strip()
+    return None
+
+
+def _toml_number(raw: str):
+    """A bare TOML number's text (``2``, ``0.84``, ``1_000``) as a Python number."""
+    raw = raw.replace("_", "")
+    try:
+        return int(raw)
+    except ValueError:
+        try:
+            return float(raw)
+        except ValueError:
+            return None
+
+
+def _plain(value):
+    """A tomlkit item as a plain Python value."""
+    unwrap = getattr(value, "unwrap", None)
+    return unwrap() if unwrap is not None else value
+
+
+class PageModel:
+    """A model file's text, editable by parameter.
+
+    Parameters
+    ----------
+    text : str
+        The model file's content (TOML).
+    name : str
+        How messages name the file (its path as given).
+    source : Path, optional
+        The file it came from (``extends`` paths are relative to its directory).
+
+    Raises
+    ------
+    ModelError
+        When the text itself is not a valid model (the page needs a valid start).
+
+    Examples
+    --------
+    >>> from assur.io import bundled
+    >>> from assur.views.page.session import PageModel
+    >>> text = bundled("hitch_003").read_text(encoding="utf-8")
+    >>> pm = PageModel(text, name="hitch.toml")
+    >>> pm.name, pm.model.mechanism.name, len(pm.editable)   # editable parameters
+    ('hitch.toml', 'hitch_003', 28)
+    >>> PageModel("[model]", name="bad.toml")
+    Traceback (most recent call last):
+    ...
+    assur.io.ModelFileError: bad.toml:1: model.name: missing required key "name"
+    """
+
+    def __init__(self, text: str, name: str = "<model>", source: Path | None = None):
+        import tomlkit
+
+        from ...io import loads
+        self.text = text.removeprefix("\ufeff")
+        self.name = name
+        self.source = source
+        self.model = loads(self.text, name=name, source=source)  # refuses a bad start
+        # the models of the texts loaded last (a model is immutable, loading is pure):
+        # a slider moved back, the language switched or a download after a change
+        # reads its file once
+        self._models = OrderedDict()
+        self._lock = threading.Lock()
+        self.doc = tomlkit.parse(self.text)
+        self._params = self._read_params()
+        self._spans = self._value_spans()
+        for p in self._params:  # a value the text does not show plainly is not edited
+            p["editable"] = p["editable"] and p["name"] in self._spans
+        self.editable = {p["name"]: p for p in self._params if p["editable"]}
+
+    @classmethod
+    def from_path(cls, path) -> "PageModel":
+        """The model file at ``path`` (read as :func:`assur.io.load` reads it).
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("adapter_lab6"))    # seed 001 lab 6
+        >>> pm.name, pm.model.mechanism.coordinates
+        ('adapter_lab6.toml', ('S',))
+        >>> PageModel.from_path("no-such-model.toml")
+        Traceback (most recent call last):
+        ...
+        FileNotFoundError: [Errno 2] No such file or directory: 'no-such-model.toml'
+        """
+        from ...io import read_model_bytes
+        p = Path(path)
+        data = read_model_bytes(p, str(path))
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError:
+            from ...io import load
+            load(p)  # raises the file error with its line
+            raise
+        return cls(text, name=p.name, source=p)
+
+    # ---- parameters ---------------------------------------------------------------
+    def _read_params(self) -> list:
+        """The ``[params]`` entries in file order, grouped by the comment lines that
+        precede them (``# §1.1 frame pivots``)."""
+        from tomlkit.items import Comment
+        params = self.doc.get("params")
+        mech = self.model.mechanism
+        solved = {s.condition.unknown: s for s in self.model.solved}
+        out, group, after_key = [], "", True
+        if params is None:
+            return out
+        for key, item in params.value.body:
+            if key is None:
+                if isinstance(item, Comment):  # consecutive comment lines: one heading
+                    line = str(item.as_string()).strip().lstrip("#").strip()
+                    group = line if after_key else f"{group} {line}".strip()
+                    after_key = False
+                continue
+            after_key = True
+            name = key.key
+            nu = _number_and_unit(_plain(item))
+            unit = nu[1] if nu else ""
+            scale = mech.units[name].scale if name in mech.units else 1.0
+            value = mech.params.get(name)
+            shown = float(np.asarray(value, dtype=float).ravel()[0]) / scale \
+                if value is not None and np.size(value) == 1 else None
+            out.append({
+                "name": name,
+                "group": group,
+                "unit": unit or "-",
+                "value": shown,
+                "file_value": nu[0] if nu else None,
+                "editable": nu is not None and name not in solved,
+                "solved": name in solved,
+                "comment": str(getattr(item.trivia, "comment", "") or "").lstrip("# ").strip(),
+            })
+        return out
+
+    def _value_spans(self) -> dict:
+        """``{name: (start, end)}``: where the value of each number-valued parameter of
+        ``[params]`` stands in the text (one line ``name = value``, found once), so an
+        edit replaces those characters and leaves the rest of the text as it is."""
+        header = re.search(r"(?m)^\[params\][ \t]*(#.*)?$", self.text)
+        if header is None:
+            return {}
+        end = re.search(r"(?m)^[ \t]*\[", self.text[header.end():])
+        stop = header.end() + end.start() if end else len(self.text)
+        spans = {}
+        for p in self._params:
+            if p["file_value"] is None:
+                continue
+            key = re.escape(p["name"])
+            pat = re.compile(rf'(?m)^[ \t]*(?:{key}|"{key}"|\'{key}\')[ \t]*=[ \t]*'
+                             rf'("[^"\n]*"|\'[^\'\n]*\'|[-+0-9.eE_]+)')
+            hits = list(pat.finditer(self.text, header.end(), stop))
+            if len(hits) == 1:
+                raw = hits[0].group(1)
+                text = raw[1:-1] if raw[:1] in "\"'" else raw
+                nu = _number_and_unit(text if raw[:1] in "\"'" else _toml_number(raw))
+                if nu is not None and nu[0] == p["file_value"]:
+                    spans[p["name"]] = hits[0].span(1)
+        return spans
+
+    def parameters(self) -> list:
+        """The parameters of ``[params]``: name, group (the comment above), unit as the
+        file writes it (``-`` for a plain number), current value in that unit, whether
+        the page may edit it (a number, not an unknown of ``[[solve]]``), and the
+        comment at the end of its line.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> p = {q["name"]: q for q in pm.parameters()}
+        >>> p["L5"]["group"], p["L5"]["unit"], p["L5"]["value"], p["L5"]["editable"]  # [m]
+        ('§1.2 links', 'm', 0.48, True)
+        >>> round(p["L4"]["value"], 4), p["L4"]["solved"], p["L4"]["editable"]  # seed: 0.6613 m
+        (0.6613, True, False)
+        """
+        return [dict(p) for p in self._params]
+
+    def check_params(self, values: dict) -> None:
+        """Refuse names that are not editable parameters of the file and values that
+        are not finite numbers.
+
+        Raises
+        ------
+        ModelError
+            Naming the parameter (with a did-you-mean) or the value.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> pm.check_params({"L5": 0.5, "X01": 0.4})    # [m]: valid, returns None
+        >>> pm.check_params({"L55": 0.5})
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: params.L55: not an editable parameter of hitch_003.toml; did you mean "L5"?
+        >>> pm.check_params({"L4": 0.66})
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: params.L4: is an unknown of [[solve]] (Given/Find): its value is solved, not set
+        """
+        import difflib
+
+        from ...errors import ModelError
+        if len(values) > MAX_PARAMS:
+            raise ModelError(f"at most {MAX_PARAMS} parameters per request, got {len(values)}")
+        solved = {p["name"] for p in self._params if p["solved"]}
+        for k, v in values.items():
+            if k not in self.editable:
+                if k in solved:
+                    raise ModelError(f"params.{k}: is an unknown of [[solve]] (Given/Find): "
+                                     f"its value is solved, not set")
+                close = difflib.get_close_matches(k, list(self.editable), n=1)
+                hint = f'; did you mean "{close[0]}"?' if close else ""
+                raise ModelError(f"params.{k}: not an editable parameter of {self.name}{hint}")
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise ModelError(f"params.{k}: expected a finite number, got {v!r}")
+
+    def edited_text(self, values: dict) -> str:
+        """The model file's text with the parameters ``values`` set (each in the unit
+        the file gives it); comments and layout are kept.
+
+        Raises
+        ------
+        ModelError
+            See :meth:`check_params`.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> old, new = pm.text.splitlines(), pm.edited_text({"L5": 0.5}).splitlines()
+        >>> [(a, b) for a, b in zip(old, new) if a != b]    # one line changed [m]
+        [('L5 = "0.480 m"', 'L5 = "0.5 m"')]
+        """
+        self.check_params(values)
+        if not values:
+            return self.text
+        edits = []
+        for k, v in values.items():
+            unit = self.editable[k]["unit"]
+            num = repr(float(v))
+            num = num[:-2] if num.endswith(".0") else num
+            if unit == "-":
+                new = num  # 2.0 is written 2 (a TOML integer), 0.84 as it is
+            else:
+                new = f'"{num} {unit}"'
+            edits.append((*self._spans[k], new))
+        text = self.text
+        for start, end, new in sorted(edits, reverse=True):
+            text = text[:start] + new + text[end:]
+        return text
+
+    def load(self, values: dict):
+        """The :class:`assur.io.Model` of the edited text.
+
+        Raises
+        ------
+        ModelError
+            Bad names or values; any problem of the edited file (a condition without
+            a root, a group that cannot be built) with its key and line.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> model = pm.load({"L5": 0.5})                   # [m]
+        >>> model.mechanism.params["L5"], model.range.shape   # [m]; positions of S
+        (0.5, (10,))
+        >>> pm.load({"L5": 0.5}) is model                   # kept by its text
+        True
+        """
+        from ...io import loads
+        text = self.edited_text(values)
+        with self._lock:
+            model = self._models.get(text)
+            if model is not None:
+                self._models.move_to_end(text)
+                return model
+        model = loads(text, name=self.name, source=self.source)  # raises: not kept
+        with self._lock:
+            self._models[text] = model
+            while len(self._models) > MODELS_KEPT:
+                self._models.popitem(last=False)
+        return model
+
+    # ---- the page's payload -------------------------------------------------------
+    def model_on(self, model, positions: int):
+        """``model`` with its range resampled on ``positions`` evenly spaced values of
+        its coordinate between its first and last (one coordinate); the model as it
+        is for more coordinates.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> pm.model_on(pm.model, 5).range.tolist()       # S [m]
+        [0.42, 0.4825, 0.545, 0.6075, 0.67]
+        """
+        if len(model.mechanism.coordinates) != 1 or positions is None:
+            return model
+        r = np.asarray(model.range, dtype=float)
+        q = np.linspace(r[0], r[-1], int(positions))
+        return dataclasses.replace(model, range=q)
+
+    def compute(self, values: dict, positions: int = 101, lang: str = "en") -> dict:
+        """The page's payload for the parameters ``values``.
+
+        Returns
+        -------
+        dict
+            ``{"ok": True, "geometry", "tables", "solved", "warnings", "ms"}`` or
+            ``{"ok": False, "error": {"kind", "message"}, "ms"}``; ``kind`` is
+            ``"model"`` (the file or a value), ``"assembly"`` (the mechanism cannot
+            assemble) or ``"singular"``.
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> out = pm.compute({}, positions=11)             # the file's values
+        >>> out["ok"], [t["id"] for t in out["tables"]]
+        (True, ['2.1', '2.2', '3.1', '4.1', '5.1', '6.1', 'IC', 'L'])
+        >>> [(s["name"], round(s["value"], 4), s["unit"]) for s in out["solved"]][:1]
+        [('L4', 0.6613, 'm')]
+        >>> out = pm.compute({"L5": 0.5}, positions=11)    # [m]
+        >>> round(out["solved"][0]["value"], 4)            # L4 solved again [m]
+        0.6681
+        >>> out = pm.compute({"L5": 1e6})                  # [m]
+        >>> out["ok"], out["error"]["kind"]
+        (False, 'model')
+        """
+        from ...errors import AssemblyError, ModelError, SingularPositionError
+        from ..report.tables import seed_tables
+        from ...texts import localize
+        from .geometry import geometry
+
+        t0 = time.perf_counter()
+        if positions is not None and not 2 <= positions <= MAX_POSITIONS:
+            raise ValueError(f"positions must be in 2…{MAX_POSITIONS}, got {positions}")
+        try:
+            model = self.load(values)
+            analysis = self.model_on(model, positions).analyze()
+            tables = seed_tables(analysis, lang=lang)
+            geo = geometry(analysis.kinematics)
+        except AssemblyError as e:
+            return _error("assembly", e, t0)
+        except SingularPositionError as e:
+            return _error("singular", e, t0)
+        except ModelError as e:
+            return _error("model", e, t0)
+        mech = model.mechanism
+        solved = [{"name": s.condition.unknown,
+                   "value": float(s.value) / (mech.units[s.condition.unknown].scale
+                                              if s.condition.unknown in mech.units else 1.0),
+                   "unit": self._unit_of(s.condition.unknown)} for s in model.solved]
+        return {
+            "ok": True,
+            "title": localize(mech.title, lang),
+            "coordinates": [{"name": c, "kind": mech.coordinate_kind(c)}
+                            for c in mech.coordinates],
+            "geometry": geo,
+            "tables": [_table_json(t, lang) for t in tables],
+            "solved": solved,
+            "warnings": [str(w) for w in model.warnings],
+            "ms": round(1e3 * (time.perf_counter() - t0), 2),
+        }
+
+    def _unit_of(self, name):
+        for p in self._params:
+            if p["name"] == name:
+                return p["unit"]
+        return "-"
+
+    def export_tables(self, values: dict, fmt: str, table: str | None = None,
+                      lang: str = "en") -> tuple[bytes, str, str]:
+        """The tables of the edited model over the file's own range.
+
+        Parameters
+        ----------
+        fmt : {"csv", "xlsx"}
+            ``csv``: one table (``table``, default the first); ``xlsx``: all.
+
+        Returns
+        -------
+        (bytes, media type, file name)
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
+        >>> data, media, name = pm.export_tables({}, "csv", table="2.1")
+        >>> media, name
+        ('text/csv; charset=utf-8', 'hitch_003_table_2_1.csv')
+        >>> data.decode("utf-8").splitlines()[0]
+        'S [m],phi2 [deg],phi3 [deg],phi34 [deg],phi4 [deg],phi5 [deg],phi6 [deg],phi7 [deg]'
+        >>> pm.export_tables({}, "pdf")
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: format must be csv or xlsx, got 'pdf'
+        """
+        import tempfile
+
+        from ...errors import ModelError
+        from ..report.tables import seed_tables, table_filename, write_csv, write_xlsx
+        model = self.load(values)
+        tabs = seed_tables(model.analyze(), lang=lang)
+        stem = Path(self.name).stem or "model"
+        with tempfile.TemporaryDirectory() as d:
+            if fmt == "xlsx":
+                p = write_xlsx(tabs, Path(d) / "tables.xlsx")
+                return (p.read_bytes(), "application/vnd.openxmlformats-officedocument."
+                        "spreadsheetml.sheet", f"{stem}_tables.xlsx")
+            if fmt != "csv":
+                raise ModelError(f"format must be csv or xlsx, got {fmt!r}")
+            ids = [t.id for t in tabs]
+            tab = tabs[0] if not table else next((t for t in tabs if t.id == table), None)
+            if tab is None:
+                raise ModelError(f"table {table!r}: this model has tables {ids}")
+            p = write_csv(tab, Path(d) / table_filename(tab))
+            return p.read_bytes(), "text/csv; charset=utf-8", f"{stem}_{p.name}"
+
+
+def _error(kind, e, t0):
+    return {"ok": False, "error": {"kind": kind, "message": str(e)},
+            "ms": round(1e3 * (time.perf_counter() - t0), 2)}
+
+
+def _finite(values):
+    a = np.asarray(values, dtype=float)
+    return [None if not math.isfinite(x) else float(x) for x in a.ravel()]
+
+
+def _table_json(t, lang):
+    return {
+        "id": t.id,
+        "title": t.title(lang),
+        "columns": [{"symbol": c.symbol, "unit": c.unit, "label": c.label.get(lang, ""),
+                     "values": _finite(c.values)} for c in t.columns],
+        "notes": [n.get(lang, "") for n in t.notes],
+    }

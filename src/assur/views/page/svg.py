@@ -1,0 +1,177 @@
+"""The mechanism's drawing as an inline SVG string (no matplotlib, no browser script).
+
+The same picture the page draws (:mod:`assur.views.page.geometry`): links in colours
+(a rigid link of three or more points as its lightly filled outline), cylinders as
+a barrel and a rod, frame pivots as triangles, joints as open circles, other points
+as dots, every point and link labelled, weights as arrows down. Used by the
+notebooks' ``_repr_html_`` (:mod:`assur.views.notebook`).
+
+Examples
+--------
+>>> import numpy as np
+>>> from assur import examples
+>>> from assur.views.page.geometry import geometry
+>>> s = svg(geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3))), [0, 2])
+>>> s.startswith("<svg") and 'id="pt-56"' in s
+True
+"""
+
+from __future__ import annotations
+
+from html import escape
+
+import numpy as np
+
+from .geometry import convex_hull
+
+__all__ = ["svg"]
+
+_COLORS = ("#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+           "#bcbd22", "#17becf", "#ff7f0e")
+
+
+def _f(v):
+    return f"{v:.6g}"
+
+
+def _cylinders(geo):
+    out = {}
+    for b in geo["bodies"]:
+        if b["variable"] and len(b["points"]) >= 2:
+            a = np.asarray(geo["points"][b["points"][0]])
+            c = np.asarray(geo["points"][b["points"][1]])
+            L = np.hypot(*(c - a).T)
+            lmin, lmax = float(L.min()), float(L.max())
+            barrel = 0.7 * lmin
+            out[b["name"]] = (barrel, min(max(lmax - barrel + 0.08 * lmin, 0.35 * lmin),
+                                          0.95 * lmin))
+    return out
+
+
+def _pose(geo, i, cyl, span, ghost, labels):
+    xy = {p: (v[i][0], -v[i][1]) for p, v in geo["points"].items()}  # SVG y is down
+    fs, hh = 0.028 * span, 0.035 * span
+    op = ' opacity="0.3"' if ghost else ""
+    out, k = [f"<g{op}>"], 0
+    allp = np.array(list(xy.values()))
+    centre = allp.mean(axis=0)
+    for b in geo["bodies"]:
+        if b["name"] == "0":
+            continue
+        pts = [xy[p] for p in b["points"] if p in xy]
+        col = "#888" if ghost else _COLORS[k % len(_COLORS)]
+        k += 1
+        if b["name"] in cyl and len(pts) >= 2:
+            a, c = np.array(pts[0]), np.array(pts[1])
+            L = float(np.hypot(*(c - a))) or 1e-12
+            u = (c - a) / L
+            barrel, rod = cyl[b["name"]]
+            e1, e2 = a + u * min(barrel, L), c - u * min(rod, L)
+            out.append(f'<line x1="{_f(a[0])}" y1="{_f(a[1])}" x2="{_f(e1[0])}" '
+                       f'y2="{_f(e1[1])}" stroke="#4a7ab8" stroke-width="9" '
+                       f'vector-effect="non-scaling-stroke"/>')
+            out.append(f'<line x1="{_f(e2[0])}" y1="{_f(e2[1])}" x2="{_f(c[0])}" '
+                       f'y2="{_f(c[1])}" stroke="#222" stroke-width="3" '
+                       f'vector-effect="non-scaling-stroke"/>')
+            mid = a + u * 0.5 * min(barrel, L)
+        else:
+            hull = convex_hull(pts)
+            if len(hull) >= 3:
+                ps = " ".join(f"{_f(x)},{_f(y)}" for x, y in hull)
+                out.append(f'<polygon points="{ps}" fill="{col}" fill-opacity="0.12" '
+                           f'stroke="{col}" stroke-width="2.5" '
+                           f'vector-effect="non-scaling-stroke"/>')
+            elif len(hull) == 2:
+                (x1, y1), (x2, y2) = hull
+                out.append(f'<line x1="{_f(x1)}" y1="{_f(y1)}" x2="{_f(x2)}" y2="{_f(y2)}" '
+                           f'stroke="{col}" stroke-width="3" stroke-linecap="round" '
+                           f'vector-effect="non-scaling-stroke"/>')
+            mid = np.mean(np.array(hull), axis=0) if hull else np.array(pts[0])
+        if labels and not ghost:
+            out.append(f'<text x="{_f(mid[0] + 0.3 * fs)}" y="{_f(mid[1] - 0.3 * fs)}" '
+                       f'font-size="{_f(1.1 * fs)}" fill="{col}" font-style="italic" '
+                       f'font-weight="bold">{escape(b["name"])}</text>')
+    for p in geo["frame"]:
+        x, y = xy[p]
+        out.append(f'<polygon points="{_f(x)},{_f(y)} {_f(x - 0.55 * hh)},{_f(y + hh)} '
+                   f'{_f(x + 0.55 * hh)},{_f(y + hh)}" fill="#fff" stroke="#000" '
+                   f'stroke-width="1.2" vector-effect="non-scaling-stroke"/>')
+    joints = set(geo["joints"])
+    for p, (x, y) in xy.items():
+        j = p in joints
+        pid = "" if ghost else f' id="pt-{escape(p, quote=True)}"'
+        out.append(f'<circle{pid} cx="{_f(x)}" cy="{_f(y)}" r="{_f((0.011 if j else 0.007) * span)}" '
+                   f'fill="{"#fff" if j else "#000"}" stroke="#000" stroke-width="1.3" '
+                   f'vector-effect="non-scaling-stroke"/>')
+        if labels and not ghost:
+            d = np.array([x, y]) - centre
+            n = float(np.hypot(*d)) or 1.0
+            out.append(f'<text x="{_f(x + d[0] / n * 1.4 * fs)}" y="{_f(y + d[1] / n * 1.4 * fs)}" '
+                       f'font-size="{_f(fs)}" text-anchor="middle" dominant-baseline="middle">'
+                       f'{escape(p)}</text>')
+    if not ghost:
+        for w in geo["weights"]:
+            if w["point"] in xy:
+                x, y = xy[w["point"]]
+                L = 0.12 * span
+                out.append(f'<line x1="{_f(x)}" y1="{_f(y)}" x2="{_f(x)}" y2="{_f(y + L)}" '
+                           f'stroke="#d62728" stroke-width="1.5" '
+                           f'vector-effect="non-scaling-stroke"/>')
+                out.append(f'<polygon points="{_f(x)},{_f(y + L)} {_f(x - 0.15 * L)},'
+                           f'{_f(y + 0.75 * L)} {_f(x + 0.15 * L)},{_f(y + 0.75 * L)}" '
+                           f'fill="#d62728"/>')
+                out.append(f'<text x="{_f(x + 0.2 * L)}" y="{_f(y + L)}" font-size="{_f(fs)}" '
+                           f'fill="#d62728">{escape(w["name"])}</text>')
+    out.append("</g>")
+    return out
+
+
+def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
+        labels: bool = True) -> str:
+    """The drawing at some positions as an SVG element.
+
+    Parameters
+    ----------
+    geo : dict
+        :func:`assur.views.page.geometry.geometry`'s data.
+    positions : sequence of int, optional
+        Indices of the positions; the first is drawn in colour with labels, the
+        others as light outlines. Default: the first and the last.
+    width, height : int
+        Size of the element [px].
+
+    Returns
+    -------
+    str
+        ``<svg …>…</svg>`` (coordinates in m, y up).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.views.page.geometry import geometry
+    >>> from assur.views.page.svg import svg
+    >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
+    >>> s = svg(g, positions=[2, 0], width=400, height=300)   # S = 0.67 m in colour
+    >>> s.startswith("<svg"), 'width="400" height="300"' in s   # [px]
+    (True, True)
+    >>> s.count('<g opacity="0.3">'), s.count('id="pt-')   # one ghost; the labelled points
+    (1, 11)
+    """
+    n = geo["n"]
+    positions = sorted({0, n - 1}) if positions is None else [int(i) for i in positions]
+    for i in positions:
+        if not -n <= i < n:
+            raise ValueError(f"positions must be in 0…{n - 1}, got {i}")
+    x0, y0, x1, y1 = geo["bounds"]
+    span = max(x1 - x0, y1 - y0, 1e-6)
+    m = 0.12 * span
+    cyl = _cylinders(geo)
+    body = []
+    for i in positions[1:]:
+        body += _pose(geo, i, cyl, span, True, False)
+    body += _pose(geo, positions[0], cyl, span, False, labels)
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+            f'viewBox="{_f(x0 - m)} {_f(-(y1 + m))} {_f(x1 - x0 + 2 * m)} '
+            f'{_f(y1 - y0 + 2.6 * m)}" preserveAspectRatio="xMidYMid meet" '
+            f'font-family="sans-serif">' + "".join(body) + "</svg>")

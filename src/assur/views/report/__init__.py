@@ -1,0 +1,184 @@
+"""Reports: the seed worksheets' tables, diagrams, drawings and an HTML report.
+
+Views of an :class:`~assur.analysis.Analysis` (DESIGN.md §6): nothing here
+computes the mechanism, and the computing modules never import this package or
+matplotlib.
+
+* :mod:`assur.views.report.tables` — seed-like tables as data; CSV and XLSX files;
+* :mod:`assur.views.report.figures` — diagrams against the generalized coordinate;
+* :mod:`assur.views.report.drawing` — drawings and animation of the mechanism;
+* :mod:`assur.views.report.html` — one self-contained HTML file.
+
+>>> import tempfile
+>>> from pathlib import Path
+>>> from assur import examples
+>>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+>>> with tempfile.TemporaryDirectory() as d:
+...     files = write_report(a, Path(d) / "hitch-report", formats=("csv",), lang="ru")
+...     names = [p.name for p in files["csv"]]
+>>> len(names) > 5, names[0]
+(True, 'table_2_1.csv')
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .labels import check_lang
+from .tables import Column, Table, seed_tables, table_filename, write_csv, write_xlsx
+
+__all__ = ["write_report", "report_steps", "FORMATS", "seed_tables", "write_csv", "write_xlsx",
+           "Table", "Column"]
+
+#: every output format :func:`write_report` knows
+FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")
+
+
+def report_steps(formats=FORMATS) -> list:
+    """Names of the steps :func:`write_report` announces to ``progress``, in order
+    (so a progress bar can know its length).
+
+    Examples
+    --------
+    >>> from assur.views.report import report_steps
+    >>> report_steps(("csv",))
+    ['tables', 'csv']
+    >>> report_steps()  # every format
+    ['tables', 'csv', 'xlsx', 'figures', 'drawing', 'animation', 'html']
+    """
+    fm = set(formats)
+    steps = ["tables"]
+    if "csv" in fm:
+        steps.append("csv")
+    if "xlsx" in fm:
+        steps.append("xlsx")
+    if fm & {"png", "svg", "html"}:
+        steps += ["figures", "drawing"]
+    if fm & {"gif", "html"}:
+        steps.append("animation")
+    if "html" in fm:
+        steps.append("html")
+    return steps
+
+
+def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, design=None,
+                 frames=30, positions=None) -> dict:
+    """Write tables, diagrams, the drawing, the animation and the HTML report.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        Result of :meth:`assur.Mechanism.analyze`.
+    outdir : str or Path
+        Output directory (created if missing).
+    formats : iterable of str
+        Any of :data:`FORMATS`: ``csv`` (``table_2_1.csv``…), ``xlsx``
+        (``tables.xlsx``), ``png``/``svg`` (``fig_<name>.png``… and
+        ``mechanism.png``), ``gif`` (``mechanism.gif``), ``html`` (``report.html``,
+        self-contained).
+    lang : {"en", "ru"}
+        Language of titles and labels (tables' headers are symbols and SI units in
+        both).
+    progress : callable, optional
+        ``progress(step_name)`` is called as each step starts (see
+        :func:`report_steps`).
+    design : int, optional
+        Design of a batch to report.
+    frames : int
+        Frames of the animation over the range.
+    positions : sequence of int, optional
+        Indices of the positions drawn (default: the first and the last).
+
+    Returns
+    -------
+    dict of str to list of Path
+        Files written, by format.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur import examples
+    >>> from assur.views.report import write_report
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> steps = []
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     files = write_report(a, d, formats=("csv", "xlsx"), progress=steps.append)
+    ...     sizes = [p.stat().st_size > 0 for p in files["csv"] + files["xlsx"]]
+    >>> steps
+    ['tables', 'csv', 'xlsx']
+    >>> [p.name for p in files["csv"]][:3], files["xlsx"][0].name, all(sizes)
+    (['table_2_1.csv', 'table_2_2.csv', 'table_3_1.csv'], 'tables.xlsx', True)
+    >>> write_report(a, "unused", formats=("pdf",))
+    Traceback (most recent call last):
+    ...
+    ValueError: formats must be among: ['csv', 'xlsx', 'html', 'png', 'svg', 'gif']; got ['pdf']
+    """
+    from . import drawing as _drawing
+    from . import figures as _figures
+    from . import html as _html
+
+    check_lang(lang)
+    formats = tuple(formats)
+    bad = [f for f in formats if f not in FORMATS]
+    if bad:
+        raise ValueError(f"formats must be among: {list(FORMATS)}; got {bad}")
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = {f: [] for f in formats}
+
+    def step(name):
+        if progress is not None:
+            progress(name)
+
+    step("tables")
+    tables = seed_tables(analysis, lang, design=design)
+    if "csv" in formats:
+        step("csv")
+        written["csv"] = [write_csv(tab, out / table_filename(tab)) for tab in tables]
+    if "xlsx" in formats:
+        step("xlsx")
+        written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx")]
+    pngs, drawing_png = {}, None
+    if {"png", "svg", "html"} & set(formats):
+        step("figures")
+        figs = dict(_figures.figures(analysis, lang, design=design))
+        if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
+            from . import dynamics as _dynamics
+            figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
+                                          balancing=analysis.balancing))
+        if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
+            from .lift import lift_test_figure
+            figs["lift_test"] = lift_test_figure(analysis, lang)
+        for name, fig in figs.items():
+            # a figure of maps (two coordinates) has its title above the panels
+            caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
+            png = _figures.to_png_bytes(fig)
+            pngs[name] = (png, caption)
+            if "png" in formats:
+                p = out / f"fig_{name}.png"
+                p.write_bytes(png)
+                written["png"].append(p)
+            if "svg" in formats:
+                written["svg"].append(_figures.save(fig, out / f"fig_{name}.svg"))
+        step("drawing")
+        fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design)
+        drawing_png = _figures.to_png_bytes(fig)
+        if "png" in formats:
+            p = out / "mechanism.png"
+            p.write_bytes(drawing_png)
+            written["png"].append(p)
+        if "svg" in formats:
+            written["svg"].append(_figures.save(fig, out / "mechanism.svg"))
+    frames_png = False
+    if {"gif", "html"} & set(formats):
+        step("animation")
+        imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design)
+        if "gif" in formats:
+            written["gif"] = [_drawing.write_gif(imgs, out / "mechanism.gif")]
+        frames_png = _drawing.frames_png_bytes(imgs)
+    if "html" in formats:
+        step("html")
+        written["html"] = [_html.write_html(analysis, out / "report.html", lang=lang,
+                                            figures=pngs, tables=tables, drawing=drawing_png,
+                                            animation=frames_png, design=design)]
+    return written

@@ -1,0 +1,300 @@
+"""Diagrams of a crank mechanism's dynamics (matplotlib, Agg): views of
+:class:`assur.dynamics.crank.CrankDynamics`, :class:`assur.dynamics.flywheel.Flywheel` and
+:class:`assur.dynamics.balancing.Balancing` (seed 001 lab 3, figs. 3.3, 3.4).
+
+=====================  ==========================================================
+name                   what
+=====================  ==========================================================
+``centre_of_mass``     the common centre of mass over a turn [mm], before and
+                       after balancing, with A_x, A_y and the area (fig. 3.3)
+``hodographs``         reaction hodographs R_y against R_x [N] of the model's
+                       named reactions (fig. 3.4: R34), with inertia
+``reduced_moment``     reduced moment on the crank with and without inertia, and
+                       the driving moment [N·m] against the crank angle [°]
+``reduced_inertia``    J_red [kg·m²] and dJ_red/dφ against the crank angle [°]
+``energy_mass``        Wittenbauer's energy–mass diagram ΔE(J_red) with the
+                       tangents of ω_max, ω_min, and ω(φ) with the flywheel
+=====================  ==========================================================
+
+:func:`figures` makes all that apply in one call. Crank angles are shown in
+degrees wrapped to [0°, 360°) and sorted, so no line crosses a wrap.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .figures import new_figure, titled_axes
+from .labels import check_lang, t, unit
+
+__all__ = ["figures", "centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",
+           "energy_mass", "DYNAMICS_FIGURES"]
+
+def _t(key, lang, *args):
+    return t(f"dyn_{key}", check_lang(lang), *args)
+
+
+def _u(u, lang):
+    return unit(u, lang)
+
+
+def _sorted_degrees(q, *ys):
+    """Crank angles wrapped to [0°, 360°) and sorted, with the ys in that order."""
+    deg = np.mod(np.degrees(np.ravel(q)), 360.0)
+    order = np.argsort(deg, kind="stable")
+    return (deg[order],) + tuple(np.ravel(y)[order] for y in ys)
+
+
+def _xlabel(lang, coordinate="φ"):
+    return f"{_t('angle', lang, coordinate)} [{unit('deg', lang)}]"
+
+
+def centre_of_mass(dynamics, lang="en", balancing=None):
+    """The common centre of mass of the moving links over the turn, about its mean
+    position [mm] (seed 001 lab 3 fig. 3.3), before and, with ``balancing``, after
+    the counter-masses (the dot marks the first position).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.crank import crank_dynamics
+    >>> from assur.views.report.dynamics import centre_of_mass
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> ax = centre_of_mass(dyn).axes[0]
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('x − x̄ [mm]', 'y − ȳ [mm]')
+    >>> print(ax.lines[0].get_label())  # amplitudes [mm], area [mm²], mean position [mm]
+    without counter-masses: A_x = 3.95 mm, A_y = 3.74 mm, area 3.71 mm²
+    about its mean (x̄, ȳ) = (889.8, 46.2) mm
+    """
+    lang = check_lang(lang)
+    fig = new_figure(6.4, 5.0)
+    mm = _u("mm", lang)
+    ax = titled_axes(fig, _t("f_com", lang), f"x − x̄ [{mm}]", f"y − ȳ [{mm}]")
+    paths = [(dynamics.centre, _t("before", lang))]
+    if balancing is not None:
+        paths.append((balancing.after, _t("after", lang)))
+    for c, label in paths:
+        x, y = np.ravel(c.x), np.ravel(c.y)
+        xm, ym = x.mean(), y.mean()
+        x, y = (x - xm) * 1e3, (y - ym) * 1e3
+        amp = _t("amp", lang, float(np.ravel(c.amplitude_x)[0]) * 1e3,
+                 float(np.ravel(c.amplitude_y)[0]) * 1e3, float(np.ravel(c.area)[0]) * 1e6)
+        where = _t("mean", lang, xm * 1e3, ym * 1e3)
+        ax.plot(np.append(x, x[0]), np.append(y, y[0]), lw=1.5,
+                label=f"{label}: {amp}\n{where}")
+        ax.plot(x[:1], y[:1], "o", color=ax.lines[-1].get_color(), ms=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def hodographs(dynamics, lang="en", reactions=None):
+    """Hodographs of joint reactions over the turn: R_y against R_x [N], with the
+    inertia loads (seed 001 lab 3 fig. 3.4, R34).
+
+    ``reactions``: ``{name: (i, j)}`` (the force of link i on link j); default the
+    model's named reactions (``tables["reactions"]``), else every joint with the
+    frame.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.crank import crank_dynamics
+    >>> from assur.views.report.dynamics import hodographs
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> ax = hodographs(dyn).axes[0]
+    >>> [line.get_label() for line in ax.lines[:-1:2]]  # the model's named reactions
+    ['R34', 'R38', 'R89', 'R01', 'R03']
+    >>> len(ax.lines[0].get_xdata())  # 361 positions, closed
+    362
+    >>> ax = hodographs(dyn, reactions={"R01": ("0", "1")}).axes[0]  # frame on crank 1
+    >>> ax.lines[0].get_label(), ax.get_xlabel()
+    ('R01', 'R_x [N]')
+    """
+    lang = check_lang(lang)
+    if reactions is None:
+        reactions = dynamics.statics.named_reactions() or {
+            f"R{i}{j}": (i, j) for _, i, j in dynamics.joints if "0" in (i, j)}
+    fig = new_figure(6.4, 5.0)
+    N = unit("N", lang)
+    ax = titled_axes(fig, _t("f_hodo", lang), f"{_t('force_x', lang)} [{N}]",
+               f"{_t('force_y', lang)} [{N}]")
+    for name, (i, j) in reactions.items():
+        r = np.asarray(dynamics.reaction(i, j)).reshape(-1, 2)
+        ax.plot(np.append(r[:, 0], r[0, 0]), np.append(r[:, 1], r[0, 1]), lw=1.3, label=name)
+        ax.plot(r[:1, 0], r[:1, 1], "o", color=ax.lines[-1].get_color(), ms=4)
+    ax.plot([0], [0], "+", color="0.2", ms=10)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def reduced_moment(dynamics, lang="en"):
+    """Reduced moment of all loads (inertia included) and without inertia, and the
+    driving moment from the reactions [N·m], against the crank angle [°].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.dynamics.crank import crank_dynamics
+    >>> from assur.views.report.dynamics import reduced_moment
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> ax = reduced_moment(dyn).axes[0]
+    >>> ax.get_xlabel(), ax.get_ylabel(), len(ax.lines)
+    ('crank angle j1 [deg]', 'M [N·m]', 3)
+    >>> round(float(np.max(ax.lines[0].get_ydata())), 1)  # largest M_red, inertia included [N·m]
+    349.7
+    """
+    lang = check_lang(lang)
+    fig = new_figure()
+    ax = titled_axes(fig, _t("f_mred", lang), _xlabel(lang, dynamics.coordinate),
+               f"M [{unit('N·m', lang)}]")
+    x, a, b, c = _sorted_degrees(dynamics.q, dynamics.reduced_moment,
+                                 dynamics.reduced_moment_without_inertia,
+                                 dynamics.driving_moment_from_reactions)
+    ax.plot(x, a, label=r"$M_{red}$: " + _t("m_all", lang))
+    ax.plot(x, b, label=r"$M_{red}$: " + _t("m_static", lang))
+    ax.plot(x, c, "--", label=r"$M_{d}$: " + _t("m_drive", lang))
+    ax.set_xlim(0, 360)
+    fig.legend(loc="outside lower center", ncols=2, fontsize="small")
+    return fig
+
+
+def reduced_inertia(dynamics, lang="en"):
+    """J_red [kg·m²] and dJ_red/dφ [kg·m²/rad] against the crank angle [°].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import io
+    >>> from assur.dynamics.crank import crank_dynamics
+    >>> from assur.views.report.dynamics import reduced_inertia
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> fig = reduced_inertia(dyn)
+    >>> len(fig.axes), fig.axes[0].get_title()  # J_red, and dJ_red/dφ on a twin axis
+    (2, 'Reduced moment of inertia')
+    >>> J = fig.axes[0].lines[0].get_ydata()
+    >>> round(float(np.min(J)), 4), round(float(np.max(J)), 4)  # J_red over the turn [kg·m²]
+    (0.0074, 0.7909)
+    """
+    lang = check_lang(lang)
+    fig = new_figure()
+    ax = titled_axes(fig, _t("f_jred", lang), _xlabel(lang, dynamics.coordinate),
+               f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
+    x, J, dJ = _sorted_degrees(dynamics.q, dynamics.reduced_inertia,
+                               dynamics.reduced_inertia_derivative)
+    ax.plot(x, J, color="C0", label="$J_{red}$")
+    ax2 = ax.twinx()
+    ax2.plot(x, dJ, color="C1", ls="--", label=r"$dJ_{red}/d\varphi$")
+    ax2.set_ylabel(rf"$dJ_{{red}}/d\varphi$ [{_u('kg·m²/rad', lang)}]")
+    ax.set_xlim(0, 360)
+    fig.legend(loc="outside lower center", ncols=2, fontsize="small")
+    return fig
+
+
+def energy_mass(flywheel, lang="en"):
+    """Wittenbauer's energy–mass diagram: ΔE [J] against J_red [kg·m²], with the
+    tangents of slopes ω_max²/2 and ω_min²/2 meeting at (−J_f, −T0); and the crank
+    speed |ω| [rad/s] over the turn with that flywheel.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.crank import crank_dynamics
+    >>> from assur.views.report.dynamics import energy_mass
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> fw = dyn.flywheel(0.05)  # coefficient of speed fluctuation δ = 0.05
+    >>> fig = energy_mass(fw)
+    >>> [ax.get_title() for ax in fig.axes]
+    ['Energy–mass diagram and the flywheel', 'crank speed |ω|']
+    >>> fig.axes[0].lines[-1].get_label()  # the flywheel's moment of inertia [kg·m²]
+    'they meet at (−J_f, −T0): J_f = 7.569 kg·m², δ = 0.05'
+    """
+    lang = check_lang(lang)
+    fig = new_figure(9.6, 4.2)
+    ax, ax2 = fig.subplots(1, 2)
+    J, E = np.ravel(flywheel.reduced_inertia), np.ravel(flywheel.energy)
+    ax.plot(J, E, lw=1.4, label="ΔE(J_red)")
+    # the tangents meet far away at (−J_f, −T0): drawn across the curve's own box
+    x0, y0 = -flywheel.J_flywheel, -flywheel.T0
+    pad_x, pad_y = 0.08 * np.ptp(J), 0.15 * np.ptp(E)
+    jx = np.array([J.min() - pad_x, J.max() + pad_x])
+    for w in (flywheel.omega_max, flywheel.omega_min):
+        ax.plot(jx, y0 + 0.5 * w ** 2 * (jx - x0), color="0.4", lw=0.8, ls="--")
+    ax.set_xlim(*jx)
+    ax.set_ylim(E.min() - pad_y, E.max() + pad_y)
+    ax.plot([], [], color="0.4", lw=0.8, ls="--", label=_t("wit_tan", lang))
+    ax.plot([], [], " ", label=_t("fw", lang, flywheel.J_flywheel, flywheel.delta))
+    ax.set_title(_t("f_wit", lang))
+    ax.set_xlabel(f"$J_{{red}}$ [{unit('kg·m²', lang)}]")
+    ax.set_ylabel(f"{_t('energy', lang)} [{_u('J', lang)}]")
+    ax.grid(True, alpha=0.35)
+    ax.legend(fontsize="small", loc="lower right")
+    x, w = _sorted_degrees(flywheel.q, flywheel.omega)
+    ax2.plot(x, w, color="C2")
+    for v in (flywheel.omega_max, flywheel.omega_min, flywheel.omega_mean):
+        ax2.axhline(v, color="0.5", lw=0.7, ls=":")
+    ax2.set_xlim(0, 360)
+    ax2.set_title(_t("omega", lang))
+    ax2.set_xlabel(_xlabel(lang))
+    ax2.set_ylabel(f"|ω| [{_u('rad/s', lang)}]")
+    ax2.grid(True, alpha=0.35)
+    return fig
+
+
+#: the figures of :func:`figures`, in order
+DYNAMICS_FIGURES = ("centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",
+                    "energy_mass")
+
+
+def figures(dynamics, lang="en", flywheel=None, balancing=None):
+    """Every dynamics figure that applies, ``{name: Figure}`` (the energy–mass
+    diagram only with a ``flywheel``; the balanced path only with ``balancing``).
+
+    Parameters
+    ----------
+    dynamics : CrankDynamics
+        :func:`assur.dynamics.crank.crank_dynamics` (one design).
+    lang : {"en", "ru"}
+    flywheel : Flywheel, optional
+        :meth:`CrankDynamics.flywheel`.
+    balancing : Balancing, optional
+        :func:`assur.dynamics.balancing.balance`.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.crank import crank_dynamics
+    >>> from assur.views.report.dynamics import figures
+    >>> model = io.load(io.bundled("cleaning_lab3"))  # the ten-bar of seed 001 lab 3
+    >>> kin = model.mechanism.solve(model.range)  # a turn of the crank, 1° steps
+    >>> dyn = crank_dynamics(kin, qdot=-30.0)  # clockwise at 30 rad/s
+    >>> list(figures(dyn))
+    ['centre_of_mass', 'hodographs', 'reduced_moment', 'reduced_inertia']
+    >>> figs = figures(dyn, "ru", flywheel=dyn.flywheel(0.05))  # δ = 0.05
+    >>> list(figs)[-1], figs["reduced_moment"].axes[0].get_xlabel()
+    ('energy_mass', 'угол кривошипа j1 [град]')
+    """
+    lang = check_lang(lang)
+    if dynamics.kinematics.m != 1:
+        raise ValueError(f"figures of one design at a time; this result holds "
+                         f"{dynamics.kinematics.m}")
+    out = {"centre_of_mass": centre_of_mass(dynamics, lang, balancing),
+           "hodographs": hodographs(dynamics, lang),
+           "reduced_moment": reduced_moment(dynamics, lang),
+           "reduced_inertia": reduced_inertia(dynamics, lang)}
+    if flywheel is not None:
+        out["energy_mass"] = energy_mass(flywheel, lang)
+    return out

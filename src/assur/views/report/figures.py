@@ -1,0 +1,757 @@
+"""The seeds' diagrams against the generalized coordinate (matplotlib, Agg).
+
+Each function takes an :class:`~assur.analysis.Analysis` and returns a
+:class:`matplotlib.figure.Figure` drawn on an Agg canvas (no pyplot, no GUI, no
+global state), with a title, axis labels with units and a legend in Russian or
+English (``lang``):
+
+==============  =====================================================  ===========
+name            what                                                   seed 003
+==============  =====================================================  ===========
+``angles``      link angles φ [°]                                      tables 2.1
+``distances``   named distances [m] (seed 002: l7, l9)                 —
+``analogs``     angular-velocity analogs dφ/dq [rad/m]                 fig. 3.1
+``transmission`` transmission numbers I = dY/dq [-]                    fig. 3.2
+``capacity``    lift capacity G at the transmission points [kN], with  fig. 4.1
+                the load there
+``force``       cylinder force [kN] with the available force           fig. 4.2
+``pressure``    cylinder pressure [MPa] with p_max                     fig. 4.3
+``reactions``   magnitudes of the joint reactions [kN]                 fig. 5.4
+``hodograph``   Ry against Rx of the largest frame reaction [kN]       —
+``stability``   steered axle's share of the weight [%], 20 % line      fig. 6.2
+==============  =====================================================  ===========
+
+:func:`figures` makes those whose data exist; :func:`save` writes PNG or SVG.
+For k > 1 coordinates the abscissa is the position number.
+
+Over a crank angle the abscissa is the angle in the tables' convention
+(continuous, or wrapped to [0°, 360°)); the positions are drawn sorted by it, so
+that a list such as seed 002's (14.679°, then −30° steps, then 188.229°) is one
+curve, and a curve of angles is broken where it wraps from 360° to 0° instead of
+drawing a line across the plot. A curve equal to one drawn before it (seed 002:
+φ4 = φ3, the two arms of one lever) is drawn dashed with other markers and
+labelled ``φ4 = φ3``, so both stay visible.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from .labels import check_lang, t, unit
+from .tables import _View, grid_of
+
+__all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
+           "transmission",
+           "capacity", "force", "pressure", "reactions", "hodograph", "stability"]
+
+_SPECIAL = set("_^$\\{}%#&~")
+
+
+def _math(sym, idx, prime=False):
+    """``φ_{34}`` in mathtext (plain text if the name has TeX specials)."""
+    if any(ch in _SPECIAL for ch in str(idx)) or any(ch.isalpha() for ch in str(idx)):
+        # letters in small mathtext subscripts are hard to read ("S6" looks like "56")
+        return f"{sym}{chr(39) if prime else ''} {idx}" if sym.startswith("\\") is False \
+            else f"{sym}{idx}"
+    return f"${sym}{chr(39) if prime else ''}_{{\\mathrm{{{idx}}}}}$"
+
+
+_PHI = r"\varphi"
+
+
+def new_figure(width=6.4, height=4.0) -> Figure:
+    """An empty figure on an Agg canvas with a constrained layout."""
+    fig = Figure(figsize=(width, height), layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def titled_axes(fig, title, xlabel, ylabel):
+    """A new subplot of ``fig`` with its title, axis labels and a light grid."""
+    ax = fig.add_subplot()
+    ax.set_title(title)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.35)
+    return ax
+
+
+#: line styles and markers of a curve that coincides with one drawn before it
+_SAME_STYLES = (dict(ls="--", marker="x", markersize=7, lw=1.6),
+                dict(ls=":", marker="+", markersize=9, lw=1.6),
+                dict(ls="-.", marker="D", markersize=5, markerfacecolor="none", lw=1.4))
+
+
+def plot_order(x):
+    """The positions sorted by the abscissa ``x`` (stable: equal values keep their
+    order), shape (n,)."""
+    return np.argsort(np.asarray(x), kind="stable")
+
+
+def wrap_breaks(y, period=360.0):
+    """Indices i where a wrapped angle jumps between the sorted positions i and i + 1
+    by more than half a ``period`` (a wrap from 360° to 0°, not a motion)."""
+    y = np.asarray(y, dtype=float)
+    return np.flatnonzero(np.abs(np.diff(y)) > 0.5 * period)
+
+
+def broken(x, y, breaks):
+    """``(x, y)`` as masked arrays with a masked point after each index of ``breaks``:
+    matplotlib draws no line across a masked point."""
+    if len(breaks) == 0:
+        return x, y
+    at = np.asarray(breaks) + 1
+    xs = np.ma.masked_array(np.insert(np.asarray(x, dtype=float), at, 0.0))
+    ys = np.ma.masked_array(np.insert(np.asarray(y, dtype=float), at, 0.0))
+    mask = np.zeros(xs.shape, dtype=bool)
+    mask[at + np.arange(len(at))] = True
+    xs.mask, ys.mask = mask, mask
+    return xs, ys
+
+
+def path_abscissa(columns):
+    """Index of the first coordinate that changes strictly monotonically along the
+    positions (the abscissa of paired paths), or 0."""
+    for k, q in enumerate(columns):
+        d = np.diff(np.asarray(q, dtype=float))
+        if d.size and (np.all(d > 0) or np.all(d < 0)):
+            return k
+    return 0
+
+
+class _MapAxes:
+    """Collects the curves of a figure over two coordinates; :meth:`_Plot.done` draws
+    each as a map (heatmap with contours) over the grid. A horizontal reference line
+    (a load, F_max, p_max, the 20 % share) becomes a red contour at its level."""
+
+    def __init__(self, title, ylabel, yunit):
+        self.title, self.ylabel, self.yunit = title, ylabel, yunit
+        self.series, self.levels = [], []
+
+    def axhline(self, y, label=None, **kw):
+        self.levels.append((float(y), label))
+
+    def axhspan(self, *a, **kw):
+        pass
+
+    def set_ylim(self, *a, **kw):
+        pass
+
+    def get_ylim(self):
+        return (0.0, 1.0)
+
+    def legend(self, *a, **kw):
+        pass
+
+
+class _Plot:
+    """Shared abscissa and labels for one design.
+
+    One coordinate: the curves against it. Two coordinates on a full grid: maps
+    (a heatmap with contours per curve, the axes in the coordinates' units). Paired
+    paths (the coordinates move together, ``[range] paired = true``): the curves
+    against the first coordinate that changes monotonically along the path."""
+
+    def __init__(self, analysis, lang, design):
+        self.lang = check_lang(lang)
+        self.v = _View(analysis, design)
+        v = self.v
+        self.grid = None
+        self.c = v.coords[0]
+        if v.k == 2:
+            self.grid = grid_of(v.coord_values(v.coords[0]), v.coord_values(v.coords[1]))
+        if v.k == 1 or self.grid is None:
+            k = 0 if v.k == 1 else path_abscissa([v.coord_values(c) for c in v.coords])
+            c = v.coords[k]
+            self.x = v.coord_values(c)
+            self.xlabel = f"{v.coord_label(c)[lang]} [{unit(v.coord_unit(c), lang)}]"
+            if v.k > 1:
+                others = ", ".join(o for o in v.coords if o != c)
+                self.xlabel += "; " + t("paired_axis", lang, others)
+            self.c = c
+        else:
+            self.x = np.arange(v.n)
+            self.xlabel = t("position", lang)
+        #: the positions in the order drawn (sorted by the abscissa)
+        self.order = plot_order(self.x)
+        self._drawn: dict = {}
+
+    @property
+    def is_map(self) -> bool:
+        return self.grid is not None
+
+    def axes(self, title, ylabel, yunit, width=6.4, height=4.0):
+        fig = new_figure(width, height)
+        if self.is_map:
+            return fig, _MapAxes(title, ylabel, yunit)
+        ax = fig.add_subplot()
+        ax.set_title(title)
+        ax.set_xlabel(self.xlabel)
+        ax.set_ylabel(f"{ylabel} [{unit(yunit, self.lang)}]")
+        ax.grid(True, alpha=0.35)
+        return fig, ax
+
+    def axis_label(self, c):
+        v = self.v
+        return f"{c} [{unit(v.coord_unit(c), self.lang)}]"
+
+    def surface(self, y):
+        """Values over the positions as a 2-D array (second coordinate × first)."""
+        u1, u2, i1, i2 = self.grid
+        z = np.full((len(u2), len(u1)), np.nan)
+        z[i2, i1] = np.asarray(y, dtype=float)
+        return np.ma.masked_invalid(z)
+
+    def done(self, fig, ax=None):
+        """The finished figure: a map figure draws its collected curves here."""
+        maps = getattr(fig, "_assur_maps", None) if ax is None else ax
+        if not isinstance(maps, _MapAxes):
+            return fig
+        n = len(maps.series)
+        if n == 0:
+            return None
+        ncol = min(n, 3)
+        nrow = -(-n // ncol)
+        fig.set_size_inches(4.3 * ncol, 3.5 * nrow + 0.5)
+        u1, u2, _, _ = self.grid
+        c1, c2 = self.v.coords
+        yu = unit(maps.yunit, self.lang)
+        for k, (label, y) in enumerate(maps.series):
+            ax = fig.add_subplot(nrow, ncol, k + 1)
+            z = self.surface(y)
+            mesh = ax.pcolormesh(u1, u2, z, shading="nearest", cmap="viridis")
+            fig.colorbar(mesh, ax=ax, label=yu)
+            lo, hi = float(np.min(z)), float(np.max(z))
+            if hi - lo > 1e-12 * max(abs(lo), abs(hi), 1e-300):
+                cs = ax.contour(u1, u2, z, levels=6, colors="k", linewidths=0.6)
+                ax.clabel(cs, fontsize="x-small", fmt="%.4g")
+                for level, _ in maps.levels:
+                    if lo < level < hi:
+                        ax.contour(u1, u2, z, levels=[level], colors="C3", linewidths=1.6,
+                                   linestyles="--")
+            ax.set_title(label, fontsize="small")
+            ax.set_xlabel(self.axis_label(c1))
+            ax.set_ylabel(self.axis_label(c2))
+        title = t("f_map", self.lang, maps.title, c1, c2) + f"; {maps.ylabel} [{yu}]"
+        labels = list(dict.fromkeys(lab for _, lab in maps.levels if lab))
+        if labels:
+            title += "; " + ", ".join(labels) + " (- - -)"
+        import textwrap
+        fig.suptitle("\n".join(textwrap.wrap(title, 48 * ncol)), fontsize="medium")
+        return fig
+
+    def line(self, ax, y, label, angle=False, **kw):
+        """Draw ``y`` over the positions sorted by the abscissa; an ``angle`` curve [°]
+        in the wrapped convention is broken where it wraps; a curve equal to one
+        drawn before on these axes gets another style and the label ``this = that``.
+        On a map figure the curve is kept and drawn as a map by :meth:`done`."""
+        if isinstance(ax, _MapAxes):
+            ax.series.append((label, np.asarray(y, dtype=float)))
+            return
+        y = np.asarray(y, dtype=float)
+        drawn = self._drawn.setdefault(id(ax), [])
+        same = [lab for yy, lab in drawn if yy.shape == y.shape and np.allclose(
+            yy, y, rtol=0.0, atol=1e-9 * max(float(np.max(np.abs(y))) if y.size else 0.0, 1.0))]
+        drawn.append((y, label))
+        if same:
+            kw.update(_SAME_STYLES[(len(same) - 1) % len(_SAME_STYLES)])
+            label = f"{label} = {same[0]}"
+            kw.setdefault("zorder", 3)
+        kw.setdefault("marker", "o")
+        kw.setdefault("markersize", 3)
+        xs, ys = self.x[self.order], y[self.order]
+        breaks = wrap_breaks(ys) if angle and self.v.angles == "wrapped" else []
+        xs, ys = broken(xs, ys, breaks)
+        ax.plot(xs, ys, label=label, **kw)
+
+    @staticmethod
+    def legend(fig, ax, n):
+        if isinstance(ax, _MapAxes):
+            return
+        if n > 5:
+            fig.legend(loc="outside right upper", fontsize="small")
+        elif n > 0:
+            ax.legend(fontsize="small")
+
+
+def angles(analysis, lang="en", design=None):
+    """Link angles φ [°] against the coordinate (seed 003 table 2.1).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import angles
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = angles(a).axes[0]
+    >>> ax.get_title(), ax.get_xlabel(), ax.get_ylabel()
+    ('Link angles', 'cylinder length S [m]', 'angle φ [deg]')
+    >>> len(ax.lines)  # links 2, 3, 34, 4, 5, 6, 7
+    7
+    >>> [round(float(y), 1) for y in ax.lines[2].get_ydata()[:2]]  # φ34 [deg], table 2.1
+    [-18.2, -8.4]
+    """
+    p = _Plot(analysis, lang, design)
+    kin = p.v.kin
+    fig, ax = p.axes(t("f_angles", lang), t("y_angle", lang), "deg")
+    for link in kin.links:
+        p.line(ax, p.v.phi_values(link), _math(_PHI, link), angle=True)
+    p.legend(fig, ax, len(kin.links))
+    return p.done(fig, ax)
+
+
+#: titles of the figures kept here (the lead may move them into :mod:`.labels`)
+_TITLES = {"f_distances": {"en": "Named distances", "ru": "Расстояния между точками"},
+           "y_distance": {"en": "distance", "ru": "расстояние"},
+           "along": {"en": "along the rotation", "ru": "по вращению"}}
+
+
+def distances(analysis, lang="en", design=None):
+    """Named distances [m] against the coordinate (seed 002: the helper vectors l7 =
+    |C–O6|, l9 = |A–O3|); None without named distances.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import distances
+    >>> a = examples.combine_002().analyze(examples.combine_002_range())  # seed 002
+    >>> ax = distances(a).axes[0]
+    >>> [line.get_label() for line in ax.lines], ax.get_ylabel()
+    (['l9', 'l7'], 'distance [m]')
+    >>> hitch = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> distances(hitch) is None  # the hitch names no distances
+    True
+    """
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.distances:
+        return None
+    fig, ax = p.axes(_TITLES["f_distances"][p.lang], _TITLES["y_distance"][p.lang], "m")
+    for dist in v.mech.distances:
+        p.line(ax, v.pick(v.kin.length(dist.name)), dist.name)
+    p.legend(fig, ax, len(v.mech.distances))
+    return p.done(fig, ax)
+
+
+def analogs(analysis, lang="en", design=None):
+    """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S)).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import analogs
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = analogs(a).axes[0]
+    >>> ax.get_ylabel()
+    'analog dφ/dS [rad/m]'
+    >>> [round(float(y), 3) for y in ax.lines[1].get_ydata()[:3]]  # dφ3 [rad/m], table 3.1
+    [6.719, 5.743, 5.294]
+    >>> ax.lines[2].get_linestyle()  # dφ34 = dφ3 (one lever): drawn dashed over it
+    '--'
+    >>> round(float(ax.lines[2].get_ydata()[0]), 3)  # dφ34 at S = 0.420 m [rad/m]
+    6.719
+    """
+    p = _Plot(analysis, lang, design)
+    kin, v = p.v.kin, p.v
+    ylabel = t("y_analog", lang, p.c)
+    if v.rate_sign(p.c) != 1:  # the seeds' convention: along the crank's rotation
+        ylabel += " · sign " + p.c + "' (" + _TITLES["along"][p.lang] + ")"
+    fig, ax = p.axes(t("f_analogs", lang), ylabel, v.analog_unit(p.c))
+    n = 0
+    for sfx, w, c in v.wrts():
+        for link in kin.links:  # along the crank's rotation where the tables say so
+            if not v.moves_link(c, link):  # 0 along a coordinate that does not turn it
+                continue
+            lab = _math(_PHI, link, prime=True) + (f" ({c})" if sfx else "")
+            p.line(ax, v.rate_sign(c) * v.pick(kin.dphi(link, w)), lab)
+            n += 1
+    p.legend(fig, ax, n)
+    return p.done(fig, ax)
+
+
+def transmission(analysis, lang="en", design=None):
+    """Transmission numbers I = dY/dq of the model's transmission points (seed 003
+    fig. 3.2 I56, IS6); None without transmission points.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import transmission
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = transmission(a).axes[0]
+    >>> ax.get_ylabel(), len(ax.lines)  # I56 and IS6
+    ('transmission number I [-]', 2)
+    >>> [round(float(y), 3) for y in ax.lines[1].get_ydata()[:3]]  # IS6 [-], table 3.1
+    [4.713, 4.483, 4.419]
+    """
+    p = _Plot(analysis, lang, design)
+    kin, v = p.v.kin, p.v
+    pts = list(v.mech.tables.get("transmissions", ()))
+    if not pts:
+        return None
+    fig, ax = p.axes(t("f_transmission", lang), t("y_transmission", lang),
+                     v.transmission_unit(p.c))
+    n = 0
+    for sfx, w, c in v.wrts():
+        for pt in pts:
+            if not v.moves_point(c, pt):  # 0 along a coordinate that does not move it
+                continue
+            p.line(ax, v.rate_sign(c) * v.pick(kin.transmission(pt, wrt=w)),
+                   _math("I", pt) + (f" ({c})" if sfx else ""))
+            n += 1
+    p.legend(fig, ax, n)
+    return p.done(fig, ax)
+
+
+def capacity(analysis, lang="en", design=None):
+    """Lift capacity G [kN] at the transmission points with the load acting there
+    (seed 003 fig. 4.1); None without cylinders.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import capacity
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = capacity(a).axes[0]
+    >>> [line.get_label() for line in ax.lines][1:]
+    ['G S6', 'load P6 = 27.5 kN']
+    >>> round(float(ax.lines[1].get_ydata()[-1]), 2)  # GS6 at S = 0.670 m [kN], table 4.1: 29.959
+    29.96
+    """
+    from .tables import _capacity
+
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.a.cylinders:
+        return None
+    fig, ax = p.axes(t("f_capacity", lang), t("y_capacity", lang), "kN")
+    n = 0
+    several = len(v.a.cylinders) > 1
+    loads_drawn = set()
+    for name, res in v.a.cylinders.items():
+        for pt in v.transmission_points():
+            if not v.moves_point(res.cylinder.coordinate, pt):  # undefined: not its chain
+                continue
+            g, _ = _capacity(v, res, pt)
+            p.line(ax, g / 1e3, _math("G", pt) + (f" ({name})" if several else ""))
+            n += 1
+            if pt in loads_drawn:
+                continue
+            loads_drawn.add(pt)
+            for wname, P in v.weights_at(pt)[:1]:
+                ax.axhline(P / 1e3, ls="--", lw=1, color="0.3",
+                           label=t("load", lang, wname, P / 1e3))
+                n += 1
+    p.legend(fig, ax, n)
+    return p.done(fig, ax)
+
+
+def force(analysis, lang="en", design=None):
+    """Cylinder force [kN] by virtual work with the available force F_max (seed 003
+    fig. 4.2); None without cylinders.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import force
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = force(a).axes[0]
+    >>> ax.get_ylabel(), ax.lines[1].get_label()  # F_max: the cylinder's available force
+    ('force F [kN]', 'available $F_{max}$ = 147.8 kN')
+    >>> round(float(ax.lines[0].get_ydata()[0]), 1)  # Fgc at S = 0.420 m [kN], table 4.1: 129.614
+    129.6
+    """
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.a.cylinders:
+        return None
+    fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "kN")
+    n = 0
+    for name, res in v.a.cylinders.items():
+        p.line(ax, v.pick(res.force) / 1e3, f"$F_{{{res.cylinder.length}}}$ ({name})")
+        fm = v.pick(res.force_max)  # over positions for a double-rod cylinder (side auto)
+        fmax = float(fm[0])
+        if np.ptp(fm) > 0:
+            p.line(ax, fm / 1e3, t("force_max", lang, float(np.max(fm)) / 1e3))
+        elif fmax > 0:
+            ax.axhline(fmax / 1e3, ls="--", lw=1, color="C3", label=t("force_max", lang,
+                                                                       fmax / 1e3))
+        n += 2
+    p.legend(fig, ax, n)
+    return p.done(fig, ax)
+
+
+def pressure(analysis, lang="en", design=None):
+    """Cylinder pressure [MPa] with the largest working pressure p_max (seed 003
+    fig. 4.3); None without cylinders.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import pressure
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = pressure(a).axes[0]
+    >>> ax.get_ylabel(), ax.lines[1].get_label()
+    ('pressure p [MPa]', '$p_{max}$ = 17.5 MPa')
+    >>> round(float(max(ax.lines[0].get_ydata())), 2)  # largest Pgc [MPa], table 4.1: 16.064
+    16.06
+    """
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.a.cylinders:
+        return None
+    fig, ax = p.axes(t("f_pressure", lang), t("y_pressure", lang), "MPa")
+    n = 0
+    for name, res in v.a.cylinders.items():
+        p.line(ax, v.pick(res.pressure) / 1e6, f"$p_{{{res.cylinder.length}}}$ ({name})")
+        pmax = v.scalar(res.p_max)
+        if pmax > 0:
+            ax.axhline(pmax / 1e6, ls="--", lw=1, color="C3", label=t("p_max", lang, pmax / 1e6))
+        n += 2
+    p.legend(fig, ax, n)
+    return p.done(fig, ax)
+
+
+def _reactions(v):
+    """[(name, i, j)] of every joint, seed names first (as table 5.1)."""
+    st = v.a.statics
+    named = {(i, j): name for name, (i, j) in st.named_reactions().items()}
+    out, done = [], set()
+    for (i, j), name in list(named.items()) + [((i, j), f"R{i}{j}") for _, i, j in st.joints]:
+        if frozenset((i, j)) not in done:
+            done.add(frozenset((i, j)))
+            out.append((name, i, j))
+    return out
+
+
+def reactions(analysis, lang="en", design=None):
+    """Magnitudes of the joint reactions [kN] (seed 003 fig. 5.4); None without loads.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import reactions
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = reactions(a).axes[0]
+    >>> ax.get_ylabel(), len(ax.lines)  # one curve per joint
+    ('reaction |R| [kN]', 9)
+    >>> round(float(ax.lines[0].get_ydata()[0]), 2)  # R56 at S = 0.420 m [kN], table 5.1: 48.480
+    48.48
+    """
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.loads:
+        return None
+    fig, ax = p.axes(t("f_reactions", lang), t("y_reaction", lang), "kN", width=7.2)
+    rs = _reactions(v)
+    markers = "osv^Dx+<>pP*h"
+    for k, (name, i, j) in enumerate(rs):
+        # reactions equal in magnitude (a two-force link) overlap: distinct markers show it
+        p.line(ax, v.pick(v.a.statics.reaction_magnitude(i, j)) / 1e3,
+               _math("R", name[1:] if name.startswith("R") else name),
+               marker=markers[k % len(markers)], markersize=4, markerfacecolor="none")
+    p.legend(fig, ax, len(rs))
+    return p.done(fig, ax)
+
+
+def hodograph(analysis, lang="en", design=None):
+    """Hodograph of the largest frame reaction: its y against its x component [kN]
+    (the force of the frame on the link) over the positions, equal scales, with the
+    first and last positions marked and the direction of travel; None without
+    loads.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import hodograph
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = hodograph(a).axes[0]
+    >>> ax.get_title()  # the largest frame reaction: the cylinder's pivot 01
+    'Hodograph of reaction R01 (0 → 2)'
+    >>> [line.get_label() for line in ax.lines[1:]]
+    ['start: S = 0.42 m', 'end: S = 0.67 m']
+    >>> round(float(ax.lines[0].get_ydata()[0]), 2)  # R01y at S = 0.420 m [kN], table 5.1: 129.558
+    129.56
+    """
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    if not v.mech.loads:
+        return None
+    st = v.a.statics
+    best = None
+    for name, i, j in _reactions(v):
+        if "0" not in (i, j):
+            continue
+        link = j if i == "0" else i
+        r = st.reaction("0", link)
+        rx, ry = v.pick(r[..., 0]) / 1e3, v.pick(r[..., 1]) / 1e3
+        peak = float(np.max(np.hypot(rx, ry)))
+        if best is None or peak > best[0]:
+            best = (peak, name, link, rx, ry)
+    if best is None:
+        return None
+    _, name, link, rx, ry = best
+    title = t("f_hodograph", lang, f"{name} (0 → {link})")
+    fig = new_figure(6.0, 5.0)
+    ax = fig.add_subplot()
+    ax.set_title(title)
+    ax.set_xlabel(f"$R_x$ [{unit('kN', lang)}]")
+    ax.set_ylabel(f"$R_y$ [{unit('kN', lang)}]")
+    ax.grid(True, alpha=0.35)
+    # over a grid of two coordinates the reaction sweeps an area: points, not a path
+    ax.plot(rx, ry, "o" if p.is_map else "-o", ms=3, color="C0", zorder=2)
+    c = v.coords[0]
+    for k, key, style in ((0, "start", dict(marker="o", color="C2")),
+                          (-1, "end", dict(marker="s", color="C3"))):
+        if v.k == 1:
+            qtxt = f"{c} = {p.x[k]:.4g} {unit(v.coord_unit(c), lang)}"
+        else:
+            qtxt = v.at_text(range(len(rx))[k], lang)
+        ax.plot(rx[k], ry[k], ls="none", ms=8, zorder=3, label=f"{t(key, lang)}: {qtxt}",
+                **style)
+    if len(rx) > 1 and not p.is_map:  # the direction of travel, at the middle of the curve
+        m = (len(rx) - 1) // 2
+        ax.annotate("", xy=(rx[m + 1], ry[m + 1]), xytext=(rx[m], ry[m]),
+                    arrowprops=dict(arrowstyle="-|>", color="C0", lw=1.5), zorder=3)
+    span = max(np.ptp(rx), np.ptp(ry), 1e-12)
+    if np.hypot(np.mean(rx), np.mean(ry)) < 3 * span:  # the origin is near: show it
+        ax.plot([0], [0], "k+", ms=10)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def stability(analysis, lang="en", design=None):
+    """Share of the total weight on the steered axle [%] with the rule's limit
+    (seed 003 fig. 6.2); None without machine data.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import stability
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> ax = stability(a).axes[0]
+    >>> [line.get_label() for line in ax.lines]
+    ['steered axle A', 'limit 20 %']
+    >>> [round(float(y), 1) for y in ax.lines[0].get_ydata()[:3]]  # dRa [%], table 6.1
+    [23.8, 23.5, 23.5]
+    """
+    p = _Plot(analysis, lang, design)
+    v = p.v
+    st = v.a.stability
+    if st is None:
+        return None
+    fig, ax = p.axes(t("f_stability", lang), t("y_share", lang), "%")
+    p.line(ax, v.pick(st.steered_share), t("steered_axle", lang, st.steered), color="C0")
+    lim = 100.0 * st.min_share
+    ax.axhline(lim, ls="--", lw=1.2, color="C3", label=t("min_share", lang, lim))
+    ax.axhspan(min(0.0, ax.get_ylim()[0]), lim, color="C3", alpha=0.08)
+    top = max(float(np.max(v.pick(st.steered_share))), lim)
+    ax.set_ylim(0, top * 1.25 + 1)
+    ax.legend(fontsize="small")
+    return p.done(fig, ax)
+
+
+#: name -> function, in the report's order
+FIGURES = {"angles": angles, "distances": distances, "analogs": analogs, "transmission": transmission,
+           "capacity": capacity, "force": force, "pressure": pressure, "reactions": reactions,
+           "hodograph": hodograph, "stability": stability}
+
+
+def figures(analysis, lang="en", design=None, names=None) -> dict:
+    """Every diagram whose data exist, ``{name: Figure}`` in :data:`FIGURES` order.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    lang : {"en", "ru"}
+    design : int, optional
+        Design of a batch (required for a batch).
+    names : iterable of str, optional
+        A subset of :data:`FIGURES`.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import figures
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> print(*figures(a))  # the hitch names no distances
+    angles analogs transmission capacity force pressure reactions hodograph stability
+    >>> figs = figures(a, "ru", names=["force"])
+    >>> figs["force"].axes[0].get_title()
+    'Сила на ГЦ'
+    >>> figures(a, names=["speed"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: figure names must be among: ['angles', 'distances', ...]; got ['speed']
+    """
+    check_lang(lang)
+    names = list(FIGURES) if names is None else list(names)
+    bad = [n for n in names if n not in FIGURES]
+    if bad:
+        raise ValueError(f"figure names must be among: {list(FIGURES)}; got {bad}")
+    out = {}
+    for n in names:
+        fig = FIGURES[n](analysis, lang, design)
+        if fig is not None:
+            out[n] = fig
+    return out
+
+
+_FORMATS = ("png", "svg")
+
+
+def save(fig, path, dpi=110) -> Path:
+    """Write a figure as PNG or SVG, chosen by the file suffix.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import examples
+    >>> from assur.views.report.figures import save, stability
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> fig = stability(a)
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = save(fig, Path(d) / "fig_stability.svg")
+    ...     head = p.read_text(encoding="utf-8")[:200]
+    >>> p.name, "<svg" in head
+    ('fig_stability.svg', True)
+    >>> save(fig, "fig_stability.pdf")
+    Traceback (most recent call last):
+    ...
+    ValueError: the file suffix must be one of: ['.png', '.svg']; got 'fig_stability.pdf'
+    """
+    path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in _FORMATS:
+        raise ValueError(f"the file suffix must be one of: {['.' + f for f in _FORMATS]}; "
+                         f"got {path.name!r}")
+    meta = {"Software": None} if fmt == "png" else {"Creator": None}
+    fig.savefig(path, format=fmt, dpi=dpi, metadata=meta)
+    return path
+
+
+def to_png_bytes(fig, dpi=110, bbox_inches=None) -> bytes:
+    """The figure as PNG bytes (for embedding); ``bbox_inches="tight"`` crops it to
+    its drawn parts.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.figures import stability, to_png_bytes
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> fig = stability(a)  # 6.4 × 4.0 in
+    >>> png = to_png_bytes(fig, dpi=50)
+    >>> png[1:4], int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+    (b'PNG', 320, 200)
+    """
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None},
+                bbox_inches=bbox_inches)
+    return buf.getvalue()
+

@@ -1,0 +1,419 @@
+"""One self-contained HTML file: model, tables, diagrams, drawing, animation, notes.
+
+Everything is inside the file: styles and the small animation player are inline,
+images are ``data:`` URIs (base64 PNG). It links to nothing outside itself (no
+CSS, scripts, fonts or network addresses), so it can be mailed or archived as is.
+
+Numbers in the HTML tables are rounded as the seeds print them (m to 3 decimals,
+degrees and % to 1, N and Pa to whole units, dimensionless to 3); the CSV and
+XLSX files keep full precision.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import base64
+
+import numpy as np
+
+from ...core.quantities import display_units
+from ...texts import localize
+from .labels import TEXT, check_lang, t, unit
+from .values import parameter_value, solved_line
+
+__all__ = ["write_html", "render_html"]
+
+#: decimals shown per unit (the seeds' printed precision)
+DECIMALS = {"m": 3, "deg": 1, "-": 3, "rad/m": 3, "N": 0, "Pa": 0, "%": 1, "N·m": 0,
+            "m/rad": 3}
+
+def _fmt(x, u, lang):
+    """A number as the seeds print it."""
+    if isinstance(x, (bool, np.bool_)):
+        return t("yes" if x else "no", lang)
+    if isinstance(x, (int, np.integer)):
+        return str(int(x))
+    x = float(x)
+    if np.isnan(x):
+        return "—"
+    if np.isinf(x):
+        return "∞" if x > 0 else "−∞"
+    d = DECIMALS.get(u, 4)
+    if x != 0 and (abs(x) < 0.5 * 10.0 ** (-d) or abs(x) >= 1e9):
+        return f"{x:.3g}"
+    s = f"{x:.{d}f}"
+    return s.lstrip("-") if float(s) == 0 else s
+
+
+def data_uri(data: bytes, mime: str = "image/png") -> str:
+    """``data:`` URI of an image, for embedding it in an HTML report."""
+    return f"data:{mime};base64," + base64.b64encode(data).decode("ascii")
+
+
+def _anchor(prefix, ident):
+    return prefix + "".join(ch if ch.isalnum() else "-" for ch in str(ident)).lower()
+
+
+def _kind(g, lang):
+    """A group's kind in the report's language (the group type's own words)."""
+    return g.kind if lang == "en" else g.kind_ru
+
+
+def _summary(analysis, lang):
+    mech = analysis.mechanism
+    kin = analysis.kinematics
+    units = display_units(mech)
+    params = [(n, parameter_value(v, units[n]),
+               "°" if units[n].is_degrees else unit(units[n].text, lang))
+              for n, v in mech.params.items()]
+    coords = []
+    for c in kin.coordinates:
+        q = np.asarray(kin.q(c), dtype=float)
+        is_angle = mech.coordinate_kind(c) == "angle"
+        qq, u = (np.degrees(q), "deg") if is_angle else (q, "m")
+        # over several coordinates: each one's own values, not the grid's positions
+        n = q.shape[-1] if kin.k == 1 else np.unique(q.reshape(-1, q.shape[-1])[0]).size
+        coords.append(f"{c}: {qq.min():.6g} … {qq.max():.6g} {unit(u, lang)} "
+                      f"({n} {t('positions', lang)})")
+    if kin.k > 1:  # the grid's shape, or paired paths
+        shape = [np.unique(np.asarray(kin.q(c), float).reshape(-1, kin.n)[0]).size
+                 for c in kin.coordinates]
+        coords.append(f"{' × '.join(kin.coordinates)}: "
+                      + (f"{' × '.join(map(str, shape))} = " if np.prod(shape) == kin.n
+                         else t("paired", lang) + ", ")
+                      + f"{kin.n} {t('positions', lang)}")
+    groups = [(g.name, _kind(g, lang), ", ".join(g.inputs()), ", ".join(g.outputs()),
+               ", ".join(g.group_links())) for g in mech.groups if g.type_name != "frame"]
+    links = []
+    for b, v in mech.bodies.items():
+        kind = t("frame", lang) if b == "0" else (t("variable", lang) if v["variable"]
+                                                  else t("rigid", lang))
+        links.append((b, kind, ", ".join(v["points"])))
+    machine = []
+    carry = mech.machine
+    if carry is not None and getattr(carry, "machine", None) is not None:
+        mc = carry.machine
+        for name, x in mc.axles.items():
+            tag = " (steered)" if name == mc.steered and lang == "en" else (
+                " (управляемая)" if name == mc.steered else "")
+            machine.append(f"{'axle' if lang == 'en' else 'ось'} {name}{tag}: "
+                           f"x = {x:.6g} {unit('m', lang)}")
+        for name, p, x in tuple(mc.weights) + tuple(mc.counterweights):
+            machine.append(f"{name}: {p:.6g} {unit('N', lang)}, x = {x:.6g} {unit('m', lang)}")
+        machine.append(f"min share: {100 * mc.min_share:g} %" if lang == "en"
+                       else f"минимальная доля: {100 * mc.min_share:g} %")
+    solved = [solved_line(sc, mech, lang, units) for sc in getattr(analysis, "solved", ())]
+    return dict(params=params, coords=coords, groups=groups, links=links, machine=machine,
+                solved=solved, dynamics=_dynamics_lines(analysis, lang))
+
+
+def _dynamics_lines(analysis, lang):
+    """The crank dynamics in a few lines: speed, reduced moment of inertia, driving
+    moment, the common centre of mass, the flywheel and the balancing (lab 3)."""
+    dyn = getattr(analysis, "dynamics", None)
+    if dyn is None:
+        return []
+    mm = 1e3
+    w = np.abs(np.ravel(dyn.qdot))
+    c = dyn.centre
+    out = [t("dyn_speed", lang, dyn.coordinate, float(w.mean()), float(w.mean()) * 30 / np.pi),
+           t("dyn_jred", lang, float(np.min(dyn.reduced_inertia)),
+             float(np.max(dyn.reduced_inertia))),
+           t("dyn_md", lang, float(np.min(dyn.driving_moment)),
+             float(np.max(dyn.driving_moment))),
+           t("dyn_centre", lang, float(c.amplitude_x) * mm, float(c.amplitude_y) * mm,
+             float(c.area) * mm * mm, float(c.mass))]
+    fw = getattr(analysis, "flywheel", None)
+    if fw is not None:
+        out.append(t("dyn_flywheel", lang, fw.delta, fw.J_flywheel, fw.omega_min, fw.omega_max,
+                     fw.driving_moment, fw.J_classical, fw.J_mertsalov))
+    b = getattr(analysis, "balancing", None)
+    if b is not None:
+        placed = "; ".join(t("dyn_mass", lang, m.link, float(m.m), float(m.along) * mm,
+                             float(m.offset) * mm) for m in b.masses) or "—"
+        out.append(t("dyn_balance", lang, t(f"objective_{b.objective}", lang), placed,
+                     float(b.after.amplitude_x) * mm, float(b.after.amplitude_y) * mm,
+                     float(b.after.area) * mm * mm))
+    return out
+
+
+def _table_view(tab, lang):
+    cols = []
+    for c in tab.columns:
+        mark = "*" if c.printed_sign < 0 else ""
+        tip = c.label.get(lang, "") + (f" — {t('printed_sign', lang)}" if mark else "")
+        cols.append(dict(symbol=c.symbol + mark, unit=unit(c.unit, lang), tip=tip))
+    rows = []
+    for i in range(len(tab)):
+        rows.append([_fmt(c.values[i], c.unit, lang) for c in tab.columns])
+    return dict(id=tab.id, anchor=_anchor("table-", tab.id), title=tab.title(lang), cols=cols,
+                rows=rows, notes=[n.get(lang, n.get("en", "")) for n in tab.notes])
+
+
+def _figure_items(figures, lang):
+    from .figures import to_png_bytes
+
+    items = []
+    for k, (name, obj) in enumerate(figures.items(), start=1):
+        caption = None
+        if isinstance(obj, tuple):
+            obj, caption = obj
+        if not isinstance(obj, (bytes, bytearray)):
+            if caption is None and obj.axes:
+                caption = obj.axes[0].get_title()
+            obj = to_png_bytes(obj)
+        if caption is None:
+            key = f"f_{name}"
+            caption = TEXT[key][lang].replace("{0}", "").strip() if key in TEXT else name
+        items.append(dict(name=name, anchor=_anchor("fig-", name), src=data_uri(bytes(obj)),
+                          caption=f"{t('figure', lang)} {k} — {caption}"))
+    return items
+
+
+def _warnings(analysis, tables, lang):
+    mech = analysis.mechanism
+    groups = []
+    model_notes = ([localize(n, lang) for n in mech.notes]
+                   + list(getattr(analysis.kinematics, "failures", []))
+                   + list(analysis.model_warnings)
+                   + list(getattr(analysis, "notes", ())))
+    groups.append((t("model_notes", lang), model_notes))
+    from ...core.columns import formulas_of, signs_of
+    sign_notes = [localize(m.note, lang) for m in signs_of(mech) if m.note]
+    groups.append((t("statics_flags", lang), sign_notes))
+    stab = [localize(x, lang) for f in formulas_of(mech) for x in f.flags]
+    groups.append((t("stability_flags", lang), stab))
+    seen = set(model_notes) | set(sign_notes) | set(stab)
+    other = []
+    for tab in tables:
+        for n in tab.notes:
+            txt = n.get(lang, n.get("en", ""))
+            if txt not in seen and n.get("en") not in seen:
+                seen.add(txt)
+                other.append(f"{t('table', lang)} {tab.id}: {txt}")
+    groups.append((t("table_notes", lang), other))
+    return [dict(title=g, entries=items) for g, items in groups if items]
+
+
+_TEMPLATE = r"""<!DOCTYPE html>
+<html lang="{{ lang }}">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{{ title }} — {{ L.report }}</title>
+<style>
+body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif;
+       margin: 0 auto; max-width: 1180px; padding: 0 1.2em 3em; color: #1d2125;
+       line-height: 1.4; }
+h1 { margin: 0.8em 0 0.1em; font-size: 1.6em; }
+h2 { border-bottom: 2px solid #d0d7de; padding-bottom: 0.2em; margin-top: 1.8em; }
+h3 { margin: 1.4em 0 0.4em; font-size: 1.08em; }
+.sub { color: #57606a; margin: 0; }
+nav ul { columns: 2; padding-left: 1.2em; }
+nav a, a { color: #0b5cad; text-decoration: none; }
+.scroll { overflow-x: auto; border: 1px solid #d0d7de; border-radius: 4px; }
+table { border-collapse: collapse; font-size: 0.86em; font-variant-numeric: tabular-nums; }
+th, td { padding: 0.22em 0.6em; border-bottom: 1px solid #eaeef2; text-align: right;
+         white-space: nowrap; }
+th { background: #f6f8fa; position: sticky; top: 0; }
+th .u { display: block; font-weight: normal; color: #57606a; font-size: 0.9em; }
+td:first-child, th:first-child { position: sticky; left: 0; background: #f6f8fa; }
+table.kv td, table.kv th { text-align: left; }
+.notes { font-size: 0.86em; color: #57606a; margin: 0.3em 0 0 1.2em; }
+figure { display: inline-block; margin: 0.6em 0.6em 1em 0; vertical-align: top; }
+figure img { max-width: 100%; border: 1px solid #eaeef2; }
+figcaption { font-size: 0.9em; color: #3d444d; }
+.warn { background: #fff8e1; border-left: 4px solid #e0a800; padding: 0.5em 1em;
+        margin: 0.6em 0; }
+.warn li { margin: 0.3em 0; }
+.player button { font-size: 0.95em; margin-right: 0.6em; }
+.player input { width: 60%; vertical-align: middle; }
+footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
+</style>
+</head>
+<body>
+<h1>{{ title }}</h1>
+<p class="sub">{{ L.report }} · {{ name }}</p>
+
+<nav><h2>{{ L.contents }}</h2>
+<ul>
+<li><a href="#model">{{ L.summary }}</a></li>
+{% for tab in tables %}<li><a href="#{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</a></li>
+{% endfor %}{% if figures %}<li><a href="#figures">{{ L.figures }}</a></li>{% endif %}
+{% if drawing or frames %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
+<li><a href="#warnings">{{ L.warnings }}</a></li>
+</ul></nav>
+
+<section id="model"><h2>{{ L.summary }}</h2>
+<p><b>{{ L.coordinates }}:</b> {% for c in summary.coords %}{{ c }}{% if not loop.last %}; {% endif %}{% endfor %}</p>
+<h3>{{ L.parameters }}</h3>
+<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.value }}</th><th>{{ L.unit }}</th></tr>
+{% for n, v, u in summary.params %}<tr><td>{{ n }}</td><td>{{ v }}</td><td>{{ u }}</td></tr>
+{% endfor %}</table></div>
+<h3>{{ L.groups }}</h3>
+<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.kind }}</th><th>{{ L.inputs }}</th><th>{{ L.outputs }}</th><th>{{ L.links }}</th></tr>
+{% for g in summary.groups %}<tr>{% for c in g %}<td>{{ c }}</td>{% endfor %}</tr>
+{% endfor %}</table></div>
+<h3>{{ L.links }}</h3>
+<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.kind }}</th><th>{{ L.points }}</th></tr>
+{% for l in summary.links %}<tr>{% for c in l %}<td>{{ c }}</td>{% endfor %}</tr>
+{% endfor %}</table></div>
+{% if summary.machine %}<h3>{{ L.machine }}</h3><ul>{% for m in summary.machine %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
+{% if summary.solved %}<h3>{{ L.solved }}</h3><ul>{% for m in summary.solved %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
+{% if summary.dynamics %}<h3>{{ L.dynamics }}</h3><ul>{% for m in summary.dynamics %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
+</section>
+
+<section id="tables"><h2>{{ L.tables }}</h2>
+{% for tab in tables %}
+<h3 id="{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</h3>
+<div class="scroll"><table>
+<tr>{% for c in tab.cols %}<th title="{{ c.tip }}">{{ c.symbol }}<span class="u">[{{ c.unit }}]</span></th>{% endfor %}</tr>
+{% for row in tab.rows %}<tr>{% for v in row %}<td>{{ v }}</td>{% endfor %}</tr>
+{% endfor %}</table></div>
+{% if tab.notes %}<ul class="notes">{% for n in tab.notes %}<li>{{ n }}</li>{% endfor %}</ul>{% endif %}
+{% endfor %}
+</section>
+
+{% if figures %}<section id="figures"><h2>{{ L.figures }}</h2>
+{% for f in figures %}<figure id="{{ f.anchor }}"><img src="{{ f.src }}" alt="{{ f.caption }}"><figcaption>{{ f.caption }}</figcaption></figure>
+{% endfor %}</section>{% endif %}
+
+{% if drawing or frames %}<section id="drawing"><h2>{{ L.drawing }}</h2>
+{% if drawing %}<figure><img src="{{ drawing }}" alt="{{ L.drawing }}"><figcaption>{{ L.drawing }}</figcaption></figure>{% endif %}
+{% if frames %}<figure id="animation"><img id="anim-img" src="{{ frames[0] }}" alt="{{ L.animation }}">
+<figcaption>{{ L.animation }}</figcaption>
+<div class="player"><button type="button" id="anim-play">{{ L.play }}</button>
+<input type="range" id="anim-pos" min="0" max="{{ frames|length - 1 }}" value="0" aria-label="{{ L.position }}"></div>
+</figure>
+<script>
+(function () {
+  var frames = {{ frames|tojson }};
+  var img = document.getElementById("anim-img"), pos = document.getElementById("anim-pos");
+  var i = 0, dir = 1, timer = null;
+  function show(k) { i = k; img.src = frames[k]; pos.value = k; }
+  function step() { var n = i + dir; if (n < 0 || n >= frames.length) { dir = -dir; n = i + dir; } show(n); }
+  function toggle() { if (timer) { clearInterval(timer); timer = null; } else { timer = setInterval(step, {{ interval }}); } }
+  document.getElementById("anim-play").addEventListener("click", toggle);
+  pos.addEventListener("input", function () { if (timer) toggle(); show(+pos.value); });
+  toggle();
+})();
+</script>{% endif %}
+</section>{% endif %}
+
+<section id="warnings"><h2>{{ L.warnings }}</h2>
+{% for w in warnings %}<div class="warn"><b>{{ w.title }}</b><ul>{% for i in w.entries %}<li>{{ i }}</li>{% endfor %}</ul></div>
+{% else %}<p>{{ L.no_warnings }}</p>{% endfor %}
+</section>
+<footer>{{ L.generated }}</footer>
+</body>
+</html>
+"""
+
+
+def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, animation=None,
+                design=None, interval=120) -> str:
+    """The report as an HTML string (see :func:`write_html`).
+
+    Examples
+    --------
+    >>> import re
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> from assur.views.report.html import render_html
+    >>> page = render_html(a, figures={}, drawing=False, animation=False)  # tables only
+    >>> re.search(r"<title>(.*?)</title>", page).group(1)
+    'Mini-tractor mounted-implement hitch (seed 003) — Analysis report'
+    >>> rows = re.findall(r"<tr><td>0\\.420</td>.*?</tr>", page)  # S = 0.420 m of each table
+    >>> re.findall(r"<td>(.*?)</td>", rows[3])  # table 4.1 as printed [m, N, Pa, N, N, %]
+    ['0.420', '129614', '15348729', '33139', '31354', '14.0']
+    >>> '<html lang="ru"' in render_html(a, "ru", figures={}, drawing=False, animation=False)
+    True
+    """
+    import jinja2
+
+    from . import drawing as _drawing
+    from . import figures as _figures
+    from .tables import seed_tables
+
+    check_lang(lang)
+    if tables is None:
+        tables = seed_tables(analysis, lang, design=design)
+    if figures is None:
+        figures = _figures.figures(analysis, lang, design=design)
+    if drawing is None:
+        drawing = _drawing.draw(analysis, lang=lang, design=design)
+    if animation is None:
+        animation = _drawing.render_frames(analysis, lang=lang, design=design)
+    drawing_uri = None
+    if drawing is not False:
+        png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
+        drawing_uri = data_uri(bytes(png))
+    frames = []
+    if animation is not False and animation:
+        if not isinstance(animation[0], (bytes, bytearray)):
+            animation = _drawing.frames_png_bytes(animation)
+        frames = [data_uri(bytes(f)) for f in animation]
+    env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
+    tpl = env.from_string(_TEMPLATE)
+    L = {k: v[lang] for k, v in TEXT.items()}
+    mech = analysis.mechanism
+    return tpl.render(
+        lang=lang, L=L, title=localize(mech.title, lang), name=mech.name,
+        summary=_summary(analysis, lang),
+        tables=[_table_view(tab, lang) for tab in tables],
+        figures=_figure_items(dict(figures), lang),
+        drawing=drawing_uri, frames=frames, interval=int(interval),
+        warnings=_warnings(analysis, tables, lang))
+
+
+def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=None,
+               animation=None, design=None) -> Path:
+    """Write the whole report as one self-contained HTML file.
+
+    Parameters
+    ----------
+    analysis : Analysis
+    path : str or Path
+        The ``.html`` file to write.
+    lang : {"en", "ru"}
+        Language of every label.
+    figures : mapping of str to Figure, bytes or (bytes, caption), optional
+        The diagrams (PNG bytes or matplotlib figures); default: all of
+        :func:`assur.views.report.figures.figures`.
+    tables : list of Table, optional
+        Default: :func:`assur.views.report.tables.seed_tables`.
+    drawing : Figure, bytes or False, optional
+        The drawing of the mechanism; default :func:`assur.views.report.drawing.draw`;
+        False leaves it out.
+    animation : list of PNG bytes or PIL images, or False, optional
+        Frames of the animation (played by an inline script); default
+        :func:`assur.views.report.drawing.render_frames`; False leaves it out.
+    design : int, optional
+        Design of a batch.
+
+    Returns
+    -------
+    Path
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur import examples
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> from assur.views.report.html import write_html
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = write_html(a, Path(d) / "report.html", lang="ru", figures={}, drawing=False,
+    ...                    animation=False)
+    ...     page = p.read_text(encoding="utf-8")
+    >>> p.name, page.startswith("<!DOCTYPE html>"), 'src="http' in page  # self-contained
+    ('report.html', True, False)
+    >>> "Механизм навески мини-трактора" in page  # the model's title in Russian
+    True
+    """
+    text = render_html(analysis, lang, figures, tables, drawing, animation, design)
+    path = Path(path)
+    path.write_text(text, encoding="utf-8")
+    return path
+

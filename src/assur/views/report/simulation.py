@@ -1,0 +1,318 @@
+"""Views of a simulation in time (:class:`assur.dynamics.SimulationResult`): the
+time series as CSV, the diagrams of seed 001 lab 6 (figs. 6.3–6.7) and a
+self-contained HTML report.
+
+=================  ===============================================================
+figure             what
+=================  ===============================================================
+``pressure``       p1 at the pump and p2 at the cylinder [MPa] against t (fig. 6.3)
+``pressure_rate``  dp1/dt [MPa/s] (fig. 6.4)
+``coordinate``     S [m] (fig. 6.5)
+``speed``          dS/dt [m/s] with the steady speed Q/A (fig. 6.6)
+``acceleration``   d²S/dt² [m/s²] (fig. 6.7)
+``reduced_mass``   m(S) [kg] and m'(S) [kg/m] over the stroke
+=================  ===============================================================
+
+Pressures are shown in MPa, lengths in m, as lab 6 prints them. With k > 1
+coordinates (seed 004's crane) every figure has a curve per branch, the pressure
+figure the pump's pressure too, and ``reduced_mass`` shows the diagonal of M(q(t)).
+"""
+
+from __future__ import annotations
+
+import html
+from pathlib import Path
+
+import numpy as np
+
+from ...texts import Text, localize
+from .figures import new_figure, titled_axes, to_png_bytes
+from .html import data_uri
+from .labels import check_lang, t, unit
+
+__all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
+
+FIGURES = ("pressure", "pressure_rate", "coordinate", "speed", "acceleration", "reduced_mass")
+MPA = 1e6
+
+
+#: texts of the k-coordinate simulation (the lab-6 ones are in :mod:`.labels`)
+_TEXT = {
+    "divider": Text("lost in the flow divider", ru="потери в делителе потока"),
+    "pump": Text("pump pressure p_p = max p1", ru="давление насоса p_p = max p1"),
+    "mass": Text("Diagonal of the mass matrix M_jj", ru="Диагональ матрицы масс M_jj"),
+    "steady": Text("steady rod speed s·Q/A of {0} = {1:.4g} m/s",
+                   ru="установившаяся скорость штока s·Q/A {0} = {1:.4g} м/с"),
+    "evals": Text("{0} evaluations of the right-hand side",
+                  ru="{0} вычислений правой части"),
+}
+
+
+def _tx(key, lang, *args):
+    s = localize(_TEXT[key], lang)
+    return s.format(*args) if args else s
+
+
+def figures(result, lang="en"):
+    """``{name: Figure}`` of :data:`FIGURES` for a simulation result (with k > 1
+    coordinates every branch's curve, labelled by its coordinate).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.views.report.simulation import figures
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> figs = figures(r)
+    >>> print(*figs)
+    pressure pressure_rate coordinate speed acceleration reduced_mass
+    >>> [f.axes[0].get_ylabel() for f in figs.values()][:4]
+    ['p [MPa]', 'dp1/dt [MPa/s]', 'S [m]', 'dS/dt [m/s]']
+    >>> [line.get_label() for line in figs["speed"].axes[0].lines]
+    ['dS/dt', 'Q/A (steady speed)']
+    >>> round(float(figs["speed"].axes[0].lines[1].get_ydata()[0]), 4)  # Q/A [m/s], lab 6: 0.0704
+    0.0704
+    """
+    check_lang(lang)
+    cs = result.coordinates
+    k = len(cs)
+    col = result.column
+    tag = (lambda j: "") if k == 1 else (lambda j: f" ({cs[j]})")
+    tx = f"{t('sim_time', lang)} [{unit('s', lang)}]"
+    out = {}
+
+    def fig(name, title, ylabel):
+        f = new_figure()
+        out[name] = f
+        return titled_axes(f, title, tx, ylabel)
+
+    ax = fig("pressure", t("sim_p", lang), f"p [{unit('MPa', lang)}]")
+    for j in range(k):
+        ax.plot(result.t, col(result.p1, j) / MPA, label="p1" + tag(j))
+        ax.plot(result.t, col(result.p2, j) / MPA, "--", label="p2" + tag(j))
+    if k > 1:
+        ax.plot(result.t, result.pump_pressure / MPA, ":", color="k", lw=0.8,
+                label=_tx("pump", lang))
+    ax.legend()
+    ax = fig("pressure_rate", t("sim_dp", lang), f"dp1/dt [{unit('MPa/s', lang)}]")
+    for j in range(k):
+        ax.plot(result.t, col(result.p1dot, j) / MPA, label="dp1/dt" + tag(j))
+    if k > 1:
+        ax.legend()
+    names = ", ".join(cs)
+    ax = fig("coordinate", t("sim_s", lang, names), f"{names} [{unit('m', lang)}]")
+    for j, c in enumerate(cs):
+        ax.plot(result.t, col(result.q, j), label=c)
+    if k > 1:
+        ax.legend()
+    ax = fig("speed", t("sim_v", lang, names), f"d{names}/dt [{unit('m/s', lang)}]")
+    steady = np.atleast_1d(result.steady_speed)
+    for j, c in enumerate(cs):
+        ax.plot(result.t, col(result.qdot, j), label=f"d{c}/dt")
+        ax.axhline(steady[j], color=f"C{j}", lw=0.8, ls=":", label=t("sim_steady", lang)
+                   + tag(j))
+    ax.legend()
+    ax = fig("acceleration", t("sim_a", lang, names), f"d²{names}/dt² [{unit('m/s²', lang)}]")
+    for j, c in enumerate(cs):
+        ax.plot(result.t, col(result.qddot, j), label=f"d²{c}/dt²")
+    if k > 1:
+        ax.legend()
+    f = new_figure()
+    if k == 1:
+        c = cs[0]
+        ax = titled_axes(f, t("sim_m", lang, c), f"{c} [{unit('m', lang)}]",
+                         f"m [{unit('kg', lang)}]")
+        order = np.argsort(result.q, kind="stable")
+        ax.plot(result.q[order], result.reduced_mass[order], label="m")
+        ax2 = ax.twinx()
+        ax2.plot(result.q[order], result.reduced_mass_derivative[order], "--", color="C1",
+                 label="m'")
+        ax2.set_ylabel(f"m' [{unit('kg/m', lang)}]")
+    else:
+        ax = titled_axes(f, _tx("mass", lang), tx, f"M_jj [{unit('kg', lang)}]")
+        for j, c in enumerate(cs):
+            ax.plot(result.t, result.reduced_mass[:, j], label=f"M ({c}, {c})")
+        ax.legend()
+    out["reduced_mass"] = f
+    return out
+
+
+def time_series(result):
+    """The time series as a pandas DataFrame with units in the column names (t [s],
+    S [m], dS/dt [m/s], d²S/dt² [m/s²], p1, p2 [MPa], dp1/dt [MPa/s], flows [l/min],
+    force and load [kN], m [kg], m' [kg/m]); with k > 1 coordinates a branch's
+    columns carry its coordinate (``p1 S2 [MPa]``), and the pump's pressure
+    ``p_pump [MPa]`` is added.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.views.report.simulation import time_series
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> df = time_series(r)
+    >>> list(df.columns[:5])
+    ['t [s]', 'S [m]', 'dS/dt [m/s]', 'd2S/dt2 [m/s2]', 'p1 [MPa]']
+    >>> [round(float(x), 3) for x in df["S [m]"]]  # the rod from its stop S = 0.55 m [m]
+    [0.55, 0.582, 0.615]
+    >>> [round(float(x), 2) for x in df["p1 [MPa]"]]  # pump pressure rising [MPa]
+    [0.0, 3.07, 4.64]
+    """
+    import pandas as pd
+    cs = result.coordinates
+    k = len(cs)
+    cols = {"t [s]": result.t}
+    for j, c in enumerate(cs):
+        col = (lambda a: result.column(a, j))  # noqa: E731
+        b = "" if k == 1 else f" {c}"
+        cols.update({f"{c} [m]": col(result.q), f"d{c}/dt [m/s]": col(result.qdot),
+                     f"d2{c}/dt2 [m/s2]": col(result.qddot),
+                     f"p1{b} [MPa]": col(result.p1) / MPA, f"p2{b} [MPa]": col(result.p2) / MPA,
+                     f"dp1/dt{b} [MPa/s]": col(result.p1dot) / MPA,
+                     f"F{b} [kN]": col(result.force) / 1e3,
+                     f"P_load{b} [kN]": col(result.load) / 1e3,
+                     f"m{b} [kg]": col(result.reduced_mass),
+                     f"m'{b} [kg/m]": col(result.reduced_mass_derivative),
+                     f"phase{b}": col(result.phase)})
+        cols.update({f"Q_{n}{b} [l/min]": col(v) * 60e3 for n, v in result.flows.items()
+                     if n != "pump"})
+    cols["Q_pump [l/min]"] = result.flows["pump"] * 60e3
+    if k > 1:
+        cols["p_pump [MPa]"] = result.pump_pressure / MPA
+    # + 0.0: never a -0.0 in a table
+    return pd.DataFrame({n: v if n.startswith("phase") else np.asarray(v, float) + 0.0
+                         for n, v in cols.items()})
+
+
+def summary(result, lang="en"):
+    """Rows ``(label, value, unit)`` of the status, events and energy balance.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.views.report.simulation import summary
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> rows = summary(r)
+    >>> rows[0]
+    ('status: reached t_end', '', '')
+    >>> rows[2]  # the rod leaves its stop [s]
+    ('lift-off from the stop', '0.0828', 's')
+    >>> [row[0] for row in rows][3:5]  # then the energy balance [J]
+    ['work of the pump', 'lost in the relief valve']
+    >>> summary(r, "ru")[0]
+    ('результат: расчёт доведён до t_end', '', '')
+    """
+    # a run that reached its end says so in the report's language; any other message
+    # (a stop, a solver failure) is the engine's own text
+    done = result.status == 0 and result.message == "reached t_end"
+    rows = [(t("sim_status", lang, t("sim_reached", lang) if done else result.message),
+             "", "")]
+    if len(result.coordinates) == 1:
+        rows.append((t("sim_steady_line", lang, result.steady_speed, result.nfev), "", ""))
+        for name, times in result.events.items():
+            for x in times:
+                rows.append((t(f"sim_ev_{name}", lang), f"{x:.4f}", unit("s", lang)))
+    else:
+        for c, v in zip(result.coordinates, result.steady_speed):
+            rows.append((_tx("steady", lang, c, v), "", ""))
+        rows.append((_tx("evals", lang, result.nfev), "", ""))
+        for x, name, c in result.event_log:
+            rows.append((f"{t(f'sim_ev_{name}', lang)} ({c})", f"{x:.4f}", unit("s", lang)))
+    keys = ["pump", "relief", "line", "impact", "mechanism_kinetic", "line_kinetic", "loads",
+            "oil", "residual"]
+    if len(result.coordinates) > 1:
+        keys.insert(2, "divider")
+    for key in keys:
+        label = _tx(key, lang) if key == "divider" else t(f"sim_en_{key}", lang)
+        rows.append((label, f"{result.energy[key]:.6g}", unit("J", lang)))
+    return rows
+
+
+def write_simulation_report(result, outdir, title="", lang="en",
+                            formats=("csv", "png", "html", "gif"), mechanism=None,
+                            frame_step=0.1):
+    """Write ``simulation.csv``, ``simulation_summary.csv``, the figures
+    (``sim_<name>.png``), ``simulation.html`` (self-contained) and, given the
+    ``mechanism``, ``simulation.gif``: its drawing at S(t) every ``frame_step``
+    seconds, played in real time (:func:`assur.views.report.drawing.render_frames`).
+
+    Returns
+    -------
+    list of Path
+        The files written.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import pandas as pd
+    >>> from assur import io
+    >>> from assur.dynamics import simulate
+    >>> from assur.views.report.simulation import write_simulation_report
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> r = simulate(model.mechanism, model.drive, 1.0, t_eval=[0.0, 0.5, 1.0])  # t [s]
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     files = write_simulation_report(r, d, formats=("csv",))
+    ...     items = pd.read_csv(files[1])["item"].tolist()
+    ...     n = len(pd.read_csv(files[0]))
+    >>> [p.name for p in files], n  # the time series: one row per time of t_eval
+    (['simulation.csv', 'simulation_summary.csv'], 3)
+    >>> items[2]
+    'lift-off from the stop'
+    """
+    check_lang(lang)
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    files = []
+    if "csv" in formats:
+        p = out / "simulation.csv"
+        time_series(result).to_csv(p, index=False)
+        files.append(p)
+        import pandas as pd
+        p = out / "simulation_summary.csv"
+        pd.DataFrame(summary(result, lang), columns=["item", "value", "unit"]).to_csv(
+            p, index=False)
+        files.append(p)
+    figs = figures(result, lang) if ("png" in formats or "html" in formats) else {}
+    pngs = {name: to_png_bytes(f) for name, f in figs.items()}
+    if "png" in formats:
+        for name, data in pngs.items():
+            p = out / f"sim_{name}.png"
+            p.write_bytes(data)
+            files.append(p)
+    gif_uri = None
+    if "gif" in formats and mechanism is not None:
+        from .drawing import render_frames, write_gif
+        ts = np.arange(0.0, result.t[-1] + 1e-9, frame_step)
+        q = np.asarray(result.q)
+        qf = np.interp(ts, result.t, q) if q.ndim == 1 else np.column_stack(
+            [np.interp(ts, result.t, q[:, j]) for j in range(q.shape[1])])
+        frames = render_frames(mechanism.analyze(qf), frames=0, lang=lang)
+        p = write_gif(frames, out / "simulation.gif", duration=int(round(frame_step * 1e3)),
+                      bounce=False)
+        files.append(p)
+        gif_uri = data_uri(p.read_bytes(), "image/gif")
+    if "html" in formats:
+        esc = html.escape
+        parts = [f"<!doctype html><html lang='{lang}'><head><meta charset='utf-8'>"
+                 f"<title>{esc(title or t('sim_report', lang))}</title>"
+                 "<style>body{font-family:sans-serif;max-width:60em;margin:auto}"
+                 "td{padding:2px 8px}img{max-width:100%}</style></head><body>",
+                 f"<h1>{esc(t('sim_report', lang))}</h1>",
+                 f"<h2>{esc(title)}</h2>" if title else "", "<table>"]
+        for label, value, u in summary(result, lang):
+            parts.append(f"<tr><td>{esc(label)}</td><td>{esc(value)}</td><td>{esc(u)}</td></tr>")
+        parts.append("</table>")
+        if gif_uri:
+            parts.append(f"<figure><img alt='motion' src='{gif_uri}'></figure>")
+        for name, data in pngs.items():
+            uri = data_uri(data)
+            parts.append(f"<figure><img alt='{esc(name)}' src='{uri}'></figure>")
+        parts.append("</body></html>")
+        p = out / "simulation.html"
+        p.write_text("\n".join(parts), encoding="utf-8")
+        files.append(p)
+    return files
