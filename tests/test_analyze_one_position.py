@@ -15,7 +15,6 @@ import pytest
 
 from assur import io
 from assur.core import statics
-from assur.analysis import gravity_of
 
 MODELS = ["hitch_003", "header_000_fixed", "steering_lab4", "spout_lab5", "adapter_lab6",
           "combine_002"]
@@ -37,7 +36,7 @@ def test_one_position_equals_the_array_path(name, monkeypatch):
     q = q[np.linspace(0, q.size - 1, min(q.size, 6)).astype(int)]
     ref = mech.analyze(q)
     qdot, qddot = ref.rates or (None, None)  # a rod's [motion]: inertia loads
-    ref_st = statics.solve(ref.kinematics, qdot, qddot, g=gravity_of(mech), method="array")
+    ref_st = statics.solve(ref.kinematics, qdot, qddot, g=mech.g, method="array")
 
     fused_calls = []
     real = statics._solve_fused

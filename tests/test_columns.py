@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 from assur import examples, io
-from assur.analysis import gravity_of
 from assur.core.columns import Formula, FormulaError, SignMap, parse
 from assur.io import ModelFileError
 from assur.views.report import seed_tables
@@ -205,8 +204,8 @@ def test_gravity_default_and_the_model_s_own():
     m981 = io.loads(base, name="a.toml")
     m = io.loads(base.replace('notes = [', 'gravity = "9.80665 m/s^2"\nnotes = ['),
                  name="b.toml")
-    assert GRAVITY == 9.81 and gravity_of(m981.mechanism) == 9.81
-    assert gravity_of(m.mechanism) == 9.80665
+    assert GRAVITY == 9.81 and m981.mechanism.g == 9.81
+    assert m.mechanism.g == 9.80665
     a1 = m981.mechanism.analyze(m981.range)
     a2 = m.mechanism.analyze(m.range)
     f_w = 27500.0 * a1.kinematics.transmission("56")   # the weight P at 56, in N

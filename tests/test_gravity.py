@@ -24,8 +24,7 @@ def mass_force(m, method=None):
     """The actuator force of the mass alone [N] (the lift has no other load here)."""
     kin = m.mechanism.solve(m.range)
     from assur.core import statics
-    from assur.analysis import gravity_of
-    return kin, statics.solve(kin, g=gravity_of(m.mechanism), method=method).actuator_force("S")
+    return kin, statics.solve(kin, g=m.mechanism.g, method=method).actuator_force("S")
 
 
 def test_the_default_direction_is_straight_down_exactly():

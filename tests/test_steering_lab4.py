@@ -421,9 +421,15 @@ def test_a_line_needs_one_driving_cylinder():
 
 
 def test_fused_outputs_name_the_line():
+    """The fused kernel gives the line's pressure (the one formula of
+    assur.core.cylinders); a capacity at one point of a line's cylinder is undefined."""
     m = io.load(io.bundled("steering_lab4"))
+    p = m.mechanism.evaluate(m.range, outputs=["p(ГЦ1)", "p(ГЦ2)"])
+    a0 = m.mechanism.analyze(m.range)
+    for name in ("ГЦ1", "ГЦ2"):
+        assert np.allclose(p[f"p({name})"], a0.cylinders[name].pressure, rtol=1e-12, atol=0)
     with pytest.raises(ModelError, match="supply line"):
-        m.mechanism.evaluate(m.range, outputs=["p(ГЦ1)"])
+        m.mechanism.evaluate(m.range, outputs=["G(ГЦ1, 3L)"])
     # the forces themselves come from the fused kernel as from the arrays
     f = m.mechanism.evaluate(m.range, outputs=["F(S1)", "Fr(S1)"])
     a = m.mechanism.analyze(m.range)

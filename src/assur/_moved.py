@@ -94,7 +94,7 @@ def new_name(old: str) -> str | None:
 #: names that moved to another module, old dotted name → new dotted name
 MOVED_NAMES = {
     "assur.design.load_problem": "assur.io.problems.load_problem",
-    "assur.analysis.gravity_of": "assur.core.mechanism.gravity_of",
+    "assur.loads.Cylinder": "assur.core.cylinders.Cylinder",
 }
 
 

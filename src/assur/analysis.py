@@ -138,27 +138,29 @@ class Analysis:
 
 
 def gravity_of(mech) -> float:
-    """The acceleration of gravity of a mechanism [m/s²]: the model's own
-    (:attr:`Mechanism.gravity`, ``[model] gravity`` of a model file), else
-    :data:`assur.core.statics.GRAVITY` (9.81).
+    """Deprecated: :attr:`assur.Mechanism.g` [m/s²] (goes in the next release).
 
     Examples
     --------
+    >>> import warnings
     >>> from assur import examples
     >>> from assur.analysis import gravity_of
-    >>> gravity_of(examples.hitch_003())                          # the default [m/s²]
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore", DeprecationWarning)
+    ...     gravity_of(examples.hitch_003())                  # [m/s²]
     9.81
-    >>> gravity_of(examples.hitch_003().with_gravity(9.80665))    # the model's own [m/s²]
-    9.80665
     """
-    return float(_statics.GRAVITY if mech.gravity is None else mech.gravity)
+    import warnings
+    warnings.warn("assur.analysis.gravity_of(m) is m.g (assur.Mechanism.g); the old name goes "
+                  "in the next release", DeprecationWarning, stacklevel=2)
+    return mech.g
 
 
 def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     """Solve positions and analogs, forces, reactions, cylinders and stability.
 
     Parameters are those of :meth:`Mechanism.solve` and :func:`assur.core.statics.solve`;
-    ``g`` [m/s²] defaults to the model's gravity (:func:`gravity_of`).
+    ``g`` [m/s²] defaults to the model's gravity (:attr:`assur.Mechanism.g`).
 
     Examples
     --------
@@ -169,7 +171,7 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
     [31354, 29959]
     """
     if g is None:
-        g = gravity_of(mech)
+        g = mech.g
     kin = mech.solve(q, params=params, **solve_kw)
     notes = []
     if qdot is None and qddot is None:

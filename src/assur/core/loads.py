@@ -41,8 +41,9 @@ from typing import ClassVar, Union
 
 import numpy as np
 
-__all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass", "Cylinder",
-           "LOAD_TYPES", "names_in"]
+__all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass",
+           "LOAD_TYPES", "names_in", "load_link", "masses_of", "dead_load_links", "is_dead",
+           "centre_of_mass"]
 
 Ref = Union[str, float, int]
 
@@ -426,106 +427,6 @@ class Mass:
             c.couple(self.link, -c.value(self.J) * c.angular_acceleration(self.link))
 
 
-@dataclass(frozen=True)
-class Cylinder:
-    """Hydraulic cylinder(s) acting as the generalized coordinate ``coordinate`` — or,
-    passive, on a length the mechanism determines (``distance``).
-
-    A cylinder's force is positive when it pushes (its length grows under it)::
-
-        piston side pressurised:   base o==[ p→ |=====o rod end     push  +p·A_piston
-        rod side pressurised:      base o==[ ←p |=====o rod end     pull  −p·A_rod
-
-    Parameters
-    ----------
-    name : str
-    coordinate : str, optional
-        The generalized coordinate (the cylinders' pin-to-pin length, or a slider's
-        travel) [m]. Give it, or ``distance``.
-    distance : str, optional
-        A passive cylinder: the named distance (``[distances]``) that is its
-        pin-to-pin length [m]; it follows the mechanism (seed 001 lab 4: the right
-        cylinder S2 follows S1) and pushes with the pressure of its ``supply`` line.
-    supply : str, optional
-        The supply line: cylinders naming one line share one pressure, solved by
-        virtual work with every cylinder of the line as an actuator (seed 001 lab 4
-        eq. 15); one of them drives a coordinate, the others are passive.
-    bore : float or str
-        Piston diameter D [m].
-    rod : float or str
-        Rod diameter d [m] (used when the rod side is pressurised).
-    rod2 : float or str
-        A double-rod cylinder: the diameter of the second rod, on the piston side [m]
-        (seed 001 lab 4, the modernised drive); its pushing area is π·(D² − d2²)/4.
-    count : int or str
-        Number of identical cylinders acting in parallel, k [-] (seed 003 k_gc = 2).
-    eta_mech : float or str
-        Mechanical efficiency of the linkage η_m [-]: the rod must push F/η_m
-        (seed 000 km = 0.85).
-    eta_hyd : float or str
-        Hydraulic efficiency η_h [-]: pressure p = F/(k·A·η_h) (seed 003 η = 0.84,
-        seed 000 kg = 0.96).
-    p_relief : float or str
-        Relief-valve setting p_relief [Pa].
-    dp_throttle, dp_line : float or str
-        Pressure losses at the throttle and in the line [Pa]; the largest working
-        pressure is p_max = p_relief − (Δp_throttle + Δp_line) (001 lab 1 eq. 1).
-    side : {"piston", "rod", "auto"}
-        Which chamber is pressurised: piston area π·(D² − d2²)/4 (pushes) or annulus
-        π·(D² − d²)/4 (pulls); ``"auto"``: the one that gives the force the loads
-        need at each position (a double-rod cylinder steering either way).
-
-    Examples
-    --------
-    The seed-003 hitch's two cylinders (values are model parameters):
-
-    >>> from assur import examples
-    >>> c = examples.hitch_003().cylinders[0]
-    >>> c.name, c.coordinate, c.bore, c.count, c.side
-    ('ГЦ', 'S', 'Dgc', 'kgc', 'piston')
-    >>> from assur.core.loads import Cylinder
-    >>> Cylinder("ГЦ", coordinate="S", bore=0.08, count=2, eta_hyd=0.84, p_relief=17.5e6).bore
-    0.08
-    """
-
-    name: str
-    coordinate: str | None = None
-    bore: Ref = 0.0
-    rod: Ref = 0.0
-    count: Ref = 1
-    eta_mech: Ref = 1.0
-    eta_hyd: Ref = 1.0
-    p_relief: Ref = 0.0
-    dp_throttle: Ref = 0.0
-    dp_line: Ref = 0.0
-    side: str = "piston"
-    distance: str | None = None
-    supply: str | None = None
-    rod2: Ref = 0.0
-
-    quantities: ClassVar = {"bore": "length", "rod": "length", "rod2": "length",
-                            "count": "number", "eta_mech": "number", "eta_hyd": "number",
-                            "p_relief": "pressure", "dp_throttle": "pressure",
-                            "dp_line": "pressure"}
-    flags: ClassVar = {"bore": "positive", "rod": "nonneg", "rod2": "nonneg", "count": "count",
-                       "eta_mech": "fraction", "eta_hyd": "fraction", "p_relief": "nonneg",
-                       "dp_throttle": "nonneg", "dp_line": "nonneg"}
-
-    @property
-    def length(self) -> str:
-        """The name of the cylinder's length: its coordinate or its distance.
-
-        Examples
-        --------
-        >>> from assur.core.loads import Cylinder
-        >>> Cylinder("ГЦ1", coordinate="S1", bore=0.05).length
-        'S1'
-        >>> Cylinder("ГЦ2", distance="S2", supply="P", side="rod", bore=0.05).length  # passive
-        'S2'
-        """
-        return self.coordinate if self.coordinate is not None else self.distance
-
-
 #: the load types by their model-file ``type`` (each declares ``type_name``,
 #: ``quantities``, ``flags``, ``point_fields``, ``link_fields`` and ``apply(c)``)
 LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring, Mass,
@@ -544,3 +445,100 @@ def names_in(value) -> tuple:
     if value is None:
         return ()
     return (value,) if isinstance(value, str) else tuple(value)
+
+
+def load_link(mech, load):
+    """The link a load acts on: its ``link``, else the owner of its ``point``; None for
+    a load between two links (a spring).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.core.loads import load_link
+    >>> m = examples.hitch_003()
+    >>> m.loads[0], load_link(m, m.loads[0])        # P6 at S6, on the implement 6
+    (Weight(point='S6', P='P6', link=None, name='P6'), '6')
+    """
+    link = getattr(load, "link", None)
+    if link is not None:
+        return link
+    point = getattr(load, "point", None)
+    return mech.owner(point) if point is not None else None
+
+
+def masses_of(mech) -> tuple:
+    """The :class:`Mass` loads of a mechanism on moving links.
+
+    Examples
+    --------
+    >>> from assur import examples, io
+    >>> from assur.core.loads import masses_of
+    >>> masses_of(examples.hitch_003())      # a weight P6, no masses
+    ()
+    >>> ms = masses_of(io.load(io.bundled("cleaning_lab3")).mechanism)   # seed 001 lab 3
+    >>> len(ms), ms[1]                       # m2, J2 are model parameters
+    (9, Mass(link='2', m='m2', point='S2', J='J2'))
+    """
+    return tuple(ld for ld in mech.loads if type(ld) is Mass and ld.link != "0")
+
+
+def dead_load_links(mech) -> tuple:
+    """The links whose loads every capacity carries besides the load it lifts
+    (``[tables] dead_loads``; seed 001 lab 1 eq. 14: the boom's own weight).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.core.loads import dead_load_links
+    >>> dead_load_links(examples.loader_lab1())   # the boom 3 (seed 001 lab 1 eq. 14)
+    ('3',)
+    >>> dead_load_links(examples.hitch_003())     # none declared
+    ()
+    """
+    return tuple(mech.tables.get("dead_loads", ()) or ())
+
+
+def is_dead(mech, load, links=None) -> bool:
+    """Whether ``load`` is a dead load: it acts on one of ``links`` (default: the
+    model's :func:`dead_load_links`).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.core.loads import is_dead
+    >>> m = examples.loader_lab1()
+    >>> [(ld.point, is_dead(m, ld)) for ld in m.loads]   # the boom's mass at S3 [-]
+    [('S3', True), ('S9', False)]
+    """
+    links = dead_load_links(mech) if links is None else tuple(links)
+    return bool(links) and load_link(mech, load) in links
+
+
+def centre_of_mass(masses, value, point):
+    """The common centre of mass Σ m_i·r_i / Σ m_i of ``masses`` and their total mass,
+    ``(x, y, M)`` [m, m, kg] in the numbers of a context — arrays, dual numbers or the
+    symbols of a kernel (seed 001 lab 3; the outputs ``Xc``, ``Yc`` and
+    :func:`assur.dynamics.balancing.common_centre` both call it).
+
+    Parameters
+    ----------
+    masses : sequence of Mass
+    value : callable
+        A mass's ``m`` (a number or parameter name) → its value [kg].
+    point : callable
+        A point's name → its ``(x, y)`` [m].
+
+    Examples
+    --------
+    >>> from assur.core.loads import Mass, centre_of_mass
+    >>> ms = [Mass("1", 2.0, "A"), Mass("2", 6.0, "B")]
+    >>> pts = {"A": (0.0, 0.0), "B": (1.0, 2.0)}
+    >>> centre_of_mass(ms, float, pts.get)        # [m], [m], [kg]
+    (0.75, 1.5, 8.0)
+    """
+    sx = sy = tot = 0.0
+    for ld in masses:
+        m = value(ld.m)
+        x, y = point(ld.point)
+        sx, sy, tot = sx + m * x, sy + m * y, tot + m
+    return sx / tot, sy / tot, tot

@@ -23,6 +23,7 @@ from . import diagnostics, inputs
 from ..errors import AssemblyError, ModelError
 from ..groups import Distance, Frame, Group, Link, registry
 from ..groups.base import is_number, ref_value, signed_name
+from .gravity import GRAVITY
 from .kinematics import Kinematics
 from .program import compile_program, execute, trig_table
 from .topology import Topology, build_topology
@@ -114,11 +115,11 @@ class Mechanism:
         self.cylinders = tuple(cylinders)
         #: machine data for stability (:class:`assur.machines.stability.Machine`) or None
         self.machine = machine
-        #: acceleration of gravity for the masses' weights [m/s²] (None: the default
-        #: :data:`assur.core.statics.GRAVITY`)
+        #: acceleration of gravity for the masses' weights [m/s²] as given (None: the
+        #: default :data:`assur.core.gravity.GRAVITY`; :attr:`g` is the value used)
         self.gravity = gravity
         #: direction of gravity from +x [rad] (None: straight down, −π/2); see
-        #: :func:`assur.core.statics.gravity_unit`
+        #: :func:`assur.core.gravity.gravity_unit`
         self.gravity_direction = gravity_direction
         #: direction of rotation and speed of crank coordinates (:class:`assur.core.motion.Motion`)
         self.motions = tuple(motions)
@@ -436,7 +437,7 @@ class Mechanism:
         >>> round(float(c.force[0])), round(float(c.pressure[0] / 1e6), 3)  # [N], [MPa]
         (10259, 1.02)
         """
-        from .loads import Cylinder
+        from .cylinders import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
     def with_machine(self, machine, point, weight, refs=None) -> "Mechanism":
@@ -532,6 +533,23 @@ class Mechanism:
             g = 0.0
         return self._with(gravity=float(g),
                           gravity_direction=None if direction is None else float(direction))
+
+    @property
+    def g(self) -> float:
+        """The acceleration of gravity of the mechanism's weights [m/s²]: the model's own
+        (:attr:`gravity`, ``[model] gravity`` of a model file), else
+        :data:`assur.core.gravity.GRAVITY` (9.81). Every computation that turns a mass
+        into a weight reads it.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().g                          # the default [m/s²]
+        9.81
+        >>> examples.hitch_003().with_gravity(9.80665).g    # the model's own [m/s²]
+        9.80665
+        """
+        return float(GRAVITY if self.gravity is None else self.gravity)
 
     def with_units(self, **units) -> "Mechanism":
         """Return a copy that shows parameters in the given units
@@ -830,7 +848,8 @@ class Mechanism:
                                  f"{w[0].point!r}: give the load as a force, or give gravity")
 
     def _validate_loads(self, known):
-        from .loads import Cylinder, names_in
+        from .cylinders import Cylinder
+        from .loads import names_in
         where = f"mechanism {self.name!r}"
 
         def ref_ok(what, ref):

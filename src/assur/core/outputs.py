@@ -24,8 +24,10 @@ Outputs are written as function calls (units SI):
 ``Fr(c)``                the same from the joint reactions [N or N·m]
 ``Rx(i, j)``, ``Ry``     force of link i on link j [N]; ``R(i, j)`` its magnitude,
                          ``Rm(i, j)`` the moment at a prismatic pair or crank drive [N·m]
-``p(cyl)``               pressure of cylinder ``cyl`` F/(η_m·k·A·η_h) [Pa]
-``G(cyl, p)``            lift capacity at point p, k·p_max·A·η_h·η_m / I(p) [N]
+``p(cyl)``               pressure of cylinder ``cyl``, σ·F/(η_m·k·A·η_h), or of its
+                         supply line [Pa]
+``G(cyl, p)``            lift capacity at point p, (σ·k·p_max·A·η_h·η_m − F_dead)/I(p)
+                         [N]
 ``reserve(cyl, p, P)``   capacity reserve (G − P)/P·100 for a load P (number or
                          parameter) [%]
 ``Xc``, ``Yc``           the common centre of mass of the masses on moving links,
@@ -33,6 +35,12 @@ Outputs are written as function calls (units SI):
 ``name``                 a formula of the model's ``[[tables.formulas]]`` by its name
                          (:class:`assur.core.columns.Formula`), e.g. ``p_c`` [SI of its unit]
 =======================  ==============================================================
+
+The cylinder outputs are the formulas of :mod:`assur.core.cylinders` (the one home of
+a cylinder's quantities: the chamber of ``side``, ``"auto"`` included, double rods,
+counts, supply lines, the model's dead loads ``[tables] dead_loads``), evaluated in
+the context's kind of number; the reports' :class:`assur.machines.cylinders.CylinderResult`
+calls the same formulas over arrays.
 
 Static loads only (weights, forces, moments, springs, the weights of masses); the
 fused kernel does not check continuity between positions (``solve`` does).
@@ -50,7 +58,8 @@ from . import diagnostics
 from ..errors import ModelError
 from ..groups import group_type
 from ..groups.base import is_number
-from ..machines.cylinders import piston_area
+from . import cylinders as C
+from .loads import centre_of_mass, dead_load_links, is_dead, masses_of
 from ..kernel import run as KR
 from ..kernel.cache import helpers_tag, load_source
 from ..kernel.emit import Emitter
@@ -59,7 +68,8 @@ from ..kernel.fold import fold
 from ..kernel.source import BUF_ROW, CHUNK, chunk_loop, copy_out, hoisted, status_out
 from ..kernel.stream import STREAM_MIN
 from ..kernel.sym import Sym, Tracer, code
-from .statics import GRAVITY, ReactionContextBase, gravity_unit
+from .gravity import GRAVITY, gravity_unit
+from .statics import ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS", "parse_output",
            "resolve_output", "output_unit", "display_unit", "formula_of"]
@@ -212,9 +222,10 @@ class OutputContext(ReactionContextBase):
     numbers of :mod:`assur.synthesis.sensitivity`.
 
     Subclasses provide, besides :class:`~assur.core.statics.ReactionContextBase`'s needs,
-    ``jet(p, a)`` (the analogs ∂(X, Y)/∂q_a of a point), ``vw`` (the generalized forces
-    of the loads, one per coordinate [N or N·m]), ``has_point(p)`` and
-    ``cylinder_terms(name)`` → ``(Cylinder, η_mech, k·A·η_hyd [m²], F_max·η_mech [N])``.
+    ``jet(p, a)`` (the analogs ∂(X, Y)/∂q_a of a point), ``has_point(p)`` and
+    ``select(x, a, b)`` (``a`` where x ≥ 0, else ``b``, in the context's numbers).
+    :meth:`apply_loads` fills ``vw`` (the generalized forces of the loads, one per
+    coordinate [N or N·m]) and ``vw_dead`` (those of the dead loads).
 
     Examples
     --------
@@ -235,7 +246,44 @@ class OutputContext(ReactionContextBase):
         self.moving = False
         self.k = len(mech.coordinates)
         self.vw = [0.0] * self.k
+        #: the generalized forces of the dead loads alone (``[tables] dead_loads``)
+        self.vw_dead = [0.0] * self.k
+        self._dead = False
         self._frame = frozenset(mech.frame_points)
+
+    def apply_loads(self):
+        """Apply the mechanism's loads (:mod:`assur.core.loads`): their wrenches on the
+        bodies, their generalized forces ``vw`` and, for the dead loads, ``vw_dead``.
+
+        Examples
+        --------
+        The loader of seed 001 lab 1 carries the boom's own mass as a dead load:
+
+        >>> from assur import examples
+        >>> from assur.synthesis.sensitivity import jet_context
+        >>> ctx = jet_context(examples.loader_lab1(), [[1.0, 0.9]], reactions=False)  # S, S1 [m]
+        >>> F, _ = ctx.plain(-ctx.vw[0])            # all the loads along S [N]
+        >>> Fd, _ = ctx.plain(-ctx.vw_dead[0])      # the boom's weight alone [N]
+        >>> bool(0 < Fd[0, 0] < F[0, 0])
+        True
+        """
+        for ld in self.mech.loads:
+            self._dead = is_dead(self.mech, ld)
+            ld.apply(self)
+        self._dead = False
+
+    def select(self, x, a, b):
+        """``a`` where x ≥ 0, else ``b``, in this context's numbers (a subclass's).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.synthesis.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42])
+        >>> float(ctx.select(-2.0, 1.0, -1.0))
+        -1.0
+        """
+        raise NotImplementedError
 
     def has_point(self, p):
         """Whether the mechanism has point ``p`` (a subclass's; the outputs check it).
@@ -251,19 +299,24 @@ class OutputContext(ReactionContextBase):
         raise NotImplementedError
 
     def cylinder_terms(self, name):
-        """``(Cylinder, η_mech [-], k·A·η_hyd [m²], F_max·η_mech [N])`` of a cylinder
-        (a subclass's): the constants of ``p(cyl)``, ``G`` and ``reserve``.
+        """The constants of cylinder ``name`` in this context's numbers
+        (:func:`assur.core.cylinders.terms`); raises :class:`ModelError` naming the
+        cylinders for an unknown one.
 
         Examples
         --------
         >>> from assur import examples
         >>> from assur.synthesis.sensitivity import jet_context
         >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
-        >>> c, eta_m, kAeta, fmax = ctx.cylinder_terms("ГЦ")
-        >>> c.name, round(float(kAeta) * 1e4, 2), round(float(fmax))  # [cm²], [N]
-        ('ГЦ', 84.45, 147781)
+        >>> t = ctx.cylinder_terms("ГЦ")
+        >>> t.cylinder.name, round(float(t.area_piston) * 1e4, 2)  # [cm²]
+        ('ГЦ', 50.27)
         """
-        raise NotImplementedError
+        cyls = {c.name: c for c in self.mech.cylinders}
+        if name not in cyls:
+            raise ModelError(f"output …({name}): no cylinder {name!r}; cylinders: "
+                             f"{sorted(cyls)}")
+        return C.terms(cyls[name], self.value)
 
     def record(self, i, j, pt, fx, fy, mz=0.0):
         """Keep the force (fx, fy) [N] and moment mz [N·m] of link ``i`` on link ``j``
@@ -301,7 +354,10 @@ class OutputContext(ReactionContextBase):
         if point not in self._frame:  # a frame point does not move: no work
             for a in range(self.k):
                 jx, jy = self.jet(point, a)
-                self.vw[a] = self.vw[a] + fx * jx + fy * jy
+                w = fx * jx + fy * jy
+                self.vw[a] = self.vw[a] + w
+                if self._dead:
+                    self.vw_dead[a] = self.vw_dead[a] + w
 
     def couple(self, link, M):
         """A load's couple M [N·m] on ``link``: into its wrench and, through the link's
@@ -321,7 +377,10 @@ class OutputContext(ReactionContextBase):
         """
         self.apply_moment(link, M)
         for a in range(self.k):
-            self.vw[a] = self.vw[a] + M * self.omega(link, a)
+            w = M * self.omega(link, a)
+            self.vw[a] = self.vw[a] + w
+            if self._dead:
+                self.vw_dead[a] = self.vw_dead[a] + w
 
     def spring(self, load, T, L):
         """A spring's tension T [N] at length L [m] (its forces come through
@@ -489,17 +548,11 @@ class OutputContext(ReactionContextBase):
             (axa, aya), (bxa, bya) = self.jet(dd[0].a, a), self.jet(dd[0].b, a)
             return ((bx - ax) * (bxa - axa) + (by - ay) * (bya - aya)) / L
         if fn in ("Xc", "Yc"):  # 001 lab 3: r_c = Σ m_i·r_i / Σ m_i (assur.dynamics.balancing)
-            from ..dynamics.crank import masses_of
             masses = masses_of(self.mech)
             if not masses:
                 raise ModelError(f"output {fn}: mechanism {self.mech.name!r} has no masses "
                                  f"on moving links ([[loads]] of type \"mass\")")
-            num = tot = 0.0
-            for ld in masses:
-                m = self.value(ld.m)
-                num = num + m * self.point(ld.point)[fn == "Yc"]
-                tot = tot + m
-            return num / tot
+            return centre_of_mass(masses, self.value, self.point)[fn == "Yc"]
         if fn == "formula":
             return formula_of(self.mech, args[0]).compute(self.formula_terms())
         if fn in ("F", "Fr"):
@@ -517,29 +570,74 @@ class OutputContext(ReactionContextBase):
                                  f"{sorted(self.joints)}")
             _, fx, fy, mz = self.joints[key]
             return {"Rx": fx, "Ry": fy, "Rm": mz}.get(fn) if fn != "R" else np.hypot(fx, fy)
-        c, eta_mech, kAeta, fmax_eta = self.cylinder_terms(args[0])
+        return self.cylinder_output(fn, args)
+
+    def cylinder_output(self, fn, args):
+        """``p``, ``G`` or ``reserve`` of a cylinder: the formulas of
+        :mod:`assur.core.cylinders` on this context's actuator and dead-load forces
+        and transmission numbers.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.synthesis.sensitivity import jet_context
+        >>> ctx = jet_context(examples.hitch_003(), [0.42, 0.67])   # S [m], table 2.1
+        >>> p, _ = ctx.plain(ctx.cylinder_output("p", ("ГЦ",)))     # Pgc, table 4.1 [MPa]
+        >>> [round(float(v) / 1e6, 2) for v in p[0]]
+        [15.35, 16.06]
+        """
+        t = self.cylinder_terms(args[0])
+        c = t.cylinder
+        if c.supply is not None:
+            if fn != "p":
+                raise ModelError(f"output {fn}({', '.join(args)}): cylinder {c.name!r} shares "
+                                 f"the supply line {c.supply!r}: its capacity at one point is "
+                                 f"not defined (the line's pressure is)")
+            return self.line_pressure(c.supply)
         j = self.mech.coordinates.index(c.coordinate)
+        F = -self.vw[j]
         if fn == "p":
-            return -self.vw[j] / (eta_mech * kAeta)  # seed 003: Pgc = Fgc/(k_gc·S_gc·η)
+            return C.pressure(t, F, self.select)  # seed 003: Pgc = Fgc/(k_gc·S_gc·η)
         if not self.has_point(args[1]):
             raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
-        G = fmax_eta / self.jet(args[1], j)[1]  # seed 003 G56, GS6
+        G = C.capacity(t, F, -self.vw_dead[j], self.jet(args[1], j)[1],
+                       self.select)  # seed 003 G56, GS6
         if fn == "G":
             return G
-        load = self.value(args[2] if not _is_float(args[2]) else float(args[2]))
-        return (G - load) / load * 100.0  # seed 003 ΔGS65
+        return C.reserve(G, self.value(args[2] if not _is_float(args[2]) else float(args[2])))
+
+    def line_pressure(self, line):
+        """Pressure of supply line ``line`` [Pa] (:func:`assur.core.cylinders.line_pressure`,
+        the passive cylinders' ∂L/∂q from their distances' analogs).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.synthesis.sensitivity import jet_context
+        >>> ctx = jet_context(examples.steering_lab4(), [0.51, 0.662])   # S1 [m]
+        >>> p, _ = ctx.plain(ctx.line_pressure("P"))                       # [MPa]
+        >>> [round(float(v) / 1e6, 3) for v in p[0]]
+        [6.353, 8.294]
+        """
+        cyls = [c for c in self.mech.cylinders if c.supply == line]
+        driver = next(c for c in cyls if c.coordinate is not None)
+        j = self.mech.coordinates.index(driver.coordinate)
+        wrt = (driver.coordinate,) if self.k > 1 else ()
+        members = [(self.cylinder_terms(c.name),
+                    1.0 if c is driver else self.output("dlength", (c.distance,) + wrt))
+                   for c in cyls]
+        return C.line_pressure(members[cyls.index(driver)][0], -self.vw[j], members)
 
 
 
 class _Fused(OutputContext):
     """Load and reaction context whose values are symbols of the generated code."""
 
-    def __init__(self, mech, prog, tracer, rod_ends, cyl_rows, literal_rows):
+    def __init__(self, mech, prog, tracer, rod_ends, literal_rows):
         super().__init__(mech, rod_ends)
         self.prog, self.t = prog, tracer
         self.literal_rows = literal_rows
         self.g = self.value(_G)
-        self.cyl_rows = cyl_rows
 
     # values ------------------------------------------------------------------------
     def point(self, p):
@@ -551,8 +649,9 @@ class _Fused(OutputContext):
         return self.t.sym(f"x{s}_{a}"), self.t.sym(f"y{s}_{a}")
 
     def value(self, ref):
-        """A coordinate, a parameter, or a number: the numbers of loads are rows of the
-        parameter table too (:func:`_literals`), so one kernel serves any load values."""
+        """A coordinate, a parameter, or a number: the numbers of loads and cylinders are
+        rows of the parameter table too (:func:`_literals`), so one kernel serves any
+        of their values."""
         if isinstance(ref, str):
             if ref in self.mech.coordinates:
                 return self.t.sym(f"q[{self.mech.coordinates.index(ref)}, e]")
@@ -575,29 +674,26 @@ class _Fused(OutputContext):
     def has_point(self, p):
         return p in self.prog.slot
 
-    def cylinder_terms(self, name):
-        cyl = self.cyl_rows.get(name)
-        if cyl is None and name in {c.name for c in self.mech.cylinders}:
-            raise ModelError(f"output …({name}): cylinder {name!r} is on a supply line or "
-                             f"picks its chamber (side = \"auto\"): its pressure and capacity "
-                             f"come from Mechanism.analyze (assur.machines.cylinders), not the fused "
-                             f"kernel")
-        if cyl is None:
-            raise ModelError(f"output …({name}): no cylinder {name!r}; cylinders: "
-                             f"{sorted(self.cyl_rows)}")
-        c, rows = cyl
-        P = {k: self.t.sym(f"params[{r}, d]") for k, r in rows.items()}
-        return c, P["eta_mech"], P["kAeta"], P["fmax_eta"]
+    def select(self, x, a, b):
+        if not isinstance(x, Sym):
+            return a if x >= 0 else b
+        return self.t.new(f"{code(a)} if {x.name} >= 0.0 else {code(b)}")
 
 
 _G = "__gravity__"
 
 
+def _valued(mech):
+    """The loads and cylinders of a mechanism: the descriptions whose numbers are rows
+    of the fused kernel's parameter table."""
+    return tuple(mech.loads) + tuple(mech.cylinders)
+
+
 def _literals(mech, g, n0):
-    """Rows (from ``n0``) of gravity and of every number the loads give, and their
-    values: ``({value or _G: row}, [values])`` in a fixed order."""
+    """Rows (from ``n0``) of gravity and of every number the loads and cylinders give,
+    and their values: ``({value or _G: row}, [values])`` in a fixed order."""
     rows, values = {_G: n0}, [float(g)]
-    for ld in mech.loads:
+    for ld in _valued(mech):
         for f in dataclasses.fields(ld):
             v = getattr(ld, f.name)
             if is_number(v) and float(v) not in rows:
@@ -607,11 +703,12 @@ def _literals(mech, g, n0):
 
 
 def _load_signature(mech):
-    """The loads with each number replaced by the index of its value among the loads'
-    distinct numbers (the kernel's structure: which rows it reads, not their values)."""
+    """The loads and cylinders with each number replaced by the index of its value among
+    their distinct numbers (the kernel's structure: which rows it reads, not their
+    values)."""
     seen: dict = {}
     out = []
-    for ld in mech.loads:
+    for ld in _valued(mech):
         sig = [type(ld).__name__]
         for f in dataclasses.fields(ld):
             v = getattr(ld, f.name)
@@ -637,8 +734,7 @@ def _trace_reactions(mech):
     throw-away emitter: only its joints and actuators are read)."""
     prog = mech.program()
     n0 = len(prog.param_names) + len(prog.literals) + prog.n_derived
-    cyl_rows, cyl_values = _cylinder_rows(mech, n0)
-    literal_rows, _ = _literals(mech, GRAVITY, n0 + len(cyl_values))
+    literal_rows, _ = _literals(mech, GRAVITY, n0)
     topo = mech.topology
 
     def is_coord(ref):
@@ -646,10 +742,8 @@ def _trace_reactions(mech):
 
     rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
                                                                is_coord)}
-    ctx = _Fused(mech, prog, Tracer(Emitter(prog.k, order=1)), rod_ends, cyl_rows,
-                 literal_rows)
-    for ld in mech.loads:
-        ld.apply(ctx)
+    ctx = _Fused(mech, prog, Tracer(Emitter(prog.k, order=1)), rod_ends, literal_rows)
+    ctx.apply_loads()
     for g_ in reversed(mech.groups):
         ctx.links = topo.group_links[g_.name]
         g_.reactions(ctx)
@@ -664,29 +758,6 @@ def _is_float(s):
         return False
 
 
-def _cylinder_rows(mech, n0):
-    """Per-design constants of each cylinder as extra parameter rows from ``n0``:
-    ``{name: (Cylinder, {"eta_mech": row, "kAeta": row, "fmax_eta": row})}`` and the
-    row values (list of arrays over designs)."""
-    rows, values = {}, []
-    for c in mech.cylinders:
-        if c.supply is not None or c.side == "auto" or c.coordinate is None:
-            continue  # a supply line's or an auto-side cylinder: hydraulics.py only
-        v = {f: np.atleast_1d(np.asarray(mech.value_of(getattr(c, f)), float))
-             for f in ("count", "eta_mech", "eta_hyd", "bore", "rod", "p_relief",
-                       "dp_throttle", "dp_line")}
-        area = piston_area(v["bore"], v["rod"], c.side)
-        kAeta = v["count"] * area * v["eta_hyd"]
-        pmax = v["p_relief"] - (v["dp_throttle"] + v["dp_line"])
-        names = {}
-        for key, arr in (("eta_mech", v["eta_mech"]), ("kAeta", kAeta),
-                         ("fmax_eta", kAeta * pmax * v["eta_mech"])):
-            names[key] = n0 + len(values)
-            values.append(arr)
-        rows[c.name] = (c, names)
-    return rows, values
-
-
 _KERNELS: dict = {}
 
 
@@ -697,8 +768,7 @@ def _source(mech, prog, specs, reduce, g):
     for i, row in enumerate(prog.rows):
         group_type(row[0]).emit(E, i, tuple(row[1:]))
     n0 = len(prog.param_names) + len(prog.literals) + prog.n_derived
-    cyl_rows, cyl_values = _cylinder_rows(mech, n0)
-    literal_rows, _ = _literals(mech, g, n0 + len(cyl_values))
+    literal_rows, _ = _literals(mech, g, n0)
     tracer = Tracer(E)
     topo = mech.topology
 
@@ -707,11 +777,10 @@ def _source(mech, prog, specs, reduce, g):
 
     rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
                                                                is_coord)}
-    ctx = _Fused(mech, prog, tracer, rod_ends, cyl_rows, literal_rows)
+    ctx = _Fused(mech, prog, tracer, rod_ends, literal_rows)
     fns = {fn for fn, _ in specs}
-    if fns & {"F", "Fr", "Rx", "Ry", "R", "Rm", "p"}:
-        for ld in mech.loads:
-            ld.apply(ctx)
+    if fns & {"F", "Fr", "Rx", "Ry", "R", "Rm", "p", "G", "reserve"}:
+        ctx.apply_loads()
     if fns & {"Fr", "Rx", "Ry", "R", "Rm"}:
         for g_ in reversed(mech.groups):
             ctx.links = topo.group_links[g_.name]
@@ -774,8 +843,8 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
 def _kernel(mech, prog, specs, reduce, g):
     """The compiled fused kernel of a structure, its loads and outputs (cached)."""
     key = (prog.rows, tuple(prog.slot.items()), _load_signature(mech), mech.links,
-           mech.distances, tuple(c.name for c in mech.cylinders), specs, bool(reduce),
-           prog.param_names, prog.literals)
+           mech.distances, dead_load_links(mech), specs, bool(reduce), prog.param_names,
+           prog.literals)
     try:
         hit = _KERNELS.get(key)
     except TypeError:  # an unhashable value in a load: trace every time
@@ -906,9 +975,7 @@ def _plan(mech, specs, reduce, g):
     prog = mech.program()
     ptab, trig, pose_failures = mech.prepared(prog)
     kern = _kernel(mech, prog, specs, reduce, g)
-    _, extra = _cylinder_rows(mech, ptab.shape[0])
-    extra = list(extra) + [np.array([v]) for v in _literals(mech, g, ptab.shape[0] +
-                                                            len(extra))[1]]
+    extra = [np.array([v]) for v in _literals(mech, g, ptab.shape[0])[1]]
     if extra:
         md = max([ptab.shape[1]] + [v.shape[0] for v in extra])
         ptab = np.concatenate([np.broadcast_to(ptab, (ptab.shape[0], md))]
@@ -957,7 +1024,6 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     >>> [round(float(v)) for v in evaluate(m, [0.42], outputs=["GS6max"])["GS6max"]]
     [50645]
     """
-    from ..analysis import gravity_of
     from . import inputs
 
     if on_failure not in ("raise", "report"):
@@ -967,7 +1033,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     specs = tuple(resolve_output(mech, o) for o in outputs)
     inputs.check_params(mech, params)
     m_ = mech.with_params(**params) if params else mech
-    g = gravity_of(m_) if g is None else float(g)
+    g = m_.g if g is None else float(g)
     plan = m_.memo(("fused", specs, bool(reduce), g), lambda: _plan(m_, specs, reduce, g))
     per_pos = 8.0 * (m_.program().k + 2 + (0 if reduce else len(specs)))
     qarr, shape, m, n = m_.coordinate_array(q, plan[1].shape[1], per_pos)

@@ -31,57 +31,11 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..errors import ModelError
+from .gravity import GRAVITY, gravity_unit
 
 __all__ = ["Statics", "GRAVITY", "gravity_unit", "applied_loads", "virtual_work_forces",
            "spring_states", "solve",
            "ReactionContextBase", "ReactionContext"]
-
-#: default acceleration of gravity g [m/s²] turning masses into weights: 9.81, the
-#: value engineering worksheets use (all the seeds do). A model may set its own
-#: (``[model] gravity = "9.80665 m/s^2"``), a call its own (``analyze(..., g=…)``).
-GRAVITY = 9.81
-
-
-def gravity_unit(mech) -> tuple[float, float]:
-    """The unit vector of gravity of a mechanism, ``(u_x, u_y)`` [-].
-
-    ``[model] gravity = { value = "9.81 m/s^2", direction = -90 }`` (the default
-    direction: straight down)::
-
-            y
-            ^
-            |        a weight m·g acts along u = (cos d, sin d);
-            +---> x  d = −90° (default): u = (0, −1)
-            |
-            v u
-
-    Components within 1e-15 of zero are zero, so that −90° gives exactly (0, −1)
-    and the default weights are those of ``(0, −m·g)``.
-
-    Parameters
-    ----------
-    mech : Mechanism
-        Its :attr:`~assur.Mechanism.gravity_direction` [rad] (None: −π/2).
-
-    Returns
-    -------
-    tuple of float
-
-    Examples
-    --------
-    >>> from assur import examples
-    >>> from assur.core.statics import gravity_unit
-    >>> gravity_unit(examples.hitch_003())                 # straight down [-]
-    (0.0, -1.0)
-    >>> gravity_unit(examples.hitch_003().with_gravity(9.81, direction=0.0))  # along +x [-]
-    (1.0, 0.0)
-    """
-    d = getattr(mech, "gravity_direction", None)
-    if d is None:
-        return 0.0, -1.0
-    ux, uy = np.cos(float(d)), np.sin(float(d))
-    return (0.0 if abs(ux) < 1e-15 else float(ux)), (0.0 if abs(uy) < 1e-15 else float(uy))
-
 
 class Statics:
     """Actuator forces, joint reactions and checks over the positions.
@@ -415,7 +369,7 @@ class _LoadCollector:
                 + np.einsum("mnk,klmn,mnl->mn", self.qd, w2, self.qd))
 
 
-def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
+def applied_loads(kin, qdot=None, qddot=None, g=None):
     """The applied loads as point forces and link moments, each with its link.
 
     Returns
@@ -445,7 +399,7 @@ def applied_loads(kin, qdot=None, qddot=None, g=GRAVITY):
         qdd = np.broadcast_to(np.asarray(qddot, float)[..., None]
                               if kin.k == 1 else np.asarray(qddot, float),
                               kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
-    c = _LoadCollector(kin, g, qd, qdd)
+    c = _LoadCollector(kin, kin.mechanism.g if g is None else g, qd, qdd)
     for ld in kin.mechanism.loads:
         ld.apply(c)
     return c.forces, c.couples, c.springs
@@ -496,7 +450,7 @@ def spring_states(kin):
     return out
 
 
-def virtual_work_forces(kin, qdot=None, qddot=None, g=GRAVITY):
+def virtual_work_forces(kin, qdot=None, qddot=None, g=None):
     """Actuator forces by virtual work, ``{coordinate: F}`` with F of shape (m, n).
 
     ``F_j = −Q_j``, ``Q_j = Σ F·∂r/∂q_j + Σ M·∂φ/∂q_j`` (spring forces enter as the
@@ -562,7 +516,7 @@ def _use_fused(kin) -> bool:
     return calls[0] > FUSED_AFTER
 
 
-def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
+def solve(kin, qdot=None, qddot=None, g=None, method=None):
     """Actuator forces (both routes), joint reactions and equilibrium residuals.
 
     Very large ranges are processed in blocks of :data:`BLOCK` positions (the same
@@ -576,8 +530,9 @@ def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
     qdot, qddot : array_like, optional
         Coordinate rates [m/s, m/s²] (shape ``(..., k)`` for k > 1) for inertia loads;
         without them the analysis is static.
-    g : float
-        Gravity [m/s²] for the masses' weights (weights given in N are used as given).
+    g : float, optional
+        Gravity [m/s²] for the masses' weights (weights given in N are used as given);
+        default: the mechanism's (:attr:`assur.Mechanism.g`).
     method : {None, "fused", "array"}
         ``"array"``: the reverse-order pass over arrays of positions (group by group,
         numpy); ``"fused"``: the same group code traced into one compiled loop
@@ -608,6 +563,7 @@ def solve(kin, qdot=None, qddot=None, g=GRAVITY, method=None):
     """
     if method not in (None, "fused", "array"):
         raise ValueError("method must be one of: [None, 'fused', 'array']")
+    g = kin.mechanism.g if g is None else g
     if method == "fused" or (method is None and qdot is None and qddot is None
                              and _use_fused(kin)):
         return _solve_fused(kin, g)

@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core.loads import centre_of_mass, masses_of
 from ..errors import ModelError
 
 __all__ = ["CentreOfMassPath", "common_centre", "path_of", "CounterMass", "Balancing",
@@ -86,19 +87,15 @@ def shoelace(x, y):
     return 0.5 * np.sum(x * np.roll(y, -1, axis=-1) - np.roll(x, -1, axis=-1) * y, axis=-1)
 
 
-def _moments(kin):
-    """Σ m·r_S (2, m, n) and Σ m (m, 1) of the moving masses."""
-    from .crank import design_value, masses_of
+def _centre(kin):
+    """The common centre of mass (x, y) (m, n) [m] and the total mass (m, 1) [kg] of
+    the moving masses (:func:`assur.core.loads.centre_of_mass`, the formula of the
+    outputs ``Xc``, ``Yc`` too)."""
+    from .crank import design_value
     masses = masses_of(kin.mechanism)
     if not masses:
         raise ModelError(f"mechanism {kin.mechanism.name!r} has no masses on moving links")
-    num = np.zeros((2, kin.m, kin.n))
-    tot = np.zeros((kin.m, 1))
-    for ld in masses:
-        m = design_value(kin, ld.m)
-        num = num + m * kin.value(ld.point)
-        tot = tot + m
-    return num, tot
+    return centre_of_mass(masses, lambda ref: design_value(kin, ref), kin.value)
 
 
 def common_centre(kin):
@@ -122,9 +119,10 @@ def common_centre(kin):
     >>> round(float(c.area) * 1e6, 2)  # enclosed area [mm²]
     3.71
     """
-    num, tot = _moments(kin)
+    x, y, tot = _centre(kin)
     o = kin.reshape
-    return CentreOfMassPath(o(num[0] / tot), o(num[1] / tot),
+    return CentreOfMassPath(o(np.broadcast_to(x, (kin.m, kin.n))),
+                            o(np.broadcast_to(y, (kin.m, kin.n))),
                             tot[:, 0] if kin.m > 1 or len(kin.shape) == 2 else tot[0, 0])
 
 
@@ -298,8 +296,9 @@ def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=1000, p
     cms = list(counter_masses)
     if not cms:
         raise ValueError("balance: give at least one CounterMass")
-    num, tot = _moments(kin)
-    N0, M0 = num[:, 0], float(tot[0, 0])  # (2, n), kg
+    x0, y0, tot = _centre(kin)
+    M0 = float(tot[0, 0])  # kg
+    N0 = np.stack([np.broadcast_to(x0, (1, kin.n))[0], np.broadcast_to(y0, (1, kin.n))[0]]) * M0
     bases = [_frame_basis(kin, c.link) for c in cms]
     bounds = []
     for c in cms:

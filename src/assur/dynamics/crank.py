@@ -46,7 +46,7 @@ import numpy as np
 
 from ..core import statics as _statics
 from ..errors import ModelError
-from ..core.loads import LOAD_TYPES
+from ..core.loads import LOAD_TYPES, masses_of
 
 __all__ = ["LinkMass", "with_masses", "masses_of", "MassMotion", "CrankDynamics",
            "crank_dynamics", "reduced_inertia", "design_value"]
@@ -169,22 +169,6 @@ def with_masses(mech, masses: Iterable[LinkMass]):
                               links=(lm.link,))
         out = out.mass(lm.link, float(lm.m), name, float(lm.J))
     return out
-
-
-def masses_of(mech):
-    """The :class:`assur.core.loads.Mass` loads of a mechanism on moving links.
-
-    Examples
-    --------
-    >>> from assur import examples, io
-    >>> from assur.dynamics.crank import masses_of
-    >>> masses_of(examples.hitch_003())      # a weight P6, no masses
-    ()
-    >>> ms = masses_of(io.load(io.bundled("cleaning_lab3")).mechanism)   # seed 001 lab 3
-    >>> len(ms), ms[1]                       # m2, J2 are model parameters
-    (9, Mass(link='2', m='m2', point='S2', J='J2'))
-    """
-    return tuple(ld for ld in mech.loads if type(ld) is _MASS and ld.link != "0")
 
 
 @dataclass(frozen=True)
@@ -613,7 +597,7 @@ def crank_dynamics(source, qdot, qddot=None, g=None, q=None):
     qddot : float or array_like, optional
         Crank angular acceleration ε [rad/s²] (default 0: steady rotation).
     g : float, optional
-        Gravity [m/s²] (default: the mechanism's, :func:`assur.analysis.gravity_of`).
+        Gravity [m/s²] (default: the mechanism's, :attr:`assur.Mechanism.g`).
     q : array_like, optional
         Crank angles [rad] when ``source`` is a Mechanism.
 
@@ -631,9 +615,8 @@ def crank_dynamics(source, qdot, qddot=None, g=None, q=None):
     >>> bool(np.abs(dyn.power_residual()).max() < 1e-9 * np.abs(dyn.load_power()).max() + 1e-6)
     True
     """
-    from ..analysis import gravity_of
     from ..core.kinematics import kinematics_of
     kin = kinematics_of(source, q, "crank_dynamics")
     if g is None:
-        g = gravity_of(kin.mechanism)
+        g = kin.mechanism.g
     return CrankDynamics(kin, qdot, qddot, g)

@@ -36,7 +36,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import ModelError
-from .crank import design_value, masses_of
+from ..core.loads import masses_of
+from .crank import design_value
 
 __all__ = ["EquationsOfMotion", "equations_of_motion"]
 
@@ -268,7 +269,7 @@ def equations_of_motion(source, q=None, g=None):
     q : array_like, optional
         Coordinates [m or rad] when ``source`` is a Mechanism.
     g : float, optional
-        Gravity [m/s²] (default: the mechanism's, :func:`assur.analysis.gravity_of`).
+        Gravity [m/s²] (default: the mechanism's, :attr:`assur.Mechanism.g`).
 
     Returns
     -------
@@ -288,9 +289,8 @@ def equations_of_motion(source, q=None, g=None):
     >>> bool(np.allclose(m, Jr.reshape(m.shape), rtol=1e-12))
     True
     """
-    from ..analysis import gravity_of
     from ..core.kinematics import kinematics_of
     kin = kinematics_of(source, q, "equations_of_motion")
     if g is None:
-        g = gravity_of(kin.mechanism)
+        g = kin.mechanism.g
     return EquationsOfMotion(kin, g)

@@ -702,8 +702,7 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
                          f"follow the cylinders)")
     k = len(coords)
     if g is None:
-        from ..analysis import gravity_of
-        g = gravity_of(mechanism)
+        g = mechanism.g
     br = circuit.branches
     if k == 1 and nodes is not None:
         c = br[0].cylinder

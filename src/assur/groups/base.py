@@ -620,7 +620,8 @@ class Group:
         The reverse pass of :mod:`assur.core.statics` by hand: the hitch at S = 0.42 m
         holding the implement's weight P6 at S6:
 
-        >>> from assur import examples, statics
+        >>> from assur import examples
+        >>> from assur.core import statics
         >>> m = examples.hitch_003()
         >>> r = statics.ReactionContext(m.solve([0.42]), set())
         >>> r.apply(m.owner("S6"), "S6", 0.0, -27500.0)      # P6 [N]

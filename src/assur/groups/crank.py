@@ -235,7 +235,8 @@ class Crank(Group):
         Examples
         --------
         >>> import numpy as np
-        >>> from assur import examples, statics
+        >>> from assur import examples
+        >>> from assur.core import statics
         >>> m = examples.combine_002()
         >>> r = statics.ReactionContext(m.solve([0.0]), set())   # the crank along +x
         >>> r.apply("1", "A", 0.0, -100.0)                      # 100 N down at the pin A

@@ -323,7 +323,8 @@ class Frame(Group):
         Examples
         --------
         >>> import numpy as np
-        >>> from assur import examples, statics
+        >>> from assur import examples
+        >>> from assur.core import statics
         >>> m = examples.combine_002()
         >>> r = statics.ReactionContext(m.solve([0.0]), set())
         >>> r.apply("0", "O3", 0.0, -100.0)                  # 100 N down at O3

@@ -255,7 +255,8 @@ class PosePoint(Group):
 
         Examples
         --------
-        >>> from assur import examples, statics
+        >>> from assur import examples
+        >>> from assur.core import statics
         >>> m = examples.hitch_003()
         >>> r = statics.ReactionContext(m.solve([0.42]), set())
         >>> r.apply("6", "S6", 0.0, -27500.0)          # P6 at S6 [N]

@@ -426,7 +426,8 @@ class RigidPoint(Group):
         Examples
         --------
         >>> import dataclasses
-        >>> from assur import examples, statics
+        >>> from assur import examples
+        >>> from assur.core import statics
         >>> m = examples.hitch_003()
         >>> r = statics.ReactionContext(m.solve([0.42]), set())
         >>> arm = m.group("arm 34")

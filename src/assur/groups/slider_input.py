@@ -217,7 +217,8 @@ class SliderInput(Group):
         Examples
         --------
         >>> import numpy as np
-        >>> from assur import examples, statics
+        >>> from assur import examples
+        >>> from assur.core import statics
         >>> m = examples.steering_lab4_modern()
         >>> r = statics.ReactionContext(m.solve([0.0]), set())
         >>> r.apply("1L", "1L", 1000.0, 500.0)          # a load on the rod end 1L [N]

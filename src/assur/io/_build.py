@@ -30,7 +30,8 @@ from ..errors import AssemblyError, ModelError
 from ..groups import group_type
 from ..groups.base import ref_value, signed_name
 from ..core.inputs import bytes_per_position, check_memory, span_problem
-from ..core.loads import LOAD_TYPES, Cylinder
+from ..core.loads import LOAD_TYPES
+from ..core.cylinders import Cylinder
 from ..core.mechanism import Mechanism
 from ..machines.stability import Machine
 from ..core.statics import GRAVITY
@@ -773,7 +774,7 @@ class Builder:
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
         if t.dead_loads is not None:  # links whose loads every capacity carries
-            from ..machines.capacity import load_link
+            from ..core.loads import load_link
             for k, b in enumerate(t.dead_loads):
                 path = tp + ("dead_loads", k)
                 if b not in bodies or b == "0":

@@ -27,34 +27,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.chains import point_coordinates
+from ..core.loads import dead_load_links, load_link
 from ..errors import ModelError
 
 __all__ = ["dead_load_links", "dead_load_mechanism", "check_lifts", "lifts", "farthest_reach"]
-
-
-def dead_load_links(mech) -> tuple:
-    """The links whose loads every capacity carries (``tables["dead_loads"]``).
-
-    Examples
-    --------
-    >>> from assur import examples
-    >>> from assur.machines.capacity import dead_load_links
-    >>> dead_load_links(examples.loader_lab1())   # the boom 3 (seed 001 lab 1 eq. 14)
-    ('3',)
-    >>> dead_load_links(examples.hitch_003())     # none declared
-    ()
-    """
-    return tuple(mech.tables.get("dead_loads", ()) or ())
-
-
-def load_link(mech, load):
-    """The link a load acts on: its ``link``, else the owner of its ``point``; None for
-    a load between two links (a spring)."""
-    link = getattr(load, "link", None)
-    if link is not None:
-        return link
-    point = getattr(load, "point", None)
-    return mech.owner(point) if point is not None else None
 
 
 def dead_load_mechanism(mech, links=None):

@@ -1,76 +1,26 @@
-"""Hydraulic cylinders: areas, working pressure, available force, lift capacity.
+"""Cylinders over the positions of an analysis: forces, pressure, capacity, reserve.
 
-Formulas (SI: m, N, Pa):
-
-* piston area A = π·D²/4, or the annulus π·(D² − d²)/4 on the rod side;
-* largest working pressure p_max = p_relief − (Δp_throttle + Δp_line)
-  (seed 001 lab 1 eq. 1);
-* force the rods must supply F_req = F/η_m, with F the actuator force of the
-  loads by virtual work (seed 000: FS = P·Is/km);
-* pressure p = F_req/(k·A·η_h) (seed 003: Pgc = Fgc/(k_gc·S_gc·η));
-* available force F_max = k·p_max·A·η_h (seed 000: Fmax = p·SS·kg, there in kgf);
-* lift capacity at a point, the vertical load the cylinders hold at p_max:
-  G = (F_max·η_m − F_dead)/I with I = dY/dS of the point and F_dead the actuator
-  force of the loads carried besides it (seed 003: G56 = k·p·η·S_gc/I56,
-  GS6 with IS6; seed 001 lab 1 eqs. 8–10, 14 with the boom's weight);
-* capacity reserve ΔG = (G − P)/P·100 % (seed 003 ΔGS65);
-* cylinders on one supply line (:class:`SupplyLine`) share one pressure p; by
-  virtual work with every cylinder of the line as an actuator,
-  p·Σ σ_i·k_i·A_i·η_h,i·∂L_i/∂q = F/η_m, σ = +1 for a pressurised piston side
-  (push), −1 for a rod side (pull), L_i the cylinder's length (the coordinate q
-  itself for the driving cylinder, a named distance for a passive one) — seed 001
-  lab 4 eq. 15, p_н = M_c·(φ3′ + φ5′)/(π·(2R² − r²)), with the exact analogs;
-* a double-rod cylinder pushes with π·(D² − d2²)/4 and pulls with π·(D² − d²)/4.
+The results the reports and the page show (:class:`CylinderResult`, one per
+cylinder group; :class:`SupplyLine`, cylinders sharing one pressure). Every number
+is a formula of :mod:`assur.core.cylinders` — the one home of a cylinder's
+quantities, which the outputs kernel, the design criteria, the sensitivities and the
+lift test call too — evaluated on the analysis' arrays: the actuator force F of the
+loads by virtual work, the transmission numbers I = ∂Y/∂q and the actuator force of
+the dead loads.
 """
 
 from __future__ import annotations
 
-import math
+import dataclasses
 
 import numpy as np
 
+from ..core import cylinders as C
+from ..core.cylinders import piston_area
 from ..errors import ModelError, SingularPositionError
 
 __all__ = ["piston_area", "CylinderResult", "SupplyLine", "cylinder_results",
            "supply_pressure_from_reactions"]
-
-
-def piston_area(bore, rod=0.0, side="piston", rod2=0.0):
-    """Pressurised area [m²] of a cylinder with bore D and rod d [m]: π·D²/4 on the
-    piston side, π·(D² − d²)/4 on the rod side; a double-rod cylinder's piston side
-    is the annulus around its second rod d2, π·(D² − d2²)/4.
-
-    Examples
-    --------
-    >>> from assur.machines.cylinders import piston_area
-    >>> round(float(piston_area(0.08)), 6)                  # S_gc, seed 003 D = 80 mm [m²]
-    0.005027
-    >>> round(float(piston_area(0.08, 0.04, "rod")), 6)     # annulus, d = 40 mm [m²]
-    0.00377
-    >>> round(float(piston_area(0.08, rod2=0.04)), 6)       # double rod, piston side [m²]
-    0.00377
-    >>> piston_area(0.08, 0.09, "rod")
-    Traceback (most recent call last):
-    ...
-    ValueError: rod side needs 0 < rod < bore, got rod 0.09, bore 0.08
-    """
-    if side not in ("piston", "rod"):
-        raise ValueError("side must be one of: ['piston', 'rod']")
-    bore = np.asarray(bore, float)
-    if np.any(bore <= 0):
-        raise ValueError(f"bore must be positive, got {bore}")
-    rod2 = np.asarray(rod2, float)
-    if side == "piston" and np.any(rod2 != 0):
-        if np.any(rod2 >= bore) or np.any(rod2 < 0):
-            raise ValueError(f"a double-rod cylinder needs 0 < rod2 < bore, got rod2 {rod2}, "
-                             f"bore {bore}")
-        return 0.25 * math.pi * (bore**2 - rod2**2)
-    if side == "rod":
-        rod = np.asarray(rod, float)
-        if np.any(rod >= bore) or np.any(rod <= 0):
-            raise ValueError(f"rod side needs 0 < rod < bore, got rod {rod}, bore {bore}")
-        return 0.25 * math.pi * (bore**2 - rod**2)
-    return 0.25 * math.pi * bore**2
 
 
 class CylinderResult:
@@ -120,48 +70,24 @@ class CylinderResult:
 
         self._val = val
         self.supply_line = None
-        # the cylinder's numbers do not depend on the positions: made once per
+        # the cylinder's constants do not depend on the positions: made once per
         # mechanism (and shape of its batch), then shared by every analysis of it
-        key = (cyl.name, len(kin.shape))
-        hit = mech.memo(("hydraulics: constants",) + key, lambda: (cyl, self._constants()))
-        const = hit[1] if hit[0] is cyl else self._constants()
-        self.count, self.eta_mech, self.eta_hyd, self.p_max = const
+        hit = mech.memo(("cylinder terms", cyl.name, len(kin.shape)),
+                        lambda: (cyl, C.terms(cyl, val)))
+        #: the cylinder's constants (:class:`assur.core.cylinders.CylinderTerms`)
+        self.terms = hit[1] if hit[0] is cyl else C.terms(cyl, val)
+        t = self.terms
+        self.count, self.eta_mech, self.eta_hyd, self.p_max = (t.count, t.eta_mech, t.eta_hyd,
+                                                               t.p_max)
         if cyl.coordinate is None or statics is None:  # a passive cylinder: its line
             return                                   # sets it (SupplyLine)
-        hit = mech.memo(("hydraulics: areas",) + key, lambda: (cyl, self._areas()))
-        areas = hit[1] if hit[0] is cyl else self._areas()
-        self.force = statics.actuator_force(cyl.coordinate)
-        self.force_required = self.force / self.eta_mech
-        if cyl.side == "auto":  # the chamber that gives the force's sign (double rod)
-            #: +1 where the piston side is pressurised (push), −1 the rod side (pull)
-            self.sign = np.where(self.force >= 0, 1.0, -1.0)
-            self.area = np.where(self.sign > 0, areas["piston"], areas["rod"])
-            self.pressure = np.abs(self.force_required) / (self.count * self.area
-                                                           * self.eta_hyd)
-            self.force_max = self.count * self.p_max * self.area * self.eta_hyd
-        else:
-            self.sign = 1.0 if cyl.side == "piston" else -1.0
-            self.area = areas[cyl.side]
-            # k·A·η_h and the largest force k·p_max·A·η_h do not depend on the positions
-            hit = mech.memo(("hydraulics: one chamber",) + key, lambda: (
-                cyl, self.count * self.area * self.eta_hyd,
-                self.count * self.p_max * self.area * self.eta_hyd))
-            kae, self.force_max = hit[1:] if hit[0] is cyl else (
-                self.count * self.area * self.eta_hyd,
-                self.count * self.p_max * self.area * self.eta_hyd)
-            self.pressure = self.force_required / kae
-
-    def _constants(self):
-        """count, η_m, η_h and p_max [Pa] from the mechanism's parameters."""
-        cyl, val = self.cylinder, self._val
-        return (val(cyl.count), val(cyl.eta_mech), val(cyl.eta_hyd),
-                val(cyl.p_relief) - (val(cyl.dp_throttle) + val(cyl.dp_line)))
-
-    def _areas(self):
-        """The areas [m²] of the chambers the cylinder uses (both for ``side =
-        "auto"``)."""
-        sides = ("piston", "rod") if self.cylinder.side == "auto" else (self.cylinder.side,)
-        return {sd: self.chamber_area(sd) for sd in sides}
+        F = self.force = statics.actuator_force(cyl.coordinate)
+        self.force_required = F / self.eta_mech
+        #: +1 where the piston side is pressurised (push), −1 the rod side (pull)
+        self.sign = C.chamber_sign(t, F, C.select_array)
+        self.area = C.working_area(t, F, C.select_array)
+        self.pressure = C.pressure(t, F, C.select_array)
+        self.force_max = C.force_max(t, F, C.select_array)
 
     def chamber_area(self, side):
         """Area of one chamber of one cylinder [m²]: ``"piston"`` (π·(D² − d2²)/4) or
@@ -198,20 +124,13 @@ class CylinderResult:
         """
         if bore is None:
             return self.force_required / self.force_max
-        c = self.cylinder
-        rod, rod2 = self._val(c.rod), self._val(c.rod2)
-        if c.side == "auto":
-            area = np.where(self.sign > 0, piston_area(bore, rod, "piston", rod2),
-                            piston_area(bore, rod, "rod"))
-        else:
-            area = piston_area(bore, rod, c.side, rod2)
-        fmax = self.count * self.p_max * area * self.eta_hyd
-        return self.force_required / fmax
+        t = C.terms(dataclasses.replace(self.cylinder, bore=float(bore)), self._val)
+        return self.force_required / C.force_max(t, self.force, C.select_array)
 
-    def capacity(self, point, dead_loads=None):
+    def capacity(self, point, dead_loads=None, pressure=None):
         """Lift capacity at ``point``: the vertical load [N] the cylinders hold there at
-        p_max, G = (F_max·η_m − F_dead)/I(point), I = ∂Y/∂q along this cylinder's
-        coordinate q.
+        p_max, G = (σ·F_max·η_m − F_dead)/I(point), I = ∂Y/∂q along this cylinder's
+        coordinate q (:func:`assur.core.cylinders.capacity`).
 
         Parameters
         ----------
@@ -223,6 +142,9 @@ class CylinderResult:
             links whose loads they are (:func:`assur.machines.capacity.dead_load_mechanism`);
             ``()`` for none. Default: the model's dead loads (``[tables]
             dead_loads``), none if it declares none (seed 003 G56, GS6).
+        pressure : float, optional
+            The pressure [Pa] instead of p_max (the standard lift test's share of the
+            relief setting, :mod:`assur.machines.hitch_lift`).
 
         Raises
         ------
@@ -263,11 +185,10 @@ class CylinderResult:
         if dead_loads is not None:
             from ..core.statics import virtual_work_forces
             kd = _with_loads(kin, dead_loads)
-            from ..analysis import gravity_of
-            g = gravity_of(kin.mechanism) if self.g is None else self.g
+            g = kin.mechanism.g if self.g is None else self.g
             f = virtual_work_forces(kd, g=g)[self.cylinder.coordinate]
             fdead = kin.reshape(np.broadcast_to(f, (kin.m, kin.n)))
-        return (self.force_max * self.eta_mech - fdead) / I
+        return C.capacity(self.terms, self.force, fdead, I, C.select_array, p=pressure)
 
     def reserve(self, point, P):
         """Capacity reserve (G − P)/P·100 [%] for a load P [N] at the point (003 ΔGS65).
@@ -279,7 +200,7 @@ class CylinderResult:
         >>> [round(float(v), 1) for v in cyl.reserve("S6", 27500.0)]  # ΔGS65, table 4.1 [%]
         [14.0, 8.9]
         """
-        return (self.capacity(point) - P) / P * 100.0
+        return C.reserve(self.capacity(point), P)
 
 
 def _with_loads(kin, mech_with_loads):
@@ -342,18 +263,17 @@ class SupplyLine:
         self.coordinate = a.coordinate
         wrt = a.coordinate if kin.k > 1 else None
         self.members = {}
-        den = 0.0
         for c in cylinders:
-            r = CylinderResult(kin, statics, c)
+            r = CylinderResult(kin, None, c)
             r.supply_line = name
             r.sign = 1.0 if c.side == "piston" else -1.0
-            r.area = r.chamber_area(c.side)
+            r.area = r.terms.area_piston if c.side == "piston" else r.terms.area_rod
             r.rate = 1.0 if c is a else kin.dlength(c.distance, wrt=wrt)
-            r.force_max = r.count * r.p_max * r.area * r.eta_hyd
-            den = den + r.sign * r.count * r.area * r.eta_hyd * r.rate
+            r.force_max = C.force_max(r.terms, r.sign, C.select_array)
             self.members[c.name] = r
+        members = [(r.terms, r.rate) for r in self.members.values()]
         #: Σ σ·k·A·η_h·∂L/∂q [m²]: the line's effective area along q
-        self.effective_area = den * np.ones(kin.shape)
+        self.effective_area = C.line_area(members) * np.ones(kin.shape)
         ra = self.members[a.name]
         F = statics.actuator_force(a.coordinate)
         bad = self.effective_area == 0
@@ -362,7 +282,7 @@ class SupplyLine:
                 f"supply line {name!r}: the cylinders' effective area along "
                 f"{a.coordinate!r} is 0 at {int(bad.sum())} position(s): the line's pressure "
                 f"does no work there")
-        self.pressure = F / ra.eta_mech / self.effective_area
+        self.pressure = C.line_pressure(ra.terms, F, members) * np.ones(kin.shape)
         for r in self.members.values():
             r.pressure = self.pressure
             r.force_required = r.sign * self.pressure * r.count * r.area * r.eta_hyd
@@ -436,13 +356,12 @@ def supply_pressure_from_reactions(kin, line, g=None):
     KeyError: "no supply line 'Q'; lines: ['P']"
     """
     from ..core import statics as st
-    from ..analysis import gravity_of
     mech = kin.mechanism
     cyls = [c for c in mech.cylinders if c.supply == line]
     if not cyls:
         raise KeyError(f"no supply line {line!r}; lines: "
                        f"{sorted({c.supply for c in mech.cylinders if c.supply})}")
-    g = gravity_of(mech) if g is None else g
+    g = mech.g if g is None else g
     a = next(c for c in cyls if c.coordinate is not None)
     loads_r = st.solve(kin, g=g, method="array").actuator_force_from_reactions(a.coordinate)
     dist = {d.name: d for d in mech.distances}
@@ -450,9 +369,7 @@ def supply_pressure_from_reactions(kin, line, g=None):
     for c in cyls:
         if c is a:
             continue
-        r = CylinderResult(kin, None, c)
-        push = (1.0 if c.side == "piston" else -1.0) * r.count * r.chamber_area(c.side) \
-            * r.eta_hyd
+        push = C.line_area([(CylinderResult(kin, None, c).terms, 1.0)])  # σ·k·A·η_h [m²]
         d = dist[c.distance]
         # an axial push P of the passive cylinder: a spring of constant tension −P
         unit = unit.spring(f"{c.name} at 1 Pa", d.a, d.b, 0.0, 0.0,
@@ -460,6 +377,5 @@ def supply_pressure_from_reactions(kin, line, g=None):
     ku = _with_loads(kin, unit)
     unit_r = st.solve(ku, g=g, method="array").actuator_force_from_reactions(a.coordinate)
     ra = CylinderResult(kin, None, a)
-    own = (1.0 if a.side == "piston" else -1.0) * ra.count * ra.chamber_area(a.side) \
-        * ra.eta_hyd
+    own = C.line_area([(ra.terms, 1.0)])
     return (loads_r / ra.eta_mech) / (own - unit_r)

@@ -12,11 +12,14 @@ from the model (the frame's load point is a point of the model file, e.g. a
   highest over the coordinate's range, each solved for the cylinder length S by
   Newton's method on Y(S) = h with the exact transmission number I = dY/dS (the lift
   range must be monotonic in S: a hitch point that rises and falls is an error);
-* the available cylinder force F = k·(share·p_relief)·A·η_h (as
-  :class:`assur.machines.cylinders.CylinderResult`, with the share of the relief pressure
-  instead of the working pressure);
-* the force available at a point P, G_P = F·η_m / I_P [N] (virtual work: the
-  vertical force at P that the cylinder force balances), with I_P = dY_P/dS.
+* the available cylinder force F = k·(share·p_relief)·A·η_h, with the share of the
+  relief pressure instead of the working pressure;
+* the force available at a point P, G_P = (σ·F·η_m − F_dead)/I_P [N] (virtual work:
+  the vertical force at P that the cylinder force balances), with I_P = dY_P/dS —
+  the lift capacity of :func:`assur.core.cylinders.capacity`, the same formula as
+  the reports' and the design criteria's, with the model's chamber (``side``,
+  ``"auto"`` included), counts and dead loads (``[tables] dead_loads``: the hitch's
+  own links, which a test stand lifts too).
 
 The mechanism's other loads (the implement's weight) are not part of the test: it
 reports what the hitch can lift, as a test stand measures it. Units: SI inside
@@ -29,6 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core import cylinders as C
 from ..errors import ModelError
 
 __all__ = ["LiftTest", "LiftTestResult", "lift_test"]
@@ -95,8 +99,9 @@ class LiftTestResult:
         Cylinder length at each test position [m].
     height : ndarray, shape (n,)
         Height of the hitch point Y [m], evenly spaced from the lowest to the highest.
-    force_cylinder : float
-        Available force of the cylinders at the test pressure [N].
+    force_cylinder : float or ndarray
+        Available force of the cylinders at the test pressure [N] (per position for a
+        cylinder that picks its chamber, ``side = "auto"``).
     pressure : float
         The test pressure, share·p_relief [Pa].
     hitch_force : ndarray, shape (n,)
@@ -257,23 +262,25 @@ def lift_test(mech, test: LiftTest, s_range, iterations=50) -> LiftTestResult:
                          f"(largest height error {float(np.abs(r).max()):.3g} m)")
     kin = mech.solve(s)
 
-    def val(ref):
-        return float(np.ravel(np.asarray(mech.value_of(ref), float))[0])
-
-    from .cylinders import piston_area
-    pressure = test.pressure_share * val(cyl.p_relief)
-    area = float(piston_area(val(cyl.bore), val(cyl.rod), cyl.side))
-    force = val(cyl.count) * pressure * area * val(cyl.eta_hyd)
-    eta_m = val(cyl.eta_mech)
+    # the test's capacities: the cylinder's formulas (assur.core.cylinders) at the test
+    # pressure, with the chamber, counts and dead loads of the model
+    from ..core.statics import solve as statics_solve
+    from .cylinders import CylinderResult
+    res = CylinderResult(kin, statics_solve(kin), cyl)
+    pressure = test.pressure_share * float(np.ravel(np.asarray(mech.value_of(cyl.p_relief),
+                                                               float))[0])
+    force = C.force_max(res.terms, res.force, C.select_array, pressure)
+    force = float(force) if np.ndim(force) == 0 else np.ravel(force)
 
     def available(point):
-        I = np.ravel(kin.transmission(point))
-        if np.any(I <= 0):
-            k = int(np.flatnonzero(I <= 0)[0])
+        G = np.ravel(res.capacity(point, pressure=pressure))
+        if np.any(G <= 0):
+            k = int(np.flatnonzero(G <= 0)[0])
+            I = float(np.ravel(kin.transmission(point))[k])
             raise ModelError(f"lift test of {mech.name!r}: the point {point!r} does not rise "
-                             f"with {c} at {c} = {s[k]:.6g} m (dY/d{c} = {I[k]:.3g}): no "
+                             f"with {c} at {c} = {s[k]:.6g} m (dY/d{c} = {I:.3g}): no "
                              f"lifting force there")
-        return force * eta_m / I
+        return G
 
     return LiftTestResult(test, c, s, np.ravel(kin.y(test.hitch)), force, pressure,
                           available(test.hitch),

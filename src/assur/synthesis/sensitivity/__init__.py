@@ -69,7 +69,7 @@ import numpy as np
 from ...errors import ModelError
 from ...core.outputs import OutputContext, output_unit, resolve_output
 from ...groups.base import is_number, signed_name
-from .dual import Dual, base, variables
+from .dual import Dual, base, variables, where
 
 __all__ = ["sensitivities", "Sensitivities", "numeric_parameters", "jet_outputs", "jet_context"]
 
@@ -151,24 +151,8 @@ class _JetContext(OutputContext):
     def has_point(self, p):
         return p in self.pts
 
-    def cylinder_terms(self, name):
-        cyls = {c.name: c for c in self.mech.cylinders}
-        c = cyls.get(name)
-        if c is None:
-            raise ModelError(f"no cylinder {name!r}; cylinders: {sorted(cyls)}")
-        if c.supply is not None or c.side == "auto" or c.coordinate is None:
-            raise ModelError(f"cylinder {name!r} is on a supply line or picks its chamber "
-                             f"(side = \"auto\"): its sensitivities are not available")
-        v = self.value
-        bore, rod, rod2 = v(c.bore), v(c.rod), v(c.rod2)
-        if c.side == "rod":
-            area = 0.25 * np.pi * (bore * bore - rod * rod)
-        else:
-            area = 0.25 * np.pi * (bore * bore - rod2 * rod2)
-        kAeta = v(c.count) * area * v(c.eta_hyd)
-        pmax = v(c.p_relief) - (v(c.dp_throttle) + v(c.dp_line))
-        eta_mech = v(c.eta_mech)
-        return c, eta_mech, kAeta, kAeta * pmax * eta_mech
+    def select(self, x, a, b):
+        return where(base(x) >= 0, a, b)
 
 
 @dataclass(frozen=True)
@@ -377,7 +361,6 @@ def jet_context(mech, q, params=(), *, g=None, values=None, step=None, reactions
     ([0.2, 1.043], [-2.1958, -1.9565])
     """
     from ...core import inputs
-    from ...analysis import gravity_of
 
     params = tuple(params)
     unknown = [p for p in params if p not in mech.params]
@@ -387,7 +370,7 @@ def jet_context(mech, q, params=(), *, g=None, values=None, step=None, reactions
     if values:
         inputs.check_params(mech, values)
         mech = mech.with_params(**values)
-    g = gravity_of(mech) if g is None else float(g)
+    g = mech.g if g is None else float(g)
     raw = {p: np.asarray(mech.value_of(p), float) for p in mech.params}
     m = max([v.size for v in raw.values()] + [1])
 
@@ -429,8 +412,7 @@ def jet_context(mech, q, params=(), *, g=None, values=None, step=None, reactions
     rod_ends = {e for g_ in mech.groups for e in g_.rod_ends(topo.group_links[g_.name],
                                                                is_coord)}
     ctx = _JetContext(mech, pts, value, g, rod_ends, params, q3, shape)
-    for ld in mech.loads:
-        ld.apply(ctx)
+    ctx.apply_loads()
     if reactions:
         for g_ in reversed(mech.groups):
             ctx.links = topo.group_links[g_.name]

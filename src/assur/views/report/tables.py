@@ -713,7 +713,7 @@ def _capacity_extrema(v, extrema):
     """Notes over several coordinates (seed 001 lab 1): the minimum of each capacity
     map and its value at the farthest reach of its point (eq. 14a), and the dead
     loads the capacities carry (eq. 14)."""
-    from ...machines.capacity import dead_load_links
+    from ...core.loads import dead_load_links
     notes = []
     for sym, p, g in extrema:
         i = int(np.argmin(g))
@@ -850,8 +850,7 @@ def _table_6_1(v):
     cols.append(Column("steerable", "-", v.pick(st.steerable).astype(int), _both("c_steerable")))
     notes = []
     if v.k > 1:  # over several coordinates: the limits' minima (seed 001 lab 1 eqs. 16, 18)
-        from ...analysis import gravity_of
-        g = gravity_of(v.mech)
+        g = v.mech.g
         for sym, vals in (("G_max", st.max_implement_weight),
                           ("G_max_no_cw", st.max_implement_weight_without_counterweights)):
             vals = v.pick(vals)
