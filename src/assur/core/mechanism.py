@@ -440,6 +440,28 @@ class Mechanism:
         from .cylinders import Cylinder
         return self._with(cylinders=self.cylinders + (Cylinder(name, coordinate, **kw),))
 
+    def with_cylinders(self, cylinders=()) -> "Mechanism":
+        """The same mechanism with ``cylinders`` (:class:`assur.core.cylinders.Cylinder`;
+        none by default) in place of its own — e.g. one cylinder's data changed with
+        :func:`dataclasses.replace`.
+
+        Examples
+        --------
+        The seed-003 hitch's cylinders fed on their rod side (d = 40 mm): they pull,
+        while its implement needs a push — the pressure is negative (the chamber cannot
+        hold the loads), larger in the ratio of the areas, A_p/A_r = 4/3:
+
+        >>> import dataclasses
+        >>> from assur import examples
+        >>> m = examples.hitch_003()
+        >>> c = dataclasses.replace(m.cylinders[0], side="rod", rod=0.04)   # rod [m]
+        >>> p0 = m.analyze([0.42]).cylinder().pressure[0]                    # [Pa]
+        >>> p1 = m.with_cylinders([c]).analyze([0.42]).cylinder().pressure[0]
+        >>> round(float(p1 / p0), 6)
+        -1.333333
+        """
+        return self._with(cylinders=tuple(cylinders))
+
     def with_machine(self, machine, point, weight, refs=None) -> "Mechanism":
         """Carry the implement (weight [N] at ``point``) on a machine for the stability
         analysis (:class:`assur.machines.stability.Machine`, :class:`assur.machines.stability.Carrying`);

@@ -661,7 +661,9 @@ class _Fused(OutputContext):
         v = float(ref)
         if v in self.literal_rows:  # a number of the loads (first: rows fixed by them)
             return self.t.sym(f"params[{self.literal_rows[v]}, d]")
-        return self.t.sym(f"params[{self.prog.param_row(v)}, d]")
+        if v in self.prog.literals:
+            return self.t.sym(f"params[{self.prog.param_row(v)}, d]")
+        return v   # a number of an output's text (a reserve's load): part of its key
 
     def inv(self, x):
         if isinstance(x, Sym):
