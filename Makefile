@@ -11,7 +11,7 @@ RELEASE_STAMP := $(VENV)/.assur-release-installed
 #: bundled models that must fail `assur check` (the seeds as printed cannot assemble)
 EXPECTED_FAIL := header_000 combine_002_printed
 
-.PHONY: demo test test-fast bench docs wheel-check clean serve chromium
+.PHONY: demo test test-fast lint bench docs wheel-check clean serve chromium
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -27,6 +27,11 @@ demo: $(STAMP)
 # Debian's chromium for the page's end-to-end test (apt-get when missing; .ci/chromium.sh)
 chromium:
 	bash .ci/chromium.sh
+
+# the layers of the package import one way (pyproject.toml [tool.importlinter],
+# docs/architecture.md)
+lint: $(STAMP)
+	$(VENV)/bin/lint-imports
 
 test: $(STAMP) chromium
 	$(PY) -m pytest -n 2 --dist worksteal --durations=10

@@ -33,7 +33,7 @@ import time
 import numpy as np
 
 from assur import io
-from assur.synthesis.search import load_problem
+from assur.io import load_problem
 from assur.synthesis.search.polish import polish
 from assur.synthesis.search.search import optimize
 

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from assur import io
-from assur.synthesis.search import load_problem
+from assur.io import load_problem
 from assur.synthesis.search.scale import Executor, sweep
 
 

@@ -8,7 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from assur import io
-from assur.synthesis.search import CRITERIA, Limit, Problem, Variable, criterion, load_problem
+from assur.synthesis.search import CRITERIA, Limit, Problem, Variable, criterion
+from assur.io import load_problem
 from assur.synthesis.search.criteria import _Kind
 from assur.synthesis.search.problem import CONSTRAINT, FEASIBLE
 from assur.synthesis.search.polish import missing_gradients, polish

@@ -23,7 +23,7 @@ from assur import io
 from assur.dynamics.balancing import common_centre
 from assur.core.columns import formulas_of
 from assur.machines.conditioner import specific_pressure
-from assur.synthesis.search import load_problem
+from assur.io import load_problem
 from assur.synthesis.search.search import optimize
 from assur.errors import ModelError
 from assur.synthesis.sensitivity import sensitivities

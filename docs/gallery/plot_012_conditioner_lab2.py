@@ -92,7 +92,7 @@ drawn = drawing.draw(six.mechanism.analyze(six.range))
 # The spring's pins, rate and preload chosen so that p_c (the model's formula, a
 # fused-kernel output by its name) varies least over the gap range, within ±5 % of
 # p_target (``assur optimize``; a small budget here):
-from assur.synthesis.search import load_problem  # noqa: E402
+from assur.io import load_problem  # noqa: E402
 from assur.synthesis.search.search import optimize  # noqa: E402
 
 pb = load_problem(io.bundled("conditioner_lab2_design"))

@@ -71,7 +71,7 @@ print(sorted(dynamics_figures))
 # vertical one no larger and every sieve's stroke at least the original's
 # (``assur optimize``; a small budget here).
 from assur.dynamics.balancing import common_centre  # noqa: E402
-from assur.synthesis.search import load_problem  # noqa: E402
+from assur.io import load_problem  # noqa: E402
 from assur.synthesis.search.search import optimize  # noqa: E402
 
 pb = load_problem(io.bundled("cleaning_lab3_design"))

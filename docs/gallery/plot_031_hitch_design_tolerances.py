@@ -21,7 +21,7 @@ manufacturing tolerances and asks how the capacity scatters when it is built.
 import numpy as np
 
 from assur import io
-from assur.synthesis.search import load_problem
+from assur.io import load_problem
 
 seed = io.load(io.bundled("hitch_003"))
 a = seed.mechanism.analyze(seed.range)

@@ -35,6 +35,7 @@ __all__ = ["MOVED", "MOVED_PACKAGES", "MOVED_NAMES", "new_name", "install"]
 
 #: modules that moved, old name → new name
 MOVED = {
+    "assur.app.geometry": "assur.views.geometry",
     "assur.balancing": "assur.dynamics.balancing",
     "assur.capacity": "assur.machines.capacity",
     "assur.chains": "assur.core.chains",
@@ -98,14 +99,18 @@ MOVED_NAMES = {
 }
 
 
+_MISSING = object()
+
+
 class _OldModule(types.ModuleType):
     """An old module name: its attributes are the new module's (or, for a name that
     moved elsewhere, :data:`MOVED_NAMES`')."""
 
     def __getattr__(self, name):
         new = importlib.import_module(self.__dict__["_new_name"])
-        if hasattr(new, name):
-            return getattr(new, name)
+        found = getattr(new, name, _MISSING)
+        if found is not _MISSING:
+            return found
         moved = MOVED_NAMES.get(f"{self.__name__}.{name}")
         if moved is None:
             raise AttributeError(f"module {self.__name__!r} has no attribute {name!r}")

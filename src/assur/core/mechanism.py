@@ -480,8 +480,7 @@ class Mechanism:
         >>> round(float(half.analyze([0.42]).stability.share("A")[0]), 1)  # [%]
         39.9
         """
-        from ..machines.stability import Carrying
-        return self._with(machine=Carrying(machine, point, weight, refs))
+        return self._with(machine=machine.carry(point, weight, refs))
 
     def with_loads(self, loads=()) -> "Mechanism":
         """The same mechanism with ``loads`` (:mod:`assur.core.loads` objects; none by

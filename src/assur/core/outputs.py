@@ -69,7 +69,7 @@ from ..kernel.source import BUF_ROW, CHUNK, chunk_loop, copy_out, hoisted, statu
 from ..kernel.stream import STREAM_MIN
 from ..kernel.sym import Sym, Tracer, code
 from .gravity import GRAVITY, gravity_unit
-from .statics import ReactionContextBase
+from .reactions import ReactionContextBase
 
 __all__ = ["evaluate", "Fused", "OutputContext", "OUTPUT_UNITS", "REDUCTIONS", "parse_output",
            "resolve_output", "output_unit", "display_unit", "formula_of"]

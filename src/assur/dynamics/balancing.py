@@ -34,6 +34,7 @@ import numpy as np
 
 from ..core.loads import centre_of_mass, masses_of
 from ..errors import ModelError
+from .masses import LinkMass, design_value
 
 __all__ = ["CentreOfMassPath", "common_centre", "path_of", "CounterMass", "Balancing",
            "balance", "OBJECTIVES"]
@@ -91,7 +92,6 @@ def _centre(kin):
     """The common centre of mass (x, y) (m, n) [m] and the total mass (m, 1) [kg] of
     the moving masses (:func:`assur.core.loads.centre_of_mass`, the formula of the
     outputs ``Xc``, ``Yc`` too)."""
-    from .crank import design_value
     masses = masses_of(kin.mechanism)
     if not masses:
         raise ModelError(f"mechanism {kin.mechanism.name!r} has no masses on moving links")
@@ -288,7 +288,6 @@ def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=1000, p
     """
     from scipy.optimize import differential_evolution
 
-    from .crank import LinkMass
     if objective not in OBJECTIVES:
         raise ValueError(f"objective must be one of: {list(OBJECTIVES)}")
     if kin.k != 1 or kin.m != 1:

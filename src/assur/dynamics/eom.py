@@ -37,7 +37,7 @@ import numpy as np
 
 from ..errors import ModelError
 from ..core.loads import masses_of
-from .crank import design_value
+from .masses import design_value
 
 __all__ = ["EquationsOfMotion", "equations_of_motion"]
 

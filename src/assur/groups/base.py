@@ -52,6 +52,8 @@ from typing import Any, ClassVar, NamedTuple, Union
 
 import numpy as np
 
+from ..kernel import ops
+
 Ref = Union[str, float, int]
 
 __all__ = ["Group", "Field", "Failure", "register", "registry", "group_type", "Ref",
@@ -222,12 +224,11 @@ class Failure(NamedTuple):
 
 
 _REGISTRY: dict[str, type] = {}
-_BY_OP: list[type] = []
 
 
 def register(cls):
     """Class decorator: register a group type under ``cls.type_name`` and give it its
-    op code (its index in the registry).
+    op code (its index in the kernel's table of operations, :mod:`assur.kernel.ops`).
 
     Examples
     --------
@@ -251,8 +252,7 @@ def register(cls):
     if name in _REGISTRY and _REGISTRY[name] is not cls:
         raise ValueError(f"group type {name!r} is registered twice")
     if name not in _REGISTRY:
-        cls.op = len(_BY_OP)
-        _BY_OP.append(cls)
+        cls.op = ops.add(cls)
         _REGISTRY[name] = cls
     return cls
 
@@ -291,7 +291,7 @@ def group_type(op_or_name) -> type:
     """
     if isinstance(op_or_name, str):
         return _REGISTRY[op_or_name]
-    return _BY_OP[int(op_or_name)]
+    return ops.op(op_or_name)
 
 
 @dataclass(frozen=True)

@@ -72,7 +72,7 @@ def load_problem(path, variables=(), positions=None, chunk=None):
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"), variables=["L4=±20 mm"], positions=6)
     >>> pb.names[-3:], pb.n_positions
     (('X07', 'Y07', 'L4'), 6)

@@ -35,7 +35,7 @@ import ast
 import hashlib
 import re
 
-from ..groups import group_type
+from .ops import op
 from .cache import helpers_tag, load_source
 from .emit import CODES_PER_OP, Emitter
 from .fold import fold
@@ -183,7 +183,7 @@ def generate_composed(rows, measures, K, out_pts, out_sca):
     items = []  # (emitted lines, status base, real names of the continuity staging)
     cont = []
     for i, row in enumerate(rows):
-        gt = group_type(row[0])
+        gt = op(row[0])
         E = Emitter(K)
         gt.emit(E, 0, tuple(int(v) for v in row[1:]))
         lines = E.lines

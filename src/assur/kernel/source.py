@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 import re
 
-from ..groups import group_type
+from .ops import op
 from .emit import (CODES_PER_OP, CONTINUITY_TOL, FAIL_COINCIDENT, FAIL_CONTINUITY,
                    Emitter, d, dd, fail, pt)
 from .cache import helpers_tag
@@ -372,7 +372,7 @@ def emit_program(rows, measures, K):
     E = Emitter(K)
     cont = []
     for i, row in enumerate(rows):
-        gt = group_type(row[0])
+        gt = op(row[0])
         E(f"# group {i}: {gt.type_name}")
         gt.emit(E, i, tuple(int(v) for v in row[1:]))
         if gt.continuity and K == 1:

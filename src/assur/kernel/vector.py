@@ -242,11 +242,8 @@ def _code_version() -> str:
         import hashlib
         from pathlib import Path
 
-        from .. import groups
-        from . import emit, fold, select, source
-        mods = {sys.modules[c.__module__] for c in groups.registry().values()}
-        mods |= {sys.modules[__name__], emit, fold, select, source,
-                 sys.modules["assur.groups.base"]}
+        from . import emit, fold, ops, select, source
+        mods = ops.source_modules() | {sys.modules[__name__], emit, fold, select, source}
         h = hashlib.sha1()
         for f in sorted(str(m.__file__) for m in mods):
             h.update(Path(f).read_bytes())

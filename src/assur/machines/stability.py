@@ -220,6 +220,22 @@ class Machine:
         """
         return sum(w[1] for w in self.weights + self.counterweights)
 
+    def carry(self, point, weight, refs=None) -> "Carrying":
+        """The machine carrying an implement of ``weight`` [N] at ``point`` of a mechanism
+        (what :meth:`assur.Mechanism.with_machine` stores).
+
+        Examples
+        --------
+        >>> from assur.machines.stability import Machine
+        >>> m = Machine({"A": -2.96, "B": 0.0}, steered="A",            # seed 003 §6 [m]
+        ...             weights=[("tractor", 56000.0, -1.62)],            # [N], [m]
+        ...             counterweights=[("front ballast", 8000.0, -3.56)])
+        >>> c = m.carry("S6", 27500.0)                                    # P6 at S6 [N]
+        >>> c.point, c.weight
+        ('S6', 27500.0)
+        """
+        return Carrying(self, point, weight, refs)
+
     def _steered_reaction(self, items) -> float:
         """Reaction of the steered axle under ``items`` alone [N] (moments about the
         other axle)."""

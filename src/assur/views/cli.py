@@ -453,7 +453,7 @@ def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylin
 # ---- synthesis (issue 12): assur sweep, assur optimize ---------------------------------
 def _design_problem(file: Path, var, positions):
     """The design problem of a model file (+ --var); user errors exit 1."""
-    from ..synthesis.search import load_problem
+    from ..io import load_problem
     from ..errors import AssemblyError, ModelError
 
     _load(file)  # the file's own errors and warnings, as every command shows them

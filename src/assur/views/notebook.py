@@ -84,7 +84,7 @@ def mechanism_html(mech) -> str:
 
 
 def _drawing(kin) -> str:
-    from .page.geometry import geometry
+    from .geometry import geometry
     from .page.svg import svg
     if len(kin.shape) != 1:
         return "<p>(a batch of designs: draw one with <code>geometry(kin, design=…)</code>)</p>"

@@ -11,11 +11,12 @@
   with the criteria's exact gradients (:mod:`assur.synthesis.sensitivity`);
 * :mod:`assur.synthesis.search.scale` — chunks of designs on Dask (a LocalCluster or an
   existing scheduler), results to Parquet.
+
+A problem is read from a model file's ``[design]`` by :func:`assur.io.load_problem`
+(files are the layer above).
 """
 
 from .criteria import CRITERIA, Criterion, Limit, criterion
 from .problem import Batch, Problem, Variable
-from ...io.problems import load_problem
 
-__all__ = ["Problem", "Variable", "Batch", "Criterion", "Limit", "CRITERIA", "criterion",
-           "load_problem"]
+__all__ = ["Problem", "Variable", "Batch", "Criterion", "Limit", "CRITERIA", "criterion"]

@@ -77,7 +77,8 @@ class Limit:
     kind's default limit):
 
     >>> from assur import io
-    >>> from assur.synthesis.search import Limit, load_problem
+    >>> from assur.synthesis.search import Limit
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))
     >>> [(c.name, c.limit.value, c.limit.sense) for c in pb.constraints]  # doctest: +NORMALIZE_WHITESPACE
     [('min Y(56)', 'original', 'at_most'), ('max Y(56)', 'original', 'at_least'),
@@ -277,7 +278,7 @@ class Criterion:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> sens, red = pb.jet(pb.x0)  # exact sensitivities at the seed's design
         >>> top = pb.constraints[1]
@@ -333,7 +334,7 @@ class Criterion:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> sens, red = pb.jet(pb.x0)  # exact sensitivities at the seed's design
         >>> low, top = pb.constraints[:2]
@@ -558,7 +559,7 @@ def jet_reductions(sens, params) -> Reductions:
     lowest (0.2 m, the seed's condition) at the first position, highest at the last.
 
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> sens, red = pb.jet(pb.x0)  # exact sensitivities at the seed's design
     >>> from assur.synthesis.search.criteria import jet_reductions

@@ -72,7 +72,8 @@ class Polished:
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
     ...               pb.objectives)  # only the top-link pivot 07 moves; 10 positions
@@ -110,7 +111,8 @@ class Polished:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import Problem, load_problem
+        >>> from assur.synthesis.search import Problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
         ...               pb.objectives)  # only the top-link pivot 07 moves; 10 positions
@@ -140,7 +142,7 @@ def missing_gradients(problem) -> list:
     Every criterion of the bundled seed-003 design problem has one:
 
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.polish import missing_gradients
     >>> missing_gradients(load_problem(io.bundled("hitch_003_design")))
     []
@@ -194,7 +196,8 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
     ...               pb.objectives)  # only the top-link pivot 07 moves; 10 positions

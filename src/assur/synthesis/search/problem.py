@@ -127,7 +127,7 @@ class Problem:
     name : str, optional
     source : tuple, optional
         How to rebuild the problem in another process (``(function, args)``, set by
-        :func:`assur.synthesis.search.load_problem`): a problem made from a file pickles as
+        :func:`assur.io.load_problem`): a problem made from a file pickles as
         that recipe, so Dask workers rebuild it instead of receiving compiled kernels.
     chunk : int
         Designs per kernel call.
@@ -139,7 +139,7 @@ class Problem:
     Examples
     --------
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))
     >>> [v.name for v in pb.variables][:4]
     ['X01', 'Y01', 'X03', 'Y03']
@@ -200,7 +200,7 @@ class Problem:
     def __reduce__(self):
         if self.source is None:
             raise TypeError(f"design problem {self.name!r} was not made from a model file: "
-                            f"make it with assur.synthesis.search.load_problem to run it on Dask")
+                            f"make it with assur.io.load_problem to run it on Dask")
         fn, args = self.source
         return fn, args
 
@@ -215,7 +215,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> pb.names
         ('X01', 'Y01', 'X03', 'Y03', 'X05', 'Y05', 'X07', 'Y07')
@@ -232,7 +232,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> pb.bounds.shape, np.round(pb.bounds[0] * 1e3, 1).tolist()  # X01 [mm]
         ((8, 2), [385.0, 445.0])
@@ -249,7 +249,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> np.round(pb.x0 * 1e3, 1).tolist()  # [mm]
         [415.0, 563.0, 250.0, 1112.0, 135.0, 480.0, 415.0, 895.0]
@@ -263,7 +263,7 @@ class Problem:
         --------
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = pb.sample(3, seed=0)
         >>> X.shape, np.round(X[0, :2] * 1e3, 1).tolist()  # X01, Y01 of the first [mm]
@@ -285,7 +285,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> x = pb.x0.copy()
         >>> x[7] += 0.03  # [m]
@@ -307,7 +307,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> pb.verify(pb.x0)
         ''
@@ -355,7 +355,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> sens, red = pb.jet(pb.x0)
         >>> sens.outputs, np.shape(sens.jacobian)  # (positions, outputs, variables)
@@ -390,7 +390,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> ref = pb.reference()
         >>> round(float(ref["min Y(56)"][0]), 4), round(float(ref["max Y(56)"][0]), 4)  # [m]
@@ -427,7 +427,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -506,7 +506,7 @@ class Problem:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> pb.n_positions, round(float(pb.positions[0]), 3), round(float(pb.positions[-1]), 3)  # [m]
         (50, 0.42, 0.67)
@@ -617,7 +617,7 @@ class Batch:
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
     >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -654,7 +654,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -685,7 +685,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -706,7 +706,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -728,7 +728,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -751,7 +751,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -832,7 +832,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -876,7 +876,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -914,7 +914,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher
@@ -947,7 +947,7 @@ class Batch:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> X = np.array([pb.x0] * 3 + [pb.sample(27, seed=1)[26]])  # four designs [m]
         >>> X[1, 7] += 0.03; X[2, 1] += 0.03  # Y07, Y01 30 mm higher

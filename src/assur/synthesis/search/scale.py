@@ -7,7 +7,7 @@ of designs mapped over a Dask cluster — a :class:`distributed.LocalCluster` of
 Both cluster cases run the same code: the chunks go to ``client.map``, each task
 evaluates its chunk with :meth:`Problem.evaluate` (one fused-kernel batch) and
 returns a :class:`~assur.synthesis.search.problem.Batch`, which the client concatenates in
-order. A problem made from a model file (:func:`assur.synthesis.search.load_problem`) travels
+order. A problem made from a model file (:func:`assur.io.load_problem`) travels
 as its recipe and is rebuilt once per worker process; the workers must see the
 model file at the same path (a shared disk, or a bundled model).
 
@@ -55,7 +55,7 @@ class Executor:
     of two designs of the bundled seed-003 design problem:
 
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> from assur.synthesis.search.scale import Executor
     >>> with Executor(chunk=2, progress=lambda done, total: print(f"{done}/{total}")) as ex:
@@ -140,7 +140,7 @@ class Executor:
         Three chunks of the bundled seed-003 design problem, concatenated in order:
 
         >>> from assur import io
-        >>> from assur.synthesis.search import load_problem
+        >>> from assur.io import load_problem
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> from assur.synthesis.search.scale import Executor
         >>> X = pb.sample(5, seed=1)
@@ -207,7 +207,7 @@ def sweep(problem, X=None, *, samples=None, seed=None, executor=None):
     bundled design problem): one meets every constraint.
 
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> from assur.synthesis.search.scale import sweep
     >>> b = sweep(pb, samples=200, seed=1)
@@ -240,7 +240,7 @@ def write_parquet(batch, path):
     >>> import tempfile
     >>> import pandas as pd
     >>> from assur import io
-    >>> from assur.synthesis.search import load_problem
+    >>> from assur.io import load_problem
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> from assur.synthesis.search.scale import sweep, write_parquet
     >>> b = sweep(pb, samples=20, seed=1)

@@ -65,7 +65,8 @@ class OptimizeResult:
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.search import optimize
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
@@ -99,7 +100,8 @@ class OptimizeResult:
         --------
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import Problem, load_problem
+        >>> from assur.synthesis.search import Problem
+        >>> from assur.io import load_problem
         >>> from assur.synthesis.search.search import optimize
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
@@ -121,7 +123,8 @@ class OptimizeResult:
 
         >>> import numpy as np
         >>> from assur import io
-        >>> from assur.synthesis.search import Problem, load_problem
+        >>> from assur.synthesis.search import Problem
+        >>> from assur.io import load_problem
         >>> from assur.synthesis.search.search import optimize
         >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
         >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
@@ -225,7 +228,8 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.search import optimize
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
@@ -294,7 +298,8 @@ class ParetoResult:
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, criterion, load_problem
+    >>> from assur.synthesis.search import Problem, criterion
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.search import pareto
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> lift = criterion("bound", {"quantity": "Y(56)", "of": "span"}, pb.original,
@@ -348,7 +353,8 @@ def pareto(problem, *, pop_size=40, generations=40, seed=None, callback=None,
 
     >>> import numpy as np
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, criterion, load_problem
+    >>> from assur.synthesis.search import Problem, criterion
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.search import pareto
     >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
     >>> lift = criterion("bound", {"quantity": "Y(56)", "of": "span"}, pb.original,

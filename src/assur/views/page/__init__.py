@@ -8,7 +8,7 @@ or a CAD system (DESIGN.md §6: nothing here computes the mechanism):
   downloads (tables as CSV/XLSX, the edited model file, the drawing as DXF);
 * :mod:`assur.views.page.session` — one model file being edited: its parameters by
   group with units, the edited TOML text, the analysis as the page's payload;
-* :mod:`assur.views.page.geometry` — the mechanism's drawing as plain data (points,
+* :mod:`assur.views.geometry` — the mechanism's drawing as plain data (points,
   bodies, joints over the positions), shared by the page, the SVG and the DXF;
 * :mod:`assur.views.page.svg` — the drawing as inline SVG (no matplotlib);
 * :mod:`assur.views.page.dxf` — the drawing at chosen positions as DXF (ezdxf).

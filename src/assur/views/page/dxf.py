@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .geometry import convex_hull, geometry, pose
+from ..geometry import convex_hull, geometry, pose
 
 __all__ = ["write_dxf", "dxf_bytes"]
 

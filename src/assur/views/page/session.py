@@ -11,7 +11,7 @@ executed: values are finite numbers, names must be parameters of the file.
 
 :meth:`PageModel.compute` analyzes the edited model over ``positions`` evenly
 spaced values of its coordinate (one coordinate; the file's own positions for
-more) and returns the page's payload: the drawing (:mod:`assur.views.page.geometry`),
+more) and returns the page's payload: the drawing (:mod:`assur.views.geometry`),
 the seed-like tables (:func:`assur.views.report.tables.seed_tables`) and the solved
 design conditions; a model that cannot be built or assembled gives
 ``{"ok": False, "error": {...}}`` with the message of its :class:`ModelError`
@@ -409,7 +409,7 @@ class PageModel:
         from ...errors import AssemblyError, ModelError, SingularPositionError
         from ..report.tables import seed_tables
         from ...texts import localize
-        from .geometry import geometry
+        from ..geometry import geometry
 
         t0 = time.perf_counter()
         if positions is not None and not 2 <= positions <= MAX_POSITIONS:

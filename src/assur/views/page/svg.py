@@ -1,6 +1,6 @@
 """The mechanism's drawing as an inline SVG string (no matplotlib, no browser script).
 
-The same picture the page draws (:mod:`assur.views.page.geometry`): links in colours
+The same picture the page draws (:mod:`assur.views.geometry`): links in colours
 (a rigid link of three or more points as its lightly filled outline), cylinders as
 a barrel and a rod, frame pivots as triangles, joints as open circles, other points
 as dots, every point and link labelled, weights as arrows down. Used by the
@@ -10,7 +10,7 @@ Examples
 --------
 >>> import numpy as np
 >>> from assur import examples
->>> from assur.views.page.geometry import geometry
+>>> from assur.views.geometry import geometry
 >>> s = svg(geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3))), [0, 2])
 >>> s.startswith("<svg") and 'id="pt-56"' in s
 True
@@ -22,7 +22,7 @@ from html import escape
 
 import numpy as np
 
-from .geometry import convex_hull
+from ..geometry import convex_hull
 
 __all__ = ["svg"]
 
@@ -133,7 +133,7 @@ def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
     Parameters
     ----------
     geo : dict
-        :func:`assur.views.page.geometry.geometry`'s data.
+        :func:`assur.views.geometry.geometry`'s data.
     positions : sequence of int, optional
         Indices of the positions; the first is drawn in colour with labels, the
         others as light outlines. Default: the first and the last.
@@ -149,7 +149,7 @@ def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
     --------
     >>> import numpy as np
     >>> from assur import examples
-    >>> from assur.views.page.geometry import geometry
+    >>> from assur.views.geometry import geometry
     >>> from assur.views.page.svg import svg
     >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
     >>> s = svg(g, positions=[2, 0], width=400, height=300)   # S = 0.67 m in colour

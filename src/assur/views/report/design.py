@@ -56,7 +56,8 @@ def curves(problem, x):
     Examples
     --------
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.criteria import criterion
     >>> from assur.core.quantities import Unit
     >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
@@ -100,7 +101,8 @@ def comparison_html(problem, result, title=None, lang="en"):
     --------
     >>> import re
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.criteria import criterion
     >>> from assur.core.quantities import Unit
     >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
@@ -212,7 +214,8 @@ def write_comparison(path, problem, result, title=None, lang="en"):
     >>> import tempfile
     >>> from pathlib import Path
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.criteria import criterion
     >>> from assur.core.quantities import Unit
     >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch
@@ -247,7 +250,8 @@ def pareto_figure(problem, result, path):
     >>> import tempfile
     >>> from pathlib import Path
     >>> from assur import io
-    >>> from assur.synthesis.search import Problem, load_problem
+    >>> from assur.synthesis.search import Problem
+    >>> from assur.io import load_problem
     >>> from assur.synthesis.search.criteria import criterion
     >>> from assur.core.quantities import Unit
     >>> base = load_problem(io.bundled("hitch_003_design"))  # seed 003's hitch

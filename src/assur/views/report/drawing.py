@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.patches import Polygon, Rectangle
 
-from ..page.geometry import convex_hull
+from ..geometry import convex_hull
 from ...core.loads import Weight
 from ...texts import localize
 from .figures import new_figure

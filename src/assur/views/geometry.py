@@ -42,7 +42,7 @@ def convex_hull(points) -> list:
 
     Examples
     --------
-    >>> from assur.views.page.geometry import convex_hull
+    >>> from assur.views.geometry import convex_hull
     >>> square = [(0, 0), (1, 0), (0.5, 0.5), (1, 1), (0, 1), (0, 0)]   # [m]
     >>> [tuple(float(c) for c in p) for p in convex_hull(square)]    # inner point dropped
     [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
@@ -98,7 +98,7 @@ def geometry(kin, design=None) -> dict:
     --------
     >>> import numpy as np
     >>> from assur import examples
-    >>> from assur.views.page.geometry import geometry
+    >>> from assur.views.geometry import geometry
     >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
     >>> g["n"], g["q"], g["joints"]              # positions, S [m], pivots
     (3, {'S': [0.42, 0.545, 0.67]}, ['01', '03', '05', '07', '23', '34', '45', '56', '67'])
@@ -154,7 +154,7 @@ def pose(geo: dict, i: int) -> dict:
     --------
     >>> import numpy as np
     >>> from assur import examples
-    >>> from assur.views.page.geometry import geometry, pose
+    >>> from assur.views.geometry import geometry, pose
     >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
     >>> [round(v, 4) for v in pose(g, 0)["56"]]   # the suspension axis at S = 0.42 m [m]
     [1.1314, 0.2]
