@@ -17,7 +17,7 @@ None
 ...     warnings.simplefilter("always")
 ...     from assur.hydraulics import piston_area
 >>> piston_area.__module__, w[0].category.__name__
-('assur.machines.cylinders', 'DeprecationWarning')
+('assur.core.cylinders', 'DeprecationWarning')
 >>> str(w[0].message)
 'assur.hydraulics moved to assur.machines.cylinders; the old name goes in the next release'
 """

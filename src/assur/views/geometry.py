@@ -69,7 +69,7 @@ def convex_hull(points) -> list:
 
 
 def _loads_weights(mech):
-    from ...core.loads import Weight
+    from ..core.loads import Weight
     out = []
     for ld in mech.loads:
         if isinstance(ld, Weight):
