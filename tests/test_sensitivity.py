@@ -266,7 +266,7 @@ def test_slsqp_with_exact_gradients_refines_the_hitch():
     form: the smallest capacity at S6 over the stroke, frame pivots 01 and 03 within
     ±30 mm, pressure ≤ 17.5 MPa at every position. It converges, the design is
     feasible (solved again by the kernel), and better than the seed's."""
-    from assur.synthesis.sensitivity.refine import local_refine
+    from assur.synthesis.refine import local_refine
 
     m = examples.hitch_003()
     q = np.linspace(0.42, 0.67, 26)

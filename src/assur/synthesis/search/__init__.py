@@ -8,7 +8,8 @@
 * :mod:`assur.synthesis.search.search` — differential evolution over whole populations
   (scipy, ``vectorized=True``) and NSGA-II (pymoo) for several objectives;
 * :mod:`assur.synthesis.search.polish` — the SLSQP polish of differential evolution's optimum
-  with the criteria's exact gradients (:mod:`assur.synthesis.sensitivity`);
+  with the criteria's exact gradients (:mod:`assur.synthesis.sensitivity`), by the one
+  local refiner :func:`assur.synthesis.refine.refine`;
 * :mod:`assur.synthesis.search.scale` — chunks of designs on Dask (a LocalCluster or an
   existing scheduler), results to Parquet.
 

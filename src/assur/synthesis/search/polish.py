@@ -1,16 +1,17 @@
 """Polishing a design with exact gradients: SLSQP from the optimum of a global search.
 
 Differential evolution (:func:`assur.synthesis.search.search.optimize`) finds the basin; its
-best design is rarely the basin's bottom. :func:`polish` runs scipy's SLSQP from it
-on the problem as its criteria define it —
+best design is rarely the basin's bottom. :func:`polish` runs the one local refiner,
+:func:`assur.synthesis.refine.refine` (scipy's SLSQP), from it on the problem as its
+criteria define it —
 
-* the objective: the problem's (first) objective, negated when maximised, divided by
-  its magnitude at the start;
+* the objective: the problem's (first) objective, maximised or minimised as it says
+  (the refiner divides it by its magnitude at the start);
 * one inequality per constraint: its margin (:meth:`Criterion.margin`, ≥ 0 where it
   holds) divided by its scale (:meth:`Criterion.scale`, the limit's magnitude), at
   least a small slack (1e-9) so that an active constraint is not lost to rounding;
-* the variables scaled to [0, 1] over their bounds, which are SLSQP's bounds (as in
-  :func:`assur.synthesis.sensitivity.refine.local_refine`) —
+* the variables scaled to [0, 1] over their bounds, which are SLSQP's bounds (the
+  refiner's :class:`~assur.synthesis.refine.Scaled`) —
 
 with the exact gradients of the criteria (:attr:`Criterion.gradient`: the
 sensitivity of the output at the active position, :mod:`assur.synthesis.sensitivity`). One
@@ -32,7 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import AssemblyError, ModelError
-from ..sensitivity.refine import Scaled
+from ..refine import refine
 
 __all__ = ["polish", "Polished", "missing_gradients"]
 
@@ -117,8 +118,9 @@ class Polished:
         >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
         ...               pb.objectives)  # only the top-link pivot 07 moves; 10 positions
         >>> from assur.synthesis.search.polish import polish
-        >>> print(polish(top, top.x0).summary(lambda v: f"{v:.2f} %"))
-        polish (SLSQP, exact gradients): 9.44 % → 17.18 % (6 iterations, 2 gradient evaluations)
+        >>> p = polish(top, top.x0)
+        >>> print(p.summary(lambda v: f"{v:.2f} %"))  # doctest: +ELLIPSIS
+        polish (SLSQP, exact gradients): 9.44 % → 17.18 % (... iterations, ... gradient evaluations)
         >>> x = pb.x0.copy()
         >>> x[1] += 0.03  # [m]
         >>> print(polish(pb, x).summary())
@@ -149,10 +151,6 @@ def missing_gradients(problem) -> list:
     """
     crit = list(problem.objectives[:1]) + list(problem.constraints)
     return [f"{c.kind} {c.name}" for c in crit if c.gradient is None]
-
-
-class _Stop(Exception):
-    """SLSQP stepped to a design the sensitivities cannot evaluate."""
 
 
 def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-9,
@@ -214,8 +212,6 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
     ...
     assur.errors.ModelError: polish: a design has 2 values (['X07', 'Y07']), got shape (1,)
     """
-    from scipy.optimize import minimize
-
     if not problem.objectives:
         raise ModelError(f"design problem {problem.name!r}: no objective to polish")
     run = evaluate or problem.evaluate
@@ -235,56 +231,30 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
     if not b0.feasible[0]:
         return Polished(x0, x0, v0, float("nan"), False, False,
                         note=f"the start is not feasible: {b0.reason(0)}")
-    lo, hi = problem.bounds.T
     ref = problem.reference() if any(
         isinstance(c.limit.value, str) and c.limit.value == "original"
         for c in problem.constraints) else {}
-    count = {"g": 0}
 
     def criteria(xx):
-        """(objective, margins/scales, their gradients in z) at the design ``xx``
-        [SI]: one call of the sensitivities."""
-        try:
-            s, red = problem.jet(xx)
-        except (AssemblyError, ModelError) as e:
-            raise _Stop(str(e)) from e
-        span = ev.span
-        f = sign * float(obj.value(red)[0])
-        gf = sign * obj.gradient(s, red) * span
-        gs, gg = [], []
+        """(objective, its gradient, margins/scales, their gradients) at the design
+        ``xx`` [SI]: one call of the sensitivities."""
+        s, red = problem.jet(xx)
+        g, dg = [], []
         for c in problem.constraints:
             rf = ref.get(c.name)
             sc = float(c.scale(red, rf)[0])
-            gs.append(float(c.margin(red, rf)[0]) / sc - slack)
-            gg.append(c.margin_gradient(s, red, names) * span / sc)
-        return f, gf, np.array(gs), np.array(gg).reshape(len(gs), len(names))
+            g.append(float(c.margin(red, rf)[0]) / sc)
+            dg.append(c.margin_gradient(s, red, names) / sc)
+        return (float(obj.value(red)[0]), obj.gradient(s, red), np.array(g),
+                np.array(dg).reshape(len(g), len(names)))
 
-    # the variables scaled to [0, 1], one evaluation per point (local_refine's machinery)
-    ev = Scaled(lo, hi, criteria, clip=True)
-    z0 = ev.z(x0)
-    f0 = ev(z0)[0]
-    fs = abs(f0) or 1.0
-    iterates = [z0]
-
-    def fun(z):
-        return ev(z)[0] / fs
-
-    def jac(z):
-        count["g"] += 1
-        return ev(z)[1] / fs
-
-    cons = [{"type": "ineq", "fun": lambda z: ev(z)[2], "jac": lambda z: ev(z)[3]}] \
-        if problem.constraints else []
-    try:
-        res = minimize(fun, z0, jac=jac, method="SLSQP", bounds=[(0.0, 1.0)] * len(names),
-                       constraints=cons, callback=lambda zk: iterates.append(np.array(zk)),
-                       options={"maxiter": int(maxiter), "ftol": ftol})
-        z, nit, message, stop = np.clip(res.x, 0.0, 1.0), int(res.nit), str(res.message), ""
-    except _Stop as e:
-        # a trial step left the designs that assemble: the last iterate is the result
-        z, nit = iterates[-1], len(iterates) - 1
-        message = stop = f"stopped: a trial design could not be evaluated ({e})"
-    xp = ev.x(z)
+    # a trial design that cannot be evaluated (one that does not assemble, links in
+    # line) ends SLSQP: its last iterate is the result
+    r = refine(criteria, x0, problem.bounds, maximize=obj.sense == "maximize", slack=slack,
+               names=names, constraint_names=[c.name for c in problem.constraints],
+               stop_on=(AssemblyError, ModelError), maxiter=maxiter, ftol=ftol)
+    stop = r.message if r.stopped else ""
+    xp = r.x
     bp = run(xp[None])
     vp = float(bp.objectives[0, 0])
     note = ""
@@ -300,5 +270,5 @@ def polish(problem, x, *, start_batch=None, evaluate=None, maxiter=100, ftol=1e-
     if stop and note:
         note = f"{note} ({stop})"
     ok = not note
-    return Polished(xp if ok else x0, x0, v0, vp, ok, True, nit, ev.count, count["g"],
-                    message, note)
+    return Polished(xp if ok else x0, x0, v0, vp, ok, True, r.nit, r.nfev, r.njev, r.message,
+                    note)

@@ -72,12 +72,15 @@ class OptimizeResult:
     >>> top = Problem(pb.original, pb.positions[::5], pb.variables[6:], pb.constraints,
     ...               pb.objectives)  # only the top-link pivot 07 moves; 10 positions
     >>> r = optimize(top, popsize=5, maxiter=5, seed=0)
-    >>> r.generations, r.evaluations, r.calls
-    (5, 60, 7)
+    >>> r.generations <= 5, r.evaluations <= 5 * 2 * (5 + 1)  # 10 designs each, and the first
+    (True, True)
     >>> round(float(r.original.objectives[0, 0]), 2), round(r.value, 2)  # seed's, best [%]
     (9.44, 17.18)
-    >>> print(r.polished.summary())
-    polish (SLSQP, exact gradients): 16.5368 → 17.1849 (6 iterations, 2 gradient evaluations)
+    >>> p = r.polished                       # differential evolution's best, then SLSQP's
+    >>> p.accepted, round(p.start_value, 2), round(p.value, 2), p.value > p.start_value  # [%]
+    (True, 16.54, 17.18, True)
+    >>> print(p.summary(lambda v: f"{v:.2f} %"))  # doctest: +ELLIPSIS
+    polish (SLSQP, exact gradients): 16.54 % → 17.18 % (... iterations, ... gradient evaluations)
     >>> np.round(r.x * 1e3, 1).tolist(), r.verified  # X07, Y07 [mm]; assembles throughout
     ([385.0, 925.0], '')
     """
@@ -307,8 +310,10 @@ class ParetoResult:
     >>> two = Problem(pb.original, pb.positions[::5], pb.variables[:2], [pb.constraints[2]],
     ...               [pb.objectives[0], lift])  # cylinder pivot 01 moves; p ≤ relief
     >>> front = pareto(two, pop_size=12, generations=8, seed=0)
-    >>> front.X.shape, front.evaluations, front.generations  # 12 designs × 8 generations
-    ((12, 2), 96, 8)
+    >>> front.X.shape[1], front.generations  # 2 variables; 8 generations
+    (2, 8)
+    >>> front.evaluations <= 12 * 8          # at most 12 designs a generation
+    True
     >>> round(float(front.original.objectives[0, 1]), 3)  # the seed's lift range [m]
     0.788
     """
