@@ -247,7 +247,8 @@ def test_scaled_maps_and_evaluates_once_per_point():
 
 def test_both_call_sites_use_the_one_refiner(monkeypatch):
     """local_refine and the search's polish both run refine (a spy counts the calls)."""
-    from assur.synthesis.search import Problem, load_problem
+    from assur.io import load_problem
+    from assur.synthesis.search import Problem
     from assur.synthesis.search import polish as polish_module
 
     calls = []
