@@ -781,12 +781,42 @@ class Kinematics:
         return np.einsum("...k,...k->...", J, qdd) + np.einsum("...k,...kl,...l->...", qd, H, qd)
 
     # ---- checks ----------------------------------------------------------------------
-    def instant_centre(self, link, wrt=None):
-        """Instantaneous centre of rotation of a link relative to the frame [m].
+    def direction_rate(self, a, b, wrt=None):
+        """Angular-velocity analog of the direction from point ``a`` to point ``b``,
+        dφ_ab/dq [rad/m or rad/rad] (of a rigid body through both points: its own).
 
-        From the velocity analog of the link's tail point A and its angular analog:
-        ``P = A + (−A'_y, A'_x)/φ'``. Seed 003 finds it as the intersection of
-        rockers 5 and 7 (Xp) and checks I56 = φ6'·(X56 − Xp).
+        Examples
+        --------
+        >>> from assur import examples
+        >>> r = examples.hitch_003().solve([0.42, 0.67])          # S [m]
+        >>> [round(float(v), 3) for v in r.direction_rate("56", "67")]   # [rad/m]
+        [0.295, 3.085]
+        >>> [round(float(v), 3) for v in r.dphi("6")]           # link 6 through them
+        [0.295, 3.085]
+        """
+        dx, dy = self.x(b) - self.x(a), self.y(b) - self.y(a)
+        ddx, ddy = self.dx(b, wrt) - self.dx(a, wrt), self.dy(b, wrt) - self.dy(a, wrt)
+        return (dx * ddy - dy * ddx) / (dx * dx + dy * dy)
+
+    def instant_centre(self, link=None, wrt=None, *, points=None, singular="raise"):
+        """Instantaneous centre of rotation of a link relative to the frame [m] — the one
+        home of this check (the reports' table of it calls it).
+
+        From the velocity analog of a point A of the link and its angular analog φ':
+        ``P = A + (−A'_y, A'_x)/φ'``. Seed 003 finds it as the intersection of rockers
+        5 and 7 (Xp) and checks I56 = φ6'·(X56 − Xp).
+
+        Parameters
+        ----------
+        link : str, optional
+            A named link (A its tail, φ' its :meth:`dphi`).
+        points : (str, str), optional
+            Instead of a link: two points A, B of one rigid body (φ' the
+            :meth:`direction_rate` of A → B).
+        singular : {"raise", "mask"}
+            Where the link is at rest there is no centre: raise
+            :class:`SingularPositionError` (default) or mask those positions
+            (:class:`numpy.ma.MaskedArray`).
 
         Returns
         -------
@@ -803,14 +833,26 @@ class Kinematics:
         (-13.991, 4.449)
         >>> round(float(r.dphi("6")[0] * (r.x("56")[0] - xp[0])), 3)   # I56 [m/m], table 3.1
         4.459
+        >>> xq, _ = r.instant_centre(points=("56", "67"))         # the same body [m]
+        >>> bool(abs(xq[0] - xp[0]) < 1e-9)
+        True
         """
-        lk = next(l for l in self.mechanism.links if l.name == link)
-        w = self.dphi(link, wrt)
-        # raises SingularPositionError where the link is at rest (no centre)
-        self._singular_mask(w, f"instantaneous centre of link {link}", "raise")
-        ax, ay = self.x(lk.tail), self.y(lk.tail)
-        vx, vy = self.dx(lk.tail, wrt), self.dy(lk.tail, wrt)
-        return ax - vy / w, ay + vx / w
+        if points is None:
+            lk = next(l for l in self.mechanism.links if l.name == link)
+            a, what = lk.tail, f"instantaneous centre of link {link}"
+            w = self.dphi(link, wrt)
+        else:
+            a, what = points[0], f"instantaneous centre of the body of {points[0]}, {points[1]}"
+            w = self.direction_rate(points[0], points[1], wrt)
+        # raises SingularPositionError where the link is at rest (no centre), or masks
+        bad = self._singular_mask(w, what, singular)
+        ws = np.where(bad, 1.0, w)
+        ax, ay = self.x(a), self.y(a)
+        vx, vy = self.dx(a, wrt), self.dy(a, wrt)
+        xp, yp = ax - vy / ws, ay + vx / ws
+        if singular == "mask":
+            return np.ma.masked_array(xp, bad), np.ma.masked_array(yp, bad)
+        return xp, yp
 
     def closure_residual(self):
         """Largest violation of any group's closure equations [m], shape ``shape``.

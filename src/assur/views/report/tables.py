@@ -888,19 +888,15 @@ def _table_ic(v):
     A, B = points[0], points[1]
     link = next((l.name for l in v.mech.links
                  if {l.tail, l.head} <= set(points) and l.name in kin.links), None)
+    # the centre is the kinematics' (Kinematics.instant_centre); where the link is at
+    # rest it has none: an empty cell (NaN), said so in a note
     if link is not None:
         w = v.pick(kin.dphi(link))
-    else:  # φ' of the direction A → B
-        dx, dy = v.pick(kin.x(B) - kin.x(A)), v.pick(kin.y(B) - kin.y(A))
-        ddx, ddy = v.pick(kin.dx(B) - kin.dx(A)), v.pick(kin.dy(B) - kin.dy(A))
-        w = (dx * ddy - dy * ddx) / (dx * dx + dy * dy)
-    ax, ay = v.pick(kin.x(A)), v.pick(kin.y(A))
-    vx, vy = v.pick(kin.dx(A)), v.pick(kin.dy(A))
-    still = np.abs(w) <= 1e-12 * max(np.max(np.abs(w)), 1e-300)
-    ws = np.where(still, 1.0, w)
-    # no instantaneous centre where the link is at rest: an empty cell (NaN), said so
-    xp = np.where(still, np.nan, ax - vy / ws)
-    yp = np.where(still, np.nan, ay + vx / ws)
+        P = kin.instant_centre(link, singular="mask")
+    else:
+        w = v.pick(kin.direction_rate(A, B))
+        P = kin.instant_centre(points=(A, B), singular="mask")
+    xp, yp = (v.pick(np.ma.filled(np.ma.asarray(c_, float), np.nan)) for c_ in P)
     c = v.coords[0]
     cols = v.coord_columns()
     cols.append(Column("Xp", "m", xp, _both("c_Xp", body)))
