@@ -3,10 +3,10 @@ with its end stops."""
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ...core.cylinders import chamber_area
 from ...errors import ModelError
 from .base import positive, register
 
@@ -21,7 +21,8 @@ class DriveCylinder:
 
         base o====[ p2 |=========o rod end      F = count·A·p2, pushing (S grows)
 
-    ``A = π·D²/4`` per cylinder; the rod's annulus π·(D² − d²)/4 is drained. The
+    ``A = π·D²/4`` per cylinder; the rod's annulus π·(D² − d²)/4 is drained (the
+    chamber areas of :func:`assur.core.cylinders.chamber_area`). The
     stroke ends at the stops ``s_min`` and ``s_max`` (pin-to-pin lengths): a
     piston reaching a stop stays there (its kinetic energy is lost in the impact,
     which the simulation records) until the force reverses.
@@ -89,7 +90,7 @@ class DriveCylinder:
         >>> round(cyl.piston_area * 1e4, 1)    # [cm²], lab 6's 122.7 cm²
         122.7
         """
-        return math.pi * self.bore ** 2 / 4
+        return chamber_area(self.bore, self.rod, 0.0, "piston")
 
     @property
     def rod_side_area(self) -> float:
@@ -102,7 +103,7 @@ class DriveCylinder:
         >>> round(cyl.rod_side_area * 1e4, 1)  # the annulus [cm²]
         103.1
         """
-        return math.pi * (self.bore ** 2 - self.rod ** 2) / 4
+        return chamber_area(self.bore, self.rod, 0.0, "rod")
 
     @property
     def area(self) -> float:
