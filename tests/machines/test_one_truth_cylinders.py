@@ -219,6 +219,27 @@ def test_every_bundled_model_one_truth(name):
 # ~0.3 s each). Random numbers are drawn so that no two of them coincide (the
 # kernel's rows are keyed by value).
 
+def _run(strategy, positions, lift=False):
+    """Check the paths on 25 mechanisms of ``strategy`` (those that assemble at
+    ``positions(range)``; with ``lift``, the lift test too)."""
+
+    @given(strategy)
+    @settings(max_examples=25, suppress_health_check=[HealthCheck.too_slow,
+                                                      HealthCheck.filter_too_much])
+    def run(case):
+        mech, extra = case
+        q = positions(extra)
+        try:
+            mech.solve(q)
+        except AssemblyError:
+            assume(False)
+        assert check_paths(mech, q) > 0
+        if lift:
+            check_lift_test(mech, extra, (float(q.min()), float(q.max())))
+
+    run()
+
+
 @functools.lru_cache(maxsize=None)
 def _model(name):
     return io.load(io.bundled(name))
@@ -277,21 +298,7 @@ def hitches(draw, config):
 @pytest.mark.parametrize("config", CONFIGS, ids=lambda c: "-".join(map(str, c)))
 def test_random_hitches_one_truth(config):
     """The 003 hitch's structure (one coordinate, a lift test): 4 × 25 mechanisms."""
-
-    @given(hitches(config))
-    @settings(max_examples=25, suppress_health_check=[HealthCheck.too_slow,
-                                                      HealthCheck.filter_too_much])
-    def run(case):
-        mech, test = case
-        q = np.linspace(0.43, 0.66, 6)
-        try:
-            mech.solve(q)
-        except AssemblyError:
-            assume(False)
-        assert check_paths(mech, q) > 0
-        check_lift_test(mech, test, (0.43, 0.66))
-
-    run()
+    _run(hitches(config), lambda test: np.linspace(0.43, 0.66, 6), lift=True)
 
 
 @st.composite
@@ -310,20 +317,7 @@ def loaders(draw, config):
                          ids=lambda c: "-".join(map(str, c)))
 def test_random_loaders_one_truth(config):
     """Two coordinates, the boom's mass a dead load (seed 001 lab 1 eq. 14): 2 × 25."""
-
-    @given(loaders(config))
-    @settings(max_examples=25, suppress_health_check=[HealthCheck.too_slow,
-                                                      HealthCheck.filter_too_much])
-    def run(case):
-        mech, rng = case
-        q = np.asarray(rng)[::9]
-        try:
-            mech.solve(q)
-        except AssemblyError:
-            assume(False)
-        assert check_paths(mech, q) > 0
-
-    run()
+    _run(loaders(config), lambda rng: np.asarray(rng)[::9])
 
 
 @st.composite
@@ -347,20 +341,7 @@ def steerings(draw, name):
 def test_random_steerings_one_truth(name):
     """A supply line (seed 001 lab 4) and a double-rod cylinder picking its chamber:
     2 × 25 mechanisms."""
-
-    @given(steerings(name))
-    @settings(max_examples=25, suppress_health_check=[HealthCheck.too_slow,
-                                                      HealthCheck.filter_too_much])
-    def run(case):
-        mech, rng = case
-        q = np.asarray(rng)[::3]
-        try:
-            mech.solve(q)
-        except AssemblyError:
-            assume(False)
-        assert check_paths(mech, q) > 0
-
-    run()
+    _run(steerings(name), lambda rng: np.asarray(rng)[::3])
 
 
 # ---- side = "auto" with a lift test ---------------------------------------------------
