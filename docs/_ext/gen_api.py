@@ -27,6 +27,8 @@ SECTIONS = [
         ("assur.core.reactions", "the reverse pass's context (the groups' statics contract)"),
         ("assur.core.statics", "virtual work and joint reactions by Assur groups"),
         ("assur.core.outputs", "the outputs contract and the fused kernel: only the outputs asked for"),
+        ("assur.core.program", "the compiled form of a mechanism: Program, compile_program, execute"),
+        ("assur.core.compile_context", "what a group's compile works with: slots, rows, pre-passes"),
         ("assur.core.columns", "extra table columns: formulas and sign maps"),
         ("assur.core.motion", "a crank's direction and speed"),
     ]),
