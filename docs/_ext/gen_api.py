@@ -21,6 +21,9 @@ SECTIONS = [
         ("assur.core.mechanism", "Mechanism: frame points, structural groups, loads; solve, analyze"),
         ("assur.core.topology", "the bodies (links) of a mechanism"),
         ("assur.core.kinematics", "positions and exact analogs as named arrays"),
+        ("assur.core.analogs", "positions and analogs of points, links and distances by name"),
+        ("assur.core.transfer", "transfer ratios, real-time velocities and accelerations"),
+        ("assur.core.kinematic_checks", "instantaneous centre, transmission angle, closure residual"),
         ("assur.core.loads", "loads (descriptions), masses, dead loads, the centre of mass"),
         ("assur.core.cylinders", "hydraulic cylinders: the one home of their quantities"),
         ("assur.core.gravity", "the mechanism's gravity"),
@@ -74,6 +77,11 @@ SECTIONS = [
 ]
 
 
+#: modules whose classes are put together from base classes of other modules (by
+#: concern, issue 22): their pages list the inherited methods too
+INHERITED = {"assur.core.kinematics"}
+
+
 def render_index() -> str:
     lines = ["# API reference", "",
              "Generated from the numpydoc docstrings. Units are SI and angles radians "
@@ -98,6 +106,8 @@ def render_module(mod: str) -> str:
                           if not n.startswith("_") and n[0].isupper())
         return (head + "\nThe names the package exports:\n\n.. autosummary::\n\n"
                 + names + "\n")
+    if mod in INHERITED:
+        return head + "   :members:\n   :inherited-members:\n"
     return head + "   :members:\n"
 
 
