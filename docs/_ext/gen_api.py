@@ -21,12 +21,19 @@ SECTIONS = [
         ("assur.core.mechanism", "Mechanism: frame points, structural groups, loads; solve, analyze"),
         ("assur.core.topology", "the bodies (links) of a mechanism"),
         ("assur.core.kinematics", "positions and exact analogs as named arrays"),
+        ("assur.core.analogs", "positions and analogs of points, links and distances by name"),
+        ("assur.core.transfer", "transfer ratios, real-time velocities and accelerations"),
+        ("assur.core.kinematic_checks", "instantaneous centre, transmission angle, closure residual"),
         ("assur.core.loads", "loads (descriptions), masses, dead loads, the centre of mass"),
         ("assur.core.cylinders", "hydraulic cylinders: the one home of their quantities"),
         ("assur.core.gravity", "the mechanism's gravity"),
         ("assur.core.reactions", "the reverse pass's context (the groups' statics contract)"),
-        ("assur.core.statics", "virtual work and joint reactions by Assur groups"),
+        ("assur.core.statics", "virtual work and joint reactions by Assur groups: the result, solve"),
+        ("assur.core.virtual_work", "the applied loads over arrays and the actuator forces by virtual work"),
+        ("assur.core.reverse_pass", "joint reactions by Assur groups in reverse order, over arrays"),
         ("assur.core.outputs", "the outputs contract and the fused kernel: only the outputs asked for"),
+        ("assur.core.program", "the compiled form of a mechanism: Program, compile_program, execute"),
+        ("assur.core.compile_context", "what a group's compile works with: slots, rows, pre-passes"),
         ("assur.core.columns", "extra table columns: formulas and sign maps"),
         ("assur.core.motion", "a crank's direction and speed"),
     ]),
@@ -70,6 +77,11 @@ SECTIONS = [
 ]
 
 
+#: modules whose classes are put together from base classes of other modules (by
+#: concern, issue 22): their pages list the inherited methods too
+INHERITED = {"assur.core.kinematics"}
+
+
 def render_index() -> str:
     lines = ["# API reference", "",
              "Generated from the numpydoc docstrings. Units are SI and angles radians "
@@ -94,6 +106,8 @@ def render_module(mod: str) -> str:
                           if not n.startswith("_") and n[0].isupper())
         return (head + "\nThe names the package exports:\n\n.. autosummary::\n\n"
                 + names + "\n")
+    if mod in INHERITED:
+        return head + "   :members:\n   :inherited-members:\n"
     return head + "   :members:\n"
 
 

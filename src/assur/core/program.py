@@ -1,7 +1,8 @@
 """The compiled form of a mechanism: a typed, immutable :class:`Program`.
 
 :func:`compile_program` asks every group for its program row
-(:meth:`assur.groups.base.Group.compile`) through a :class:`CompileContext`; the
+(:meth:`assur.groups.base.Group.compile`) through a :class:`CompileContext`
+(:mod:`assur.core.compile_context`); the
 rows, the measures and the requested outputs are the *structure* from which the
 kernel is generated (:mod:`assur.kernel.source`) — parameter values never enter it.
 Programs are cached per structure, so solving the same mechanism with other
@@ -27,205 +28,9 @@ from ..kernel import emit as KE
 from ..kernel import run as KR
 from ..kernel import vector as KV
 from ..kernel.compose import checks_continuity, load_kernel
+from .compile_context import CompileContext
 
 __all__ = ["Program", "CompileContext", "compile_program", "execute", "trig_table"]
-
-
-class CompileContext:
-    """What a group's :meth:`~assur.groups.base.Group.compile` works with: slots of
-    points, rows of parameters and literals, coordinate indices, rows of fixed
-    angles, derived rows and pre-passes.
-
-    Examples
-    --------
-    The row of the hitch's cylinder–lever group, compiled by hand:
-
-    >>> from assur import examples
-    >>> from assur.core.program import CompileContext
-    >>> m = examples.hitch_003()
-    >>> c = CompileContext(m.coordinates, tuple(m.params))
-    >>> for p in m.group("I (2,3)").inputs():          # 01, 03 in slots 0, 1
-    ...     _ = c.slot(p)
-    >>> m.group("I (2,3)").compile(c)   # 23 in slot 2; S: coordinate 0 (−1); L3: row 8
-    (2, 0, 1, -1, 8, -1)
-    >>> tuple(m.params).index("L3")
-    8
-    """
-
-    def __init__(self, coordinates, param_names):
-        self.coordinates = tuple(coordinates)
-        self.param_names = tuple(param_names)
-        self._pindex = {n: i for i, n in enumerate(self.param_names)}
-        self.literals: dict[float, int] = {}
-        self.derived = 0
-        self.slots: dict[str, int] = {}
-        self.trig: list = []
-        self.frame_rows: dict = {}
-        self.prepares: list = []
-        self.current = -1
-
-    # rows: parameters first, then literal numbers, then derived rows (fixed up later)
-    def pref(self, ref):
-        """Parameter-table row of a number or parameter name (a placeholder for
-        literals and derived rows until :meth:`resolve`).
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
-        >>> c.pref("L4"), c.pref(0.61)
-        (1, ('lit', 0.61))
-        >>> c.pref("L9")
-        Traceback (most recent call last):
-        ...
-        assur.errors.ModelError: 'L9' is not a parameter
-        """
-        if is_number(ref):
-            key = float(ref)
-            if key not in self.literals:
-                self.literals[key] = len(self.literals)
-            return ("lit", key)
-        if ref in self._pindex:
-            return self._pindex[ref]
-        raise ModelError(f"{ref!r} is not a parameter")
-
-    def lref(self, ref):
-        """Length reference: a parameter row ≥ 0, or ``−(j + 1)`` for coordinate j.
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
-        >>> c.lref("S"), c.lref("L3"), c.lref("L4")      # a cylinder length; parameters
-        (-1, 0, 1)
-        """
-        if isinstance(ref, str) and ref in self.coordinates:
-            return -(self.coordinates.index(ref) + 1)
-        return self.pref(ref)
-
-    def coord(self, name) -> int:
-        """Index of a generalized coordinate.
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S1", "S2"), ())          # two cylinders
-        >>> c.coord("S2")
-        1
-        """
-        return self.coordinates.index(name)
-
-    def slot(self, point) -> int:
-        """Slot of a point (new points get the next slot).
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
-        >>> c.slot("01"), c.slot("03"), c.slot("01")
-        (0, 1, 0)
-        """
-        if point not in self.slots:
-            self.slots[point] = len(self.slots)
-        return self.slots[point]
-
-    def derived_row(self):
-        """A new per-design row filled by a pre-pass (see :meth:`prepare`).
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
-        >>> rows = c.derived_row(), c.derived_row()
-        >>> rows
-        (('der', 0), ('der', 1))
-        >>> c.resolve(rows)            # after the 2 parameters (no literals)
-        (2, 3)
-        """
-        self.derived += 1
-        return ("der", self.derived - 1)
-
-    def trig_angle(self, row) -> int:
-        """Trig-table row of cos and sin of the angle in parameter row ``row``.
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("phiBD",))
-        >>> c.trig_angle(c.pref("phiBD")), c.trig_angle(c.pref(0.0))   # cos; sin next
-        (0, 2)
-        >>> c.trig
-        [('angle', 0), ('angle', ('lit', 0.0))]
-        """
-        self.trig.append(("angle", row))
-        return 2 * (len(self.trig) - 1)
-
-    def trig_triangle(self, pb, pl, po, branch) -> int:
-        """Trig-table row of the angle ``branch·acos((b² + l² − o²)/(2bl))``.
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("L3", "L4", "L34"))
-        >>> c.trig_triangle(c.pref("L3"), c.pref("L4"), c.pref("L34"), -1)
-        0
-        >>> c.trig
-        [('triangle', 0, 1, 2, -1)]
-        """
-        self.trig.append(("triangle", pb, pl, po, branch))
-        return 2 * (len(self.trig) - 1)
-
-    def frame_point(self, name, rx, ry) -> None:
-        """Record a frame point's rows (frame points are served from the table).
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("X01", "Y01"))
-        >>> c.frame_point("01", c.pref("X01"), c.pref("Y01"))
-        >>> c.frame_rows
-        {'01': (0, 1)}
-        """
-        self.frame_rows[name] = (rx, ry)
-
-    def prepare(self, group, data) -> None:
-        """Register the group's pre-pass ``group.prepare(data, ptab, positions_at)``.
-
-        Examples
-        --------
-        The hitch's centre of mass S6 is fixed at the pose S = Sp (group 9): its
-        pre-pass fills two derived rows:
-
-        >>> from assur import examples
-        >>> from assur.core.program import CompileContext
-        >>> m = examples.hitch_003()
-        >>> c = CompileContext(m.coordinates, tuple(m.params))
-        >>> for i, g in enumerate(m.groups[:10]):
-        ...     c.current = i
-        ...     _ = g.compile(c)
-        >>> len(c.prepares), c.prepares[0][0], c.derived
-        (1, 9, 2)
-        """
-        self.prepares.append((self.current, data))
-
-    def resolve(self, v):
-        """Final row number of a placeholder (after all literals are known).
-
-        Examples
-        --------
-        >>> from assur.core.program import CompileContext
-        >>> c = CompileContext(("S",), ("L3", "L4"))      # coordinates, parameter names
-        >>> lit, der = c.pref(0.61), c.derived_row()
-        >>> c.resolve(lit), c.resolve(der), c.resolve((1, lit, der))  # params, literals, derived
-        (2, 3, (1, 2, 3))
-        """
-        if isinstance(v, tuple) and v and v[0] == "lit":
-            return len(self.param_names) + self.literals[v[1]]
-        if isinstance(v, tuple) and v and v[0] == "der":
-            return len(self.param_names) + len(self.literals) + v[1]
-        if isinstance(v, tuple):
-            return tuple(self.resolve(x) for x in v)
-        return v
 
 
 @dataclass(frozen=True)
@@ -598,6 +403,33 @@ def _refine_continuity(prog, ptab, qarr, n, status, flagged, rows, depth):
             status[e] = -1
 
 
+def _output_array(out_buffer, nrows, E):
+    """The array a run writes its outputs into, shape (nrows, E): a new one, or
+    ``out_buffer`` after checking that it fits (float64, C order, writeable)."""
+    if out_buffer is None:
+        return np.empty((nrows, E))
+    if (out_buffer.shape != (nrows, E) or out_buffer.dtype != np.float64
+            or not out_buffer.flags.c_contiguous or not out_buffer.flags.writeable):
+        raise ValueError(f"out: this solve writes {nrows} output rows × {E} designs·"
+                         f"positions into one writeable C-ordered float64 array; the one given "
+                         f"is {out_buffer.dtype} of shape {out_buffer.shape}: give a result of "
+                         f"the same outputs and size")
+    return out_buffer
+
+
+def _unwrap_angles(sv, ang, n):
+    """Make the kernel's angles (principal values, atan2; rows ``ang`` of the scalars
+    ``sv``, shape (scalars, E)) continuous along the positions of each design, in
+    place (releases the GIL; two threads on large ranges)."""
+    rows_a = np.array(ang, dtype=np.int64)
+    if sv.shape[1] >= 65536 and len(ang) > 1:
+        for f in [KR.pool().submit(KR.unwrap_rows, sv, rows_a[h::2].copy(), n)
+                  for h in range(2)]:
+            f.result()
+    else:
+        KR.unwrap_rows(sv, rows_a, n)
+
+
 def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=(),
             depth=0, trig=None, out_buffer=None):
     """Run the kernel; returns the raw output arrays and the status per element.
@@ -637,17 +469,7 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
         kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), (), vector)
     npo, nso = len(names_p), len(names_s)
     blocks, ang, pidx, sidx = prog.layout(names_p, names_s)
-    nrows = blocks[-1][1]
-    if out_buffer is None:
-        out = np.empty((nrows, E))
-    elif (out_buffer.shape != (nrows, E) or out_buffer.dtype != np.float64
-          or not out_buffer.flags.c_contiguous or not out_buffer.flags.writeable):
-        raise ValueError(f"out: this solve writes {nrows} output rows × {E} designs·"
-                         f"positions into one writeable C-ordered float64 array; the one given "
-                         f"is {out_buffer.dtype} of shape {out_buffer.shape}: give a result of "
-                         f"the same outputs and size")
-    else:
-        out = out_buffer
+    out = _output_array(out_buffer, blocks[-1][1], E)
     parts = [out[a:b] for a, b in blocks]
     sv = parts[3].reshape(nso, E)
     status = np.empty(E, dtype=np.int64)
@@ -674,15 +496,7 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
             out[:, (status % KE.CODES_PER_OP == KE.FAIL_CONTINUITY) & (status >= 0)] = 0.0
 
     if check and n > 1 and ang:
-        # the kernel's angles are principal values (atan2); continuous along the
-        # positions of each design when they are a range (releases the GIL)
-        rows_a = np.array(ang, dtype=np.int64)
-        if E >= 65536 and len(ang) > 1:
-            for f in [KR.pool().submit(KR.unwrap_rows, sv, rows_a[h::2].copy(), n)
-                      for h in range(2)]:
-                f.result()
-        else:
-            KR.unwrap_rows(sv, rows_a, n)
+        _unwrap_angles(sv, ang, n)
     return dict(pv=parts[0].reshape(npo, 2, E), pd=parts[1].reshape(npo, 2, k, E),
                 pdd=parts[2].reshape(npo, 2, k, k, E), sv=sv, sd=parts[4].reshape(nso, k, E),
                 sdd=parts[5].reshape(nso, k, k, E), status=status, amount=amount,

@@ -22,6 +22,11 @@ explained in its own file.
 
 Inertia (d'Alembert) is included when coordinate rates q̇, q̈ are given: the
 acceleration of a centre of mass is ``a = J·q̈ + q̇ᵀ·H·q̇`` from the analogs.
+
+Here: the result :class:`Statics` and :func:`solve`, which chooses the route (the
+array pass by blocks of positions, or the fused kernel of :mod:`assur.core.outputs`).
+The loads and the virtual work are in :mod:`assur.core.virtual_work`, the array
+reverse pass in :mod:`assur.core.reverse_pass`; their names are re-exported here.
 """
 
 from __future__ import annotations
@@ -30,9 +35,10 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from ..errors import ModelError
 from .gravity import GRAVITY, gravity_unit
 from .reactions import ReactionContextBase
+from .reverse_pass import ReactionContext, _applied, _residual, reverse_pass
+from .virtual_work import applied_loads, spring_states, virtual_work_forces
 
 __all__ = ["Statics", "GRAVITY", "gravity_unit", "applied_loads", "virtual_work_forces",
            "spring_states", "solve",
@@ -302,180 +308,6 @@ class Statics:
         return pd.DataFrame(cols)
 
 
-def _values(kin):
-    """A function turning a reference into an array broadcastable to (m, n)."""
-    mech = kin.mechanism
-
-    def val(ref):
-        if ref is None:
-            return 0.0
-        v = np.asarray(mech.value_of(ref), dtype=float)
-        if v.ndim == 1:
-            if v.shape[0] == 1:
-                return v[0]
-            return v[:, None]
-        return v
-    return val
-
-
-class _LoadCollector:
-    """Load context over arrays (see :mod:`assur.core.loads`): collects the point forces,
-    couples and springs of the loads, broadcastable to (m, n)."""
-
-    def __init__(self, kin, g, qd=None, qdd=None):
-        self.kin = kin
-        self.mech = kin.mechanism
-        self.value = _values(kin)
-        self.g = g
-        self.gravity_unit = gravity_unit(kin.mechanism)
-        self.moving = qd is not None
-        self.qd, self.qdd = qd, qdd
-        self.forces, self.couples, self.springs = [], [], []
-
-    def point(self, p):
-        return self.kin.value(p)
-
-    def owner(self, p):
-        return self.mech.owner(p)
-
-    def force(self, link, point, fx, fy):
-        self.forces.append((link, point, fx, fy))
-
-    def couple(self, link, M):
-        self.couples.append((link, M))
-
-    def spring(self, load, T, L):
-        self.springs.append((load, T, L))
-
-    def nonzero(self, L, what):
-        if np.any(L == 0):
-            raise ModelError(f"{what} at {int((L == 0).sum())} position(s); its direction is "
-                             f"undefined there")
-
-    def rate(self, link, coordinate=None):
-        """∂φ_link/∂q of a coordinate (the only one by default), (m, n) [rad/m or rad/rad]."""
-        a = 0 if coordinate is None else self.kin.coordinates.index(coordinate)
-        return self.kin.body_rates(link)[0][a]
-
-    def acceleration(self, point):
-        J1 = self.kin.jacobian(point)  # (2, k, m, n)
-        J2 = self.kin.hessian(point)
-        acc = (np.einsum("ckmn,mnk->cmn", J1, self.qdd)
-               + np.einsum("mnk,cklmn,mnl->cmn", self.qd, J2, self.qd))
-        return acc[0], acc[1]
-
-    def angular_acceleration(self, link):
-        w1, w2 = self.kin.body_rates(link)
-        return (np.einsum("kmn,mnk->mn", w1, self.qdd)
-                + np.einsum("mnk,klmn,mnl->mn", self.qd, w2, self.qd))
-
-
-def applied_loads(kin, qdot=None, qddot=None, g=None):
-    """The applied loads as point forces and link moments, each with its link.
-
-    Returns
-    -------
-    forces : list of (link, point, fx, fy)
-        Arrays broadcastable to (m, n) [N].
-    couples : list of (link, M) [N·m]
-    springs : list of (Spring, T, L) with the tension T [N] and length L [m]
-
-    Examples
-    --------
-    >>> from assur import examples
-    >>> from assur.core.statics import applied_loads
-    >>> forces, couples, springs = applied_loads(examples.hitch_003().solve([0.42]))
-    >>> [(link, pt, float(fx), float(fy)) for link, pt, fx, fy in forces]  # P6 [N]
-    [('6', 'S6', 0.0, -27500.0)]
-    >>> couples, springs
-    ([], [])
-    """
-    qd = qdd = None
-    if qdot is not None:
-        qd = np.broadcast_to(np.asarray(qdot, float).reshape(kin.shape + (-1,))
-                             if kin.k > 1 else np.asarray(qdot, float)[..., None],
-                             kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
-        if qddot is None:  # steady motion: no coordinate accelerations
-            qddot = np.zeros(kin.shape + ((kin.k,) if kin.k > 1 else ()))
-        qdd = np.broadcast_to(np.asarray(qddot, float)[..., None]
-                              if kin.k == 1 else np.asarray(qddot, float),
-                              kin.shape + (kin.k,)).reshape(kin.m, kin.n, kin.k)
-    c = _LoadCollector(kin, kin.mechanism.g if g is None else g, qd, qdd)
-    for ld in kin.mechanism.loads:
-        ld.apply(c)
-    return c.forces, c.couples, c.springs
-
-
-def spring_states(kin):
-    """Length, tension and force of every spring of the mechanism over the positions.
-
-    Returns
-    -------
-    dict of str to (L, T, F)
-        By spring name: its length |ab| [m], the tension of one spring
-        ``T = preload + rate·(L − free_length)`` [N], and the force of all ``count``
-        springs, ``F = count·T`` [N]; arrays of the kinematics' shape (a parameter
-        over designs broadcasts).
-
-    Examples
-    --------
-    Two springs along the hitch's cylinder 01–23 (length S), 1000 N/m, free length
-    0.5 m, preload 50 N:
-
-    >>> from assur import examples
-    >>> from assur.core.statics import spring_states
-    >>> m = examples.hitch_003().spring("s", "01", "23", rate=1000.0, free_length=0.5,
-    ...                                 preload=50.0, count=2)
-    >>> L, T, F = spring_states(m.solve([0.42, 0.67]))["s"]
-    >>> [round(float(v), 3) for v in L]   # = S [m]
-    [0.42, 0.67]
-    >>> [round(float(v), 1) for v in T]   # 50 + 1000·(L − 0.5) [N]
-    [-30.0, 220.0]
-    >>> [round(float(v), 1) for v in F]   # 2·T [N]
-    [-60.0, 440.0]
-    """
-    from .loads import Spring
-
-    c = _LoadCollector(kin, 0.0)
-    out = {}
-    for ld in kin.mechanism.loads:
-        if not isinstance(ld, Spring):
-            continue
-        (ax, ay), (bx, by) = c.point(ld.a), c.point(ld.b)
-        L = np.hypot(bx - ax, by - ay)
-        T = ld.tension(c, L)
-        shape = (kin.m, kin.n)
-        L, T = np.broadcast_to(L, shape), np.broadcast_to(T, shape)
-        out[ld.name] = (kin.reshape(L), kin.reshape(T),
-                        kin.reshape(np.broadcast_to(c.value(ld.count) * T, shape)))
-    return out
-
-
-def virtual_work_forces(kin, qdot=None, qddot=None, g=None):
-    """Actuator forces by virtual work, ``{coordinate: F}`` with F of shape (m, n).
-
-    ``F_j = −Q_j``, ``Q_j = Σ F·∂r/∂q_j + Σ M·∂φ/∂q_j`` (spring forces enter as the
-    point forces of their tension).
-
-    Examples
-    --------
-    >>> from assur import examples
-    >>> from assur.core.statics import virtual_work_forces
-    >>> F = virtual_work_forces(examples.hitch_003().solve([0.42, 0.67]))
-    >>> list(F), [round(float(v)) for v in F["S"].ravel()]   # Fgc, table 4.1 [N]
-    (['S'], [129614, 135652])
-    """
-    forces, couples, _ = applied_loads(kin, qdot, qddot, g)
-    Q = np.zeros((kin.k, kin.m, kin.n))
-    for link, pt, fx, fy in forces:
-        J = kin.jacobian(pt)  # (2, k, m, n)
-        Q += fx * J[0] + fy * J[1]
-    for link, M in couples:
-        w1, _ = kin.body_rates(link)
-        Q += M * w1
-    return {c: -Q[j] for j, c in enumerate(kin.coordinates)}
-
-
 #: positions per block of the reverse-order pass: bounds the memory of its temporaries
 #: on very large ranges (the dyads are solved by a compiled loop, so smaller blocks do
 #: not pay: the concatenation costs more than cache-sized temporaries save)
@@ -594,41 +426,6 @@ def solve(kin, qdot=None, qddot=None, g=None, method=None):
     return Statics(kin, vw, joints, act, residual, [])
 
 
-def _residual(kin, applied, joints):
-    """Equilibrium of every moving link: applied loads + all joint forces on it, as
-    (|ΣF|, |ΣM|) maxima over the links, arrays (m, n) (computed when asked for: a
-    check, not part of the result)."""
-    m, n = kin.m, kin.n
-    fres = np.zeros((m, n))
-    mres = np.zeros((m, n))
-    for b in kin.mechanism.topology.bodies:
-        if b == "0":
-            continue
-        fx, fy, mo = [np.broadcast_to(a, (m, n)) for a in applied[b]]
-        for (i, j), (pt, rx, ry, mz) in joints.items():
-            if b not in (i, j):
-                continue
-            sg = 1.0 if j == b else -1.0
-            px, py = kin.value(pt)
-            fx = fx + sg * rx
-            fy = fy + sg * ry
-            mo = mo + sg * (px * ry - py * rx + mz)
-        fres = np.maximum(fres, np.hypot(fx, fy))
-        mres = np.maximum(mres, np.abs(mo))
-    return fres, mres
-
-
-def _applied(kin, qdot, qddot, g):
-    """The applied loads on every body as wrenches about the origin (Fx, Fy, M)."""
-    r = ReactionContext(kin, set())
-    forces, couples, _ = applied_loads(kin, qdot, qddot, g)
-    for link, pt, fx, fy in forces:
-        r.apply(link, pt, fx, fy)
-    for link, M in couples:
-        r.apply_moment(link, M)
-    return r.W
-
-
 class _JointRows(Mapping):
     """``{(i, j): (point, Rx, Ry, Rm)}`` over the fused kernel's output rows: a joint's
     rows are viewed when it is asked for (one position at a time, as dynamics calls,
@@ -651,6 +448,11 @@ class _JointRows(Mapping):
 
     def __len__(self):
         return len(self._index)
+
+
+def _solve(kin, qdot, qddot, g):
+    """The reverse-order pass over one block of positions (:func:`reverse_pass`)."""
+    return Statics(kin, *reverse_pass(kin, qdot, qddot, g), [])
 
 
 def _solve_fused(kin, g):
@@ -678,115 +480,3 @@ def _solve_fused(kin, g):
 
     # fused.evaluate has checked every output finite (failed elements are 0)
     return Statics(kin, vw, joints, act, residual, [], finite=True)
-
-
-class ReactionContext(ReactionContextBase):
-    """The reverse-order pass over arrays of shape (m, n) (designs, positions).
-
-    Examples
-    --------
-    >>> from assur import examples
-    >>> from assur.core.statics import ReactionContext
-    >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
-    >>> r.shape                              # one design, two positions
-    (1, 2)
-    >>> float(r.value("P6"))                  # [N]
-    27500.0
-    """
-
-    def __init__(self, kin, rod_ends):
-        super().__init__(kin.mechanism, rod_ends)
-        self.kin = kin
-        self.shape = (kin.m, kin.n)
-        self._val = _values(kin)
-
-    def point(self, p):
-        """(x, y) of a point, arrays (m, n) [m].
-
-        Examples
-        --------
-        >>> from assur import examples
-        >>> from assur.core.statics import ReactionContext
-        >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
-        >>> x, y = r.point("01")                     # a frame pivot [m]
-        >>> x.tolist(), y.tolist()
-        ([[0.415, 0.415]], [[0.563, 0.563]])
-        """
-        return self.kin.value(p)
-
-    def value(self, ref):
-        """Value of a number or parameter, broadcastable to (m, n).
-
-        Examples
-        --------
-        >>> from assur import examples
-        >>> from assur.core.statics import ReactionContext
-        >>> r = ReactionContext(examples.hitch_003().solve([0.42]), set())
-        >>> float(r.value("L3")), float(r.value(2.5)), r.value(None)   # [m], [-], none
-        (0.2, 2.5, 0.0)
-        """
-        return self._val(ref)
-
-    def inv(self, x):
-        """1/x, and 0 where x = 0 (a degenerate, failed position).
-
-        Examples
-        --------
-        >>> from assur import examples
-        >>> from assur.core.statics import ReactionContext
-        >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
-        >>> r.inv([4.0, 0.0]).tolist()
-        [[0.25, 0.0]]
-        """
-        x = np.broadcast_to(np.asarray(x, float), self.shape)
-        return np.divide(1.0, x, out=np.zeros(self.shape), where=x != 0.0)
-
-    def record(self, i, j, pt, fx, fy, mz=0.0):
-        """Record the force (and moment) of body i on body j at point ``pt``.
-
-        Examples
-        --------
-        >>> from assur import examples
-        >>> from assur.core.statics import ReactionContext
-        >>> r = ReactionContext(examples.hitch_003().solve([0.42, 0.67]), set())
-        >>> r.record("5", "6", "56", 100.0, -50.0)        # [N]
-        >>> pt, fx, fy, mz = r.joints[("5", "6")]
-        >>> pt, fx.tolist(), fy.tolist(), mz.tolist()     # broadcast to (m, n)
-        ('56', [[100.0, 100.0]], [[-50.0, -50.0]], [[0.0, 0.0]])
-        """
-        self.joints[(i, j)] = (pt, np.broadcast_to(fx, self.shape),
-                               np.broadcast_to(fy, self.shape), np.broadcast_to(mz, self.shape))
-
-
-def _solve(kin, qdot, qddot, g):
-    """The reverse-order pass over one block of positions: each group solves its own
-    reactions (:meth:`assur.groups.base.Group.reactions`)."""
-    mech = kin.mechanism
-    topo = mech.topology
-    missing = [p for pts in topo.bodies.values() for p in pts if not kin.has_point(p)]
-    if missing:
-        raise ValueError(f"the kinematics lack points {missing}: solve without `outputs=`")
-    forces, couples, _ = applied_loads(kin, qdot, qddot, g)
-
-    def is_coord(ref):
-        return isinstance(ref, str) and ref in mech.coordinates
-
-    rod_ends = {e for g_ in mech.groups
-                for e in g_.rod_ends(topo.group_links[g_.name], is_coord)}
-    r = ReactionContext(kin, rod_ends)
-    for link, pt, fx, fy in forces:
-        r.apply(link, pt, fx, fy)
-    for link, M in couples:
-        r.apply_moment(link, M)
-    # (apply rebinds, never mutates, so this keeps the applied loads alone)
-    applied = {b: list(w) for b, w in r.W.items()}
-    for g_ in reversed(mech.groups):
-        r.links = topo.group_links[g_.name]
-        g_.reactions(r)
-    joints, act = r.joints, r.act
-    vw = virtual_work_forces(kin, qdot, qddot, g)
-
-    def residual():
-        return _residual(kin, applied, joints)
-
-    return Statics(kin, vw, joints, act, residual, [])
