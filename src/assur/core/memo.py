@@ -53,7 +53,7 @@ class Owner:
     >>> from assur.core.memo import OWNERS
     >>> o = OWNERS["program"]
     >>> o.module, o.structural
-    ('assur.core.mechanism', True)
+    ('assur.core._solving', True)
     """
 
     name: str
@@ -90,8 +90,8 @@ def register_owner(name: str, module: str, doc: str, *, structural: bool = False
 
 
 for _name, _module, _doc, _structural in (
-        ("program", "assur.core.mechanism", "compiled programs by their outputs", True),
-        ("prepared", "assur.core.mechanism",
+        ("program", "assur.core._solving", "compiled programs by their outputs", True),
+        ("prepared", "assur.core._solving",
          "parameter and cos/sin tables of a program, failures of its pre-passes", False),
         ("roles", "assur.core.inputs", "what each parameter is used as (its checks)", True),
         ("chains", "assur.core.chains", "the coordinates that move each point", False),
