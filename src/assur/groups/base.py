@@ -146,7 +146,8 @@ _MISSING = object()
 
 @dataclass(frozen=True)
 class Field:
-    """One parameter of a group type.
+    """One parameter of a group type (load types describe their fields with the same
+    record, with the roles of :data:`assur.core.loads.ROLES`).
 
     Attributes
     ----------

@@ -40,10 +40,10 @@ from ._units import LENGTH, UnitError, display_unit, is_name, parse, to_si, unit
 from ._uses import Uses
 
 
-
 class Builder(Uses, Assembly, Conditions):
     """Builds one model file; every error is a :class:`ModelFileError` located by
-    its key path and the file's line index."""
+    its key path and the file's line index. Its passes are its parts: :class:`Uses`
+    (pass 1), :class:`Assembly` (pass 3), :class:`Conditions` (pass 4)."""
 
     def __init__(self, file: str, data: dict, index: dict):
         self.file = file
@@ -208,7 +208,11 @@ class Builder(Uses, Assembly, Conditions):
         return {c: self.value(path + (c,), table[c], self.kind_of_coordinate(c))
                 for c in self.coords}
 
+    # ---- pass 2: parameters ---------------------------------------------------------------
     def parameters(self):
+        """Each parameter in SI with the kind of its uses (its unit must have that
+        dimension; a plain number is SI, or degrees for an angle), its flags and span
+        checked; an unused one keeps the kind of its unit."""
         out = {}
         self.units = {}
         for name, raw in self.params_raw.items():
@@ -238,7 +242,7 @@ class Builder(Uses, Assembly, Conditions):
         self.param_kind = {n: (u[0] if u else (unit_kind(r) if r.unit else None))
                            for n, r in self.params_raw.items() for u in [self.param_use.get(n)]}
 
-    # ---- checks and resolved values (pass 3 and after) -------------------------------------
+    # ---- checks and resolved values (pass 3 and after) -----------------------------------
     def r(self, *path):
         return self.resolved[tuple(path)]
 
