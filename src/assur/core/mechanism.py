@@ -202,14 +202,11 @@ class Mechanism:
         Examples
         --------
         >>> from assur import examples
-        >>> m = examples.hitch_003().with_params(L4=0.65)
-        >>> calls = []
-        >>> def make():
-        ...     calls.append(1)
-        ...     return m.program(["45"]).out_pts     # an owner's item: the outputs asked
-        >>> m.memo(("program", "45 only"), make), m.memo(("program", "45 only"), make), len(calls)
-        (('45',), ('45',), 1)
-        >>> m.memo(("L4 in mm",), make)
+        >>> m = examples.hitch_003().with_params(L4=0.65)          # [m]
+        >>> prog = m.program(["45"])          # kept under ("program", ("45",))
+        >>> m.memo(("program", ("45",)), lambda: 1 / 0) is prog   # kept: make not called
+        True
+        >>> m.memo(("L4 in mm",), lambda: 650.0)
         Traceback (most recent call last):
         ...
         KeyError: "memo owner 'L4 in mm' is not registered (assur.core.memo.register_owner); owners: ['capacity', 'chains', 'cylinders', 'outputs', 'prepared', 'program', 'roles', 'stability', 'statics']"
