@@ -1,11 +1,14 @@
-"""Regenerate the group-types table of docs/model-format.md from the group registry.
+"""Regenerate the generated tables of docs/model-format.md from the registries: the
+group types (``[[groups]]``) and the load types (``[[loads]]``).
 
-    python docs/gen_groups.py          # rewrite the table in place
+    python docs/gen_groups.py          # rewrite the tables in place
     python docs/gen_groups.py --check  # exit 1 if the docs are out of date
 
-The table is :func:`assur.io.schema_table` between the markers
-``assur.io._schema.TABLE_BEGIN`` and ``TABLE_END``; tests/test_io_groups.py checks
-that the docs hold exactly that table.
+The tables are :func:`assur.io.schema_table` between the markers
+``assur.io._schema.TABLE_BEGIN`` and ``TABLE_END``, and
+:func:`assur.io.load_types_table` between ``LOAD_TABLE_BEGIN`` and ``LOAD_TABLE_END``;
+tests/test_io_groups.py and tests/core/test_loads_registry.py check that the docs hold
+exactly those tables.
 """
 
 from __future__ import annotations
@@ -17,14 +20,28 @@ from assur.io import _schema
 
 DOC = pathlib.Path(__file__).with_name("model-format.md")
 
+#: (what, begin marker, end marker, the table) of each generated block
+TABLES = [
+    ("group-types", _schema.TABLE_BEGIN, _schema.TABLE_END, _schema.schema_table),
+    ("load-types", _schema.LOAD_TABLE_BEGIN, _schema.LOAD_TABLE_END, _schema.load_types_table),
+]
+
+
+def replace(text: str, what: str, begin: str, end: str, table: str) -> str:
+    """``text`` with the block between the markers ``begin`` and ``end`` replaced by
+    ``table``."""
+    head, sep, rest = text.partition(begin + "\n")
+    if not sep or end not in rest:
+        raise SystemExit(f"{DOC}: the markers of the {what} table are missing")
+    tail = rest[rest.index(end):]
+    return head + sep + table + tail
+
 
 def render(text: str) -> str:
-    """``text`` with the block between the markers replaced by the generated table."""
-    head, sep, rest = text.partition(_schema.TABLE_BEGIN + "\n")
-    if not sep or _schema.TABLE_END not in rest:
-        raise SystemExit(f"{DOC}: the markers of the group-types table are missing")
-    tail = rest[rest.index(_schema.TABLE_END):]
-    return head + sep + _schema.schema_table() + tail
+    """``text`` with every generated block replaced by its table."""
+    for what, begin, end, make in TABLES:
+        text = replace(text, what, begin, end, make())
+    return text
 
 
 def main(argv) -> int:

@@ -289,8 +289,7 @@ def toy_type():
     try:
         yield ToyDyad
     finally:
-        del base._REGISTRY["toy_dyad"]
-        base._BY_OP.remove(ToyDyad)
+        base.unregister(ToyDyad)
         assert "toy_dyad" not in _schema.group_types()  # the derived schema follows
 
 

@@ -21,7 +21,8 @@ import pytest
 from assur import Mechanism, io
 from assur.analysis import analyze
 from assur.io import ModelFileError
-from assur.core.loads import Cylinder, Weight
+from assur.core.cylinders import Cylinder
+from assur.core.loads import Weight
 from assur.core.quantities import Unit, display_units, parameter_quantities, unit_text
 from assur.views.report.html import render_html
 from assur.views.report.labels import unit

@@ -5,6 +5,7 @@ description (:mod:`~assur.core.mechanism`), its bodies (:mod:`~assur.core.topolo
 the compiled program (:mod:`~assur.core.program`), the positions and analogs
 (:mod:`~assur.core.kinematics`), the loads and cylinders it carries
 (:mod:`~assur.core.loads`), the kinetostatics (:mod:`~assur.core.statics`) and the
-outputs contract with its fused kernel (:mod:`~assur.core.outputs`). Nothing here
+outputs contract with its fused kernel (:mod:`~assur.core.outputs`); what is kept with a
+mechanism follows one contract (:mod:`~assur.core.memo`). Nothing here
 imports a machine formula library, dynamics, synthesis, files or views.
 """

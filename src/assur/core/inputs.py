@@ -36,7 +36,7 @@ import numpy as np
 from ..errors import ModelError
 from ..groups.base import signed_name
 
-__all__ = ["params_problem", "mark_checked", "is_checked", "max_memory", "fmt_bytes",
+__all__ = ["params_problem", "mark_checked", "max_memory", "fmt_bytes",
            "bytes_per_position", "check_memory", "coordinates_array",
            "span_problem", "check_params", "check_finite", "all_finite", "SPANS",
            "MAX_MEMORY_ENV"]
@@ -439,33 +439,23 @@ def mark_checked(parent, child, changed: Mapping) -> None:
 
     Examples
     --------
+    ``Mechanism.with_params`` calls it: a copy with a value that fails is made, and
+    refused on its first use.
+
     >>> from assur import examples
-    >>> from assur.core.inputs import is_checked
     >>> m = examples.hitch_003()
     >>> good, bad = m.with_params(L4=0.7), m.with_params(L4=-0.7)   # [m]
-    >>> is_checked(good), is_checked(bad)
-    (True, False)
+    >>> round(float(good.solve([0.42]).phi("6", degrees=True)[0]), 1)   # [°]
+    88.3
+    >>> bad.solve([0.42])
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': parameter 'L4' (used as RRR dyad 'II (4,5)'.ra): expected a length of at least 1e-06 m, found -0.7 [m]
     """
     if parent not in _CHECKED and params_problem(parent) is None:
         _CHECKED.add(parent)   # once per parent: then only the changed values are checked
     if parent in _CHECKED and (not changed or params_problem(parent, changed) is None):
         _CHECKED.add(child)
-
-
-def is_checked(mech) -> bool:
-    """Whether ``mech``'s own parameter values have passed :func:`check_params`.
-
-    Examples
-    --------
-    >>> from assur import Mechanism
-    >>> from assur.core.inputs import check_params, is_checked
-    >>> m = Mechanism("m", coordinates=("j1",), params={"l1": 0.2}).frame("O", 0.0, 0.0)
-    >>> before = is_checked(m)
-    >>> check_params(m)
-    >>> before, is_checked(m)
-    (False, True)
-    """
-    return mech in _CHECKED
 
 
 def _problem(mech, params):

@@ -36,16 +36,323 @@ The same code then serves the array evaluation
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import ClassVar, Union
+from dataclasses import MISSING, dataclass, field as _dataclass_field, fields as _dataclass_fields
+from types import MappingProxyType
+from typing import Callable, ClassVar, Union
 
 import numpy as np
 
-__all__ = ["Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass",
+from ..groups.base import Field
+from .quantities import DEFAULT_UNITS
+
+__all__ = ["Load", "param", "register", "unregister", "registry", "load_type", "on_register",
+           "ROLES",
+           "FLAGS", "Weight", "PointForce", "Couple", "ResistingMoment", "Spring", "Mass",
            "LOAD_TYPES", "names_in", "load_link", "masses_of", "dead_load_links", "is_dead",
            "centre_of_mass"]
 
 Ref = Union[str, float, int]
+
+#: what a field of a load type holds, by its role; the model file's ``[[loads]]`` schema,
+#: the file loader's checks, the builder and the docs table follow the role
+ROLES = {
+    "point": "the name of a point",
+    "link": 'the name of a link ("0": the frame)',
+    "links": "two link names, of the ends' links in order",
+    "value": "a number in the unit of its quantity, or a parameter name",
+    "name": "a name (reports, messages)",
+    "sign": "+1 or -1",
+    "coordinate": "the name of a generalized coordinate",
+}
+
+#: what a value field must be besides a number of its quantity: ≥ 0, > 0, a count of
+#: identical parts (a positive whole number)
+FLAGS = ("nonneg", "positive", "count")
+
+
+def param(role: str, quantity: str | None = None, flag: str | None = None, *,
+          default=MISSING, doc: str = ""):
+    """Declare one field of a load type — its role, the quantity and flag of a value,
+    its default and one line for the docs — in the dataclass body, once.
+
+    Parameters
+    ----------
+    role : str
+        One of :data:`ROLES`.
+    quantity : str, optional
+        For a ``"value"``: what it measures, a key of
+        :data:`assur.core.quantities.DEFAULT_UNITS` (``"force"`` [N], ``"moment"``
+        [N·m], ``"length"`` [m], …).
+    flag : str, optional
+        For a ``"value"``: one of :data:`FLAGS`.
+    default : object, optional
+        The default when omitted (absent: required).
+    doc : str
+        One line for the docs table and the builder.
+
+    Returns
+    -------
+    dataclasses.Field
+        A dataclass field whose metadata carries the declaration (:func:`register`
+        reads it into the type's :attr:`Load.fields`).
+
+    Examples
+    --------
+    >>> from assur.core.loads import param
+    >>> f = param("value", "force", "nonneg", doc="its magnitude [N]")
+    >>> f.metadata["load"]["quantity"], f.metadata["load"]["flag"]
+    ('force', 'nonneg')
+    """
+    return _dataclass_field(default=default, metadata={"load": {
+        "role": role, "quantity": quantity, "flag": flag, "doc": doc}})
+
+
+class Load:
+    """Base of the load types: the contract each implements (module notes).
+
+    A load type is a frozen dataclass subclassing :class:`Load`, each field declared
+    with :func:`param`, registered with :func:`register` under its model-file
+    ``type_name``. :func:`register` derives from the declarations:
+
+    ==================  ==============================================================
+    member              what it provides
+    ==================  ==============================================================
+    ``type_name``       registry key = model-file ``type`` = builder method name
+    ``summary``         one line: what it is (docs table, builder docstring)
+    ``fields``          the fields, as :class:`assur.groups.Field` (name, role,
+                        quantity, flag, default, doc) in constructor order
+    ``quantities``      ``{value field: quantity}`` (units of files and reports)
+    ``flags``           ``{value field: flag}`` (the file's checks)
+    ``point_fields``,   the fields that name points, and links
+    ``link_fields``
+    ``check(mech)``     a problem with the load in a mechanism (a message) or None
+    ``apply(c)``        apply it to a load context (module notes)
+    ==================  ==============================================================
+
+    Examples
+    --------
+    >>> from assur.core.loads import Load, Weight
+    >>> issubclass(Weight, Load), Weight.type_name
+    (True, 'weight')
+    >>> [(f.name, f.role, f.quantity) for f in Weight.fields]
+    [('point', 'point', None), ('P', 'value', 'force'), ('link', 'link', None), ('name', 'name', None)]
+    >>> Weight.quantities, Weight.flags, Weight.point_fields, Weight.link_fields
+    ({'P': 'force'}, {'P': 'nonneg'}, ('point',), ('link',))
+    """
+
+    type_name: ClassVar[str] = ""
+    summary: ClassVar[str] = ""
+    fields: ClassVar[tuple] = ()
+    quantities: ClassVar[dict] = {}
+    flags: ClassVar[dict] = {}
+    point_fields: ClassVar[tuple] = ()
+    link_fields: ClassVar[tuple] = ()
+
+    def check(self, mech) -> str | None:
+        """A problem with this load in ``mech`` (a message), or None. The names it
+        refers to (points, links, parameters) are checked by the mechanism from the
+        declarations; a type overrides this for anything else.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.core.loads import Weight
+        >>> print(Weight("S6", 1000.0).check(examples.hitch_003()))
+        None
+        """
+        return None
+
+    def apply(self, c) -> None:
+        """Apply the load to the load context ``c`` (module notes): each type
+        implements it.
+
+        Examples
+        --------
+        >>> from assur.core.loads import Load
+        >>> Load().apply(None)
+        Traceback (most recent call last):
+        ...
+        NotImplementedError
+        """
+        raise NotImplementedError
+
+
+_REGISTRY: dict[str, type] = {}
+_HOOKS: list = []
+_UNDO: list = []
+
+
+def _declared(cls) -> tuple:
+    """The :class:`~assur.groups.Field` of each dataclass field of ``cls``, from its
+    :func:`param` declaration (checked)."""
+    out = []
+    for f in _dataclass_fields(cls):
+        d = f.metadata.get("load")
+        where = f"load type {cls.type_name!r}: field {f.name!r}"
+        if d is None:
+            raise TypeError(f"{where} is not declared with assur.core.loads.param")
+        if d["role"] not in ROLES:
+            raise ValueError(f"{where} has the unknown role {d['role']!r} (one of: "
+                             f"{', '.join(ROLES)})")
+        if (d["role"] == "value") != (d["quantity"] is not None) or (
+                d["quantity"] is not None and d["quantity"] not in DEFAULT_UNITS):
+            raise ValueError(f"{where}: a value needs a quantity (one of: "
+                             f"{', '.join(DEFAULT_UNITS)}) and only a value has one, got "
+                             f"{d['quantity']!r}")
+        if d["flag"] is not None and (d["flag"] not in FLAGS or d["role"] != "value"):
+            raise ValueError(f"{where}: a flag is one of {FLAGS} on a value, got {d['flag']!r}")
+        default = {} if f.default is MISSING else {"default": f.default}
+        out.append(Field(f.name, d["role"], d["quantity"], d["flag"], doc=d["doc"], **default))
+    return tuple(out)
+
+
+def register(cls):
+    """Class decorator: register a load type under ``cls.type_name`` and derive its
+    :attr:`~Load.fields`, ``quantities``, ``flags``, ``point_fields`` and
+    ``link_fields`` from its :func:`param` declarations. The builder method
+    ``Mechanism.<type_name>`` and the ``[[loads]]`` schema follow (:func:`on_register`).
+
+    Examples
+    --------
+    A toy load type: a downward force of ``F`` [N] at a point.
+
+    >>> from dataclasses import dataclass
+    >>> from typing import ClassVar
+    >>> from assur.core.loads import Load, Weight, param, register, registry
+    >>> register(Weight) is Weight              # registering again changes nothing
+    True
+    >>> @dataclass(frozen=True)
+    ... class Push(Load):
+    ...     point: str = param("point", doc="where it acts")
+    ...     F: object = param("value", "force", doc="downward [N]")
+    ...     type_name: ClassVar[str] = "weight"
+    >>> register(Push)
+    Traceback (most recent call last):
+    ...
+    ValueError: load type 'weight' is registered twice
+    >>> @dataclass(frozen=True)
+    ... class Bad(Load):
+    ...     point: str = "A"
+    ...     type_name: ClassVar[str] = "bad"
+    >>> register(Bad)
+    Traceback (most recent call last):
+    ...
+    TypeError: load type 'bad': field 'point' is not declared with assur.core.loads.param
+    >>> "bad" in registry()
+    False
+    """
+    name = getattr(cls, "type_name", "")
+    if not (isinstance(name, str) and name.isidentifier()):
+        raise ValueError(f"a load type needs a type_name (an identifier), got {name!r}")
+    if name in _REGISTRY:
+        if _REGISTRY[name] is not cls:
+            raise ValueError(f"load type {name!r} is registered twice")
+        return cls
+    fields = _declared(cls)
+    if not callable(getattr(cls, "apply", None)) or cls.apply is Load.apply:
+        raise TypeError(f"load type {name!r} must implement apply(c)")
+    cls.fields = fields
+    cls.quantities = {f.name: f.quantity for f in fields if f.role == "value"}
+    cls.flags = {f.name: f.flag for f in fields if f.flag is not None}
+    cls.point_fields = tuple(f.name for f in fields if f.role == "point")
+    cls.link_fields = tuple(f.name for f in fields if f.role in ("link", "links"))
+    for hook in _HOOKS:   # e.g. the Mechanism's builder method; may refuse the name
+        hook(cls)
+    _REGISTRY[name] = cls
+    return cls
+
+
+def registry() -> dict[str, type]:
+    """The registered load types by model-file ``type`` name (a copy), in the order
+    they were registered.
+
+    Examples
+    --------
+    >>> from assur.core.loads import registry
+    >>> list(registry())
+    ['weight', 'force', 'moment', 'resisting_moment', 'spring', 'mass']
+    >>> registry()["spring"].quantities["rate"]
+    'stiffness'
+    """
+    return dict(_REGISTRY)
+
+
+def load_type(name: str) -> type:
+    """The load type registered under the model-file ``type`` ``name``.
+
+    Examples
+    --------
+    >>> from assur.core.loads import Mass, load_type
+    >>> load_type("mass") is Mass
+    True
+    >>> load_type("gear")
+    Traceback (most recent call last):
+    ...
+    KeyError: "unknown load type 'gear'; known: ['force', 'mass', 'moment', 'resisting_moment', 'spring', 'weight']"
+    """
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise KeyError(f"unknown load type {name!r}; known: {sorted(_REGISTRY)}") from None
+
+
+def on_register(hook: Callable[[type], None], undo: Callable[[type], None] | None = None
+                ) -> Callable[[], None]:
+    """Call ``hook(cls)`` for every load type registered so far and every one registered
+    later (before it enters the registry: a hook may refuse it by raising), and
+    ``undo(cls)`` for one that is unregistered (:func:`unregister`). The
+    :class:`~assur.core.mechanism.Mechanism` adds (and removes) its builder methods this
+    way. Returns a function that removes the hooks again.
+
+    Examples
+    --------
+    >>> from assur.core.loads import on_register
+    >>> seen = []
+    >>> stop = on_register(lambda cls: seen.append(cls.type_name))
+    >>> seen[:3]
+    ['weight', 'force', 'moment']
+    >>> stop()                       # later load types are not seen
+    """
+    _HOOKS.append(hook)
+    if undo is not None:
+        _UNDO.append(undo)
+    for cls in list(_REGISTRY.values()):
+        hook(cls)
+
+    def stop():
+        _HOOKS.remove(hook)
+        if undo is not None:
+            _UNDO.remove(undo)
+    return stop
+
+
+def unregister(cls) -> None:
+    """Remove a load type (a test's or a plugin's own) from the registry, and what the
+    registry's hooks made of it (the ``Mechanism`` builder method).
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> from typing import ClassVar
+    >>> from assur import Mechanism
+    >>> from assur.core.loads import Load, param, register, registry, unregister
+    >>> @dataclass(frozen=True)
+    ... class Nudge(Load):
+    ...     point: str = param("point", doc="where")
+    ...     type_name: ClassVar[str] = "toy_nudge_doc"
+    ...     summary: ClassVar[str] = "nothing at a point"
+    ...     def apply(self, c):
+    ...         pass
+    >>> register(Nudge) is Nudge, hasattr(Mechanism, "toy_nudge_doc")
+    (True, True)
+    >>> unregister(Nudge); "toy_nudge_doc" in registry(), hasattr(Mechanism, "toy_nudge_doc")
+    (False, False)
+    """
+    if _REGISTRY.get(cls.type_name) is not cls:
+        raise KeyError(f"load type {cls.type_name!r} is not registered as {cls.__name__}")
+    del _REGISTRY[cls.type_name]
+    for undo in _UNDO:
+        undo(cls)
 
 
 def _along_gravity(c, P):
@@ -55,8 +362,9 @@ def _along_gravity(c, P):
     return (0.0 if ux == 0 else P * ux), (0.0 if uy == 0 else P * uy)
 
 
+@register
 @dataclass(frozen=True)
-class Weight:
+class Weight(Load):
     """Weight ``P`` [N] acting along gravity at ``point`` — downward unless the model
     turns gravity (``[model] gravity``, :func:`assur.core.statics.gravity_unit`) —, carried
     by ``link`` (by default the link that owns the point).
@@ -71,21 +379,23 @@ class Weight:
     >>> m = examples.hitch_003().with_loads([Weight("S6", 1000.0)])
     >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
     [4713.2, 4932.8]
+
+    The builder ``Mechanism.weight`` adds one: the seed's P6 = 27.5 kN at S6 asks
+    P6·IS6 of the cylinder (seed 003 table 4.1):
+
+    >>> m = examples.hitch_003().with_loads().weight("S6", 27500.0)
+    >>> round(float(m.analyze([0.42]).statics.actuator_force("S")[0]))  # [N]
+    129614
     """
 
-    point: str
-    P: Ref
-    link: str | None = None
-    name: str | None = None
+    point: str = param("point", doc="the point it acts at")
+    P: Ref = param("value", "force", "nonneg", doc="its magnitude, along gravity [N]")
+    link: str | None = param("link", default=None,
+                             doc="the link that carries it (default: the point's owner)")
+    name: str | None = param("name", default=None, doc="its name in reports")
 
     type_name: ClassVar = "weight"
-    #: the quantity of each value field (:mod:`assur.core.quantities`)
-    quantities: ClassVar = {"P": "force"}
-    #: what a value field must be (a file's check): "nonneg", "positive" or absent
-    flags: ClassVar = {"P": "nonneg"}
-    #: the fields that name points, and links (a name, None or a tuple of names)
-    point_fields: ClassVar = ("point",)
-    link_fields: ClassVar = ("link",)
+    summary: ClassVar = "a weight P along gravity (downward by default) at a point"
 
     def apply(self, c):
         """Apply the weight to the load context ``c``: the force P·u at the point, u
@@ -105,8 +415,9 @@ class Weight:
         c.force(self.link or c.owner(self.point), self.point, *_along_gravity(c, P))
 
 
+@register
 @dataclass(frozen=True)
-class PointForce:
+class PointForce(Load):
     """Force ``(fx, fy)`` [N] at ``point``, carried by ``link`` (default: owner).
 
     Examples
@@ -118,19 +429,24 @@ class PointForce:
     >>> m = examples.hitch_003().with_loads([PointForce("56", fy=-1000.0)])
     >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
     [4459.4, 2621.3]
+
+    The builder ``Mechanism.force``: a downward 27.5 kN at S6 asks of the cylinder
+    what the seed's weight P6 does:
+
+    >>> m = examples.hitch_003().with_loads().force("S6", fy=-27500.0)
+    >>> round(float(m.analyze([0.42]).statics.actuator_force("S")[0]))  # P6·IS6 [N]
+    129614
     """
 
-    point: str
-    fx: Ref = 0.0
-    fy: Ref = 0.0
-    link: str | None = None
-    name: str | None = None
+    point: str = param("point", doc="the point it acts at")
+    fx: Ref = param("value", "force", default=0.0, doc="its x component [N]")
+    fy: Ref = param("value", "force", default=0.0, doc="its y component [N]")
+    link: str | None = param("link", default=None,
+                             doc="the link that carries it (default: the point's owner)")
+    name: str | None = param("name", default=None, doc="its name in reports")
 
     type_name: ClassVar = "force"
-    quantities: ClassVar = {"fx": "force", "fy": "force"}
-    flags: ClassVar = {}
-    point_fields: ClassVar = ("point",)
-    link_fields: ClassVar = ("link",)
+    summary: ClassVar = "a force (fx, fy) at a point"
 
     def apply(self, c):
         """Apply the force to the load context ``c`` at its point.
@@ -149,8 +465,9 @@ class PointForce:
                 c.value(self.fy))
 
 
+@register
 @dataclass(frozen=True)
-class Couple:
+class Couple(Load):
     """Moment ``M`` [N·m], counter-clockwise positive, acting on ``link``.
 
     Examples
@@ -162,17 +479,23 @@ class Couple:
     >>> m = examples.hitch_003().with_loads([Couple("3", 100.0)])
     >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
     [-671.9, -623.9]
+
+    The builder ``Mechanism.moment``: by virtual work the rod force is F = −M·φ6'
+    (φ6' [rad/m], seed 003 table 3.1):
+
+    >>> a = examples.hitch_003().with_loads().moment("6", 1000.0).analyze([0.42, 0.67])
+    >>> [round(float(v), 1) for v in a.statics.actuator_force("S")]   # [N]
+    [-294.9, -3084.9]
+    >>> [round(float(v), 3) for v in a.kinematics.dphi("6")]          # [rad/m]
+    [0.295, 3.085]
     """
 
-    link: str
-    M: Ref
-    name: str | None = None
+    link: str = param("link", doc="the link it acts on")
+    M: Ref = param("value", "moment", doc="counter-clockwise positive [N·m]")
+    name: str | None = param("name", default=None, doc="its name in reports")
 
     type_name: ClassVar = "moment"
-    quantities: ClassVar = {"M": "moment"}
-    flags: ClassVar = {}
-    point_fields: ClassVar = ()
-    link_fields: ClassVar = ("link",)
+    summary: ClassVar = "a moment M on a link, counter-clockwise positive"
 
     def apply(self, c):
         """Apply the moment to the load context ``c``.
@@ -190,8 +513,9 @@ class Couple:
         c.couple(self.link, c.value(self.M))
 
 
+@register
 @dataclass(frozen=True)
-class ResistingMoment:
+class ResistingMoment(Load):
     """A moment of magnitude ``M`` [N·m] on ``link`` that opposes the link's turn
     while the coordinate ``coordinate`` travels in the direction ``travel`` — the
     resisting moment of a steered wheel (seed 001 lab 4 eq. 17: M_c turns against
@@ -225,19 +549,29 @@ class ResistingMoment:
     >>> m = examples.hitch_003().with_loads([ResistingMoment("3", 100.0)])
     >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
     [671.9, 623.9]
+
+    The builder ``Mechanism.resisting_moment``: link 6 turns counter-clockwise as S
+    grows (φ6' > 0), so 1000 N·m resisting that travel acts clockwise and the rod must
+    push (compare ``Mechanism.moment``):
+
+    >>> m = examples.hitch_003().with_loads().resisting_moment("6", 1000.0, travel=1)
+    >>> [round(float(v), 1) for v in m.analyze([0.42, 0.67]).statics.actuator_force("S")]
+    [294.9, 3084.9]
     """
 
-    link: str
-    M: Ref
-    travel: int = 1
-    coordinate: str | None = None
-    name: str | None = None
+    link: str = param("link", doc="the link it acts on")
+    M: Ref = param("value", "moment", "nonneg", doc="its magnitude [N·m]")
+    travel: int = param("sign", default=1,
+                        doc="1: while the coordinate grows, -1: while it shrinks")
+    coordinate: str | None = param("coordinate", default=None,
+                                   doc="the coordinate whose travel it resists (default: "
+                                       "the only one)")
+    name: str | None = param("name", default=None, doc="its name in reports")
 
     type_name: ClassVar = "resisting_moment"
-    quantities: ClassVar = {"M": "moment"}
-    flags: ClassVar = {"M": "nonneg"}
-    point_fields: ClassVar = ()
-    link_fields: ClassVar = ("link",)
+    summary: ClassVar = ("a moment that opposes the link's turn while the coordinate "
+                         "travels that way: −M·sign(travel·∂φ/∂q) (seed 001 lab 4: the "
+                         "wheel's M_c, eq. 17)")
 
     def check(self, mech):
         """A problem with this load in ``mech`` (a message), or None.
@@ -283,8 +617,9 @@ class ResistingMoment:
         c.couple(self.link, -np.copysign(c.value(self.M), self.travel * w))
 
 
+@register
 @dataclass(frozen=True)
-class Spring:
+class Spring(Load):
     """Linear spring(s) between points ``a`` and ``b`` (links ``links`` or the owners).
 
     Tension of one spring ``T = preload + rate·(|ab| − free_length)`` [N]; ``rate``
@@ -303,23 +638,36 @@ class Spring:
     >>> m = examples.hitch_003().with_loads([s])
     >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
     [-30.0, 220.0]
+
+    The builder ``Mechanism.spring``:
+
+    >>> from assur.core.statics import spring_states
+    >>> m = examples.hitch_003().with_loads().spring("k", "07", "S6", rate=1e4,
+    ...                                              free_length=1.0)  # [N/m], [m]
+    >>> L, T, F = spring_states(m.solve([0.42, 0.67]))["k"]
+    >>> [round(float(v), 3) for v in L], [round(float(v)) for v in T]  # [m], [N]
+    ([1.674, 1.463], [6745, 4630])
     """
 
-    name: str
-    a: str
-    b: str
-    rate: Ref
-    free_length: Ref
-    preload: Ref = 0.0
-    links: tuple[str, str] | None = None
-    count: Ref = 1
+    name: str = param("name", doc="its name (table 5.1's columns ``L_<name>``, ``T_<name>``, "
+                                  "``F_<name>``)")
+    a: str = param("point", doc="one end")
+    b: str = param("point", doc="the other end")
+    rate: Ref = param("value", "stiffness", "nonneg", doc="of one spring [N/m]")
+    free_length: Ref = param("value", "length", "nonneg", doc="[m]")
+    preload: Ref = param("value", "force", default=0.0,
+                         doc="tension of one spring at its free length [N]")
+    links: tuple[str, str] | None = param("links", default=None,
+                                          doc="[link of a, link of b] (default: the owners)")
+    count: Ref = param("value", "number", "count", default=1,
+                       doc="identical springs in parallel")
 
     type_name: ClassVar = "spring"
-    quantities: ClassVar = {"rate": "stiffness", "free_length": "length", "preload": "force",
-                            "count": "number"}
-    flags: ClassVar = {"rate": "nonneg", "free_length": "nonneg", "count": "count"}
-    point_fields: ClassVar = ("a", "b")
-    link_fields: ClassVar = ("links",)
+    summary: ClassVar = ("count identical linear springs between points a and b: the "
+                         "tension of one, preload + rate·(|ab| − free_length), pulls a and "
+                         "b together; the force on the points is count × tension. Table 5.1 "
+                         "shows each spring's length ``L_<name>``, the tension of one spring "
+                         "``T_<name>`` and the force of all ``F_<name>``")
 
     def tension(self, c, L):
         """Tension of one spring [N] at the length ``L`` [m] (context values).
@@ -374,8 +722,9 @@ def is_one(v) -> bool:
     return isinstance(v, (int, float, np.floating, np.integer)) and float(v) == 1.0
 
 
+@register
 @dataclass(frozen=True)
-class Mass:
+class Mass(Load):
     """Mass ``m`` [kg] of a link with its centre of mass at ``point`` and moment of
     inertia ``J`` [kg·m²] about it: its weight m·g, and for a motion in time its
     inertia force −m·a and moment −J·ε (d'Alembert).
@@ -389,18 +738,23 @@ class Mass:
     >>> m = examples.hitch_003().with_loads([Mass("6", 1000.0, "S6")])
     >>> [round(float(f), 1) for f in m.analyze([0.42, 0.67]).statics.actuator_force()]  # [N]
     [46236.8, 48390.7]
+
+    The builder ``Mechanism.mass``: a mass weighing the seed's P6 = 27.5 kN at rest:
+
+    >>> m = examples.hitch_003().with_loads().mass("6", 27500.0 / 9.81, "S6")  # [kg]
+    >>> round(float(m.analyze([0.42]).statics.actuator_force("S")[0]))  # [N]
+    129614
     """
 
-    link: str
-    m: Ref
-    point: str
-    J: Ref = 0.0
+    link: str = param("link", doc="the link whose mass it is")
+    m: Ref = param("value", "mass", "positive", doc="[kg]")
+    point: str = param("point", doc="its centre of mass")
+    J: Ref = param("value", "inertia", "nonneg", default=0.0,
+                   doc="moment of inertia about the centre of mass [kg·m²]")
 
     type_name: ClassVar = "mass"
-    quantities: ClassVar = {"m": "mass", "J": "inertia"}
-    flags: ClassVar = {"m": "positive", "J": "nonneg"}
-    point_fields: ClassVar = ("point",)
-    link_fields: ClassVar = ("link",)
+    summary: ClassVar = ("the mass of a link at its centre of mass: its weight m·g and, for "
+                         "a motion in time, its inertia force −m·a and moment −J·ε")
 
     def apply(self, c):
         """Apply the weight m·g to the load context ``c`` and, when it is moving, the
@@ -427,10 +781,8 @@ class Mass:
             c.couple(self.link, -c.value(self.J) * c.angular_acceleration(self.link))
 
 
-#: the load types by their model-file ``type`` (each declares ``type_name``,
-#: ``quantities``, ``flags``, ``point_fields``, ``link_fields`` and ``apply(c)``)
-LOAD_TYPES = {cls.type_name: cls for cls in (Weight, PointForce, Couple, Spring, Mass,
-                                             ResistingMoment)}
+#: the registry of load types by model-file ``type``, read-only (:func:`registry`)
+LOAD_TYPES = MappingProxyType(_REGISTRY)
 
 
 def names_in(value) -> tuple:

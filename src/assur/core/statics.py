@@ -340,11 +340,11 @@ def _use_fused(kin) -> bool:
     mech = kin.mechanism
     # whether the result holds every point depends only on which it holds: once per
     # mechanism and set of output points
-    if not mech.memo(("statics: all points", kin.points), kin.has_all_points):
+    if not mech.memo(("statics", "all points", kin.points), kin.has_all_points):
         return False
     if kin.m * kin.n >= FUSED_MIN:
         return True
-    calls = mech.memo(("statics: small calls",), lambda: [0])
+    calls = mech.memo(("statics", "small calls"), lambda: [0])
     calls[0] += 1
     return calls[0] > FUSED_AFTER
 
@@ -464,7 +464,7 @@ def _solve_fused(kin, g):
     mech = kin.mechanism
     joints_, _, out = fused.statics_outputs(kin, g)
     # the outputs' rows, in order: Rx, Ry, Rm of each joint, then F, Fr of each coordinate
-    index, actuated = mech.memo(("statics: fused rows",), lambda: (
+    index, actuated = mech.memo(("statics", "fused rows"), lambda: (
         {(i, j): (pt, 3 * r) for r, (i, j, pt) in enumerate(joints_)},
         tuple((c, 3 * len(joints_) + 2 * a, fused.has_actuator(mech, c))
               for a, c in enumerate(mech.coordinates))))

@@ -36,7 +36,7 @@ from ..core.loads import centre_of_mass, masses_of
 from ..errors import ModelError
 from .masses import LinkMass, design_value
 
-__all__ = ["CentreOfMassPath", "common_centre", "path_of", "CounterMass", "Balancing",
+__all__ = ["CentreOfMassPath", "common_centre", "CounterMass", "Balancing",
            "balance", "OBJECTIVES"]
 
 
@@ -124,21 +124,6 @@ def common_centre(kin):
     return CentreOfMassPath(o(np.broadcast_to(x, (kin.m, kin.n))),
                             o(np.broadcast_to(y, (kin.m, kin.n))),
                             tot[:, 0] if kin.m > 1 or len(kin.shape) == 2 else tot[0, 0])
-
-
-def path_of(x, y, mass):
-    """A :class:`CentreOfMassPath` of given coordinates [m] and total mass [kg].
-
-    Examples
-    --------
-    A 1 m square run clockwise encloses a negative area:
-
-    >>> from assur.dynamics.balancing import path_of
-    >>> p = path_of([0, 0, 1, 1], [0, 1, 1, 0], 2.0)
-    >>> float(p.amplitude_x), float(p.area), p.mass  # [m], [m²], [kg]
-    (0.5, -1.0, 2.0)
-    """
-    return CentreOfMassPath(np.asarray(x, float), np.asarray(y, float), mass)
 
 
 @dataclass(frozen=True)

@@ -6,7 +6,7 @@ the :class:`~assur.Mechanism` builder method). :func:`registry` lists them; addi
 type is one new module imported here (``docs/adding-a-group.md``).
 """
 
-from .base import Failure, Field, Group, group_type, register, registry
+from .base import Failure, Field, Group, group_type, register, registry, unregister
 from .measures import Distance, Link
 from .frame import Frame
 from .cylinder_lever import CylinderLever
@@ -19,6 +19,6 @@ from .pose import PosePoint
 from .rpr import SleeveDyad
 from .prp import DoubleSliderDyad
 
-__all__ = ["Group", "Field", "Failure", "register", "registry", "group_type", "Link",
+__all__ = ["Group", "Field", "Failure", "register", "unregister", "registry", "group_type", "Link",
            "Distance", "Frame", "CylinderLever", "Dyad", "Crank", "SliderInput", "SliderDyad",
            "RigidPoint", "PosePoint", "SleeveDyad", "DoubleSliderDyad"]

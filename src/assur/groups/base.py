@@ -56,7 +56,7 @@ from ..kernel import ops
 
 Ref = Union[str, float, int]
 
-__all__ = ["Group", "Field", "Failure", "register", "registry", "group_type", "Ref",
+__all__ = ["Group", "Field", "Failure", "register", "unregister", "registry", "group_type", "Ref",
            "fmt", "is_number", "signed_name", "ref_value"]
 
 
@@ -146,7 +146,8 @@ _MISSING = object()
 
 @dataclass(frozen=True)
 class Field:
-    """One parameter of a group type.
+    """One parameter of a group type (load types describe their fields with the same
+    record, with the roles of :data:`assur.core.loads.ROLES`).
 
     Attributes
     ----------
@@ -255,6 +256,28 @@ def register(cls):
         cls.op = ops.add(cls)
         _REGISTRY[name] = cls
     return cls
+
+
+def unregister(cls) -> None:
+    """Remove a group type registered last (a test's or a plugin's own).
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> from typing import ClassVar
+    >>> from assur.groups import Dyad, register, registry, unregister
+    >>> @dataclass(frozen=True)
+    ... class ToyDyad(Dyad):
+    ...     type_name: ClassVar[str] = "toy_dyad_doc"
+    >>> "toy_dyad_doc" in registry(), register(ToyDyad) is ToyDyad
+    (False, True)
+    >>> unregister(ToyDyad); "toy_dyad_doc" in registry()
+    False
+    """
+    if _REGISTRY.get(cls.type_name) is not cls:
+        raise KeyError(f"group type {cls.type_name!r} is not registered as {cls.__name__}")
+    ops.discard(cls)
+    del _REGISTRY[cls.type_name]
 
 
 def registry() -> dict[str, type]:

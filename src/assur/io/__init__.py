@@ -47,13 +47,13 @@ from ._build import Builder
 from ._errors import ModelFileError, key_path
 from ._extends import resolve as resolve_extends
 from ._lines import line_index, line_of
-from ._schema import schema_table
+from ._schema import load_types_table, schema_table
 from .problems import load_problem
 
 ModelFileError.__module__ = __name__  # shown as assur.io.ModelFileError
 
 __all__ = ["Model", "ModelFileError", "load", "loads", "bundled", "key_path", "schema_table",
-           "read_targets", "load_problem"]
+           "load_types_table", "read_targets", "load_problem"]
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import sys
 
-__all__ = ["add", "op", "source_modules"]
+__all__ = ["add", "discard", "op", "source_modules"]
 
 _OPS: list = []
 
@@ -36,6 +36,28 @@ def add(operation) -> int:
             return code
     _OPS.append(operation)
     return len(_OPS) - 1
+
+
+def discard(operation) -> None:
+    """Remove the operation added last (a test's or a plugin's own type, unregistered):
+    the codes of the others must not shift, so only the last one can go.
+
+    Examples
+    --------
+    >>> from assur.kernel import ops
+    >>> class Toy:
+    ...     type_name, continuity = "toy", False
+    >>> code = ops.add(Toy)
+    >>> ops.discard(Toy)
+    >>> ops.discard(Toy)
+    Traceback (most recent call last):
+    ...
+    ValueError: only the operation added last can be removed (the others keep their codes)
+    """
+    if not _OPS or _OPS[-1] is not operation:
+        raise ValueError("only the operation added last can be removed (the others keep "
+                         "their codes)")
+    _OPS.pop()
 
 
 def op(code):

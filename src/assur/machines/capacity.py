@@ -71,7 +71,7 @@ def dead_load_mechanism(mech, links=None):
                              f"or mass on the link)")
         return mech.with_loads(keep)
 
-    return mech.memo(("dead_loads", links), make)
+    return mech.memo(("capacity", "dead loads", links), make)
 
 
 def lifts(mech, coordinate, point) -> bool:

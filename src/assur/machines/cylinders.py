@@ -72,7 +72,7 @@ class CylinderResult:
         self.supply_line = None
         # the cylinder's constants do not depend on the positions: made once per
         # mechanism (and shape of its batch), then shared by every analysis of it
-        hit = mech.memo(("cylinder terms", cyl.name, len(kin.shape)),
+        hit = mech.memo(("cylinders", "terms", cyl.name, len(kin.shape)),
                         lambda: (cyl, C.terms(cyl, val)))
         #: the cylinder's constants (:class:`assur.core.cylinders.CylinderTerms`)
         self.terms = hit[1] if hit[0] is cyl else C.terms(cyl, val)

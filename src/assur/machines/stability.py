@@ -678,7 +678,7 @@ class Carrying:
         # what does not depend on the positions, once per mechanism (and shape of its
         # batch): the parameters the machine refers to, whether they vary over designs,
         # the machine of one design, the implement's weight
-        hit = mech.memo(("stability: machine", id(self), len(kin.shape)),
+        hit = mech.memo(("stability", "machine", id(self), len(kin.shape)),
                         lambda: (self, *self._refs(mech), val(self.weight)))
         names, varying, machine, weight = (hit[1:] if hit[0] is self else
                                            (*self._refs(mech), val(self.weight)))

@@ -193,7 +193,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     inputs.check_params(mech, params)
     m_ = mech.with_params(**params) if params else mech
     g = m_.g if g is None else float(g)
-    plan = m_.memo(("fused", specs, bool(reduce), g), lambda: _plan(m_, specs, reduce, g))
+    plan = m_.memo(("outputs", "plan", specs, bool(reduce), g), lambda: _plan(m_, specs, reduce, g))
     per_pos = 8.0 * (m_.program().k + 2 + (0 if reduce else len(specs)))
     qarr, shape, m, n = m_.coordinate_array(q, plan[1].shape[1], per_pos)
     out, red, status, ptab = _run(m_, plan, qarr, m, n, len(specs), reduce)
@@ -284,7 +284,7 @@ def statics_outputs(kin, g):
         specs = tuple(specs)
         return joints_, specs, _plan(mech, specs, False, g)
 
-    joints_, specs, plan = mech.memo(("fused statics", g), make)
+    joints_, specs, plan = mech.memo(("outputs", "statics", g), make)
     m, n = kin.m, kin.n
     qarr = kin.q_table()
     out = _run(mech, plan, qarr, m, n, len(specs))[0]

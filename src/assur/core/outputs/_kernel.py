@@ -116,13 +116,13 @@ def _load_signature(mech):
 def joint_list(mech):
     """The joints of a mechanism's reverse-order pass, ``((i, j, point), …)`` (force of
     link i on link j at the point), traced once and kept with the mechanism."""
-    return mech.memo(("fused joints",), lambda: tuple(
+    return mech.memo(("outputs", "joints"), lambda: tuple(
         (i, j, pt) for (i, j), (pt, *_r) in _trace_reactions(mech).joints.items()))
 
 
 def has_actuator(mech, c):
     """True if the reverse pass gives an actuator force for coordinate ``c``."""
-    return c in mech.memo(("fused actuators",), lambda: frozenset(_trace_reactions(mech).act))
+    return c in mech.memo(("outputs", "actuators"), lambda: frozenset(_trace_reactions(mech).act))
 
 
 def _traced_context(mech, prog, tracer, g):

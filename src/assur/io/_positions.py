@@ -1,0 +1,225 @@
+"""Pass 4 of the file loader (:class:`assur.io._build.Builder`): the ``[[solve]]``
+conditions become :class:`~assur.synthesis.conditions.Condition` objects solved by
+:func:`~assur.synthesis.conditions.solve_conditions` (a failure reported at its
+``[[solve]]`` entry); the range is evaluated with the solved parameters, its memory
+checked before anything is allocated; the parameters nothing uses are warned about.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..core.inputs import bytes_per_position, check_memory
+from ..errors import AssemblyError, ModelError
+from ..groups.base import ref_value, signed_name
+from . import _schema as S
+from ._entries import unreadable
+from ._errors import key_path
+from ._units import ANGLE, LENGTH, UnitError, display_unit, parse, to_si, unit_kind
+
+
+class Conditions:
+    """The conditions and range pass, a part of :class:`~assur.io._build.Builder`."""
+
+    def quantities(self, mech):
+        q = {f"{a}{p}": LENGTH for p in mech.points for a in "XY"}
+        q.update({f"phi{l.name}": ANGLE for l in mech.links})
+        q.update({d.name: LENGTH for d in mech.distances})
+        return q
+
+    def conditions(self, mech):
+        from ..synthesis.conditions import Condition
+        conds = []
+        solved_by = {}
+        quantities = self.quantities(mech)
+        for i, s in enumerate(self.spec.solve):
+            sp = ("solve", i)
+            if s.unknown not in self.params:
+                raise self.error(sp + ("unknown",),
+                                 f"expected a parameter name, found {S.show(s.unknown)}"
+                                 f"{S.did_you_mean(s.unknown, self.params)}")
+            if s.unknown in solved_by:
+                raise self.error(sp + ("unknown",), f'"{s.unknown}" is already solved by '
+                                                    f"solve[{solved_by[s.unknown]}]")
+            solved_by[s.unknown] = i
+            if s.quantity not in quantities:
+                raise self.error(sp + ("quantity",),
+                                 f"expected X<point>, Y<point>, phi<link> or a distance name, "
+                                 f"found {S.show(s.quantity)}"
+                                 f"{S.did_you_mean(s.quantity, quantities)}")
+            bracket = [self.bracket_value(sp + ("bracket", k), v, s.unknown)
+                       for k, v in enumerate(s.bracket)]
+            if not bracket[0] < bracket[1]:
+                raise self.error(sp + ("bracket",), f"expected [low, high] with low < high, "
+                                                    f"found {S.show(list(s.bracket))}")
+            target = self.resolved[sp + ("equals",)]
+            raw = parse(s.equals)
+            if isinstance(target, str):
+                shown = self.units.get(signed_name(target) or target)
+                target = ref_value(self.params, target)
+            else:
+                shown = display_unit(raw, quantities[s.quantity])
+            at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
+            line = self.line(sp)
+            file = getattr(line, "file", None) or self.file
+            conds.append(Condition(s.unknown, tuple(bracket), at, s.quantity, float(target),
+                                   source=f"{file}:{int(line)}", unit=shown))
+        return conds
+
+    def bracket_value(self, path, v, unknown):
+        """One end of a ``[[solve]]`` bracket: a value of the unknown's kind, or another
+        parameter of that kind (its start value)."""
+        kind = self.param_kind.get(unknown)
+        what = kind.article if kind else "a value"
+        try:
+            p = parse(v)
+        except UnitError as e:
+            raise self.error(path, unreadable(e, f"{what} for {unknown}", v)) from None
+        if isinstance(p, str):
+            if p not in self.params or p == unknown:
+                raise self.error(path, f"expected {what} for {unknown} (a number with its unit, "
+                                       f"or another parameter), found {S.show(v)}"
+                                       + ("" if p == unknown else
+                                          S.did_you_mean(p, self.params)))
+            pk = self.param_kind.get(p)
+            if pk is not kind:
+                raise self.error(path, f"expected a parameter of the kind of {unknown} "
+                                       f"({kind.name if kind else 'unknown'}), found "
+                                       f"{S.show(v)}, "
+                                       f"{pk.article if pk else 'a parameter of unknown kind'}")
+            return float(self.params[p])
+        if kind is None and p.unit is not None and self.params_raw[unknown].unit is not None \
+                and unit_kind(p) is not unit_kind(self.params_raw[unknown]):
+            raise self.error(path, f"expected a value of the kind of {unknown} "
+                                   f"({self.spec.params[unknown]}), found {S.show(v)}")
+        try:
+            return to_si(p, kind)
+        except UnitError as e:
+            raise self.error(path, unreadable(e, f"{what} for {unknown}", v)) from None
+
+    def solve(self, mech):
+        from ..synthesis.conditions import DesignError, solve_conditions
+        from . import _solve_cache
+        conds = self.conditions(mech)
+        if not conds:
+            return mech, []
+        try:  # roots cached per file (verified by their residuals before use)
+            return _solve_cache.solve(self.data, mech, conds, solve_conditions)
+        except (DesignError, AssemblyError, ModelError) as e:
+            msg = str(e)
+            i = next((k for k, c in enumerate(conds) if f"({c.source})" in msg), 0)
+            for c in conds:
+                msg = msg.replace(f" ({c.source})", "")
+            raise self.error(("solve", i), msg) from None
+
+    def memory(self, mech, paths, count, counts):
+        """Refuse a range whose grid (with the coordinates before it, ``counts``) would
+        need more memory than :func:`assur.core.inputs.max_memory`, before allocating."""
+        total = count
+        for c in counts.values():
+            total = max(total, c) if self.paired else total * c
+        try:
+            check_memory(total, bytes_per_position(mech),
+                         "the range" if len(self.coords) == 1 else "the grid of the ranges")
+        except ModelError as e:
+            raise self.error(paths[0], str(e)) from None
+
+    def positions(self, mech):
+        params = mech.params
+        axes = {}
+        counts = {}
+        for c in self.coords:
+            r = self.spec.range[c]
+            rp = ("range", c)
+
+            def val(path):
+                return float(ref_value(params, self.resolved[path]))
+
+            if "values" in r.model_fields_set:
+                a = np.array([val(rp + ("values", k)) for k in range(len(r.values))])
+            else:
+                lo, hi = val(rp + ("from",)), val(rp + ("to",))
+                if lo == hi:
+                    raise self.error(rp + ("to",), f"expected a value different from "
+                                                   f"from = {S.show(r.from_)}, found "
+                                                   f"{S.show(r.to)}")
+                count = r.count
+                if count is not None:
+                    self.memory(mech, [rp + ("count",)], float(count), counts)
+                else:  # from, to and step: the step must divide the span
+                    step = val(rp + ("step",))
+                    n = (hi - lo) / step if step else -1.0
+                    if n > 0:  # before rounding: a step of 1e-300 m gives inf positions
+                        self.memory(mech, [rp + ("step",)], n + 1, counts)
+                    if not (math.isfinite(n) and n > 0
+                            and abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))):
+                        raise self.error(rp + ("step",),
+                                         f"expected a step that divides to − from = "
+                                         f"{hi - lo:.6g} into whole intervals (with the sign "
+                                         f"of to − from), found {S.show(r.step)}")
+                    count = int(round(n)) + 1
+                a = np.linspace(lo, hi, count)
+            counts[c] = a.size
+            if "values" in r.model_fields_set:
+                self.memory(mech, [rp + ("values",)], a.size, {k: v for k, v in counts.items()
+                                                               if k != c})
+            a.setflags(write=False)
+            axes[c] = a
+        if self.paired:  # paired paths: position i of every coordinate together
+            if len(self.coords) < 2:
+                raise self.error(("range", "paired"), "paired paths need two or more "
+                                                      "coordinates; this model has one")
+            sizes = {c: axes[c].size for c in self.coords}
+            if len(set(sizes.values())) > 1:
+                raise self.error(("range", "paired"),
+                                 "paired paths need the same number of positions for every "
+                                 "coordinate, found " + ", ".join(f"{c}: {n}"
+                                                                  for c, n in sizes.items()))
+            grid = np.stack([axes[c] for c in self.coords], axis=-1)
+            grid.setflags(write=False)
+        elif len(self.coords) == 1:
+            grid = axes[self.coords[0]]
+        else:
+            mesh = np.meshgrid(*(axes[c] for c in self.coords), indexing="ij")
+            grid = np.stack([g.ravel() for g in mesh], axis=-1)
+            grid.setflags(write=False)
+        return grid, axes
+
+    def precheck_memory(self, mech):
+        """Refuse ranges given by ``count`` or ``values`` that are too large before the
+        ``[[solve]]`` conditions run (a step's count needs the solved parameters)."""
+        counts, paths = {}, []
+        for c in self.coords:
+            r = self.spec.range[c]
+            if "values" in r.model_fields_set:
+                counts[c] = len(r.values)
+                paths.append(("range", c, "values"))
+            elif r.count is not None:
+                counts[c] = r.count
+                paths.append(("range", c, "count"))
+        if paths:
+            self.memory(mech, paths[::-1], 1.0, counts)
+
+    def unused_parameters(self, mech):
+        """Warnings (``file:line: params.<name>: …``) for the parameters that nothing
+        uses: no group, frame point, load, cylinder, machine value, range, motion,
+        ``[[solve]]`` condition (unknown, bracket, target) or table formula."""
+        from ..core.columns import formulas_of
+        used = set(self.param_use)
+        for s in self.spec.solve:
+            used.add(s.unknown)
+            used.update(v for v in s.bracket if isinstance(v, str))
+        for f in formulas_of(mech):
+            used.update(f.names)
+        out = []
+        for name in self.params_raw:
+            if name not in used:
+                path = ("params", name)
+                line = self.line(path)
+                file = getattr(line, "file", None) or self.file
+                out.append(f"{file}:{int(line)}: {key_path(path)}: the parameter {name!r} is "
+                           f"not used by any group, frame point, load, condition or table "
+                           f"(a misspelt name?)")
+        return out
