@@ -49,7 +49,7 @@ import numpy as np
 
 from ...dynamics.cycles import PERIODS, SCENARIOS, strokes, sweep
 from ...texts import Text, localize
-from .figures import new_figure, titled_axes, to_png_bytes
+from ._canvas import new_figure, titled_axes, to_png_bytes
 from .html import data_uri
 from .labels import check_lang, unit
 from .tables import Column, Table, write_csv, write_xlsx
