@@ -73,274 +73,10 @@ import numpy as np
 
 from ..core.outputs import output_unit
 from ..errors import ModelError
+from ._refinement import TOL, Refinement, Scaled, _Stop
 from .sensitivity import sensitivities
 
 __all__ = ["refine", "Refinement", "local_refine", "Refined", "Scaled"]
-
-#: constraints held to within this [-] (they are scaled to order one) count as held
-TOL = 1e-9
-
-
-class Scaled:
-    """Design variables scaled to [0, 1] over their bounds, and one evaluation per
-    point shared by SLSQP's objective, constraints and their gradients (SLSQP asks
-    for each at the same point): the machinery of :func:`refine`.
-
-    Parameters
-    ----------
-    lo, hi : array_like, shape (variables,)
-        Bounds [SI]; a variable with ``hi == lo`` is scaled by 1.
-    fn : callable
-        ``fn(x)`` at the unscaled design ``x`` [SI] → anything (the values and
-        gradients of one sensitivity call); evaluated once per distinct point (the
-        last point is remembered).
-    clip : bool
-        Clip ``z`` to [0, 1] before unscaling (SLSQP may step a rounding outside its
-        bounds).
-
-    Attributes
-    ----------
-    span : ndarray
-        ``hi − lo`` (1 where 0): d x / d z, the factor of every gradient in z.
-    count : int
-        Evaluations of ``fn``.
-
-    Examples
-    --------
-    >>> from assur.synthesis.refine import Scaled
-    >>> ev = Scaled([0.40, 1.0], [0.43, 1.0], lambda x: float(x.sum()))  # bounds [m]
-    >>> [round(float(v), 6) for v in ev.span]  # the second variable is fixed: scaled by 1 [m]
-    [0.03, 1.0]
-    >>> round(ev([0.5, 0.0]), 3), round(ev([0.5, 0.0]), 3), ev.count   # one evaluation per point [m]
-    (1.415, 1.415, 1)
-    """
-
-    def __init__(self, lo, hi, fn, clip=False):
-        self.lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-        self.span = np.where(hi > self.lo, hi - self.lo, 1.0)
-        self.fn, self.clip = fn, clip
-        self.count = 0
-        self._key = self._value = None
-
-    def x(self, z):
-        """The design [SI] at the scaled point ``z``.
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import Scaled
-        >>> ev = Scaled([0.40], [0.43], fn=None, clip=True)       # X01 in 0.40…0.43 m
-        >>> [round(float(v), 3) for v in ev.x([0.5])], [round(float(v), 3) for v in ev.x([1.2])]  # [m]
-        ([0.415], [0.43])
-        """
-        z = np.asarray(z, float)
-        return self.lo + (np.clip(z, 0.0, 1.0) if self.clip else z) * self.span
-
-    def z(self, x):
-        """The scaled point of the design ``x`` [SI].
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import Scaled
-        >>> ev = Scaled([0.40], [0.43], fn=None)                  # X01 in 0.40…0.43 m
-        >>> [round(float(v), 6) for v in ev.z([0.415])]           # [-]
-        [0.5]
-        """
-        return (np.asarray(x, float) - self.lo) / self.span
-
-    def __call__(self, z):
-        key = np.asarray(z, float).tobytes()
-        if key != self._key:
-            self._value = self.fn(self.x(z))
-            self._key = key
-            self.count += 1
-        return self._value
-
-
-def _worst(g, names, tol) -> str:
-    """The most violated constraint of ``g`` (and how many more) in words, "" if none."""
-    bad = np.flatnonzero(~(g >= -tol))
-    if not len(bad):
-        return ""
-    j = bad[np.argmin(np.where(np.isnan(g[bad]), -np.inf, g[bad]))]
-    more = f" (and {len(bad) - 1} more)" if len(bad) > 1 else ""
-    return f"{names[j]} does not hold: its scaled margin is {g[j]:.3g}{more}"
-
-
-@dataclass(frozen=True)
-class Refinement:
-    """Result of :func:`refine`.
-
-    Attributes
-    ----------
-    x : ndarray, shape (n,)
-        The refined design, within the bounds [SI]: SLSQP's result, or the last
-        iterate when a trial design could not be evaluated (``stopped``).
-    start : ndarray, shape (n,)
-        The start, within the bounds (where SLSQP started) [SI].
-    value, start_value : float
-        The objective at ``x`` and at ``start`` — for an array objective its largest
-        element (its smallest with ``maximize``) [its unit].
-    g, start_g : ndarray, shape (m,)
-        The constraints at ``x`` and at ``start``, as ``criteria`` gives them
-        (held where ≥ 0) [-].
-    success : bool
-        SLSQP reports convergence (False when stopped).
-    message : str
-        SLSQP's message, or ``"stopped: a trial design could not be evaluated (…)"``.
-    nit : int
-        SLSQP iterations.
-    nfev : int
-        Calls of ``criteria`` (one per distinct design).
-    njev : int
-        Requests of the objective's gradient by SLSQP.
-    stopped : bool
-        A trial design raised one of ``stop_on``.
-    names, constraint_names : tuple of str
-        Of the variables and of the constraints (for the notes).
-    maximize : bool
-        The objective was maximised.
-    tol : float
-        A constraint counts as held where ``g ≥ −tol`` [-].
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from assur.synthesis.refine import refine
-    >>> r = refine(lambda x: ((x[0] - 2) ** 2, [2 * (x[0] - 2)], [], np.zeros((0, 1))),
-    ...            [0.0], [(-1.0, 1.0)], names=("a",))   # (a − 2)², a within [−1, 1]
-    >>> round(r.params["a"], 6), round(r.value, 6), r.start_value, r.g.shape  # at the bound
-    (1.0, 1.0, 4.0, (0,))
-    >>> r.success, r.feasible, r.improved, r.note
-    (True, True, True, '')
-    """
-
-    x: np.ndarray
-    start: np.ndarray
-    value: float
-    start_value: float
-    g: np.ndarray
-    start_g: np.ndarray
-    success: bool
-    message: str
-    nit: int
-    nfev: int
-    njev: int
-    stopped: bool = False
-    names: tuple = ()
-    constraint_names: tuple = ()
-    maximize: bool = False
-    tol: float = TOL
-
-    @property
-    def params(self) -> dict:
-        """The refined design by variable name [SI].
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (-x[0], [-1.0], [], [[]]), [0.0], [(0.0, 0.5)], names=("L",))
-        >>> {k: round(v, 6) for k, v in r.params.items()}  # − L is smallest at L's upper bound [m]
-        {'L': 0.5}
-        """
-        return {n: float(v) for n, v in zip(self.names, self.x)}
-
-    @property
-    def feasible(self) -> bool:
-        """Whether the refined design holds every constraint (to ``tol``).
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (x[0], [1.0], [x[0] - 2.0], [[1.0]]), [0.0], [(0.0, 1.0)],
-        ...            constraint_names=("x ≥ 2",))  # x ≥ 2 cannot hold within [0, 1]
-        >>> r.feasible, r.start_feasible
-        (False, False)
-        """
-        return bool(np.all(self.g >= -self.tol))
-
-    @property
-    def start_feasible(self) -> bool:
-        """Whether the start holds every constraint (to ``tol``).
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (x[0], [1.0], [1.0 - x[0]], [[-1.0]]), [0.5], [(0.0, 2.0)])
-        >>> r.start_feasible, r.feasible, round(r.params["x0"], 6) + 0.0  # x ≤ 1 holds; x → 0
-        (True, True, 0.0)
-        """
-        return bool(np.all(self.start_g >= -self.tol))
-
-    @property
-    def improved(self) -> bool:
-        """The objective is strictly better at ``x`` than at the start.
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (x[0] ** 2, [2 * x[0]], [], [[]]), [0.0], [(-1.0, 1.0)])
-        >>> r.improved, r.value      # the start is the optimum already
-        (False, 0.0)
-        """
-        if self.maximize:
-            return bool(self.value > self.start_value)
-        return bool(self.value < self.start_value)
-
-    @property
-    def start_note(self) -> str:
-        """``""`` if the start holds every constraint, else which one does not, in words.
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (x[0], [1.0], [1.0 - x[0]], [[-1.0]]), [1.5], [(0.0, 2.0)],
-        ...            constraint_names=("x ≤ 1",))
-        >>> print(r.start_note)
-        the start is not feasible: x ≤ 1 does not hold: its scaled margin is -0.5
-        >>> r.feasible, round(r.params["x0"], 6) + 0.0  # the result holds it
-        (True, 0.0)
-        """
-        why = _worst(self.start_g, self.constraint_names, self.tol)
-        return f"the start is not feasible: {why}" if why else ""
-
-    @property
-    def note(self) -> str:
-        """``""`` if the refined design holds every constraint, else which one does not,
-        in words.
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (x[0], [1.0], [x[0] - 2.0], [[1.0]]), [0.0], [(0.0, 1.0)],
-        ...            constraint_names=("x ≥ 2",))  # cannot hold within [0, 1]
-        >>> print(r.note)
-        the result is not feasible: x ≥ 2 does not hold: its scaled margin is -1
-        """
-        why = _worst(self.g, self.constraint_names, self.tol)
-        return f"the result is not feasible: {why}" if why else ""
-
-    def summary(self, show=None) -> str:
-        """One line: the objective from the start to the result, SLSQP's iterations and
-        message, and what does not hold. ``show`` formats a value (default ``"{:.6g}"``).
-
-        Examples
-        --------
-        >>> from assur.synthesis.refine import refine
-        >>> r = refine(lambda x: (x[0], [1.0], [1.0 - x[0]], [[-1.0]]), [1.5], [(0.0, 2.0)],
-        ...            constraint_names=("x ≤ 1",))
-        >>> print(r.summary(lambda v: f"{v:.3f}"))                # doctest: +ELLIPSIS
-        refine (SLSQP, exact gradients): 1.500 → 0.000 (... iterations, ... evaluations: ...); the start is not feasible: x ≤ 1 does not hold: its scaled margin is -0.5
-        """
-        show = show or (lambda v: f"{float(v):.6g}")
-        parts = [f"refine (SLSQP, exact gradients): {show(self.start_value)} → "
-                 f"{show(self.value)} ({self.nit} iterations, {self.nfev} evaluations: "
-                 f"{self.message})"]
-        parts += [n for n in (self.start_note, self.note) if n]
-        return "; ".join(parts)
-
-
-class _Stop(Exception):
-    """``criteria`` raised one of ``stop_on`` at a trial design."""
 
 
 def refine(criteria, x0, bounds, *, maximize=False, slack=0.0, names=None,
@@ -419,8 +155,52 @@ def refine(criteria, x0, bounds, *, maximize=False, slack=0.0, names=None,
     ...
     assur.errors.ModelError: refine: the bounds of L4 must be finite with low ≤ high, got [1.0, 0.0]
     """
-    from scipy.optimize import minimize
+    x0, names, lo, hi = _checked(x0, bounds, names)
+    nv = len(x0)
+    seen = {}
+    ev = Scaled(lo, hi, _evaluation(criteria, stop_on, nv, seen), clip=True)
+    zhi = np.where(hi > lo, 1.0, 0.0)  # a variable with equal bounds stays at them
+    z0 = np.clip(ev.z(x0), 0.0, zhi)
+    try:
+        f0, _, g0, _ = ev(z0)
+    except _Stop as e:
+        raise e.__cause__ from None
+    epi = f0.ndim > 0  # an array objective: the epigraph variable t after z
+    if epi and f0.size == 0:
+        raise ModelError("refine: criteria gave an empty objective")
+    constraint_names = _constraint_names(constraint_names, len(g0))
+    fs = float(np.abs(f0).max()) or 1.0
 
+    def best(f):
+        """The objective as a number: an array's smallest (maximised) or largest."""
+        return float((f.min() if maximize else f.max()) if epi else f)
+
+    count = {"g": 0}
+    if epi:
+        fun, jac, cons, cons_jac = _epigraph(ev, nv, fs, maximize, slack, count)
+        w0 = np.append(z0, best(f0))
+        wb = [(0.0, float(u)) for u in zhi] + [(None, None)]
+    else:
+        fun, jac, cons, cons_jac = _direct(ev, fs, maximize, slack, count)
+        w0, wb = z0, [(0.0, float(u)) for u in zhi]
+    constraints = [{"type": "ineq", "fun": cons, "jac": cons_jac}] if epi or len(g0) else []
+    z, nit, stopped, success, message = _slsqp(fun, w0, jac, wb, constraints, z0, zhi,
+                                               maxiter, ftol)
+    x = ev.x(z)
+    end = seen.get(x.tobytes())
+    if end is None:
+        try:
+            end = ev(z)
+        except _Stop as e:  # the design SLSQP ended at cannot be evaluated: keep the start
+            z, x, end, stopped, success = z0, ev.x(z0), ev(z0), True, False
+            message = f"stopped: the result could not be evaluated ({e})"
+    return Refinement(x, ev.x(z0), best(end[0]), best(f0), end[2], g0, success, message, nit,
+                      ev.count, count["g"], stopped, names, constraint_names, bool(maximize),
+                      float(tol))
+
+
+def _checked(x0, bounds, names):
+    """The start [SI], the variables' names and their bounds, checked (:func:`refine`)."""
     x0 = np.asarray(x0, float).reshape(-1)
     nv = len(x0)
     names = tuple(names) if names is not None else tuple(f"x{i}" for i in range(nv))
@@ -432,7 +212,12 @@ def refine(criteria, x0, bounds, *, maximize=False, slack=0.0, names=None,
     for i in np.flatnonzero(~(np.isfinite(lo) & np.isfinite(hi) & (lo <= hi))):
         raise ModelError(f"refine: the bounds of {names[i]} must be finite with low ≤ high, "
                          f"got [{float(lo[i])!r}, {float(hi[i])!r}]")
-    seen = {}
+    return x0, names, lo, hi
+
+
+def _evaluation(criteria, stop_on, nv, seen):
+    """``criteria`` at a design as arrays of checked shapes, each kept in ``seen`` by
+    the design's bytes; one of ``stop_on`` raised as :class:`_Stop`."""
 
     def fn(x):
         try:
@@ -451,74 +236,77 @@ def refine(criteria, x0, bounds, *, maximize=False, slack=0.0, names=None,
                              f"Jacobian of shape {np.shape(dg)}, for {nv} variables") from None
         seen[x.tobytes()] = value = (f, df, g, dg)
         return value
+    return fn
 
-    ev = Scaled(lo, hi, fn, clip=True)
-    zhi = np.where(hi > lo, 1.0, 0.0)  # a variable with equal bounds stays at them
-    z0 = np.clip(ev.z(x0), 0.0, zhi)
-    try:
-        f0, _, g0, _ = ev(z0)
-    except _Stop as e:
-        raise e.__cause__ from None
-    epi = f0.ndim > 0  # an array objective: the epigraph variable t after z
-    if epi and f0.size == 0:
-        raise ModelError("refine: criteria gave an empty objective")
+
+def _constraint_names(constraint_names, m):
+    """The names of the ``m`` constraints (default ``constraint 0``…), checked."""
     if constraint_names is None:
-        constraint_names = tuple(f"constraint {j}" for j in range(len(g0)))
+        constraint_names = tuple(f"constraint {j}" for j in range(m))
     constraint_names = tuple(constraint_names)
-    if len(constraint_names) != len(g0):
-        raise ModelError(f"refine: {len(constraint_names)} constraint names for {len(g0)} "
+    if len(constraint_names) != m:
+        raise ModelError(f"refine: {len(constraint_names)} constraint names for {m} "
                          f"constraints")
-    fs = float(np.abs(f0).max()) or 1.0
+    return constraint_names
+
+
+def _epigraph(ev, nv, fs, maximize, slack, count):
+    """SLSQP's objective, its gradient, the constraints and their Jacobian at
+    ``w = (z, t)`` for an array objective, with the epigraph variable t: maximise t
+    with f_i ≥ t (minimise t with f_i ≤ t); ``count["g"]`` counts the gradients."""
     sign = -1.0 if maximize else 1.0
 
-    def best(f):
-        """The objective as a number: an array's smallest (maximised) or largest."""
-        return float((f.min() if maximize else f.max()) if epi else f)
+    def fun(w):
+        return sign * w[-1] / fs
 
-    count = {"g": 0}
-    if epi:
-        # the epigraph variable t: maximise t with f_i ≥ t (minimise t with f_i ≤ t)
-        def fun(w):
-            return sign * w[-1] / fs
+    def jac(w):
+        count["g"] += 1
+        d = np.zeros_like(w)
+        d[-1] = sign / fs
+        return d
 
-        def jac(w):
-            count["g"] += 1
-            d = np.zeros_like(w)
-            d[-1] = sign / fs
-            return d
+    def cons(w):
+        f, _, g, _ = ev(w[:nv])
+        return np.concatenate([(f - w[-1]) / fs if maximize else (w[-1] - f) / fs,
+                               g - slack])
 
-        def cons(w):
-            f, _, g, _ = ev(w[:nv])
-            return np.concatenate([(f - w[-1]) / fs if maximize else (w[-1] - f) / fs,
-                                   g - slack])
+    def cons_jac(w):
+        _, df, _, dg = ev(w[:nv])
+        k = len(df)
+        head = (np.hstack([(df * ev.span) / fs, -np.ones((k, 1)) / fs]) if maximize else
+                np.hstack([-(df * ev.span) / fs, np.ones((k, 1)) / fs]))
+        return np.vstack([head, np.hstack([dg * ev.span, np.zeros((len(dg), 1))])])
+    return fun, jac, cons, cons_jac
 
-        def cons_jac(w):
-            _, df, _, dg = ev(w[:nv])
-            k = len(df)
-            head = (np.hstack([(df * ev.span) / fs, -np.ones((k, 1)) / fs]) if maximize else
-                    np.hstack([-(df * ev.span) / fs, np.ones((k, 1)) / fs]))
-            return np.vstack([head, np.hstack([dg * ev.span, np.zeros((len(dg), 1))])])
 
-        w0 = np.append(z0, best(f0))
-        wb = [(0.0, float(u)) for u in zhi] + [(None, None)]
-    else:
-        def fun(z):
-            f = ev(z)[0]
-            return float((-f if maximize else f) / fs)
+def _direct(ev, fs, maximize, slack, count):
+    """SLSQP's objective, its gradient, the constraints and their Jacobian at the
+    scaled design ``z`` for a number objective; ``count["g"]`` counts the gradients."""
 
-        def jac(z):
-            count["g"] += 1
-            d = ev(z)[1] * ev.span
-            return (-d if maximize else d) / fs
+    def fun(z):
+        f = ev(z)[0]
+        return float((-f if maximize else f) / fs)
 
-        def cons(z):
-            return ev(z)[2] - slack
+    def jac(z):
+        count["g"] += 1
+        d = ev(z)[1] * ev.span
+        return (-d if maximize else d) / fs
 
-        def cons_jac(z):
-            return ev(z)[3] * ev.span
+    def cons(z):
+        return ev(z)[2] - slack
 
-        w0, wb = z0, [(0.0, float(u)) for u in zhi]
-    constraints = [{"type": "ineq", "fun": cons, "jac": cons_jac}] if epi or len(g0) else []
+    def cons_jac(z):
+        return ev(z)[3] * ev.span
+    return fun, jac, cons, cons_jac
+
+
+def _slsqp(fun, w0, jac, wb, constraints, z0, zhi, maxiter, ftol):
+    """Run SLSQP from ``w0``: the scaled design it ends at (the last iterate when a
+    trial design raised :class:`_Stop`), its iterations, whether it stopped so,
+    whether it converged, and its message."""
+    from scipy.optimize import minimize
+
+    nv = len(z0)
     iterates = [z0]
     stopped = False
     try:
@@ -531,17 +319,7 @@ def refine(criteria, x0, bounds, *, maximize=False, slack=0.0, names=None,
         # a trial step left the designs that can be evaluated: the last iterate is the result
         z, nit, stopped, success = iterates[-1], len(iterates) - 1, True, False
         message = f"stopped: a trial design could not be evaluated ({e})"
-    x = ev.x(z)
-    end = seen.get(x.tobytes())
-    if end is None:
-        try:
-            end = ev(z)
-        except _Stop as e:  # the design SLSQP ended at cannot be evaluated: keep the start
-            z, x, end, stopped, success = z0, ev.x(z0), ev(z0), True, False
-            message = f"stopped: the result could not be evaluated ({e})"
-    return Refinement(x, ev.x(z0), best(end[0]), best(f0), end[2], g0, success, message, nit,
-                      ev.count, count["g"], stopped, names, constraint_names, bool(maximize),
-                      float(tol))
+    return z, nit, stopped, success, message
 
 
 @dataclass(frozen=True)

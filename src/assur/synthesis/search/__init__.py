@@ -2,9 +2,11 @@
 
 * :mod:`assur.synthesis.search.problem` — design variables, a :class:`Problem` and the
   evaluation of whole batches of designs in the fused kernel (:class:`Batch`:
-  values, feasibility, and for every infeasible design its reason);
+  values, feasibility, and for every infeasible design its reason; its module
+  ``_batch``);
 * :mod:`assur.synthesis.search.criteria` — the constraints and objectives (one registry),
-  their values and exact gradients;
+  their values and exact gradients (the kinds in ``_kinds``, the reductions over the
+  positions in ``_reductions``);
 * :mod:`assur.synthesis.search.search` — differential evolution over whole populations
   (scipy, ``vectorized=True``) and NSGA-II (pymoo) for several objectives;
 * :mod:`assur.synthesis.search.polish` — the SLSQP polish of differential evolution's optimum

@@ -143,6 +143,16 @@ def create_app(model, lang: str = "en") -> FastAPI:
     app = FastAPI(title="assur", docs_url=None, redoc_url=None, openapi_url="/api/openapi.json")
     app.add_middleware(_BodyLimit)
     app.state.page_model = pm
+    _add_error_handlers(app)
+    _add_page_routes(app, lang)
+    _add_api_routes(app, pm, lang)
+    _add_export_routes(app, pm)
+    return app
+
+
+def _add_error_handlers(app):
+    """A validation error as one message (the input not echoed back); an unexpected
+    exception as 500 with a fixed text, logged on the server."""
 
     @app.exception_handler(RequestValidationError)
     async def _invalid(request, exc):
@@ -162,6 +172,11 @@ def create_app(model, lang: str = "en") -> FastAPI:
             "kind": "internal", "message": "internal error (logged by the server)"}},
             status_code=500)
 
+
+def _add_page_routes(app, lang):
+    """``GET /`` (the page in ``lang`` unless ``?lang=`` says otherwise), its static
+    files and the favicon."""
+
     @app.get("/", response_class=HTMLResponse)
     def index(lang: str = lang):
         html = _static("index.html").decode("utf-8")
@@ -177,6 +192,10 @@ def create_app(model, lang: str = "en") -> FastAPI:
         if name not in types:
             return JSONResponse({"detail": "not found"}, status_code=404)
         return Response(_static(name), media_type=f"{types[name]}; charset=utf-8")
+
+
+def _add_api_routes(app, pm, lang):
+    """``GET /api/model`` and ``POST /api/analyze`` of the page model ``pm``."""
 
     @app.get("/api/model")
     def model_info():
@@ -199,6 +218,11 @@ def create_app(model, lang: str = "en") -> FastAPI:
         # FastAPI's generic encoder would walk it element by element
         return Response(json.dumps(out, allow_nan=False, separators=(",", ":")),
                         media_type="application/json")
+
+
+def _add_export_routes(app, pm):
+    """``POST /api/export/dxf`` and ``POST /api/export/{fmt}`` (csv, xlsx, toml) of the
+    page model ``pm``: files, or a user error as JSON."""
 
     @app.post("/api/export/dxf")
     def export_dxf(req: DxfRequest):
@@ -229,9 +253,6 @@ def create_app(model, lang: str = "en") -> FastAPI:
             return _download(data, media, name)
         except (ModelError, AssemblyError, SingularPositionError) as e:
             return _user_error(e)
-
-    return app
-
 
 def _nearest(model, kin, at):
     """Indices of the positions nearest the coordinate values ``at`` (m, or degrees

@@ -125,7 +125,7 @@ def comparison_html(problem, result, title=None, lang="en"):
     >>> page.count("<figure>")  # a curve of each output, original and best
     2
     """
-    from .figures import new_figure, to_png_bytes   # matplotlib when a report is made
+    from ._canvas import new_figure, to_png_bytes   # matplotlib when a report is made
     from .html import data_uri
     if lang not in ("en", "ru"):
         raise ValueError("lang must be one of: ['en', 'ru']")
@@ -274,7 +274,7 @@ def pareto_figure(problem, result, path):
     >>> p.name, png[1:4]
     ('front.png', b'PNG')
     """
-    from .figures import new_figure
+    from ._canvas import new_figure
     a, b = problem.objectives[:2]
     fig = new_figure(5.5, 4)
     ax = fig.add_subplot()

@@ -30,7 +30,7 @@ from matplotlib.patches import Polygon, Rectangle
 from ..geometry import convex_hull
 from ...core.loads import Weight
 from ...texts import localize
-from .figures import new_figure
+from ._canvas import new_figure
 from .labels import check_lang, t, unit
 from .tables import _View
 

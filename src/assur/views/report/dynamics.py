@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .figures import new_figure, titled_axes
+from ._canvas import new_figure, titled_axes
 from .labels import check_lang, t, unit
 
 __all__ = ["figures", "centre_of_mass", "hodographs", "reduced_moment", "reduced_inertia",

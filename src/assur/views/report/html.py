@@ -152,7 +152,7 @@ def _table_view(tab, lang):
 
 
 def _figure_items(figures, lang):
-    from .figures import to_png_bytes
+    from ._canvas import to_png_bytes
 
     items = []
     for k, (name, obj) in enumerate(figures.items(), start=1):

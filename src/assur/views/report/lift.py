@@ -4,7 +4,7 @@ height of the hitch points over the lift range, with the minima marked."""
 
 from __future__ import annotations
 
-from .figures import new_figure
+from ._canvas import new_figure
 from .labels import check_lang, t, unit
 
 __all__ = ["lift_test_figure"]

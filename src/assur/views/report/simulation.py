@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from ...texts import Text, localize
-from .figures import new_figure, titled_axes, to_png_bytes
+from ._canvas import new_figure, titled_axes, to_png_bytes
 from .html import data_uri
 from .labels import check_lang, t, unit
 

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from ...texts import Text, localize
-from .figures import new_figure, save, to_png_bytes
+from ._canvas import new_figure, save, to_png_bytes
 from .html import data_uri
 from .labels import check_lang
 

@@ -1,0 +1,164 @@
+"""The command line's app, consoles and the steps every command shares: loading a
+model file, the output directory, the options' checks — each user error one message
+and exit status 1 (:mod:`assur.views.cli`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+from rich.console import Console
+from rich.text import Text
+
+__all__ = ["app", "console", "err"]
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
+                  help="Hydraulic-cylinder driven planar linkages solved by Assur groups.")
+# markup=False, emoji=False: "[/x]" in a title or ":100:" in a message stay as written
+console = Console(stderr=False, markup=False, emoji=False, highlight=False)
+err = Console(stderr=True, markup=False, emoji=False, highlight=False)
+LANGS = ("ru", "en")
+
+FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")  # = assur.views.report.FORMATS
+
+
+def _version(value: bool):
+    if value:
+        from ... import __version__
+        console.print(f"assur {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")):
+    """Hydraulic-cylinder driven planar linkages solved by Assur groups."""
+
+
+def _fail(message: str, code: int = 1):
+    err.print(Text.assemble(("error:", "bold red"), " ", str(message)), soft_wrap=True)
+    raise typer.Exit(code)
+
+
+def _ok(message: str):
+    console.print(Text.assemble(("ok", "green"), ": ", message))
+
+
+def _check_lang(lang: str):
+    if lang not in LANGS:
+        _fail(f"--lang must be one of: {list(LANGS)}; got {lang!r}")
+
+
+def _load(path: Path):
+    """Load and solve a model file; user errors become one message and exit 1."""
+    from ...errors import AssemblyError, ModelError
+    from ...io import load
+
+    try:
+        model = load(path)
+    except FileNotFoundError:
+        _fail(f"{path}: no such file")
+    except (ModelError, AssemblyError) as e:
+        _fail(str(e))
+    for w in model.warnings:  # parameters nothing uses: file, line, key
+        err.print(Text.assemble(("warning:", "bold yellow"), " ", w), soft_wrap=True)
+    return model
+
+
+def _output_dir(output: str) -> Path:
+    """The output directory ``output``, created; refused with one message when it is
+    empty, a file, under a file, or cannot be created or written."""
+    import os
+
+    if not output.strip():
+        _fail("-o/--output must name a directory; got an empty string", 2)
+    out = Path(output)
+    if out.exists() and not out.is_dir():
+        _fail(f"{output}: exists and is not a directory; expected an output directory")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except (OSError, ValueError) as e:  # under a file, permissions, name too long
+        why = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
+        _fail(f"{output}: cannot create the output directory: {why}")
+    if not os.access(out, os.W_OK | os.X_OK):
+        _fail(f"{output}: the output directory is not writable")
+    return out
+
+
+def _assemble(model):
+    from ...errors import AssemblyError, ModelError, SingularPositionError
+
+    try:
+        return model.analyze()
+    except (AssemblyError, ModelError, SingularPositionError) as e:
+        _fail(f"{model.source}: {e}")
+
+
+def _shape_text(model) -> str:
+    """'grid S × S1: 13 × 8 = 104 positions' or 'paired paths S, S1: 9 positions'."""
+    cs = list(model.mechanism.coordinates)
+    if model.paired:
+        return f"paired paths {', '.join(cs)}: {len(model.range)} positions"
+    shape = model.shape
+    return (f"grid {' × '.join(cs)}: {' × '.join(str(n) for n in shape)} = "
+            f"{len(model.range)} positions")
+
+
+def _formats(value: str):
+    fmts = tuple(f.strip().lower() for f in value.split(",") if f.strip())
+    bad = [f for f in fmts if f not in FORMATS]
+    if bad or not fmts:
+        _fail(f"--format must be a comma-separated subset of {', '.join(FORMATS)}; got {value!r}")
+    return fmts
+
+
+def _positions(analysis, draw_at):
+    """Indices of the positions nearest to the coordinate values ``draw_at`` (one
+    coordinate; e.g. "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a
+    crank). A crank angle matches its positions modulo 360° (188.229 finds the
+    position written −171.771)."""
+    if not draw_at:
+        return None
+    kin = analysis.kinematics
+    if kin.k != 1 or len(kin.shape) != 1:
+        _fail("--draw-at needs a model with one coordinate and one design")
+    import numpy as np
+    angle = analysis.mechanism.coordinate_kind(kin.coordinates[0]) == "angle"
+    unit = "°" if angle else "m"
+    try:
+        values = [float(v.strip().removesuffix("°").removesuffix("deg").strip() if angle
+                        else v) for v in draw_at.split(",") if v.strip()]
+    except ValueError:
+        _fail(f"--draw-at must be comma-separated numbers ({'degrees' if angle else 'm'}), "
+              f"got {draw_at!r}")
+    if not values:
+        _fail(f"--draw-at must name at least one position, got {draw_at!r}")
+    q = np.degrees(kin.q()) if angle else kin.q()
+    lo, hi = float(q.min()), float(q.max())
+    if not angle:
+        bad = [v for v in values if not lo <= v <= hi]
+        if bad:
+            _fail(f"--draw-at {bad} is outside the range {lo:.6g} … {hi:.6g} m")
+        return [int(abs(q - v).argmin()) for v in values]
+    # crank angles: the nearest position on the circle; a value farther from every
+    # position than the largest step between neighbouring positions is not in the range
+    step = float(np.max(np.abs(np.diff(q)))) if q.size > 1 else 0.0
+    out, bad = [], []
+    for v in values:
+        d = np.abs((q - v + 180.0) % 360.0 - 180.0)
+        i = int(d.argmin())
+        if d[i] > max(step, 1e-9):
+            bad.append(v)
+        out.append(i)
+    if bad:
+        _fail(f"--draw-at {bad} [{unit}] is outside the positions of "
+              f"{kin.coordinates[0]}: {lo:.6g}° … {hi:.6g}° ({q.size} positions)")
+    return out
+
+
+def _summary(files, output: str):
+    n = sum(len(v) for v in files.values())
+    console.print(Text.assemble((f"wrote {n} files", "green"), f" to {output}/"))
+    html = [p for p in files.get("html", [])]
+    if html:
+        console.print(f"report: {Path(html[0]).resolve()}")

@@ -1,0 +1,159 @@
+"""The commands of a model's worksheet: ``assur check``, ``assur analyze``,
+``assur tables``, ``assur demo`` (:mod:`assur.views.cli`)."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import typer
+from rich.table import Table
+
+from ._common import (FORMATS, _assemble, _check_lang, _fail, _formats, _load, _ok,
+                      _output_dir, _positions, _shape_text, _summary, console)
+
+
+def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
+    """Validate a model file, solve its conditions and assemble it over its range."""
+    import numpy as np
+
+    from ..report.values import solved_line
+
+    t0 = time.perf_counter()
+    model = _load(file)
+    _assemble(model)
+    m = model.mechanism
+    tab = Table(title=f"{m.title}", show_header=True, header_style="bold")
+    tab.add_column("item")
+    tab.add_column("value")
+    tab.add_row("groups", str(len(m.groups)))
+    tab.add_row("links", ", ".join(l.name for l in m.links))
+    if m.distances:
+        tab.add_row("distances", ", ".join(d.name + (f" (angle {d.angle})" if d.angle else "")
+                                           for d in m.distances))
+    rng = model.range
+    for j, c in enumerate(m.coordinates):
+        col = rng if rng.ndim == 1 else model.ranges[c]  # its own values, not the grid
+        if m.coordinate_kind(c) == "angle":
+            deg = np.degrees(col)
+            tab.add_row(f"range of {c}", f"{deg[0]:.6g}° … {deg[-1]:.6g}° ({col.size} "
+                                         f"positions, {deg.min():.6g}° … {deg.max():.6g}°)")
+        else:
+            tab.add_row(f"range of {c}", f"{col.min():.6g} … {col.max():.6g} m ({col.size} "
+                                         f"positions)")
+    if len(m.coordinates) > 1:  # the grid's shape, or paired paths
+        tab.add_row("positions", _shape_text(model))
+    for mo in m.motions:
+        tab.add_row(f"motion of {mo.coordinate}", mo.describe())
+    for s in model.solved:
+        tab.add_row(f"solved {s.condition.unknown}", solved_line(s, m, "en"))
+    console.print(tab)
+    _ok(f"{file} assembles at every position ({time.perf_counter() - t0:.2f} s)")
+
+
+def _run_report(model, output: str, lang: str, fmts, draw_at=None):
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    from ...errors import AssemblyError, ModelError, SingularPositionError
+    from ..report import report_steps, write_report
+
+    analysis = _assemble(model)
+    positions = _positions(analysis, draw_at)
+    out = _output_dir(output)
+    with Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False,
+                                              style="progress.description"),
+                  BarColumn(), TimeElapsedColumn(), console=console, transient=True) as prog:
+        task = prog.add_task("writing the report", total=len(report_steps(fmts)))
+
+        def step(name):
+            prog.update(task, description=f"writing: {name}", advance=1)
+
+        try:
+            files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
+                                 positions=positions)
+        except OSError as e:  # disk full, permissions changed: one message, no traceback
+            _fail(f"{output}: cannot write the report: {e.strerror or e}")
+        except (AssemblyError, ModelError, SingularPositionError) as e:
+            _fail(f"{model.source}: {e}")
+    return analysis, files
+
+
+def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
+            output: str = typer.Option("assur-report", "-o", "--output",
+                                       help="Output directory."),
+            lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
+            format: str = typer.Option(",".join(FORMATS), "--format",
+                                       help="Comma-separated: csv,xlsx,html,png,svg,gif."),
+            draw_at: str = typer.Option("", "--draw-at",
+                                        help="Coordinate values to draw the mechanism at: "
+                                             "cylinder lengths in m (0.42,0.55), crank "
+                                             "angles in degrees (14.679,188.229); default: "
+                                             "first and last.")):
+    """Analyze a model over its range and write tables, figures and the HTML report."""
+    _check_lang(lang)
+    fmts = _formats(format)
+    model = _load(file)
+    _, files = _run_report(model, output, lang, fmts, draw_at)
+    _summary(files, output)
+
+
+def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
+           table: str = typer.Option("", "--table", help="Only these tables, e.g. 2.1,4.1."),
+           lang: str = typer.Option("en", "--lang", help="Titles: ru or en."),
+           columns: int = typer.Option(6, "--columns", help="Columns per printed block.")):
+    """Print the seed-like tables of a model in the terminal."""
+    import numpy as np
+
+    from ..report.tables import seed_tables
+
+    _check_lang(lang)
+    model = _load(file)
+    analysis = _assemble(model)
+    tabs = seed_tables(analysis, lang=lang)
+    wanted = [t.strip() for t in table.split(",") if t.strip()]
+    known = [t.id for t in tabs]
+    bad = [w for w in wanted if w not in known]
+    if bad:
+        _fail(f"--table {bad}: this model has tables {known}")
+    for t in tabs:
+        if wanted and t.id not in wanted:
+            continue
+        first, rest = t.columns[0], t.columns[1:]
+        for k in range(0, max(len(rest), 1), max(columns, 1)):
+            part = [first] + list(rest[k:k + columns])
+            rt = Table(title=f"{t.id} — {t.title(lang)}" if k == 0 else None,
+                       header_style="bold", title_justify="left")
+            for c in part:
+                rt.add_column(f"{c.symbol} [{c.unit}]", justify="right", no_wrap=True,
+                              overflow="fold")
+            n = len(np.atleast_1d(first.values))
+            for i in range(n):
+                rt.add_row(*[_fmt_cell(np.atleast_1d(c.values)[i]) for c in part])
+            console.print(rt)
+
+
+def _fmt_cell(v):
+    import math
+    if isinstance(v, (bool,)) or (hasattr(v, "dtype") and v.dtype == bool):
+        return "yes" if v else "no"
+    v = float(v)
+    if math.isnan(v):
+        return ""
+    if math.isinf(v):
+        return "∞" if v > 0 else "−∞"
+    if 1e3 <= abs(v) < 1e10:
+        out = f"{v:.0f}"  # forces, pressures: whole N, Pa as the seeds print them
+    else:
+        out = f"{v:.5g}"
+    return out.lstrip("-") if float(out) == 0 else out  # never "-0"
+
+
+def demo(output: str = typer.Option("assur-demo", "-o", "--output"),
+         lang: str = typer.Option("en", "--lang")):
+    """Analyze the bundled seed-003 hitch into ./assur-demo/."""
+    from ...io import bundled
+
+    _check_lang(lang)
+    model = _load(bundled("hitch_003"))
+    _, files = _run_report(model, output, lang, FORMATS)
+    _summary(files, output)
