@@ -398,8 +398,9 @@ def check_hitch_values(v, g):
 
 
 def load_seed_tables():
-    """tests/seed_tables.py by path (tables 4.1, 5.1, 6.1 and the helpers table, decimals)."""
-    path = os.path.join(HERE, os.pardir, "tests", "seed_tables.py")
+    """tests/helpers/seed_tables.py by path (tables 4.1, 5.1, 6.1 and the helpers table,
+    decimals)."""
+    path = os.path.join(HERE, os.pardir, "tests", "helpers", "seed_tables.py")
     spec = importlib.util.spec_from_file_location("seed_tables_bench", path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)

@@ -1,7 +1,9 @@
-"""Test configuration: paths, the kernel cache of the tests, hypothesis profiles.
+"""Test configuration: the kernel cache of the tests, hypothesis profiles, shared fixtures.
 
-* The tests read ``../shared/`` from the project root and import ``seed_tables.py``
-  from beside them.
+* Paths come from :mod:`tests.helpers` (``ROOT``, ``SHARED`` …, computed from this
+  file): no test depends on the working directory. ``tests`` is a package, so a test
+  imports shared code as ``tests.helpers.<module>`` (pytest puts the project's root
+  on ``sys.path`` for it).
 * Generated kernels go to a cache of the tests' own (``<project>/.assur-test-cache``,
   git-ignored) unless ``ASSUR_CACHE_DIR`` is set: a test run never writes into the
   user's ``~/.cache/assur``, and repeated runs reuse their compiled kernels.
@@ -10,29 +12,47 @@
   test at its full number of examples; ``dev`` (the default otherwise): random
   seeds and a fifth of the examples (at least 10), for quick local runs. Choose one
   with ``--hypothesis-profile=ci`` or ``ASSUR_HYPOTHESIS=ci``. Property tests size
-  their example counts with :func:`examples`.
+  their example counts with :func:`tests.helpers.examples`.
+* Every test leaves ``os.environ`` as it found it (:func:`restore_environ`: a Dask
+  cluster, for one, sets thread counts in the process that starts it).
 """
 
 import os
-import sys
 
 import pytest
 from hypothesis import settings
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.dirname(__file__))
-os.chdir(ROOT)
-os.environ.setdefault("ASSUR_CACHE_DIR", os.path.join(ROOT, ".assur-test-cache"))
+from tests.helpers import PROFILE, ROOT
 
-settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
-settings.register_profile("dev", deadline=None)
-PROFILE = os.environ.get("ASSUR_HYPOTHESIS") or ("ci" if os.environ.get("CI") else "dev")
+os.environ.setdefault("ASSUR_CACHE_DIR", str(ROOT / ".assur-test-cache"))
 settings.load_profile(PROFILE)
 
 
-def examples(n: int) -> int:
-    """Examples of a property test: ``n`` in the ``ci`` profile, n/5 (≥ 10) in ``dev``."""
-    return n if PROFILE == "ci" else max(10, n // 5)
+@pytest.fixture(autouse=True)
+def restore_environ():
+    """Snapshot ``os.environ`` before every test and put it back afterwards (what a
+    test adds is removed, what it changes or removes is restored)."""
+    saved = _environ()
+    yield
+    now = _environ()
+    for key in now.keys() - saved.keys():
+        del os.environ[key]
+    for key, value in saved.items():
+        if now.get(key) != value:
+            os.environ[key] = value
+
+
+def _environ():
+    """``os.environ`` without pytest's own ``PYTEST_CURRENT_TEST`` (set per phase)."""
+    return {k: v for k, v in os.environ.items() if k != "PYTEST_CURRENT_TEST"}
+
+
+@pytest.fixture(scope="session")
+def hitch_analysis():
+    """The seed-003 hitch analysed over the seed's range (``examples.hitch_003()`` at
+    ``examples.hitch_003_range()``), once per session; tests must not change it."""
+    from assur import examples
+    return examples.hitch_003().analyze(examples.hitch_003_range())
 
 
 @pytest.fixture

@@ -2,7 +2,6 @@
 evaluated by a whitelisted expression walker (never ``eval``), column sign maps,
 ``[model] gravity`` — general hooks, so that no seed is named in the core."""
 
-import pathlib
 import re
 
 import numpy as np
@@ -13,22 +12,14 @@ from assur.core.columns import Formula, FormulaError, SignMap, parse
 from assur.io import ModelFileError
 from assur.views.report import seed_tables
 from assur.core.statics import GRAVITY
+from tests.helpers.mechanisms import LIFT
 
-ROOT = pathlib.Path(__file__).parent.parent
-LIFT = re.search(r"```toml\n(.*?)```", (ROOT / "docs" / "model-format.md").read_text(),
-                 re.S).group(1)
-LIFT = re.sub(r"(?ms)^\[\[solve\]\].*", "", LIFT)  # no solving: fast
 TABLES = '[tables]\nratios = [["5", "3"]]\ntransmissions = ["56"]\n'
 assert TABLES in LIFT
 
 
 def lift(extra, name="lift.toml"):
     return io.loads(LIFT.replace(TABLES, TABLES + extra), name=name)
-
-
-@pytest.fixture(scope="module")
-def hitch_analysis():
-    return examples.hitch_003().analyze(examples.hitch_003_range())
 
 
 # ---- the expression walker --------------------------------------------------------------

@@ -3,13 +3,13 @@ in table 3.1 when a model asks (issue 10; seed 001 lab 2 eq. 4: k springs)."""
 
 import numpy as np
 import pytest
-from conftest import examples as n_examples
+from tests.helpers import examples as n_examples
 from hypothesis import given, settings, strategies as st
 
 from assur import io
 from assur.io import ModelFileError
 from assur.views.report import seed_tables
-from test_columns import LIFT
+from tests.helpers.mechanisms import LIFT
 
 SPRING = ('[[loads]]\ntype = "spring"\nname = "k1"\na = "03"\nb = "45"\nrate = "20 kN/m"\n'
           'free_length = "0.3 m"\npreload = "150 N"\n{count}\n')

@@ -9,7 +9,7 @@ import pytest
 from assur import io
 from assur.errors import ModelError
 from assur.io import ModelFileError
-from test_columns import LIFT
+from tests.helpers.mechanisms import LIFT
 
 MASS = '[[loads]]\ntype = "mass"\nlink = "5"\nm = "100 kg"\npoint = "56"\n'
 BASE = LIFT.replace("[[cylinders]]", MASS + "\n[[cylinders]]")

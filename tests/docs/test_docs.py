@@ -20,19 +20,17 @@ import re
 import subprocess
 import sys
 import tomllib
-from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
 
 import assur
 from assur.views.cli import app
+from tests.helpers import DOCS, ROOT, import_path
 
-ROOT = Path(__file__).resolve().parents[1]
-DOCS = ROOT / "docs"
 GALLERY = DOCS / "gallery"
-sys.path.insert(0, str(DOCS))
-
+# the documentation's own extensions (docs/_ext, imported by Sphinx from docs/)
+import_path("_ext", DOCS / "_ext")
 from _ext import bars, gen_cli, gen_groups_drawn, gen_optional  # noqa: E402
 
 

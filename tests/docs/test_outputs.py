@@ -8,8 +8,9 @@ import pytest
 
 from assur import io
 from assur.views.report import seed_tables, write_report
+from tests.helpers import DOCS
 
-DOC = Path(__file__).resolve().parents[1] / "docs" / "outputs.md"
+DOC = DOCS / "outputs.md"
 
 
 def _alt(names):

@@ -37,7 +37,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import examples
+from tests.helpers import examples
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
@@ -48,8 +48,8 @@ from assur.errors import ModelError
 from assur.dynamics.flywheel import flywheel, periodic_integral
 from assur.dynamics.crank import LinkMass, crank_dynamics, reduced_inertia, with_masses
 
-from test_analogs_random import SETTINGS, _floats
-from test_statics_random import crank_family, prepare
+from tests.helpers.analogs import SETTINGS, _floats
+from tests.helpers.statics import crank_family, prepare
 
 #: relative tolerance of the power balance, Newton–Euler and the Lagrange identity
 RTOL = 1e-9

@@ -26,8 +26,8 @@ from assur.core import statics
 from assur.dynamics import equations_of_motion
 from assur.errors import ModelError
 from assur.dynamics.crank import reduced_inertia
-from test_analogs_random import SETTINGS, _floats, analogs, fd_steps
-from test_statics_random import crank_family, cylinder_lever_family, cylinder_radius_family, \
+from tests.helpers.analogs import SETTINGS, _floats, analogs, fd_steps
+from tests.helpers.statics import crank_family, cylinder_lever_family, cylinder_radius_family, \
     draw_rates, prepare, slider_family
 
 FAMILIES = {"cylinder-lever": cylinder_lever_family, "crank": crank_family,

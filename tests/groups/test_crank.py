@@ -8,7 +8,7 @@ import textwrap
 
 import numpy as np
 import pytest
-from conftest import examples as n_examples
+from tests.helpers import examples as n_examples
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner

@@ -1,14 +1,13 @@
 """Printed tables of the seeds, transcribed as text for the tests.
 
-Each table is a whitespace-separated block copied from ``../shared/seeds/``; the
+Each table is a whitespace-separated block copied from the seed documents
+(``../shared/seeds/``, :data:`tests.helpers.SEEDS`); the
 first row is the column names. ``table(text)`` returns a dict of numpy arrays and
 ``decimals(text)`` the printed number of decimals per column (the precision a
 test must meet).
 """
 
 import numpy as np
-
-SEED_003 = "../shared/seeds/003_b1551261b108abd1.txt"
 
 # seed 003, Таблица 2.1 — link angles [deg]
 T003_2_1 = """

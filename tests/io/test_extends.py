@@ -3,7 +3,6 @@ as overrides of another — tables merged key by key, arrays of tables merged by
 ``name`` (``unknown`` for ``[[solve]]``), other values replaced — with every error
 located in the file (and at the line) of the key at fault."""
 
-import pathlib
 import re
 
 import numpy as np
@@ -11,8 +10,8 @@ import pytest
 
 from assur import io
 from assur.io import ModelFileError
+from tests.helpers import ROOT
 
-ROOT = pathlib.Path(__file__).parent.parent
 #: the complete example of docs/model-format.md, the base of these tests
 BASE = re.search(r"```toml\n(.*?)```", (ROOT / "docs" / "model-format.md").read_text(),
                  re.S).group(1)

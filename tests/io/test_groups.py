@@ -7,7 +7,6 @@ with nothing else changed."""
 from __future__ import annotations
 
 import math
-import pathlib
 import re
 import subprocess
 import sys
@@ -20,8 +19,8 @@ import pytest
 from assur import Mechanism, io
 from assur.groups import Dyad, base, registry
 from assur.io import ModelFileError, _schema
+from tests.helpers import ROOT
 
-ROOT = pathlib.Path(__file__).parent.parent
 IO = ROOT / "src" / "assur" / "io"
 
 SLOTTED = """

@@ -4,7 +4,6 @@ path and the line written in its first line (``# expect: <key path> @ <line>``;
 ``-`` for a TOML syntax error, which has no key path)."""
 
 import math
-import pathlib
 import pickle
 import re
 
@@ -14,10 +13,10 @@ import pytest
 from assur import AssemblyError, ModelError, io
 from assur.io import ModelFileError
 from assur.io._lines import line_index, line_of
+from tests.helpers import ROOT, TESTS
 
-HERE = pathlib.Path(__file__).parent
+HERE = TESTS / "io"
 MALFORMED = sorted((HERE / "malformed").glob("*.toml"))
-ROOT = HERE.parent
 
 #: seed 003: the exact roots of its Find blocks (BRIEF.md)
 FOUND_003 = {"L4": 0.661283167, "Sp": 0.469356940, "L7": 0.752169525}

@@ -6,8 +6,6 @@ force each one by setting it (and emptying the program's kernel caches)."""
 
 from __future__ import annotations
 
-import os
-import sys
 from dataclasses import replace
 
 import numpy as np
@@ -16,11 +14,10 @@ import pytest
 from assur import Mechanism, PosePoint, examples
 from assur.core import program as P
 from assur.kernel import compose
+from tests.helpers import ROOT, import_path
 
 # the structures of the compile-time benchmark, defined once (benchmarks/structures.py)
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                                "benchmarks"))
-from structures import hitch_plus_rigid  # noqa: E402
+hitch_plus_rigid = import_path("structures", ROOT / "benchmarks" / "structures.py").hitch_plus_rigid
 
 
 @pytest.fixture

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import examples
+from tests.helpers import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 

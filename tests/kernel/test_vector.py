@@ -13,7 +13,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import examples
+from tests.helpers import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -24,9 +24,9 @@ from assur.kernel import emit as KE
 from assur.kernel import run as KR
 from assur.kernel import vector as KV
 
-from test_analogs_random import SETTINGS
-from test_group_contract import SAMPLES
-from test_kernel_paths import _crank_dyad
+from tests.helpers.analogs import SETTINGS
+from tests.helpers.groups import SAMPLES
+from tests.helpers.mechanisms import crank_dyad
 
 KEYS = ("pv", "pd", "pdd", "sv", "sd", "sdd")
 
@@ -101,8 +101,8 @@ def test_vector_continuity_equals_compiled(monkeypatch):
     q2[-1] = 1.0
     q = np.concatenate([q1, q2])[None, :]
     monkeypatch.setattr(P, "REFINE_DEPTH", 0)  # the raw flags of both checks
-    got = _execute(_crank_dyad(), q, n, True, monkeypatch)
-    want = _execute(_crank_dyad(), q, n, False, monkeypatch)
+    got = _execute(crank_dyad(), q, n, True, monkeypatch)
+    want = _execute(crank_dyad(), q, n, False, monkeypatch)
     code = 3 * KE.CODES_PER_OP + KE.FAIL_CONTINUITY
     flagged = np.flatnonzero(want["status"] == code)
     assert {41, 2 * n - 1} <= set(flagged) and n not in flagged

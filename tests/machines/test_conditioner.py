@@ -6,7 +6,7 @@ p_c flattest, four-bar against six-bar (fig. 2.3), the rollers' grip and speed r
 
 import numpy as np
 import pytest
-from conftest import examples as n_examples
+from tests.helpers import examples as n_examples
 from hypothesis import given, settings, strategies as st
 
 from assur import io

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import examples as n_examples
+from tests.helpers import examples as n_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -20,7 +20,7 @@ from assur import examples
 from assur.core.columns import formulas_of
 from assur.machines.stability import Machine, axle_reactions
 
-from seed_tables import T003_6_1, assert_printed, table
+from tests.helpers.seed_tables import T003_6_1, assert_printed, table
 
 
 A, B, L = 0.6, 1.62, 2.960            # seed 003 §1.6 [m]
@@ -269,12 +269,12 @@ def test_inputs_and_picks_validated(seed003):
         seed003.to_frame(index=[1, 2])
 
 
-def test_table_6_1_from_the_model_analysis():
+def test_table_6_1_from_the_model_analysis(hitch_analysis):
     """Seed 003 table 6.1 through ``examples.hitch_003().analyze(...)``: the model
     carries its machine (axles, tractor, ballast) and the implement P6 at S6; the
     analysis gives the correct limit and, beside it, the seed's GS6max (the model's
     extra formula), flagged."""
-    a = examples.hitch_003().analyze(examples.hitch_003_range())
+    a = hitch_analysis
     st = a.stability
     assert_printed(st.reaction("A"), T003_6_1, "Ra")
     assert_printed(st.reaction("B"), T003_6_1, "Rb")

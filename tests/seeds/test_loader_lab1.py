@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import examples as n_examples
+from tests.helpers import examples as n_examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 

@@ -14,7 +14,7 @@ import pytest
 
 from assur import AssemblyError, examples
 
-from seed_tables import T000_DFI3, T000_FI3, assert_printed
+from tests.helpers.seed_tables import T000_DFI3, T000_FI3, assert_printed
 
 
 def test_header_000_raises_the_triangle_error():

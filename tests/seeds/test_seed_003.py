@@ -12,7 +12,7 @@ import pytest
 
 from assur import examples
 
-from seed_tables import (T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
+from tests.helpers.seed_tables import (T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
                          T003_3_1b, T003_IC, assert_printed, table)
 
 

@@ -6,7 +6,7 @@ import pytest
 from assur import io
 from assur.errors import ModelError
 from assur.synthesis.fitting import Target, fit_parameters
-from test_columns import LIFT
+from tests.helpers.mechanisms import LIFT
 
 DEG = np.pi / 180
 

@@ -1,14 +1,13 @@
 """The command line: check, analyze, demo — exit codes, messages, files written."""
 
-from pathlib import Path
-
 import pytest
 from typer.testing import CliRunner
 
 from assur.views.cli import app
 from assur.io import bundled
 
-from seed_tables import T003_2_1, T003_3_1a, T003_4_1, assert_printed
+from tests.helpers import TESTS
+from tests.helpers.seed_tables import T003_2_1, T003_3_1a, T003_4_1, assert_printed
 
 runner = CliRunner()
 
@@ -51,7 +50,7 @@ def test_bad_options_exit_1(tmp_path):
     assert r.exit_code == 1 and "--format must be" in r.output
 
 
-MALFORMED = sorted((Path(__file__).parent / "malformed").glob("*.toml"))
+MALFORMED = sorted((TESTS / "io" / "malformed").glob("*.toml"))
 
 
 def _expect(path):

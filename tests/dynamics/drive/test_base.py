@@ -7,7 +7,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,8 +14,7 @@ import pytest
 from assur.dynamics.drive import FlowDivider, Line, registry
 from assur.dynamics.drive.base import ROLES
 from assur.errors import ModelError
-
-ROOT = Path(__file__).resolve().parents[1]
+from tests.helpers import ROOT
 
 
 def test_every_component_follows_the_contract():

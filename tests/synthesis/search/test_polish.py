@@ -15,7 +15,7 @@ from assur.synthesis.search.problem import CONSTRAINT, FEASIBLE
 from assur.synthesis.search.polish import missing_gradients, polish
 from assur.synthesis.search.search import optimize
 from assur.errors import ModelError
-from conftest import examples as n_examples
+from tests.helpers import examples as n_examples
 
 HITCH = io.bundled("hitch_003_design")
 H = 1e-6          # central-difference step [m] (the bounds span 60 mm)

@@ -31,8 +31,8 @@ from assur.synthesis.sensitivity.cstep import H as H_CS
 from assur.synthesis.sensitivity.cstep import complex_step
 from assur.synthesis.sensitivity.dual import Dual, base, variables
 from assur.core.statics import solve
-from conftest import examples as n_examples
-import test_statics_random as TS  # the random mechanism families and loads
+from tests.helpers import examples as n_examples
+from tests.helpers import statics as TS  # the random mechanism families and loads
 
 RTOL_CS = 1e-9
 RTOL_FD = 1e-5

@@ -27,23 +27,18 @@ from assur.views.report import FORMATS, report_steps, seed_tables, write_report
 from assur.views.report import figures as report_figures
 from assur.views.report.html import write_html
 
-from seed_tables import (T003_6_1, T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
+from tests.helpers.seed_tables import (T003_6_1, T003_2_1, T003_2_2a, T003_2_2b, T003_2_2c, T003_2_2d, T003_3_1a,
                          T003_3_1b, T003_4_1, T003_5_1, T003_IC, assert_printed, table)
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
 @pytest.fixture(scope="module")
-def analysis():
-    return examples.hitch_003().analyze(examples.hitch_003_range())
-
-
-@pytest.fixture(scope="module")
-def report(analysis, tmp_path_factory):
+def report(hitch_analysis, tmp_path_factory):
     out = tmp_path_factory.mktemp("report") / "hitch"
     steps = []
     t0 = time.perf_counter()
-    files = write_report(analysis, out, progress=steps.append)
+    files = write_report(hitch_analysis, out, progress=steps.append)
     return dict(out=out, files=files, steps=steps, seconds=time.perf_counter() - t0)
 
 
@@ -118,11 +113,11 @@ def test_csv_table_4_1_capacity(report):
         assert_printed(c[sym], T003_4_1, seed)
 
 
-def test_csv_table_5_1_reactions(report, analysis):
+def test_csv_table_5_1_reactions(report, hitch_analysis):
     """Seed 003, Таблица 5.1 [N]: every printed column; components of R05, R34, R45
     compared with the documented opposite sign, magnitudes and Fgc as printed."""
     c, u = read_csv(report["out"] / "table_5_1.csv")
-    signs = column_signs(analysis.mechanism)
+    signs = column_signs(hitch_analysis.mechanism)
     assert {n for n, s in signs.items() if s < 0} == {"R05x", "R05y", "R34x", "R34y", "R45x",
                                                       "R45y"}
     printed = table(T003_5_1)
@@ -136,7 +131,7 @@ def test_csv_table_5_1_reactions(report, analysis):
         assert u[col] == "N"
         assert_printed(sign * c[col], T003_5_1, col)
     # the table itself marks the flipped columns and says why
-    t51 = next(t for t in seed_tables(analysis) if t.id == "5.1")
+    t51 = next(t for t in seed_tables(hitch_analysis) if t.id == "5.1")
     assert {col.symbol for col in t51.columns if col.printed_sign < 0} == {
         "R05x", "R05y", "R34x", "R34y", "R45x", "R45y"}
     assert any("opposite sign" in n["en"] for n in t51.notes)
@@ -160,9 +155,9 @@ def test_csv_instantaneous_centre_check(report):
     assert np.allclose(c["Imp"], c["I56"], atol=1e-9)
 
 
-def test_csv_round_trips_exactly(report, analysis):
+def test_csv_round_trips_exactly(report, hitch_analysis):
     """Full precision: every number read back is the float in the table."""
-    for tab in seed_tables(analysis):
+    for tab in seed_tables(hitch_analysis):
         with open(report["out"] / f"table_{tab.id.replace('.', '_').lower()}.csv",
                   newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
@@ -208,7 +203,7 @@ class _Refs(HTMLParser):
             self.imgs.append(a.get("src", ""))
 
 
-def test_html_is_one_self_contained_file(report, analysis):
+def test_html_is_one_self_contained_file(report, hitch_analysis):
     import base64
 
     text = (report["out"] / "report.html").read_text(encoding="utf-8")
@@ -226,12 +221,12 @@ def test_html_is_one_self_contained_file(report, analysis):
     assert "http" not in bare and "//" not in bare.replace("://", "")
     assert "<link" not in bare and "@import" not in bare and "url(" not in bare
     plain = html.unescape(text)
-    for tab in seed_tables(analysis):
+    for tab in seed_tables(hitch_analysis):
         assert f"Table {tab.id} — {tab.title_en}" in plain
-    for note in analysis.mechanism.notes:
+    for note in hitch_analysis.mechanism.notes:
         assert note in plain
-    notes = [m.note for m in signs_of(analysis.mechanism)]
-    flags = [x for f in formulas_of(analysis.mechanism) for x in f.flags]
+    notes = [m.note for m in signs_of(hitch_analysis.mechanism)]
+    flags = [x for f in formulas_of(hitch_analysis.mechanism) for x in f.flags]
     assert len(notes) == 1 and len(flags) == 3
     for flag in notes + flags:
         assert flag in plain
@@ -257,14 +252,14 @@ def test_figures_are_valid_png_and_svg(report):
 
 
 # ---- Russian ------------------------------------------------------------------------
-def test_russian_labels(analysis, tmp_path):
-    figs = report_figures.figures(analysis, "ru", names=["capacity", "stability"])
+def test_russian_labels(hitch_analysis, tmp_path):
+    figs = report_figures.figures(hitch_analysis, "ru", names=["capacity", "stability"])
     ax = figs["capacity"].axes[0]
     assert ax.get_title() == "Грузоподъёмность"
     assert "длина гидроцилиндра S [м]" == ax.get_xlabel() and "[кН]" in ax.get_ylabel()
-    tabs = seed_tables(analysis, "ru")
+    tabs = seed_tables(hitch_analysis, "ru")
     assert tabs[0].title("ru").startswith("Результаты геометрического анализа")
-    path = write_html(analysis, tmp_path / "ru.html", lang="ru", figures=figs, animation=False)
+    path = write_html(hitch_analysis, tmp_path / "ru.html", lang="ru", figures=figs, animation=False)
     text = html.unescape(path.read_text(encoding="utf-8"))
     for s in ["Таблица 2.1", "Таблица 6.1", "Предупреждения и примечания", "Параметры",
               "Рисунок 1 — Грузоподъёмность", "Схема механизма", "[Па]", "[град]"]:
@@ -340,22 +335,22 @@ def test_crank_angle_in_degrees_and_singular_ratio_flagged(tmp_path):
     assert "U13 is singular at 1 position" in path.read_text(encoding="utf-8")
 
 
-def test_batch_needs_a_design(analysis):
+def test_batch_needs_a_design(hitch_analysis):
     s = examples.hitch_003_range()
     batch = examples.hitch_003(P6=np.array([20000.0, 27500.0])).analyze(s)
     with pytest.raises(ValueError, match="design="):
         seed_tables(batch)
-    one = {t.id: t for t in seed_tables(analysis)}
+    one = {t.id: t for t in seed_tables(hitch_analysis)}
     for t in seed_tables(batch, design=1):
         for col in t.columns:
             assert np.allclose(col.values, one[t.id][col.symbol], rtol=1e-12, equal_nan=True)
 
 
-def test_bad_options(analysis, tmp_path):
+def test_bad_options(hitch_analysis, tmp_path):
     with pytest.raises(ValueError, match="lang must be one of"):
-        seed_tables(analysis, lang="de")
+        seed_tables(hitch_analysis, lang="de")
     with pytest.raises(ValueError, match="formats must be among"):
-        write_report(analysis, tmp_path, formats=("pdf",))
-    fig = report_figures.force(analysis)
+        write_report(hitch_analysis, tmp_path, formats=("pdf",))
+    fig = report_figures.force(hitch_analysis)
     with pytest.raises(ValueError, match="suffix must be one of"):
         report_figures.save(fig, tmp_path / "f.jpg")

@@ -1,0 +1,135 @@
+"""The fused kinematics + statics kernel (:mod:`assur.core.outputs`) against the
+separate reverse pass over arrays (:func:`assur.core.statics.solve`): random mechanisms
+of every family with random static loads (the builders and scales of
+:mod:`tests.helpers.statics`), the seed-003 hitch over a large range, and the switch
+of small analyses to the fused kernel."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from assur import examples
+from assur.core import statics
+from tests.helpers import examples as n_examples
+from tests.helpers.analogs import SETTINGS
+from tests.helpers.statics import ELL0, FAMILIES, WORST, Solved, _assert_close, \
+    assume_springs_long, draw_loads, prepare, reproducer
+
+
+# ---------------------------------------------------------------------------------
+# the fused kinematics + statics kernel (assur.core.outputs) against the array pass
+# ---------------------------------------------------------------------------------
+#: relative tolerance of the fused kernel against the separate reverse pass
+RTOL_FUSED = 1e-9
+
+
+# every random load placement is a new kernel to compile: few examples per family
+FUSED_SETTINGS = settings(SETTINGS, max_examples=max(3, n_examples(6)))
+
+
+def check_fused(case, data):
+    """The fused kernel's reactions (every joint: Rx, Ry, Rm) and actuator forces (F by
+    virtual work, Fr from the reactions) equal those of :func:`assur.core.statics.solve`
+    (the separate reverse pass over arrays) to RTOL_FUSED × the reaction scale R or
+    the actuator scale A of the module docstring (static loads: the fused kernel has
+    no inertia)."""
+    loads = draw_loads(data, case.mech, "loads")
+    assume_springs_long(case, loads)
+    full = Solved(case, loads, None, None)
+    outs = [f"{f}({i}, {j})" for _, i, j in full.st.joints for f in ("Rx", "Ry", "Rm")]
+    outs += [f"{f}({c})" for c in case.mech.coordinates for f in ("F", "Fr")]
+    fz = full.mech.evaluate(case.api_q(case.Q), outputs=outs, on_failure="report")
+    assert fz.ok.all()
+
+    def where():
+        return reproducer(case, loads, None, None)
+
+    w = 0.0
+    for _, i, j in full.st.joints:
+        got = np.stack([case.shaped(fz[f"Rx({i}, {j})"]), case.shaped(fz[f"Ry({i}, {j})"])], -1)
+        w = max(w, _assert_close(f"fused reaction of {i} on {j}", got, full.reaction(i, j),
+                                 RTOL_FUSED * full.R, where))
+        w = max(w, _assert_close(f"fused moment of {i} on {j}",
+                                 case.shaped(fz[f"Rm({i}, {j})"]) / ELL0,
+                                 full.moment(i, j) / ELL0, RTOL_FUSED * full.R, where))
+    for jc, c in enumerate(case.mech.coordinates):
+        tol = RTOL_FUSED * full.A[..., jc]
+        w = max(w, _assert_close(f"fused actuator force {c} (virtual work)",
+                                 case.shaped(fz[f"F({c})"]), full.vw(c), tol, where))
+        w = max(w, _assert_close(f"fused actuator force {c} (reactions)",
+                                 case.shaped(fz[f"Fr({c})"]), full.rx(c), tol, where))
+    WORST["fused vs array pass"] = max(WORST.get("fused vs array pass", 0.0), w)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("family", list(FAMILIES))
+@FUSED_SETTINGS
+@given(data=st.data())
+def test_fused_kernel_reactions_equal_the_reverse_pass(family, data):
+    """Random mechanisms of every family with random static loads: the fused kernel
+    (one generated loop: positions, jets, loads, reactions in reverse order) gives the
+    reactions and actuator forces of the separate array pass to 1e-9 relative."""
+    check_fused(prepare(FAMILIES[family](data)), data)
+
+
+def test_fused_kernel_shared_by_load_values_with_other_coincidences():
+    """Regression: the fused kernel of a load structure is shared by load values, and
+    its table rows must not depend on which of those values happen to be equal (a
+    weight and a force of 1 N shared a row, and the kernel cached for them then read
+    the wrong row for a weight of 1 N and a force of 2 N)."""
+    from assur import Mechanism
+    base = (Mechanism("crank-dyad", coordinates=("q",))
+            .frame("O", 0.0, 0.0).frame("B", 0.0, 3.0)
+            .crank("crank", pivot="O", out="A", radius=1.0, q="q", links=("1",))
+            .dyad("II", a="A", b="B", out="C", ra=2.65, rb=0.6, branch=1, links=("2", "3")))
+    q = np.linspace(0.0, 1.0, 7)
+    for P, fx, M in ((1.0, 1.0, 1.0), (1.0, 2.0, 3.0), (2.0, 2.0, 1.0)):
+        m = base.weight("C", P).force("A", fx, 0.5).moment("2", M)
+        kin = m.solve(q)
+        fz = statics.solve(kin, method="fused")
+        ar = statics.solve(kin, method="array")
+        for _, i, j in ar.joints:
+            assert np.allclose(fz.reaction(i, j), ar.reaction(i, j), rtol=1e-12, atol=1e-9)
+        assert np.allclose(fz.actuator_force("q"), ar.actuator_force("q"), rtol=1e-12)
+
+
+def test_statics_uses_the_fused_kernel_on_large_ranges():
+    """analyze() on ≥ FUSED_MIN elements takes the fused kernel (static loads); it
+    equals the array pass on the seed-003 hitch to 1e-9 relative."""
+    from assur import examples
+    m = examples.hitch_003()
+    kin = m.solve(np.linspace(0.42, 0.67, statics.FUSED_MIN + 1))
+    st = statics.solve(kin)
+    ar = statics.solve(kin, method="array")
+    scale = max(float(np.max(np.abs(ar.reaction(i, j)))) for _, i, j in ar.joints)
+    for _, i, j in ar.joints:
+        assert np.max(np.abs(st.reaction(i, j) - ar.reaction(i, j))) <= 1e-9 * scale
+    for c in m.coordinates:
+        assert np.allclose(st.actuator_force(c), ar.actuator_force(c), rtol=1e-9)
+        assert np.allclose(st.actuator_force_from_reactions(c),
+                           ar.actuator_force_from_reactions(c), rtol=1e-9)
+    assert max(float(np.max(r)) for r in st.equilibrium_residual()) <= 1e-9 * scale
+
+
+def test_statics_switch_to_the_fused_kernel_after_a_few_calls(monkeypatch):
+    calls = []
+    real = statics._solve_fused
+
+    def counting(kin, g):
+        calls.append(kin.n)
+        return real(kin, g)
+
+    monkeypatch.setattr(statics, "_solve_fused", counting)
+    m = examples.hitch_003().with_params(L5=0.48)  # a mechanism of this test alone
+    q = np.array([0.5])
+    res = [m.analyze(q).statics for _ in range(statics.FUSED_AFTER + 2)]
+    assert calls == [1, 1]  # the calls after FUSED_AFTER
+    a, b = res[0], res[-1]
+    for _, i, j in a.joints:
+        ra, rb = a.reaction(i, j), b.reaction(i, j)
+        assert np.allclose(rb, ra, rtol=1e-9, atol=1e-9 * np.abs(ra).max()), (i, j)
+    assert np.allclose(b.actuator_force(), a.actuator_force(), rtol=1e-9)
+

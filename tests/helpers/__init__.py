@@ -1,0 +1,59 @@
+"""Code shared by the tests: paths, the hypothesis profiles and example counts.
+
+The modules beside this one hold what several test files use (the seed tables,
+the random-mechanism builders of the property tests, small mechanisms); a test
+file imports them as ``tests.helpers.<module>``, never another test file.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from hypothesis import settings
+
+#: the project (the checkout: src/, docs/, tests/ …)
+ROOT = Path(__file__).resolve().parents[2]
+#: the tests' directory
+TESTS = ROOT / "tests"
+#: the documentation sources
+DOCS = ROOT / "docs"
+#: the shared material beside the project (``../shared``: the seeds, the brief)
+SHARED = ROOT.parent / "shared"
+#: the seed documents
+SEEDS = SHARED / "seeds"
+
+settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
+settings.register_profile("dev", deadline=None)
+#: the hypothesis profile of this run (see tests/conftest.py)
+PROFILE = os.environ.get("ASSUR_HYPOTHESIS") or ("ci" if os.environ.get("CI") else "dev")
+
+
+def examples(n: int) -> int:
+    """Examples of a property test: ``n`` in the ``ci`` profile, n/5 (≥ 10) in ``dev``."""
+    return n if PROFILE == "ci" else max(10, n // 5)
+
+
+def import_path(name: str, path: Path):
+    """Import the module or package at ``path`` (a ``.py`` file or a directory with
+    ``__init__.py``) as ``name``, without touching ``sys.path``; a package's
+    submodules then import as ``name.<sub>``."""
+    import importlib.util
+    import sys
+
+    if name in sys.modules:
+        return sys.modules[name]
+    path = Path(path)
+    if path.is_dir():
+        spec = importlib.util.spec_from_file_location(
+            name, path / "__init__.py", submodule_search_locations=[str(path)])
+    else:
+        spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    try:
+        spec.loader.exec_module(module)
+    except BaseException:
+        del sys.modules[name]
+        raise
+    return module
