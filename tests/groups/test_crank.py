@@ -1,91 +1,28 @@
-"""Crank-driven machines at the edges: [motion] (direction and speed), polar frame
-points, parameters nothing uses, angle conventions of the tables, figures over a
-crank angle (sorted, broken at a wrap, coinciding curves visible), ``--draw-at`` in
-degrees, crank angles in degrees in messages."""
+"""Crank-driven machines (:mod:`assur.groups.crank`) at the edges: polar frame points,
+parameters nothing uses, angle conventions of the tables, figures over a crank angle
+(sorted, broken at a wrap, coinciding curves visible), ``--draw-at`` in degrees, crank
+angles in degrees in messages. (The ``[motion]`` of a crank: tests/core/test_motion.py.)"""
 
 import math
 import textwrap
 
 import numpy as np
 import pytest
-from tests.helpers import examples as n_examples
-from hypothesis import example, given, settings
-from hypothesis import strategies as st
 from typer.testing import CliRunner
 
-from assur import AssemblyError, Mechanism, ModelError, examples, io
+from assur import AssemblyError, ModelError, examples, io
 from assur.views.cli import app
 from assur.errors import ModelWarning
-from assur.core.motion import Motion
 from assur.views.report import figures as F
 from assur.views.report.tables import seed_tables, wrap_degrees
+from tests.helpers.mechanisms import FOURBAR, load_fourbar, python_fourbar
 
 runner = CliRunner()
-
-#: a four-bar driven by a crank, its fixed pivot placed by length and angle
-BASE = """
-[model]
-name = "fourbar"
-coordinates = ["q"]
-
-[params]
-r = "0.1 m"
-c = "0.5 m"
-k = "0.3 m"
-d = "0.45 m"
-a = "10 deg"
-{extra_params}
-
-[range]
-q = {{ from = 0, to = 360, count = 25 }}
-
-[frame]
-O = [0, 0]
-P = {{ origin = "O", length = "d", angle = "a" }}
-
-[[groups]]
-type = "crank"
-name = "crank"
-pivot = "O"
-out = "A"
-radius = "r"
-q = "q"
-links = ["1"]
-
-[[groups]]
-type = "dyad"
-name = "II"
-a = "A"
-b = "P"
-out = "B"
-ra = "c"
-rb = "k"
-branch = 1
-links = ["2", "3"]
-
-[links]
-"3" = ["P", "B"]
-
-{extra}
-"""
-
-
-def load(extra="", extra_params=""):
-    return io.loads(BASE.format(extra=extra, extra_params=extra_params), name="fourbar.toml")
-
-
-def python_fourbar(**kw):
-    return (Mechanism("fourbar", coordinates=("q",),
-                      params=dict(r=0.1, c=0.5, k=0.3, d=0.45, a=math.radians(10)))
-            .frame("O", 0, 0).frame("P", origin="O", length="d", angle="a")
-            .crank("crank", pivot="O", out="A", radius="r", q="q", links=("1",))
-            .dyad("II", a="A", b="P", out="B", ra="c", rb="k", branch=1, links=("2", "3"))
-            .link("3", "P", "B"))
 
 
 # ---- polar frame points --------------------------------------------------------------
 def test_polar_frame_point_file_equals_python_and_follows_its_parameters():
-    model = load()
+    model = load_fourbar()
     m = python_fourbar()
     q = model.range
     a, b = model.mechanism.solve(q), m.solve(q)
@@ -110,7 +47,7 @@ def test_polar_frame_point_file_equals_python_and_follows_its_parameters():
 def test_polar_frame_point_can_be_solved_by_a_condition():
     """The length of a polar point is solved like any parameter ([[solve]])."""
     target = 0.5
-    model = load(textwrap.dedent(f"""
+    model = load_fourbar(textwrap.dedent(f"""
         [[solve]]
         unknown = "d"
         bracket = ["0.4 m", "0.6 m"]
@@ -130,7 +67,7 @@ def test_polar_frame_point_can_be_solved_by_a_condition():
     ('P = { origin = "O", length = "d", angle = "0.4 m" }', "expected an angle"),
 ])
 def test_polar_frame_point_errors_name_the_key_and_line(frame, problem):
-    text = BASE.format(extra="", extra_params="").replace(
+    text = FOURBAR.format(extra="", extra_params="").replace(
         'P = { origin = "O", length = "d", angle = "a" }', frame)
     with pytest.raises(io.ModelFileError) as e:
         io.loads(text, name="fourbar.toml")
@@ -148,15 +85,15 @@ def test_polar_frame_point_needs_a_frame_origin():
 
 # ---- parameters nothing uses ------------------------------------------------------------
 def test_unused_parameter_warning_names_the_key_and_line():
-    model = load(extra_params='lx = "0.3 m"   # nothing uses it')
+    model = load_fourbar(extra_params='lx = "0.3 m"   # nothing uses it')
     assert len(model.warnings) == 1
     w = model.warnings[0]
-    line = BASE.format(extra="", extra_params='lx = "0.3 m"   # nothing uses it') \
+    line = FOURBAR.format(extra="", extra_params='lx = "0.3 m"   # nothing uses it') \
         .splitlines().index('lx = "0.3 m"   # nothing uses it') + 1
     assert w.startswith(f"fourbar.toml:{line}: params.lx: the parameter 'lx' is not used")
-    assert load().warnings == ()
+    assert load_fourbar().warnings == ()
     # a parameter used only by a [[solve]] bracket or a formula is used
-    m2 = load(textwrap.dedent("""
+    m2 = load_fourbar(textwrap.dedent("""
         [tables]
         [[tables.formulas]]
         name = "twice"
@@ -168,123 +105,12 @@ def test_unused_parameter_warning_names_the_key_and_line():
 
 def test_unused_parameter_warning_as_python_warning_and_in_the_cli(tmp_path):
     f = tmp_path / "fourbar.toml"
-    f.write_text(BASE.format(extra="", extra_params='lx = "0.3 m"'), encoding="utf-8")
+    f.write_text(FOURBAR.format(extra="", extra_params='lx = "0.3 m"'), encoding="utf-8")
     with pytest.warns(ModelWarning, match="params.lx"):
         io.load(f, warn=True)
     r = runner.invoke(app, ["check", str(f)])
     assert r.exit_code == 0, r.output
     assert "warning:" in r.output and "params.lx" in r.output
-
-
-# ---- [motion] ---------------------------------------------------------------------------
-def test_constant_speed_rates_and_times():
-    m = Motion("q", "cw", speed=300 * 2 * math.pi / 60)
-    q = np.radians([30.0, 0.0, -90.0])
-    qd, qdd = m.rates(q)
-    np.testing.assert_allclose(qd, -10 * math.pi)
-    np.testing.assert_array_equal(qdd, 0.0)
-    np.testing.assert_allclose(m.time(q), [0.0, math.radians(30) / (10 * math.pi),
-                                           math.radians(120) / (10 * math.pi)])
-    assert Motion("q").direction == 1 and Motion("q", -1).direction_name == "cw"
-
-
-@settings(max_examples=n_examples(50), deadline=None)
-@given(st.lists(st.floats(0.5, 50.0), min_size=2, max_size=6),
-       st.lists(st.floats(0.05, 1.0), min_size=5, max_size=5),
-       st.sampled_from([1, -1]))
-@example([1.0, 1.0, 2.0], [0.25, 0.05, 0.05, 0.05, 0.05], 1)  # a sample 3e-17 s off a knot
-def test_speed_table_integrates_exactly(omegas, dts, direction):
-    """ω(t) linear between samples: q(t) is its exact integral. Checked against an
-    independent sampling of t: q(t) by the trapezoid rule on a fine grid of each
-    interval (exact for a linear ω), then rates(q(t)) must give ω(t), the slope,
-    and time(q(t)) must give t back."""
-    t = np.concatenate([[0.0], np.cumsum(dts[:len(omegas) - 1])])
-    w = np.array(omegas)
-    q0 = 0.3
-    m = Motion("q", direction, t=t, omega=w, start=q0)
-    ts = np.linspace(t[0], t[-1], 97)
-    ws = np.interp(ts, t, w)
-    # exact travel: cumulative integral of the piecewise-linear ω, knots included
-    grid = np.union1d(ts, t)
-    wg = np.interp(grid, t, w)
-    sg = np.concatenate([[0.0], np.cumsum(0.5 * (wg[1:] + wg[:-1]) * np.diff(grid))])
-    s = np.interp(ts, grid, sg)
-    q = q0 + direction * s
-    qd, qdd = m.rates(q)
-    np.testing.assert_allclose(qd, direction * ws, rtol=1e-9, atol=1e-9)
-    np.testing.assert_allclose(m.time(q), ts, rtol=0, atol=1e-9 * max(1.0, t[-1]))
-    slope = np.diff(w) / np.diff(t)
-    inside = (ts > t[0]) & (ts < t[-1]) & ~np.isin(ts, t)
-    k = np.searchsorted(t, ts[inside]) - 1
-    np.testing.assert_allclose(qdd[inside], direction * slope[k], rtol=1e-12, atol=1e-12)
-    # the derivative of the rate along the positions: qddot = qdot · d(qdot)/dq
-    # (a central difference straddling a knot of the table sees the jump of the slope
-    # there: keep the samples at least 10 h from every knot)
-    h = 1e-6
-    knots = q0 + direction * np.interp(t, grid, sg)
-    away = inside & (np.min(np.abs(q[:, None] - knots[None, :]), axis=1) > 10 * h)
-    mid = q[away]
-    qd_p, _ = m.rates(mid + direction * h)
-    qd_m, _ = m.rates(mid - direction * h)
-    fd = qd[away] * (qd_p - qd_m) / (2 * direction * h)
-    np.testing.assert_allclose(qdd[away], fd, rtol=1e-4, atol=1e-4 * np.max(np.abs(slope)))
-
-
-def test_continuous_positions_along_the_rotation():
-    """Seed 002's positions as it prints them (wrapped), made continuous clockwise."""
-    printed = [14.679] + [344.679 - 30 * k for k in range(11)] + [188.229]
-    got = np.degrees(Motion("j1", "cw").continuous(np.radians(printed)))
-    want = [14.679 - 30 * k for k in range(12)] + [-315.321 - 216.45]
-    np.testing.assert_allclose(got, want, atol=1e-9)
-    assert np.all(np.diff(got) < 0)
-    ccw = np.degrees(Motion("j1", "ccw").continuous(np.radians([350.0, 10.0, 5.0])))
-    np.testing.assert_allclose(ccw, [350.0, 370.0, 725.0], atol=1e-9)
-
-
-def test_speed_table_refuses_positions_beyond_its_travel_and_bad_tables():
-    m = Motion("q", "ccw", t=(0.0, 1.0), omega=(1.0, 1.0))
-    with pytest.raises(ModelError, match="outside that travel"):
-        m.rates(np.array([0.0, 2.0]))
-    with pytest.raises(ModelError, match="must be > 0"):
-        Motion("q", t=(0, 1), omega=(1.0, 0.0))
-    with pytest.raises(ModelError, match="increase strictly"):
-        Motion("q", t=(0, 0), omega=(1.0, 1.0))
-    with pytest.raises(ModelError, match="direction must be one of"):
-        Motion("q", "clockwise")
-    with pytest.raises(ModelError, match="gives only the direction"):
-        Motion("q", "cw").rates([0.0])
-
-
-def test_motion_section_in_a_file():
-    model = load('[motion]\nq = { direction = "cw", speed = "300 rpm" }\n')
-    mo = model.mechanism.motion("q")
-    assert mo.direction == -1 and mo.speed == pytest.approx(10 * math.pi)
-    qd, qdd = mo.rates(model.range)
-    np.testing.assert_allclose(qd, -10 * math.pi)
-    tab = load('[motion]\nq = { speed = { t = ["0 s", "0.5 s"], omega = ["10 rad/s", '
-               '"20 rad/s"] } }\n').mechanism.motion("q")
-    assert tab.direction == 1 and tab.t == (0.0, 0.5) and tab.omega == (10.0, 20.0)
-    with pytest.raises(io.ModelFileError, match="expected an angular velocity"):
-        load('[motion]\nq = { speed = "3 m" }\n')
-    with pytest.raises(io.ModelFileError, match='unknown coordinate "s"'):
-        load('[motion]\ns = { direction = "cw" }\n')
-    with pytest.raises(io.ModelFileError, match="motion.q.direction"):
-        load('[motion]\nq = { direction = "left" }\n')
-
-
-def test_motion_in_the_python_builder_and_real_time_velocities():
-    m = python_fourbar().with_motion("q", "cw", speed=2.0)
-    assert m.motion().direction == -1
-    q = np.radians(np.arange(0, 360, 30.0))
-    kin = m.solve(q)
-    qd, qdd = m.motion().rates(q)
-    v = kin.velocity("B", qd)
-    np.testing.assert_allclose(v[:, 0], kin.dx("B") * -2.0)
-    assert m.with_params(r=0.11).motion() == m.motion()      # data, kept by copies
-    # a length coordinate moves by extending or retracting, not turning (issue 10)
-    with pytest.raises(ModelError, match=r"direction must be one of: \['extend', 'retract'\]"):
-        (Mechanism("s", ("S",)).frame("O", 0, 0)
-         .slider_input("in", origin="O", out="A", s="S").with_motion("S", "cw", 1.0))
 
 
 # ---- tables and figures over a crank angle ----------------------------------------------
@@ -295,7 +121,7 @@ def test_wrap_degrees():
 
 
 def test_angle_columns_continuous_or_wrapped():
-    model = load()
+    model = load_fourbar()
     a = model.mechanism.analyze(model.range)
     cont = seed_tables(a)[0]
     wrap = seed_tables(a, angles="wrapped")[0]

@@ -10,13 +10,14 @@ from assur import Mechanism, ModelError
 from assur.machines.cylinders import piston_area
 
 
-def boom(m_str=120.0):
+def boom(m_str=120.0, **extra):
     """A loader boom (cylinder–lever group) with its centre of mass S3 and the
-    suspension axis 09 at fixed angles from the lever (001 lab 1 eqs. 2–5)."""
+    suspension axis 09 at fixed angles from the lever (001 lab 1 eqs. 2–5); ``extra``
+    parameters besides."""
     return (Mechanism("boom", coordinates=("S",),
                       params=dict(L3=0.35, LS3=0.9, L39=1.8, dphi=0.35, dphi1=0.2,
                                   m_str=m_str, D=0.05, p_rel=16e6, dp_thr=0.6e6,
-                                  dp_line=0.4e6, eta=0.9))
+                                  dp_line=0.4e6, eta=0.9, **extra))
             .frame("01", 0.0, 0.0).frame("03", 0.25, 0.55)
             .cylinder_lever("MPS", base="01", pivot="03", out="23", lever="L3", s="S",
                             branch=1, links=("2", "3"))
@@ -47,8 +48,10 @@ def test_p_max_is_relief_minus_losses():
 
 def test_capacity_with_the_boom_weight_lab1_eq10_eq14():
     """001 lab 1: m_po·g·I_S9 + m_str·g·I_S3 = 2·F_max·η (eq. 10), so the capacity at the
-    suspension axis with the boom's weight carried is G = (2·F_max·η − m_str·g·I_S3)/I_09,
-    and eq. 14, G = 2·p·F_n·η/(g·[I_S9 + I_S3·m_str/m_po]), holds with m_po = G/g."""
+    suspension axis with the boom's weight carried is G = (2·F_max·η − m_str·g·I_S3)/I_09
+    (eq. 14, G = 2·p·F_n·η/(g·[I_S9 + I_S3·m_str/m_po]) with m_po = G/g, is eq. 10
+    rearranged). Another route to the same G: the statics of the boom carrying its own
+    weight and G at 09 needs the cylinders' whole working pressure, p_max."""
     g = 9.81
     S = np.linspace(0.62, 0.72, 6)
     m = boom()
@@ -60,9 +63,11 @@ def test_capacity_with_the_boom_weight_lab1_eq10_eq14():
     I9, I3 = kin.transmission("09"), kin.transmission("S3")
     F_max = 2 * 15e6 * piston_area(0.05)  # both cylinders, η_h = 1
     assert np.allclose(G * I9 + 120.0 * g * I3, F_max * 0.9, rtol=1e-12)          # eq. 10
-    m_po = G / g
-    eq14 = F_max * 0.9 / (g * (I9 + I3 * 120.0 / m_po))
-    assert np.allclose(eq14 * g, G, rtol=1e-12)                                    # eq. 14
+    # G at 09 on the boom with its weight (one design per position): pressure = p_max
+    loaded = boom(G=1.0).mass("3", "m_str", "S3").weight("09", "G")
+    at_G = loaded.analyze(S[:, None], params={"G": G}).cylinder()
+    assert np.allclose(at_G.pressure, 15e6, rtol=1e-12)
+    assert np.allclose(at_G.share(), 1.0, rtol=1e-12)
     # without the boom's weight the capacity is larger (eq. 8)
     assert np.all(c.capacity("09") > G)
     assert np.allclose(c.capacity("09"), F_max * 0.9 / I9, rtol=1e-12)

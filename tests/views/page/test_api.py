@@ -1,5 +1,7 @@
-"""The page's API, the edited model file, the downloads, DXF and the inline displays
-(issue 13), against the seed-003 hitch."""
+"""The page's API (:mod:`assur.views.page.api`, issue 13): the model's information,
+analyses, refused requests, the edited model file and the downloads (tables, TOML,
+DXF), against the seed-003 hitch; other machines on the page. (The DXF writer:
+test_dxf.py; the inline displays: tests/views/test_notebook.py.)"""
 
 import io as _io
 import math
@@ -8,9 +10,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
-from assur import examples
 from assur import io as aio
-from assur.views.page.session import PageModel
 from assur.io import bundled
 from assur.views.report.tables import seed_tables
 
@@ -162,49 +162,6 @@ def test_dxf_download_reads_back_with_pivots_at_the_solved_points(client, tmp_pa
     assert out["ok"] is False and "outside the range" in out["error"]["message"]
 
 
-def test_write_dxf_layers_per_link_and_points(tmp_path):
-    import ezdxf
-
-    from assur.views.page.dxf import write_dxf
-    kin = examples.hitch_003().solve(np.linspace(0.42, 0.67, 6))
-    path = write_dxf(kin, tmp_path / "hitch.dxf", positions=[0, 5])
-    doc = ezdxf.readfile(path)
-    layers = {l.dxf.name for l in doc.layers}
-    assert {f"link_{n}" for n in ("2", "3", "4", "5", "6", "7")} <= layers
-    assert doc.layers.get("link_2").dxf.linetype == "DASHED"   # the cylinder
-    msp = doc.modelspace()
-    points = msp.query('POINT[layer=="pivots"]')
-    frame = msp.query('POINT[layer=="frame_pivots"]')
-    assert len(frame) == 2 * 4 and len(points) == 2 * 7       # 2 positions
-    assert len(doc.groups) == 2
-    names = sorted(name for name, _ in doc.groups)
-    assert names == ["S=0.42 m", "S=0.67 m"]
-    # link 6 (56, 67, S6, F610): a closed polyline through the solved points [mm]
-    poly = msp.query('LWPOLYLINE[layer=="link_6"]')
-    assert len(poly) == 2 and poly[0].closed
-    xy = {(round(x, 6), round(y, 6)) for x, y, *_ in poly[0].get_points()}
-    assert (round(kin.x("67")[0] * 1e3, 6), round(kin.y("67")[0] * 1e3, 6)) in xy
-    with pytest.raises(ValueError, match="positions must be in 0…5"):
-        write_dxf(kin, tmp_path / "x.dxf", positions=[6])
-
-
-def test_cli_dxf(tmp_path):
-    import ezdxf
-    from typer.testing import CliRunner
-
-    from assur.views.cli import app
-    out = tmp_path / "h.dxf"
-    r = CliRunner().invoke(app, ["dxf", str(bundled("hitch_003")), "--at", "0.42,0.5",
-                                 "-o", str(out)])
-    assert r.exit_code == 0, r.output
-    doc = ezdxf.readfile(out)
-    assert len(doc.groups) == 2
-    assert sorted(n for n, _ in doc.groups) == ["S=0.42 m", "S=0.5 m"]
-    r = CliRunner().invoke(app, ["dxf", str(bundled("hitch_003")), "--at", "0.8",
-                                 "-o", str(out)])
-    assert r.exit_code == 1 and "0.42 … 0.67 m" in r.output
-
-
 def test_cli_serve_refuses_bad_options():
     from typer.testing import CliRunner
 
@@ -215,46 +172,6 @@ def test_cli_serve_refuses_bad_options():
     assert r.exit_code == 2 and "--port" in r.output
     r = CliRunner().invoke(app, ["serve", "no-such-model.toml", "--no-browser"])
     assert r.exit_code == 1 and "no-such-model.toml: no such file" in r.output
-
-
-def test_page_model_rejects_non_numbers():
-    from assur.errors import ModelError
-    pm = PageModel.from_path(bundled("hitch_003"))
-    with pytest.raises(ModelError, match="finite number"):
-        pm.edited_text({"L5": float("inf")})
-    with pytest.raises(ModelError, match="finite number"):
-        pm.edited_text({"L5": True})
-
-
-def test_repr_html_of_mechanism_result_and_model():
-    m = examples.hitch_003()
-    h = m._repr_html_()
-    assert "RRR" in h or "dyad" in h
-    assert "L56 = 1.035 m" in h
-    a = m.analyze(np.linspace(0.42, 0.67, 4))
-    h = a._repr_html_()
-    assert h.count("<svg") == 1 and 'id="pt-56"' in h and "Table 4.1" in h
-    from assur.views.notebook import analysis_html
-    ru = analysis_html(a, "ru")   # the word "table" in the report's language too
-    assert "Таблица 4.1" in ru and "Table 4.1" not in ru
-    k = m.solve(np.linspace(0.42, 0.67, 4))
-    assert "<svg" in k._repr_html_()
-    h = aio.load(bundled("hitch_003"))._repr_html_()
-    assert "<svg" in h and "Table 6.1" in h
-    # a model that cannot assemble shows the message instead of the drawing
-    h = aio.load(bundled("header_000"))._repr_html_()
-    assert "<svg" not in h and "cannot close" in h
-
-
-def test_display_does_not_import_matplotlib():
-    import subprocess
-    import sys
-    code = ("import sys, numpy as np; from assur import examples; "
-            "examples.hitch_003().analyze(np.linspace(0.42, 0.67, 3))._repr_html_(); "
-            "print('matplotlib' in sys.modules)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True)
-    assert out.stdout.strip() == "False"
 
 
 @pytest.mark.slow
