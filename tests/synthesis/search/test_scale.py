@@ -1,5 +1,8 @@
-"""Scale-out (issue 12): a sweep on a Dask LocalCluster of 2 workers gives the same
-results as the in-process run."""
+"""Scale-out (:mod:`assur.synthesis.search.scale`, issue 12): a sweep on a Dask
+LocalCluster of 2 workers gives the same results as the in-process run, and the
+cluster leaves the calling process's environment as it found it."""
+
+import os
 
 import numpy as np
 import pytest
@@ -36,3 +39,20 @@ def test_local_cluster_equals_in_process():
     np.testing.assert_array_equal(here.values, there.values)
     assert here.reasons == there.reasons
     assert (~here.feasible).sum() >= len(X) // 7
+
+
+def test_a_local_cluster_leaves_the_environment_as_it_was():
+    """Dask's nannies set OMP_NUM_THREADS=1 (and MKL_NUM_THREADS, OPENBLAS_NUM_THREADS,
+    MALLOC_TRIM_THRESHOLD_, PYTHONHASHSEED …) in the process that starts them: the
+    Executor puts back what its cluster's start changed when the cluster closes, and
+    leaves what the caller set meanwhile."""
+    pb = load_problem(io.bundled("hitch_003_design"))
+    before = dict(os.environ)
+    with Executor(workers=1) as ex:
+        changed = {k for k in set(before) | set(os.environ) if before.get(k) != os.environ.get(k)}
+        os.environ["ASSUR_TEST_SET_INSIDE"] = "kept"
+        b = sweep(pb, samples=8, seed=1, executor=ex)
+    assert len(b) == 8
+    assert "OMP_NUM_THREADS" in changed or before.get("OMP_NUM_THREADS") == "1"  # Dask did
+    assert os.environ.pop("ASSUR_TEST_SET_INSIDE") == "kept"
+    assert dict(os.environ) == before

@@ -19,6 +19,7 @@ takes ``evaluate=executor.evaluate`` to send each population to the cluster;
 from __future__ import annotations
 
 import contextlib
+import os
 
 import numpy as np
 
@@ -47,7 +48,9 @@ class Executor:
     progress : callable, optional
         ``progress(done, total)`` after every chunk (designs).
 
-    Use as a context manager: the cluster started is closed on exit.
+    Use as a context manager: the cluster started is closed on exit, and the
+    environment variables its start set in this process (Dask's nannies set
+    ``OMP_NUM_THREADS=1`` and others before they spawn their workers) are put back.
 
     Examples
     --------
@@ -102,9 +105,13 @@ class Executor:
             if self.scheduler is not None:
                 self.client = self._stack.enter_context(Client(self.scheduler))
             else:
+                # registered first, so called last: after the client and the cluster closed
+                started = {}
+                self._stack.callback(_restore_environ, dict(os.environ), started)
                 cluster = self._stack.enter_context(LocalCluster(
                     n_workers=self.workers, threads_per_worker=1, processes=True,
                     dashboard_address=None))
+                started["environ"] = dict(os.environ)
                 self.client = self._stack.enter_context(Client(cluster))
         return self
 
@@ -182,6 +189,23 @@ class Executor:
                 if self.progress:
                     self.progress(done, total)
         return parts[0] if len(parts) == 1 else Batch.concat(problem, parts)
+
+
+def _restore_environ(before, started):
+    """Undo what starting a LocalCluster changed in ``os.environ``: every variable
+    whose value differs between ``before`` and ``started["environ"]`` (the environment
+    right after the start; all differences from ``before`` if the start failed) and
+    still has the value the start gave it — a variable changed since by the caller
+    is left as it is."""
+    after = started.get("environ", dict(os.environ))
+    for key in set(before) | set(after):
+        old, new = before.get(key), after.get(key)
+        if old == new or os.environ.get(key) != new:
+            continue
+        if old is None:
+            os.environ.pop(key, None)
+        else:
+            os.environ[key] = old
 
 
 def sweep(problem, X=None, *, samples=None, seed=None, executor=None):
