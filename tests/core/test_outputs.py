@@ -16,7 +16,7 @@ from assur.core import statics
 from tests.helpers import examples as n_examples
 from tests.helpers.analogs import SETTINGS
 from tests.helpers.statics import ELL0, FAMILIES, WORST, Solved, _assert_close, \
-    assume_springs_long, draw_loads, prepare, reproducer
+    assume_springs_long, draw_loads, fixed_loads, prepare, reproducer
 
 
 # ---------------------------------------------------------------------------------
@@ -26,17 +26,24 @@ from tests.helpers.statics import ELL0, FAMILIES, WORST, Solved, _assert_close, 
 RTOL_FUSED = 1e-9
 
 
-# every random load placement is a new kernel to compile: few examples per family
-FUSED_SETTINGS = settings(SETTINGS, max_examples=max(3, n_examples(6)))
+# the fused kernel is generated and compiled per structure *with its loads' places*
+# (their values are run-time data): the family tests keep one load placement per
+# mechanism structure (fixed_loads), so that their examples share kernels; random
+# placements are a test of their own with few examples (each one a new kernel)
+FUSED_SETTINGS = settings(SETTINGS, max_examples=n_examples(30))
+PLACEMENT_SETTINGS = settings(SETTINGS, max_examples=7)
 
 
-def check_fused(case, data):
+def check_fused(case, data, random_placement=False):
     """The fused kernel's reactions (every joint: Rx, Ry, Rm) and actuator forces (F by
     virtual work, Fr from the reactions) equal those of :func:`assur.core.statics.solve`
     (the separate reverse pass over arrays) to RTOL_FUSED × the reaction scale R or
     the actuator scale A of the module docstring (static loads: the fused kernel has
-    no inertia)."""
-    loads = draw_loads(data, case.mech, "loads")
+    no inertia). The loads: one of every kind at fixed places with random values
+    (:func:`tests.helpers.statics.fixed_loads`), or 1–4 of random kinds at random
+    places (:func:`tests.helpers.statics.draw_loads`)."""
+    loads = (draw_loads(data, case.mech, "loads") if random_placement
+             else fixed_loads(data, case.mech, "loads"))
     assume_springs_long(case, loads)
     full = Solved(case, loads, None, None)
     outs = [f"{f}({i}, {j})" for _, i, j in full.st.joints for f in ("Rx", "Ry", "Rm")]
@@ -69,10 +76,21 @@ def check_fused(case, data):
 @FUSED_SETTINGS
 @given(data=st.data())
 def test_fused_kernel_reactions_equal_the_reverse_pass(family, data):
-    """Random mechanisms of every family with random static loads: the fused kernel
-    (one generated loop: positions, jets, loads, reactions in reverse order) gives the
-    reactions and actuator forces of the separate array pass to 1e-9 relative."""
+    """Random mechanisms of every family with random static loads of every kind: the
+    fused kernel (one generated loop: positions, jets, loads, reactions in reverse
+    order) gives the reactions and actuator forces of the separate array pass to 1e-9
+    relative."""
     check_fused(prepare(FAMILIES[family](data)), data)
+
+
+@pytest.mark.slow
+@PLACEMENT_SETTINGS
+@given(data=st.data())
+def test_fused_kernel_with_loads_at_random_places(data):
+    """The same with 1–4 loads of random kinds at random places, on a mechanism of a
+    random family."""
+    family = data.draw(st.sampled_from(sorted(FAMILIES)), label="family")
+    check_fused(prepare(FAMILIES[family](data)), data, random_placement=True)
 
 
 def test_fused_kernel_shared_by_load_values_with_other_coincidences():

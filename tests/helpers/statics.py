@@ -289,6 +289,40 @@ def draw_loads(data, mech, label, rod_end_loads=False):
 
 
 
+def fixed_loads(data, mech, label):
+    """One load of every kind at places fixed by the mechanism's structure — a weight
+    at the first point a moving link carries, a point force at the last, a moment on
+    the last moving link, a spring from the first carried point to the first point of
+    another link or the frame, a mass at the middle carried point — with random values
+    (the ranges of :func:`draw_loads`), made pairwise distinct and ≠ 1 (the spring's
+    count) by a relative 1e-9 where they coincide: the fused kernel reads one row per
+    distinct number, so that every example of one structure shares its kernel and
+    only the values differ."""
+    bodies = mech.bodies
+    moving = [b for b in bodies if b != "0"]
+    skip = rod_ends(mech)
+    carriers = [(p, b) for b in moving for p in bodies[b]["points"] if (p, b) not in skip]
+    anchors = carriers + [(p, "0") for p in bodies["0"]["points"]]
+    a = carriers[0]
+    spring_to = next(x for x in anchors if x[0] != a[0] and x[1] != a[1])
+    taken = {1.0}
+
+    def value(lo, hi, what):
+        v = data.draw(_floats(lo, hi), label=f"{label}: {what}")
+        while v in taken:
+            v = v * (1 + 1e-9) + 1e-9
+        taken.add(v)
+        return v
+
+    return [("weight", carriers[0], value(0.0, 2000.0, "P")),
+            ("force", carriers[-1], value(-1000.0, 1000.0, "fx"), value(-1000.0, 1000.0, "fy")),
+            ("moment", moving[-1], value(-500.0, 500.0, "M")),
+            ("spring", a, spring_to, value(0.0, 2e4, "rate"), value(0.0, 1.0, "free length"),
+             value(-500.0, 500.0, "preload")),
+            ("mass", carriers[len(carriers) // 2], value(0.1, 200.0, "m"),
+             value(0.0, 20.0, "J"))]
+
+
 def assume_springs_long(case, loads):
     """Reject an example with a spring shorter than MIN_SPRING anywhere (its
     direction is ill-defined; at zero length assur divides 0 by 0)."""
