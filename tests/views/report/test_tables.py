@@ -144,7 +144,7 @@ def test_check_reports_paired_paths(tmp_path):
 def test_analyze_writes_the_loader_report(tmp_path):
     """``assur analyze`` of the bundled loader writes its tables, maps and report in
     both languages; no CSV holds NaN, inf or -0.0, nor a header twice (the checks of
-    every bundled report, tests/models/test_bundled_reports.py, which leaves this one
+    every bundled report, tests/models/test_models.py, which leaves this one
     to here: its HTML report, with an animation of the whole grid, is the slowest)."""
     for lang, fmts in (("en", "csv,xlsx"), ("ru", "csv,html")):
         out = tmp_path / lang
