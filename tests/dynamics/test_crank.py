@@ -43,7 +43,6 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from assur.dynamics.balancing import common_centre
-from assur.errors import ModelError
 from assur.dynamics.crank import LinkMass, crank_dynamics, reduced_inertia, with_masses
 
 from tests.helpers.analogs import SETTINGS, _floats
@@ -215,26 +214,3 @@ def test_reduced_inertia_is_twice_the_kinetic_energy_over_omega_squared(example)
     assert np.allclose(dyn.reduced_inertia, 2 * T / 30.0 ** 2, rtol=1e-12, atol=0)
 
 
-def test_link_mass_errors(example):
-    model, _ = example
-    mech = model.mechanism
-    with pytest.raises(ModelError, match="unknown or fixed link"):
-        with_masses(mech, [LinkMass("0", 1.0)])
-    with pytest.raises(ModelError, match="m = -1"):
-        with_masses(mech, [LinkMass("4", -1.0)])
-    with pytest.raises(ModelError, match="either as point"):
-        with_masses(mech, [LinkMass("4", 1.0, point="S4", along=0.1)])
-    with pytest.raises(ModelError, match="exists already"):
-        with_masses(mech, [LinkMass("4", 1.0, along=0.1, name="S4")])
-
-
-def test_centre_in_the_link_frame(example):
-    """A centre given by along/offset is P + along·u + offset·n of the link's points."""
-    model, _ = example
-    mech = with_masses(model.mechanism, [LinkMass("6", 2.0, along=0.3, offset=0.07,
-                                                  name="X6")])
-    kin = mech.solve(model.range)
-    P, Q = kin.point("E"), kin.point("C6")
-    u = (Q - P) / np.hypot(*(Q - P).T)[:, None]
-    n = np.stack([-u[:, 1], u[:, 0]], -1)
-    assert np.allclose(kin.point("X6"), P + 0.3 * u + 0.07 * n, rtol=0, atol=1e-12)

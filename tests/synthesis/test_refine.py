@@ -284,3 +284,27 @@ def test_the_old_import_path_warns_and_gives_the_same_objects():
         with pytest.raises(AttributeError):
             old.refine  # noqa: B018 — never there
         assert old.__all__ == []
+
+
+def smallest_capacity(m, q, **params):
+    """min over q of the lift capacity at 56 by the cylinder, through analyze()."""
+    return float(np.min(m.with_params(**params).analyze(q).cylinder().capacity("56")))
+
+
+def test_the_refined_design_is_a_local_optimum():
+    """local_refine's optimum checked by another route: analyses of the refined design
+    and of its neighbours along each variable within the bounds."""
+    m = examples.hitch_003()
+    q = [0.42, 0.545, 0.67]
+    bounds = {"X01": (0.40, 0.43), "Y01": (0.55, 0.58)}
+    r = local_refine(m, q, "G(ГЦ, 56)", bounds)
+    assert r.success and r.value >= r.start_value
+    assert r.start_value == pytest.approx(smallest_capacity(m, q), rel=1e-9)
+    assert r.value == pytest.approx(smallest_capacity(m, q, **r.params), rel=1e-9)
+    for name, (lo, hi) in bounds.items():
+        assert lo <= r.params[name] <= hi
+        for step in (-1e-4, 1e-4):
+            moved = r.params[name] + step
+            if lo <= moved <= hi:
+                other = smallest_capacity(m, q, **{**r.params, name: moved})
+                assert other <= r.value * (1 + 1e-7), (name, step)

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from assur import io
-from assur.synthesis.search import load_problem
+from assur.io.problems import load_problem
 from assur.synthesis.search.problem import ASSEMBLY, CONSTRAINT, FAILURE_TEXT, FEASIBLE
 
 
