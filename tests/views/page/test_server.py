@@ -1,0 +1,36 @@
+"""The page's server (:mod:`assur.views.page.server`): the page in either language and
+its static files, the API's routes, and ``running`` — a real server on a free
+loopback port answering in a thread, stopped on exit."""
+
+import json
+import urllib.request
+
+import pytest
+from fastapi.testclient import TestClient
+
+from assur.io import bundled
+from assur.views.page.server import create_app, running
+
+
+def test_the_page_and_its_files():
+    client = TestClient(create_app(bundled("hitch_003")))
+    page = client.get("/")
+    assert page.status_code == 200 and "text/html" in page.headers["content-type"]
+    assert 'data-lang="ru"' in client.get("/", params={"lang": "ru"}).text
+    assert 'data-lang="en"' in page.text
+    assert client.get("/static/page.js").status_code == 200
+    assert client.get("/static/nothing.js").status_code == 404
+    paths = {r.path for r in create_app(bundled("hitch_003")).routes}
+    assert {"/", "/api/model", "/api/analyze", "/api/export/dxf"} <= paths
+    with pytest.raises(ValueError, match="lang must be one of"):
+        create_app(bundled("hitch_003"), lang="de")
+
+
+def test_running_serves_on_loopback_until_stopped():
+    with running(create_app(bundled("hitch_003"))) as url:
+        assert url.startswith("http://127.0.0.1:")
+        with urllib.request.urlopen(url + "/api/model", timeout=30) as r:
+            info = json.loads(r.read())
+        assert info["file"] == "hitch_003.toml"
+    with pytest.raises(OSError):
+        urllib.request.urlopen(url + "/api/model", timeout=2)

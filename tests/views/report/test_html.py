@@ -1,0 +1,86 @@
+"""The HTML report (:mod:`assur.views.report.html`) of the seed-003 hitch: every table
+of the analysis is on the page, each cell its value rounded to the digits it shows;
+the Russian page shows the same numbers under other titles; ``write_html`` writes
+the page ``render_html`` makes."""
+
+import re
+from html.parser import HTMLParser
+
+import numpy as np
+import pytest
+
+from assur.views.report.html import render_html, write_html
+from assur.views.report.tables import seed_tables
+
+
+class Tables(HTMLParser):
+    """``{table id: [[cell, …], …]}`` of the report's tables (header row first)."""
+
+    def __init__(self):
+        super().__init__()
+        self.tables, self.current, self.row, self.cell = {}, None, None, None
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag == "h3" and (a.get("id") or "").startswith("table-"):
+            self.current = a["id"][len("table-"):]
+            self.tables[self.current] = []
+        elif tag == "tr" and self.current:
+            self.row = []
+            self.tables[self.current].append(self.row)
+        elif tag in ("td", "th") and self.row is not None:
+            self.cell = ""
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self.cell is not None:
+            self.row.append(self.cell.strip())
+            self.cell = None
+        elif tag == "table":
+            self.current, self.row = None, None
+
+    def handle_data(self, data):
+        if self.cell is not None and not self.cell.endswith("["):
+            self.cell += data
+
+
+def page_tables(page):
+    p = Tables()
+    p.feed(page)
+    return p.tables
+
+
+@pytest.fixture(scope="module")
+def pages(hitch_analysis):
+    kw = dict(figures={}, animation=False, drawing=False)
+    return (render_html(hitch_analysis, **kw), render_html(hitch_analysis, "ru", **kw))
+
+
+def test_every_table_cell_is_its_value(hitch_analysis, pages):
+    en, _ = pages
+    got = page_tables(en)
+    tabs = seed_tables(hitch_analysis)
+    assert [t.id.lower().replace(".", "-") for t in tabs] == list(got)
+    for t in tabs:
+        rows = got[t.id.lower().replace(".", "-")]
+        header, body = rows[0], rows[1:]
+        assert [h.split("[")[0].rstrip("*") for h in header] == [c.symbol for c in t.columns]
+        for j, col in enumerate(t.columns):
+            values = np.atleast_1d(col.values)
+            assert len(body) == len(values)
+            for row, v in zip(body, values):
+                text = row[j]
+                digits = len(text.split(".")[1]) if "." in text else 0
+                assert abs(float(text) - v) <= 0.5 * 10 ** -digits * (1 + 1e-9), \
+                    (t.id, col.symbol, text, v)
+
+
+def test_russian_numbers_and_the_written_page(hitch_analysis, pages, tmp_path):
+    en, ru = pages
+    assert "Таблица 2.1" in ru and "Table 2.1" not in ru
+    ten, tru = page_tables(en), page_tables(ru)
+    assert [r[1:] for t in ten.values() for r in t[1:]] == \
+        [r[1:] for t in tru.values() for r in t[1:]]
+    path = write_html(hitch_analysis, tmp_path / "r.html", figures={}, animation=False,
+                      drawing=False)
+    assert path.read_text(encoding="utf-8") == en
+    assert not re.search(r'(src|href)="https?://', en)  # self-contained
