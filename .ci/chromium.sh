@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Debian's chromium for the page's end-to-end test (tests/test_page_e2e.py drives it
+# Debian's chromium for the page's end-to-end test (tests/views/page/test_page_e2e.py drives it
 # through Playwright with executable_path=/usr/bin/chromium; Playwright's own browser
 # builds are never downloaded). Installs it with apt-get when it is missing and we are
 # root (CI runs as root on Debian); otherwise says what is missing and leaves it: the
@@ -11,7 +11,7 @@ if [ -x "$CHROMIUM" ]; then
 fi
 if [ "$(id -u)" != 0 ] || ! command -v apt-get >/dev/null 2>&1; then
     echo "warning: $CHROMIUM is missing and cannot be installed here (needs root and" \
-         "apt-get): install Debian's chromium package for tests/test_page_e2e.py" >&2
+         "apt-get): install Debian's chromium package for tests/views/page/test_page_e2e.py" >&2
     exit 0
 fi
 echo "installing chromium (apt-get) for the page's end-to-end test" >&2

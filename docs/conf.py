@@ -62,7 +62,7 @@ gen_groups_drawn.write(GENERATED / "groups.md", GENERATED / "groups")
 gen_optional.write(GENERATED / "optional.md", HERE)
 gen_api.write(HERE)
 
-# every bundled model file has a gallery page that loads it (tests/test_docs.py too)
+# every bundled model file has a gallery page that loads it (tests/docs/test_docs.py too)
 _scripts = [p.read_text(encoding="utf-8") for p in (HERE / "gallery").glob("plot_*.py")]
 _missing = [p.stem for p in sorted((HERE.parent / "src" / "assur" / "models").glob("*.toml"))
             if not any(f'bundled("{p.stem}")' in t or f"examples.{p.stem}(" in t

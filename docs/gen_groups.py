@@ -7,7 +7,7 @@ group types (``[[groups]]``) and the load types (``[[loads]]``).
 The tables are :func:`assur.io.schema_table` between the markers
 ``assur.io._schema.TABLE_BEGIN`` and ``TABLE_END``, and
 :func:`assur.io.load_types_table` between ``LOAD_TABLE_BEGIN`` and ``LOAD_TABLE_END``;
-tests/test_io_groups.py and tests/core/test_loads_registry.py check that the docs hold
+tests/io/test_schema.py and tests/core/test_loads_registry.py check that the docs hold
 exactly those tables.
 """
 
