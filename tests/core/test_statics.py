@@ -1,7 +1,7 @@
 """Property-based checks of the kinetostatics (:mod:`assur.core.statics`) on random mechanisms.
 
 For random *assemblable* mechanisms (hypothesis; the structures, strategies and
-dead-point guard of ``test_analogs_random``: single designs and batches of 1–3,
+dead-point guard of ``tests.helpers.analogs``: single designs and batches of 1–3,
 the reference pose and 1–4 positions around it, every RRR dyad at |sin μ| ≥ 0.05
 and every RRP dyad at |cos γ| ≥ 0.05; 200 examples per test) carrying random
 loads of every kind, 2–8 per example — weights and point forces at
@@ -27,7 +27,7 @@ carried by a moving rocker):
    kinetic energy of the masses, V the potential of the weights and springs, the
    last two sums over the point forces and moments, d/dt a fourth-order central
    difference *in time* of T + V along q(t) = q + q̇t + q̈t²/2 (time step: no
-   coordinate moves by more than ``fd_steps`` of test_analogs_random, 1e-4 of the
+   coordinate moves by more than ``fd_steps`` of tests.helpers.analogs, 1e-4 of the
    length over which the analogs change);
 4. every reaction ``reaction(i, j)`` (and ``reaction_moment`` at prismatic pairs
    and the crank drive), the list ``joints`` and the actuator forces equal those of
@@ -50,7 +50,7 @@ documented in :mod:`assur.core.loads` (a spring pulls its ends together with
 T = preload + rate·(L − free length); a mass has weight m·g, inertia −m·a and
 −J·ε), from the loads this test drew, not from ``Mechanism.loads``. It uses only
 the positions of the kinematics and, with inertia, the point accelerations of
-``Kinematics.acceleration`` (the analogs, checked by ``test_analogs_random``); the
+``Kinematics.acceleration`` (the analogs, checked by ``tests.helpers.analogs``); the
 angular velocity and acceleration of a link are recomputed from two of its points.
 The power balance of 3 differentiates the energy in time by finite differences of
 positions and velocities solved at neighbouring instants, so it checks the
@@ -99,7 +99,7 @@ from tests.helpers.statics import BUG_SETTINGS, SETTINGS, Batch, Solved, assume_
 
 
 # ---------------------------------------------------------------------------------
-# the tests, one per mechanism family (structures shared with test_analogs_random)
+# the tests, one per mechanism family (structures shared with tests.helpers.analogs)
 # ---------------------------------------------------------------------------------
 @SETTINGS
 @given(st.data())

@@ -10,7 +10,7 @@ example).  The examples themselves run as doctests: ``--doctest-modules`` over
 
 Run as a script to list what lacks an example, optionally for some modules only::
 
-    python tests/test_docstring_examples.py assur.groups.base assur.core.kinematics
+    python tests/docs/test_docstring_examples.py assur.groups.base assur.core.kinematics
 """
 from __future__ import annotations
 

@@ -24,8 +24,8 @@ def crane(request):
 
 def test_the_file_is_the_paper_crane():
     """crane_lv184a.toml gives the forces of the corrected paper (the Python model of
-    test_crane_lagrange, equal to eqs. 37–38 and 45–59) to 1e-6 (l_c is written to
-    7 digits in the file)."""
+    tests/helpers/seed_004.py, equal to eqs. 37–38 and 45–59) to 1e-6 (l_c is written
+    to 7 digits in the file)."""
     from tests.helpers.seed_004 import paper_cycle
     model = io.load(io.bundled("crane_lv184a"))
     (s1, s2), _ = strokes(model)

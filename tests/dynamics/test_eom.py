@@ -1,5 +1,5 @@
 """Equations of motion from the exact analogs (:mod:`assur.dynamics.eom`) on random
-mechanisms (the hypothesis builders of test_analogs_random / test_statics_random)
+mechanisms (the hypothesis builders of tests.helpers.analogs / tests.helpers.statics)
 with random masses on every moving link:
 
 1. ∂M/∂q (from the second analogs) against fourth-order central differences of M

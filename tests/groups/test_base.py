@@ -3,7 +3,7 @@ checked for **every** type in :func:`assur.groups.registry`.
 
 Each registered type has a sample here (:data:`SAMPLES`): a small mechanism that
 contains the group, drawn at a random reference pose by the builder of
-``test_analogs_random`` (hypothesis; single designs and batches of 1–3, the
+``tests.helpers.analogs`` (hypothesis; single designs and batches of 1–3, the
 reference pose and 1–4 positions around it, 25 examples per type). A type without
 a sample fails :func:`test_every_registered_type_has_a_sample` — adding a type
 means adding its sample. For each sample:
@@ -12,7 +12,7 @@ means adding its sample. For each sample:
    recomputed from the solved points, first-order analogs against the complex
    step of ``Mechanism.evaluate_positions`` (h = 1e-30) to 1e-7 relative, and
    second-order analogs against central differences of the kernel's first order —
-   :func:`test_analogs_random.check` (its docstring gives the method, the scales and
+   :func:`tests.helpers.analogs.check` (its docstring gives the method, the scales and
    why the references are independent of the kernel's derivative code); positions
    within the dead-point margin are replaced by the reference pose there;
 2. **loads**: a weight and a force at points of each link of the group (the link

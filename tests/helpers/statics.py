@@ -92,7 +92,7 @@ def _mag(v):
 
 
 # ---------------------------------------------------------------------------------
-# the mechanism families: exactly the builder calls of test_analogs_random (same
+# the mechanism families: exactly the builder calls of tests.helpers.analogs (same
 # kernels, so a cache warmed by either test serves both)
 # ---------------------------------------------------------------------------------
 def cylinder_lever_family(data):
@@ -228,7 +228,7 @@ def cylinder_radius_family(data, kind=None):
 
 def prepare(b):
     """Build the case; positions that fail or come near a dead point (margin <
-    MARGIN, as in test_analogs_random) are replaced by the reference pose."""
+    MARGIN, as in tests.helpers.analogs) are replaced by the reference pose."""
     case = b.build()
     r = case.solve()
     good = r.ok.reshape(case.Q.shape[:2])
@@ -920,7 +920,7 @@ def power_balance(full, Qd, Qdd, where):
     """Σ F_j q̇_j = d(T + V)/dt − Σ F·v − Σ M·ω at t = 0 (module docstring, item 3)."""
     case, loads, mot = full.case, full.loads, full.mot
     M, n, k = case.Q.shape
-    # time step: no coordinate moves by more than test_analogs_random's FD step, 1e-4
+    # time step: no coordinate moves by more than tests.helpers.analogs' FD step, 1e-4
     # of the length over which the analogs change (near an assembly limit ≪ scale)
     hq = fd_steps(case, analogs(case, mot.r))  # (M, n, k)
     with np.errstate(over="ignore"):  # a tiny q̈ drawn: no limit (inf)

@@ -1,5 +1,5 @@
 """Model files (issue 4): the bundled seed machines load, their [[solve]] conditions give seed 003's Find roots, and every malformed
-file in ``tests/malformed/`` raises :class:`assur.io.ModelFileError` naming the key
+file in ``tests/io/malformed/`` raises :class:`assur.io.ModelFileError` naming the key
 path and the line written in its first line (``# expect: <key path> @ <line>``;
 ``-`` for a TOML syntax error, which has no key path)."""
 
