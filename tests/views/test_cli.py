@@ -33,14 +33,16 @@ def test_check_missing_file():
     assert r.exit_code == 1 and "no such file" in r.output
 
 
-def test_analyze_writes_seed_tables(tmp_path):
+def test_analyze_writes_seed_tables_and_the_report_lists_the_solved_conditions(tmp_path):
     out = tmp_path / "rep"
     r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out),
                             "--format", "csv,html"])
     assert r.exit_code == 0, r.output
-    assert (out / "report.html").exists()
     csvs = sorted(p.name for p in out.glob("*.csv"))
     assert csvs, r.output
+    text = (out / "report.html").read_text(encoding="utf-8")
+    assert "Design conditions solved" in text
+    assert "L4 = 0.661283167" in text and "L7 = 0.752169525" in text
 
 
 def test_bad_options_exit_1(tmp_path):
@@ -103,16 +105,6 @@ def test_draw_at_chosen_positions(tmp_path):
     r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
                             "png", "--draw-at", "0.9"])
     assert r.exit_code == 1 and "outside the range" in r.output
-
-
-def test_report_lists_the_solved_conditions(tmp_path):
-    out = tmp_path / "h"
-    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
-                            "html"])
-    assert r.exit_code == 0, r.output
-    text = (out / "report.html").read_text(encoding="utf-8")
-    assert "Design conditions solved" in text
-    assert "L4 = 0.661283167" in text and "L7 = 0.752169525" in text
 
 
 def test_tables_prints_the_seed_tables():

@@ -38,7 +38,8 @@ def report(hitch_analysis, tmp_path_factory):
     out = tmp_path_factory.mktemp("report") / "hitch"
     steps = []
     t0 = time.perf_counter()
-    files = write_report(hitch_analysis, out, progress=steps.append)
+    # every format; an animation of 12 frames (the default 30 render the same code)
+    files = write_report(hitch_analysis, out, progress=steps.append, frames=12)
     return dict(out=out, files=files, steps=steps, seconds=time.perf_counter() - t0)
 
 
