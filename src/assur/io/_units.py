@@ -14,7 +14,7 @@ and the unit, restricted to letters, digits, ``* / ^ ( )``, spaces, ``%`` and
 The units model files use most (m, mm, deg, kN, MPa, kg, N*m, l/min, rpm, …) are
 read from a small table, :data:`COMMON_UNITS`, holding for each its factor to SI
 base units and its dimension, bitwise as pint gives them
-(``tests/test_units_table.py`` compares every entry with pint): building pint's
+(``tests/io/test_units.py`` compares every entry with pint): building pint's
 registry costs about 0.2 s of every command's start, so it is built only for a
 unit outside the table.
 """

@@ -18,7 +18,7 @@ kernel was loaded, or anything else imported it), the compiled kernels take over
 start-up it saves (the rent-or-buy rule), and a long run pays it once.
 
 The results are those of the compiled kernel to rounding: the same operations in the
-same order (``tests/test_kernel_vector.py`` compares the two on random mechanisms
+same order (``tests/kernel/test_vector.py`` compares the two on random mechanisms
 of every group type, and the one-position path with the array path); the status
 codes and the continuity check (:func:`assur.kernel.source.continuity_check`) are
 the same.

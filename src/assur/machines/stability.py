@@ -62,7 +62,7 @@ The other axle is not checked: a reaction ``R_o < 0`` (the machine tips over
 the steered axle) is returned as computed.
 
 Seed 001, lab 1, eqs. (16) and (18) are this limit for one geometry (see
-``tests/test_stability.py``). Seed 003 §6 prints a dimensionally inconsistent
+``tests/machines/test_stability.py``). Seed 003 §6 prints a dimensionally inconsistent
 limit (GS6max); its model file reproduces it as a flagged extra column of table
 6.1 (``[[tables.formulas]]``, :mod:`assur.core.columns`), never the main result.
 """
