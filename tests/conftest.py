@@ -13,6 +13,15 @@
   seeds and a fifth of the examples (at least 10), for quick local runs. Choose one
   with ``--hypothesis-profile=ci`` or ``ASSUR_HYPOTHESIS=ci``. Property tests size
   their example counts with :func:`tests.helpers.examples`.
+* Kernels are evaluated by numpy (``ASSUR_KERNELS=numpy`` unless set: the same emitted
+  code as the compiled kernels, with their results to rounding — held by
+  ``tests/kernel/test_vector.py`` and ``tests/core/test_outputs.py`` on random
+  mechanisms of every group type and the bundled models), so that a test of the
+  formulas does not pay numba's compilation of its structure (2–10 s each, a
+  cold run compiled ~270 of them). The compiled kernels run in ``tests/kernel``
+  and in tests marked ``compiled`` (:func:`kernel_backend`): those about the
+  compiled path itself (threads, streaming, composed kernels) and those that make
+  thousands of calls of one structure (a simulation).
 * Every test leaves ``os.environ`` as it found it (:func:`restore_environ`: a Dask
   cluster, for one, sets thread counts in the process that starts it).
 """
@@ -25,7 +34,28 @@ from hypothesis import settings
 from tests.helpers import PROFILE, ROOT
 
 os.environ.setdefault("ASSUR_CACHE_DIR", str(ROOT / ".assur-test-cache"))
+os.environ.setdefault("ASSUR_KERNELS", "numpy")
 settings.load_profile(PROFILE)
+
+
+@pytest.fixture(autouse=True)
+def kernel_backend(request):
+    """Compiled kernels (``numba``) for the tests in ``tests/kernel`` and those marked
+    ``compiled``; the process's backend (``$ASSUR_KERNELS``, numpy in the tests) for
+    the others."""
+    from assur.kernel import vector as KV
+
+    path = request.node.path
+    compiled = (request.node.get_closest_marker("compiled") is not None
+                or (path.parent.name == "kernel" and path.parent.parent.name == "tests"))
+    if not compiled:
+        yield
+        return
+    KV.set_backend("numba")
+    try:
+        yield
+    finally:
+        KV.set_backend(None)
 
 
 @pytest.fixture(autouse=True)

@@ -151,3 +151,66 @@ def test_statics_switch_to_the_fused_kernel_after_a_few_calls(monkeypatch):
         assert np.allclose(rb, ra, rtol=1e-9, atol=1e-9 * np.abs(ra).max()), (i, j)
     assert np.allclose(b.actuator_force(), a.actuator_force(), rtol=1e-9)
 
+
+
+# ---------------------------------------------------------------------------------
+# the compiled fused kernel and its numpy evaluation (the tests' default backend)
+# ---------------------------------------------------------------------------------
+def _both_backends(fn):
+    """``fn()`` with the compiled kernels, then with their numpy evaluation."""
+    from assur.kernel import vector as KV
+    out = []
+    for name in ("numba", "numpy"):
+        KV.set_backend(name)
+        try:
+            out.append(fn())
+        finally:
+            KV.set_backend(None)
+    return out
+
+
+@pytest.mark.slow
+@pytest.mark.compiled
+@pytest.mark.parametrize("family", list(FAMILIES))
+@settings(SETTINGS, max_examples=3)
+@given(data=st.data())
+def test_compiled_fused_kernel_equals_its_numpy_evaluation(family, data):
+    """Random mechanisms of every family with static loads of every kind: the compiled
+    fused kernel and the numpy evaluation of the same code (which the other tests run)
+    give the same reactions and actuator forces to 1e-12 of their scale and the same
+    failures (the reductions: the next test)."""
+    case = prepare(FAMILIES[family](data))
+    loads = fixed_loads(data, case.mech, "loads")
+    assume_springs_long(case, loads)
+    full = Solved(case, loads, None, None)
+    outs = [f"{f}({i}, {j})" for _, i, j in full.st.joints for f in ("Rx", "Ry", "Rm")]
+    outs += [f"{f}({c})" for c in case.mech.coordinates for f in ("F", "Fr")]
+    q = case.api_q(case.Q)
+    compiled, numpy_ = _both_backends(
+        lambda: full.mech.evaluate(q, outputs=outs, on_failure="report"))
+    assert np.array_equal(compiled.ok, numpy_.ok)
+    for o in outs:
+        a, b = np.asarray(compiled[o]), np.asarray(numpy_[o])
+        scale = max(float(np.max(np.abs(a))), 1e-300)
+        assert np.max(np.abs(a - b)) <= 1e-12 * scale, (o, reproducer(case, loads, None, None))
+
+
+def test_reductions_over_several_work_items_equal_compiled():
+    """Reductions over more positions than a work item of the compiled kernel (CHUNK)
+    and over designs of which some positions do not assemble: the numpy evaluation
+    reduces per work item as the compiled kernel does (min, max and where)."""
+    from assur.kernel.source import CHUNK
+    m = examples.hitch_003()
+    n = 2 * CHUNK + 37
+    S = np.linspace(0.40, 0.67, n)   # below Smin = 0.42 m the hitch may not assemble
+    q = np.stack([S, S[::-1], np.full(n, 0.5)])
+    outs = ["p(ГЦ)", "G(ГЦ, S6)", "Y(56)"]
+    lens = {"L3": np.array([m.params["L3"], m.params["L3"] * 1.01, m.params["L3"]])}
+    red = _both_backends(lambda: m.evaluate(q, params=lens, outputs=outs, reduce=True,
+                                            on_failure="report"))
+    assert red[0].failures.tolist() == red[1].failures.tolist()
+    for o in outs:
+        for op in ("min", "max", "argmin", "argmax"):
+            a, b = getattr(red[0], op)(o), getattr(red[1], op)(o)
+            assert np.array_equal(a, b) if op.startswith("arg") else np.allclose(a, b, rtol=1e-13), \
+                (o, op, a, b)

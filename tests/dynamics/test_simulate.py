@@ -30,6 +30,10 @@ from assur.dynamics.simulate import METHODS, ReducedTable
 from assur.errors import ModelError
 from assur.io import ModelFileError
 
+# a simulation calls its mechanism's kernels thousands of times: compiled, as users run
+# it (tests/conftest.py)
+pytestmark = pytest.mark.compiled
+
 #: lab 6 task 1: НШ-32 at 1800 rpm, η0 = 0.9; piston 0.125 m
 Q_LAB = 32e-6 * 1800 / 60 * 0.9
 A_LAB = math.pi * 0.125 ** 2 / 4

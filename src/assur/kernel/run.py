@@ -13,7 +13,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from .emit import CONTINUITY_TOL
 from .source import CHUNK
-from .vector import SMALL
+from .vector import SMALL, is_vector
 
 __all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "unwrap_rows",
            "pool", "MIN_ELEMENTS_PER_THREAD"]
@@ -136,7 +136,8 @@ def run(kernel, params, trig, q, npd, check, out, gout, status):
     """
     E = q.shape[1]
     nchunks = (E // npd) * ((npd + CHUNK - 1) // CHUNK)  # designs × runs per design
-    nthreads = threads_for(E, nchunks)
+    # a numpy-evaluated kernel (assur.kernel.vector) takes all elements in one call
+    nthreads = 1 if is_vector(kernel) else threads_for(E, nchunks)
     if nthreads <= 1:
         return kernel(params, trig, q, npd, check, out, gout, status, 0, nchunks) or 0
     per = (nchunks + nthreads - 1) // nthreads

@@ -34,14 +34,16 @@ as they are in the compiled code.
 from __future__ import annotations
 
 import builtins
+import os
 import re
 import sys
 
 from .emit import CODES_PER_OP, CONTINUITY_TOL, FAIL_CONTINUITY
 from .select import branchless
-from .source import FORMAT, emit_program, quantities
+from .source import CHUNK, FORMAT, emit_program, quantities
 
-__all__ = ["SMALL", "CALLS", "wanted", "generate_vector", "load_vector", "calls_left",
+__all__ = ["SMALL", "CALLS", "BACKENDS", "backend", "set_backend", "wanted", "is_vector",
+           "vector_lines", "reduce_chunks", "generate_vector", "load_vector", "calls_left",
            "set_calls"]
 
 #: elements (designs × positions) of a call that the numpy evaluation takes at most
@@ -54,8 +56,60 @@ SMALL = 256
 #: before it runs compiled
 CALLS = 50
 
-_state = {"calls": 0, "limit": None}
+_state = {"calls": 0, "limit": None, "backend": None}
 _VECTORS: dict = {}
+
+#: how a kernel call is evaluated: ``"auto"`` (the rule above: the first small calls
+#: of a process by numpy, then compiled), ``"numpy"`` (always the numpy evaluation,
+#: any size: nothing is compiled — e.g. short scripts on many new structures, or
+#: where numba's compiler is slow or missing), ``"numba"`` (always compiled)
+BACKENDS = ("auto", "numpy", "numba")
+
+
+def backend() -> str:
+    """The evaluation of kernel calls in this process: :func:`set_backend`'s, else
+    ``$ASSUR_KERNELS``, else ``"auto"`` (see :data:`BACKENDS`).
+
+    Examples
+    --------
+    >>> from assur.kernel.vector import backend, set_backend
+    >>> set_backend("numpy")
+    >>> backend()
+    'numpy'
+    >>> set_backend(None)                     # back to $ASSUR_KERNELS or "auto"
+    """
+    name = _state["backend"] or os.environ.get("ASSUR_KERNELS") or "auto"
+    if name not in BACKENDS:
+        raise ValueError(f"ASSUR_KERNELS={name!r}: the kernels' evaluation is one of "
+                         f"{list(BACKENDS)}")
+    return name
+
+
+def set_backend(name: str | None) -> None:
+    """Evaluate the kernel calls of this process by ``name`` (one of :data:`BACKENDS`;
+    None: back to ``$ASSUR_KERNELS`` or ``"auto"``). The results are the same to
+    rounding (the same emitted operations in the same order).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.kernel.vector import set_backend
+    >>> set_backend("numpy")                  # no kernel is compiled from here on
+    >>> try:
+    ...     kin = examples.hitch_003().solve(np.linspace(0.42, 0.67, 1000))  # S [m]
+    ... finally:
+    ...     set_backend(None)
+    >>> round(float(kin.y("56")[-1]), 4)      # Y56 at Smax [m], seed 003 table 2.1
+    1.0432
+    >>> set_backend("jit")
+    Traceback (most recent call last):
+    ...
+    ValueError: the kernels' evaluation is one of ['auto', 'numpy', 'numba'], got 'jit'
+    """
+    if name is not None and name not in BACKENDS:
+        raise ValueError(f"the kernels' evaluation is one of {list(BACKENDS)}, got {name!r}")
+    _state["backend"] = name
 
 
 def set_calls(n: int | None) -> None:
@@ -65,7 +119,8 @@ def set_calls(n: int | None) -> None:
     Examples
     --------
     >>> import sys
-    >>> from assur.kernel.vector import calls_left, set_calls, wanted
+    >>> from assur.kernel.vector import calls_left, set_backend, set_calls, wanted
+    >>> set_backend("auto")                   # the rule (whatever $ASSUR_KERNELS says)
     >>> set_calls(0)                          # always compiled from now on
     >>> int(calls_left()), wanted(10)
     (0, False)
@@ -73,6 +128,7 @@ def set_calls(n: int | None) -> None:
     >>> bool(calls_left() == (0 if "numba" in sys.modules else 3))   # with numba: compiled
     True
     >>> set_calls(None)                       # back to CALLS
+    >>> set_backend(None)
     >>> set_calls(-1)
     Traceback (most recent call last):
     ...
@@ -115,23 +171,54 @@ def wanted(elements: int) -> bool:
     Examples
     --------
     >>> import sys
-    >>> from assur.kernel.vector import SMALL, set_calls, wanted
+    >>> from assur.kernel.vector import SMALL, set_backend, set_calls, wanted
+    >>> set_backend("auto")                   # the rule (whatever $ASSUR_KERNELS says)
     >>> wanted(SMALL + 1)                     # 257 elements: always compiled
     False
     >>> set_calls(1)
     >>> wanted(10) == ("numba" not in sys.modules), wanted(10)   # the one call left, then none
     (True, False)
     >>> set_calls(None)
+    >>> set_backend("numpy")
+    >>> wanted(10 ** 6)                       # any size
+    True
+    >>> set_backend(None)
     """
+    name = backend()
+    if name != "auto":
+        return name == "numpy"
     if elements > SMALL or calls_left() <= 0:
         return False
     _state["calls"] += 1
     return True
 
 
-def _body(lines):
+def is_vector(kernel) -> bool:
+    """True for a kernel evaluated by numpy (it takes all elements in one call).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.kernel.vector import is_vector
+    >>> prog = examples.hitch_003().program()
+    >>> is_vector(prog.kernel(vector=True)), is_vector(lambda *args: 0)
+    (True, False)
+    """
+    return bool(getattr(kernel, "__globals__", {}).get("VECTOR", False))
+
+
+def vector_lines(lines):
     """The emitted element code as numpy statements: per-design reads and the
-    coordinates become whole-row locals, conditional expressions selects."""
+    coordinates become whole-row locals, conditional expressions selects;
+    ``(head, body)`` lines, indented for the body of a generated ``kernel``.
+
+    Examples
+    --------
+    >>> from assur.kernel.vector import vector_lines
+    >>> head, body = vector_lines(["x3 = params[4, d] * q[0, e] if st < 0 else 0.0"])
+    >>> [ln.strip() for ln in head], [ln.strip() for ln in body]
+    (['P4 = params[4, D]', 'Q0 = q[0]'], ['x3 = _sel(st < 0, P4 * Q0, 0.0)'])
+    """
     prows, trows, qrows = set(), set(), set()
     out = []
     for line in lines:
@@ -165,7 +252,7 @@ def generate_vector(rows, measures, K, out_pts, out_sca) -> str:
     ['out[0] = _sel(ok_, x7, 0.0)', 'out[1] = _sel(ok_, y7, 0.0)', 'out[2] = _sel(ok_, x7_0, 0.0)', 'out[3] = _sel(ok_, y7_0, 0.0)', 'out[4] = _sel(ok_, x7_00, 0.0)', 'out[5] = _sel(ok_, y7_00, 0.0)']
     """
     E, cont = emit_program(rows, measures, K)
-    head, body = _body(E.lines)
+    head, body = vector_lines(E.lines)
     qs = quantities(K, out_pts, out_sca)
     ind = "        "
     outs = [ind + "ok_ = st < 0"]
@@ -293,11 +380,12 @@ def max(a, b):  # noqa: A001
 
 def _continuity(q0, npd, status, amount, ok, groups):
     """The continuity check of :func:`assur.kernel.source.continuity_check` over all
-    elements (at most one run of positions per design, as :data:`SMALL` ensures):
-    every interval between consecutive assembled positions of a design and every
-    group ``(code, g, gd)`` in order; the interval's right-hand element gets the
+    elements: every interval between consecutive assembled positions of a design and
+    every group ``(code, g, gd)`` in order; the interval's right-hand element gets the
     first failing group's code and the depth [m²] in ``amount``. An element so marked
-    is not the left end of a checked interval. Returns the number of failures."""
+    is not the left end of a checked interval — unless the interval starts a work item
+    of the compiled kernel (a run of :data:`~assur.kernel.source.CHUNK` positions),
+    which computes its left end again, unmarked. Returns the number of failures."""
     np = _np()
     E = status.shape[0]
     if E < 2 or not groups:
@@ -327,9 +415,50 @@ def _continuity(q0, npd, status, amount, ok, groups):
         depth[bad] = mn[bad]
     nfail = 0
     for j in np.flatnonzero(first >= 0):  # the few failing intervals, in order
-        if status[j] >= 0:  # its left end failed in this pass
+        # its left end failed in this pass (within a work item of the compiled kernel)
+        if status[j] >= 0 and ((j + 1) % npd) % CHUNK != 0:
             continue
         status[j + 1] = first[j]
         amount[j + 1] = depth[j]
         nfail += 1
     return nfail
+
+
+def reduce_chunks(values, ok, npd, E, red):
+    """The fused kernel's reductions, all elements at once: for each output row ``r``
+    (``values[r]``, shape (E,) or a scalar; E elements, ``npd`` per design) and each work item ``c`` of the compiled
+    kernel (runs of ≤ :data:`~assur.kernel.source.CHUNK` positions of one design),
+    ``red[4r : 4r + 4, c]`` = minimum, maximum and where they are (position in the
+    design; −1 when none) over the elements where ``ok`` — the compiled kernel's
+    scalar pass (:mod:`assur.core.outputs`): the first of equal values, NaN skipped.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.kernel.vector import reduce_chunks
+    >>> v = np.array([3.0, 1.0, 2.0, 5.0, 4.0, 6.0])          # 2 designs × 3 positions
+    >>> ok = np.array([True, True, True, False, True, False])
+    >>> red = np.empty((4, 2))
+    >>> reduce_chunks([v], ok, 3, 6, red)
+    >>> red.tolist()                                           # min, max, argmin, argmax
+    [[1.0, 4.0], [3.0, 4.0], [1.0, 1.0], [0.0, 1.0]]
+    """
+    np = _np()
+    m = E // npd
+    cpd = (npd + CHUNK - 1) // CHUNK
+    W = npd if cpd == 1 else CHUNK
+    pad = cpd * W - npd
+    base = (np.arange(m * cpd) % cpd) * W
+    for r, v in enumerate(values):
+        v = np.broadcast_to(np.asarray(v, dtype=float), (E,))
+        good = np.broadcast_to(ok, (E,)) & (v == v)
+        for k, (fill, arg) in enumerate(((np.inf, np.argmin), (-np.inf, np.argmax))):
+            a = np.where(good, v, fill).reshape(m, npd)
+            if pad:
+                a = np.concatenate([a, np.full((m, pad), fill)], axis=1)
+            a = a.reshape(m * cpd, W)
+            i = arg(a, axis=1)
+            best = a[np.arange(m * cpd), i]
+            red[4 * r + k] = best
+            red[4 * r + 2 + k] = np.where(best == fill, -1.0, base + i)
+

@@ -10,6 +10,7 @@ import numpy as np
 
 from ...errors import ModelError
 from ...kernel import run as KR
+from ...kernel import vector as KV
 from ...kernel.source import CHUNK
 from .. import diagnostics
 from ._kernel import _kernel, _literals, joint_list
@@ -128,12 +129,28 @@ class Fused:
         return f"Fused({list(self.outputs)}, shape={self.shape}, reduced={self._reduced is not None})"
 
 
+class _Kernels:
+    """The fused kernel of a plan, compiled or evaluated by numpy, made when first
+    asked for (:func:`assur.kernel.vector.wanted` chooses per call)."""
+
+    def __init__(self, mech, prog, specs, reduce, g):
+        self._args = (mech, prog, specs, reduce, g)
+        self._made: dict = {}
+
+    def get(self, vector):
+        k = self._made.get(vector)
+        if k is None:
+            k = self._made[vector] = _kernel(*self._args, vector=vector)
+        return k
+
+
 def _plan(mech, specs, reduce, g):
-    """The kernel, the full parameter table (with the cylinders' constants and the loads'
-    numbers), the trig table and the pre-pass failures of a mechanism's own values."""
+    """The kernels, the full parameter table (with the cylinders' constants and the
+    loads' numbers), the trig table and the pre-pass failures of a mechanism's own
+    values."""
     prog = mech.program()
     ptab, trig, pose_failures = mech.prepared(prog)
-    kern = _kernel(mech, prog, specs, reduce, g)
+    kern = _Kernels(mech, prog, specs, reduce, g)
     extra = [np.array([v]) for v in _literals(mech, g, ptab.shape[0])[1]]
     if extra:
         md = max([ptab.shape[1]] + [v.shape[0] for v in extra])
@@ -241,7 +258,7 @@ def _run(mech, plan, qarr, m, n, nspecs, reduce=False):
     (k, m·n): returns ``(out, red, status, ptab)`` — outputs (nspecs, m·n), 0 at failed
     elements (status ≥ 0), or the per-chunk reductions. Raises the failure of a
     pre-pass pose when every element assembled."""
-    kern, ptab, trig, pose_failures = plan
+    kernels, ptab, trig, pose_failures = plan
     if ptab.shape[1] == 1 and m > 1:
         ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
     elif ptab.shape[1] != m:
@@ -252,7 +269,9 @@ def _run(mech, plan, qarr, m, n, nspecs, reduce=False):
     out = np.empty((0 if reduce else nspecs, E))
     red = np.empty((4 * nspecs if reduce else 0, nchunks))
     status = np.empty(E, dtype=np.int64)
-    nthreads = KR.threads_for(E, nchunks)
+    vector = KV.wanted(E)
+    kern = kernels.get(vector)
+    nthreads = 1 if vector else KR.threads_for(E, nchunks)
     if nthreads <= 1:
         kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
     else:
