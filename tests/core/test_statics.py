@@ -88,7 +88,6 @@ cylinder's moving end, one slider direction per batch, both rates given).
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -97,10 +96,6 @@ from tests.helpers.analogs import _floats, prp_family, rpr_family, rrp_family
 from tests.helpers.statics import BUG_SETTINGS, SETTINGS, Batch, Solved, assume_springs_long, \
     check_statics, crank_family, cylinder_lever_family, cylinder_radius_family, draw_loads, \
     draw_rates, prepare, reproducer, rod_ends, slider_family
-
-# hundreds of examples, each solving its structure many times (time differences):
-# compiled kernels, shared by the examples of a structure (tests/conftest.py)
-pytestmark = pytest.mark.compiled
 
 
 # ---------------------------------------------------------------------------------

@@ -30,10 +30,6 @@ from tests.helpers.analogs import SETTINGS, _floats, analogs, fd_steps
 from tests.helpers.statics import crank_family, cylinder_lever_family, cylinder_radius_family, \
     draw_rates, prepare, slider_family
 
-# each example evaluates its structure many times (differences in q and time):
-# compiled kernels, shared by the examples of a structure (tests/conftest.py)
-pytestmark = pytest.mark.compiled
-
 FAMILIES = {"cylinder-lever": cylinder_lever_family, "crank": crank_family,
             "slider": slider_family, "k = 2": cylinder_radius_family}
 #: relative tolerance of the exact quantities against each other (routes 2, 4, 5)
