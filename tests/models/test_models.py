@@ -40,8 +40,10 @@ def test_the_html_reports_written_elsewhere_are_tested_there():
 @pytest.mark.parametrize("name", MODELS)
 def test_analyze_writes_every_bundled_report(name, tmp_path):
     formats = "csv" if name in HTML_ELSEWHERE else "csv,html"
+    # three frames of the animation: its every frame is a full drawing (~0.2 s); the
+    # full animation is tested in tests/views/report and tests/views/cli
     r = CliRunner().invoke(app, ["analyze", str(io.bundled(name)), "-o", str(tmp_path),
-                                 "--format", formats])
+                                 "--format", formats, "--frames", "3"])
     if name in AS_PRINTED:
         assert r.exit_code == 1 and "Traceback" not in r.output, r.output
         assert f"{name}.toml" in r.output

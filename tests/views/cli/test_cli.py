@@ -113,3 +113,21 @@ def test_tables_prints_the_seed_tables():
     assert "4.1" in r.output and "Fgc [N]" in r.output and "129614" in r.output
     r = runner.invoke(app, ["tables", str(bundled("hitch_003")), "--table", "9.9"])
     assert r.exit_code == 1 and "this model has tables" in r.output
+
+
+def test_analyze_frames_option(tmp_path):
+    """``--frames 0``: the HTML report without its animation; with a GIF asked for, one
+    message and exit 1; a negative count is refused by the option."""
+    model = str(bundled("hitch_003"))
+    for frames in ("0", "2"):
+        r = CliRunner().invoke(app, ["analyze", model, "-o", str(tmp_path / frames),
+                                     "--format", "html", "--frames", frames])
+        assert r.exit_code == 0, r.output
+        html = (tmp_path / frames / "report.html").read_text(encoding="utf-8")
+        assert "<img" in html                                # the figures, the drawing
+        assert ('id="animation"' in html) == (frames != "0")
+    r = CliRunner().invoke(app, ["analyze", model, "-o", str(tmp_path / "b"), "--format",
+                                 "gif", "--frames", "0"])
+    assert r.exit_code == 1 and "--frames 0" in r.output and "Traceback" not in r.output
+    r = CliRunner().invoke(app, ["analyze", model, "-o", str(tmp_path / "c"), "--frames", "-1"])
+    assert r.exit_code != 0 and "Traceback" not in r.output

@@ -37,3 +37,14 @@ def test_frames_gif_and_pngs(hitch_analysis, tmp_path):
     assert [Image.open(io.BytesIO(bytes(b))).size for b in pngs] == [f.size for f in frames]
     with pytest.raises(ValueError, match="no frames"):
         write_gif([], tmp_path / "none.gif")
+
+
+def test_frames_of_a_two_coordinate_machine_are_at_most_the_asked_number(tmp_path):
+    """A crane (two coordinates) is animated over its analysed positions: at most
+    ``frames`` of them, evenly spaced, the first and the last among them."""
+    from assur import io
+    a = io.load(io.bundled("crane_lv185")).analyze()
+    assert a.kinematics.shape[-1] > 5
+    frames = render_frames(a, frames=3, dpi=20)
+    assert len(frames) == 3
+    assert frames[0].tobytes() != frames[-1].tobytes()

@@ -51,7 +51,7 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     _ok(f"{file} assembles at every position ({time.perf_counter() - t0:.2f} s)")
 
 
-def _run_report(model, output: str, lang: str, fmts, draw_at=None):
+def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30):
     from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
     from ...errors import AssemblyError, ModelError, SingularPositionError
@@ -63,14 +63,14 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None):
     with Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False,
                                               style="progress.description"),
                   BarColumn(), TimeElapsedColumn(), console=console, transient=True) as prog:
-        task = prog.add_task("writing the report", total=len(report_steps(fmts)))
+        task = prog.add_task("writing the report", total=len(report_steps(fmts, frames)))
 
         def step(name):
             prog.update(task, description=f"writing: {name}", advance=1)
 
         try:
             files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
-                                 positions=positions)
+                                 positions=positions, frames=frames)
         except OSError as e:  # disk full, permissions changed: one message, no traceback
             _fail(f"{output}: cannot write the report: {e.strerror or e}")
         except (AssemblyError, ModelError, SingularPositionError) as e:
@@ -88,12 +88,17 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                         help="Coordinate values to draw the mechanism at: "
                                              "cylinder lengths in m (0.42,0.55), crank "
                                              "angles in degrees (14.679,188.229); default: "
-                                             "first and last.")):
+                                             "first and last."),
+            frames: int = typer.Option(30, "--frames", min=0,
+                                       help="Frames of the mechanism's animation (GIF, "
+                                            "HTML report), at most; 0: no animation.")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
     _check_lang(lang)
     fmts = _formats(format)
+    if frames == 0 and "gif" in fmts:
+        _fail("--frames 0 writes no animation: leave gif out of --format")
     model = _load(file)
-    _, files = _run_report(model, output, lang, fmts, draw_at)
+    _, files = _run_report(model, output, lang, fmts, draw_at, frames)
     _summary(files, output)
 
 

@@ -34,7 +34,7 @@ __all__ = ["write_report", "report_steps", "FORMATS", "seed_tables", "write_csv"
 FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")
 
 
-def report_steps(formats=FORMATS) -> list:
+def report_steps(formats=FORMATS, frames=30) -> list:
     """Names of the steps :func:`write_report` announces to ``progress``, in order
     (so a progress bar can know its length).
 
@@ -45,6 +45,8 @@ def report_steps(formats=FORMATS) -> list:
     ['tables', 'csv']
     >>> report_steps()  # every format
     ['tables', 'csv', 'xlsx', 'figures', 'drawing', 'animation', 'html']
+    >>> report_steps(("html",), frames=0)  # no animation
+    ['tables', 'figures', 'drawing', 'html']
     """
     fm = set(formats)
     steps = ["tables"]
@@ -54,7 +56,7 @@ def report_steps(formats=FORMATS) -> list:
         steps.append("xlsx")
     if fm & {"png", "svg", "html"}:
         steps += ["figures", "drawing"]
-    if fm & {"gif", "html"}:
+    if fm & {"gif", "html"} and frames > 0:
         steps.append("animation")
     if "html" in fm:
         steps.append("html")
@@ -85,7 +87,8 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
     design : int, optional
         Design of a batch to report.
     frames : int
-        Frames of the animation over the range.
+        Frames of the animation over the range, at most (0: no animation: neither the
+        GIF nor the HTML report's).
     positions : sequence of int, optional
         Indices of the positions drawn (default: the first and the last).
 
@@ -170,7 +173,9 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
         if "svg" in formats:
             written["svg"].append(_figures.save(fig, out / "mechanism.svg"))
     frames_png = False
-    if {"gif", "html"} & set(formats):
+    if "gif" in formats and frames <= 0:
+        raise ValueError(f"frames = {frames}: the GIF animation needs at least one frame")
+    if {"gif", "html"} & set(formats) and frames > 0:
         step("animation")
         imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design)
         if "gif" in formats:

@@ -274,8 +274,9 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     """Frames of the animation over the range, as PIL images.
 
     The mechanism is solved again on ``frames`` evenly spaced values of its
-    coordinate (one coordinate and one design; otherwise the analysis' positions
-    are used), drawn on fixed axes, rendered with Agg.
+    coordinate (one coordinate and one design; otherwise at most ``frames`` of the
+    analysis' positions, evenly spaced among them, are drawn), on fixed axes,
+    rendered with Agg.
 
     Returns
     -------
@@ -304,14 +305,16 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
     ax.grid(True, alpha=0.3)
     out = []
-    for i in range(geo.n):
+    shown = (range(geo.n) if geo.n <= frames else
+             np.unique(np.linspace(0, geo.n - 1, int(frames)).round().astype(int)))
+    for k, i in enumerate(shown):
         for art in list(ax.lines) + list(ax.patches) + list(ax.texts):
             art.remove()
         _pose(ax, geo, i)
         _limits(ax, geo)
         ax.set_title(f"{localize(v.mech.title, lang)}\n{_qtext(geo, v, i, lang)}", fontsize=9)
         fig.canvas.draw()
-        if i == 0:  # the axes are fixed: lay the figure out once
+        if k == 0:  # the axes are fixed: lay the figure out once
             fig.set_layout_engine("none")
         buf = np.asarray(fig.canvas.buffer_rgba())
         out.append(Image.fromarray(buf[..., :3].copy()))
