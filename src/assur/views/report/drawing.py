@@ -275,8 +275,9 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
 
     The mechanism is solved again on ``frames`` evenly spaced values of its
     coordinate (one coordinate and one design; otherwise at most ``frames`` of the
-    analysis' positions, evenly spaced among them, are drawn), on fixed axes,
-    rendered with Agg.
+    analysis' positions, evenly spaced among them, are drawn; ``frames=0``: every
+    one of the analysis' positions, e.g. the instants of a simulation), on fixed
+    axes, rendered with Agg.
 
     Returns
     -------
@@ -305,7 +306,7 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
     ax.grid(True, alpha=0.3)
     out = []
-    shown = (range(geo.n) if geo.n <= frames else
+    shown = (range(geo.n) if frames <= 0 or geo.n <= frames else
              np.unique(np.linspace(0, geo.n - 1, int(frames)).round().astype(int)))
     for k, i in enumerate(shown):
         for art in list(ax.lines) + list(ax.patches) + list(ax.texts):
