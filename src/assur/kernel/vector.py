@@ -42,7 +42,7 @@ from .emit import CODES_PER_OP, CONTINUITY_TOL, FAIL_CONTINUITY
 from .select import branchless
 from .source import CHUNK, FORMAT, emit_program, quantities
 
-__all__ = ["SMALL", "CALLS", "BACKENDS", "backend", "set_backend", "wanted", "is_vector",
+__all__ = ["SMALL", "CALLS", "BACKENDS", "ELEMENTS_START", "backend", "set_backend", "wanted", "is_vector",
            "vector_lines", "reduce_chunks", "generate_vector", "load_vector", "calls_left",
            "set_calls"]
 
@@ -235,6 +235,17 @@ def vector_lines(lines):
     return head, out
 
 
+#: the start of a numpy-evaluated kernel's element code (after ``E``, the number of
+#: elements; the kernels of :func:`generate_vector` and of :mod:`assur.core.outputs`):
+#: the design of each element, and — as the compiled kernels' ``error_model="numpy"``
+#: — no floating-point warnings: a select discards the inf/NaN of an element that does
+#: not assemble, and its status code reports it
+ELEMENTS_START = '''    D = 0 if params.shape[1] == 1 else np.arange(E) // npd
+    with np.errstate(all="ignore"):
+        st = -1
+'''
+
+
 def generate_vector(rows, measures, K, out_pts, out_sca) -> str:
     """Python source of the numpy evaluation of a structure (the arguments of
     :func:`assur.kernel.source.generate`); its ``kernel`` has the compiled kernel's
@@ -278,13 +289,8 @@ def kernel(params, trig, q, npd, check, out, amount, status, c_start, c_end):
     E = q.shape[1]
     if out.shape[0] != {len(qs)} or out.shape[1] != E or (check and amount.shape[0] != E):
         raise ValueError("assur kernel: output arrays do not match the program")
-    D = 0 if params.shape[1] == 1 else np.arange(E) // npd
     nfail = 0
-    # as the compiled kernels' error_model="numpy": a select discards the inf/NaN of an
-    # element that does not assemble, its status code reports it
-    with np.errstate(all="ignore"):
-        st = -1
-''' + "\n".join(head + body + outs) + "\n" + check + "    return nfail\n"
+{ELEMENTS_START}''' + "\n".join(head + body + outs) + "\n" + check + "    return nfail\n"
 
 
 def load_vector(rows, measures, K, out_pts, out_sca):

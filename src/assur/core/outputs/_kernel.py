@@ -16,7 +16,7 @@ from ...kernel.fold import fold
 from ...kernel.select import branchless
 from ...kernel.source import BUF_ROW, CHUNK, chunk_loop, copy_out, hoisted, status_out
 from ...kernel.stream import STREAM_MIN
-from ...kernel.vector import vector_lines
+from ...kernel.vector import ELEMENTS_START, vector_lines
 from ...kernel.sym import Sym, Tracer, code
 from ..gravity import GRAVITY
 from ..loads import dead_load_links
@@ -268,12 +268,7 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
     compiled fused kernel's signature). out: ({len(specs)}, E) outputs or red:
     (4·{len(specs)}, work items) min, max, argmin, argmax per work item."""
     E = q.shape[1]
-    D = 0 if params.shape[1] == 1 else np.arange(E) // npd
-    # as the compiled kernels' error_model="numpy": a select discards the inf/NaN of an
-    # element that does not assemble, its status code reports it
-    with np.errstate(all="ignore"):
-        st = -1
-''' + "\n".join(head + body) + f"""
+{ELEMENTS_START}''' + "\n".join(head + body) + f"""
 {ind}ok_ = np.broadcast_to(st < 0, (E,))
 {ind}status[:] = st
 {ind}outs = ({outs},)
