@@ -57,3 +57,18 @@ def import_path(name: str, path: Path):
         del sys.modules[name]
         raise
     return module
+
+
+def by_numpy(make, *args):
+    """``make(*args)`` with numpy evaluating the kernel calls, the backend restored
+    after: in a test of the compiled kernels, a model's load (its ``[[solve]]``
+    conditions) or a pose point's pre-pass (a few small calls of structures of their
+    own) compiles none of their kernels, only those the test is about."""
+    from assur.kernel import vector as KV
+
+    was = KV.backend()
+    KV.set_backend("numpy")
+    try:
+        return make(*args)
+    finally:
+        KV.set_backend(was)

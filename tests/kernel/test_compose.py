@@ -14,7 +14,7 @@ import pytest
 from assur import Mechanism, PosePoint, examples
 from assur.core import program as P
 from assur.kernel import compose
-from tests.helpers import ROOT, import_path
+from tests.helpers import ROOT, import_path, by_numpy
 
 # the structures of the compile-time benchmark, defined once (benchmarks/structures.py)
 hitch_plus_rigid = import_path("structures", ROOT / "benchmarks" / "structures.py").hitch_plus_rigid
@@ -42,7 +42,7 @@ def _execute(mech, q, check=True):
     """Raw kernel outputs of ``mech`` at ``q`` (shape (k, E), one design)."""
     prog = P.compile_program(mech)
     ptab = np.ascontiguousarray(prog.param_table(mech.params))
-    mech.prepare(prog, ptab)
+    by_numpy(mech.prepare, prog, ptab)  # the pose point's pre-pass: not what is compared
     return P.execute(prog, ptab, np.ascontiguousarray(q), q.shape[1], check)
 
 
@@ -55,7 +55,7 @@ def _composed(mech):
 def _hitch_k2():
     """The hitch with the top link's length a second coordinate T (its implement's
     centre of mass fixed at S = Sp, T = L7)."""
-    m = examples.hitch_003()
+    m = by_numpy(examples.hitch_003)
     groups = []
     for g in m.groups:
         if getattr(g, "rb", None) == "L7":
@@ -72,10 +72,10 @@ def test_composed_equals_fused(force, case):
     """Every output row, the status codes (failing positions included: S beyond the
     stroke, zeros there) and the continuity staging are bitwise equal."""
     if case == "hitch":
-        mech = examples.hitch_003()
+        mech = by_numpy(examples.hitch_003)
         q = np.linspace(0.30, 0.80, 501)[None, :]  # beyond Smin…Smax: some fail
     else:
-        mech = _hitch_k2()
+        mech = by_numpy(_hitch_k2)
         s, t = np.meshgrid(np.linspace(0.40, 0.70, 21), np.linspace(0.2, 1.8, 11))
         q = np.stack([s.ravel(), t.ravel()])
     force("fused")
@@ -95,7 +95,7 @@ def test_composed_equals_fused(force, case):
 def test_composed_solve_equals_fused(force):
     """Through the public API (continuity check and angles included)."""
     S = np.linspace(0.42, 0.67, 200)
-    m = examples.hitch_003()
+    m = by_numpy(examples.hitch_003)
     force("fused")
     getattr(m, "_cache", {}).clear()  # the mechanism's own cache of programs
     a = m.solve(S)

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 import pytest
-from tests.helpers import examples
+from tests.helpers import examples, by_numpy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -77,7 +77,7 @@ def test_folding_keeps_every_value(prog, x):
 
 def test_folding_simplifies_the_hitch():
     """The seed-003 hitch's element code loses the frame points' zero analogs."""
-    prog = bundled_examples.hitch_003().program()
+    prog = by_numpy(bundled_examples.hitch_003).program()
     E = Emitter(prog.k)
     for i, row in enumerate(prog.rows):
         group_type(row[0]).emit(E, i, tuple(int(v) for v in row[1:]))
@@ -93,7 +93,7 @@ def test_folding_simplifies_the_hitch():
 def test_folded_code_equals_unfolded_on_bundled_models(name, monkeypatch):
     """The numpy evaluation of a bundled model's element code over its range, folded
     (as every kernel is) and not: equal outputs, analogs and status codes."""
-    model = io.load(io.bundled(name))
+    model = by_numpy(io.load, io.bundled(name))
     mech = model.mechanism
     q = np.atleast_2d(np.asarray(model.range, dtype=float))
     q = q.reshape(-1, len(mech.coordinates)).T if len(mech.coordinates) > 1 else q

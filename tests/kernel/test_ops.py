@@ -6,6 +6,7 @@ operations are those the kernels' cache keys read."""
 from assur import examples
 from assur.groups import registry
 from assur.kernel import ops
+from tests.helpers import by_numpy
 
 
 def test_every_group_type_has_its_op_code():
@@ -17,7 +18,7 @@ def test_every_group_type_has_its_op_code():
 
 
 def test_program_rows_start_with_their_groups_code():
-    m = examples.combine_002()
+    m = by_numpy(examples.combine_002)
     rows = m.program().rows
     types = [ops.op(row[0]).type_name for row in rows]
     assert types == [type(g).type_name for g in m.groups]

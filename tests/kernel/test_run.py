@@ -15,6 +15,7 @@ from assur.kernel import compose
 from assur.kernel import emit as KE
 from assur.kernel import run as KR
 from assur.kernel.source import CHUNK
+from tests.helpers import by_numpy
 from tests.helpers.mechanisms import crank_dyad
 
 
@@ -59,7 +60,7 @@ def test_small_kernel_calls_stay_in_the_calling_thread(monkeypatch):
     monkeypatch.setattr(KR, "pool", no_pool)
     monkeypatch.setattr(KR, "threads", lambda: 2)
     assert KR.threads_for(257, 257) == 1  # a condition's scan: 257 designs, 1 position
-    m = examples.hitch_003()
+    m = by_numpy(examples.hitch_003)
     m.solve(np.linspace(0.42, 0.67, 1000))
     m.solve(np.full((257, 1), 0.5), params={"L5": np.linspace(0.47, 0.49, 257)})
     assert KR.threads_for(10**6, 10**6 // CHUNK) == 2

@@ -12,10 +12,11 @@ import numpy as np
 from assur import Mechanism, examples
 from assur.core import program as P
 from assur.kernel.source import generate
+from tests.helpers import by_numpy
 
 
 def test_element_loop_stores_only_to_local_buffers():
-    prog = P.compile_program(examples.hitch_003())
+    prog = P.compile_program(by_numpy(examples.hitch_003))
     src = generate(prog.rows, prog.measures, prog.k, tuple(prog.slot[p] for p in prog.out_pts),
                    tuple(prog.scal[s] for s in prog.out_sca))
     lines = src.splitlines()

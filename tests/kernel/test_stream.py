@@ -11,6 +11,7 @@ import pytest
 
 from assur import examples as bundled_examples
 from assur.kernel import stream as KST
+from tests.helpers import by_numpy
 
 
 @pytest.mark.parametrize("designs", [1, 3])
@@ -19,7 +20,7 @@ def test_streamed_outputs_equal_small_solves(designs):
     STREAM_MIN) equals the same positions solved 997 at a time, bitwise: positions,
     analogs, angles (unwrapped) and status, for one design and for three designs of
     an odd number of positions (every row start at another alignment)."""
-    m = bundled_examples.hitch_003()
+    m = by_numpy(bundled_examples.hitch_003)
     n = 16651 if designs == 1 else 5557
     assert 63 * n * designs >= KST.STREAM_MIN   # the kernel streams its outputs
     S = np.linspace(0.42, 0.67, n)

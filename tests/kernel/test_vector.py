@@ -14,7 +14,7 @@ import sys
 
 import numpy as np
 import pytest
-from tests.helpers import examples
+from tests.helpers import examples, by_numpy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -81,7 +81,7 @@ def test_vector_equals_compiled_on_every_group_type(type_name, data):
 # random mechanisms above
 @pytest.mark.parametrize("name", ["hitch_003", "combine_002", "loader_lab1", "crane_lv185"])
 def test_vector_equals_compiled_on_bundled_models(name, monkeypatch):
-    model = io.load(io.bundled(name))
+    model = by_numpy(io.load, io.bundled(name))
     mech = model.mechanism
     q = np.atleast_2d(np.asarray(model.range, dtype=float))
     q = q.reshape(-1, len(mech.coordinates)).T if len(mech.coordinates) > 1 else q
