@@ -4,7 +4,7 @@ Jupyter calls ``_repr_html_`` on the last value of a cell, as it does for pandas
 and matplotlib objects. :class:`assur.Mechanism`, :class:`assur.core.kinematics.Kinematics`,
 :class:`assur.analysis.Analysis` and :class:`assur.io.Model` define it by calling
 the functions here, which build plain HTML: the model summary (groups, links,
-parameters), the drawing as inline SVG (:mod:`assur.views.page.svg`, no matplotlib) and,
+parameters), the drawing as inline SVG (:mod:`assur.views.svg`, no matplotlib) and,
 for an analysis, the seed-like tables (:func:`assur.views.report.tables.seed_tables`).
 Nothing here computes anything a result does not already hold, except that a
 :class:`~assur.io.Model` is analyzed over its file's range to be shown; a model
@@ -85,7 +85,7 @@ def mechanism_html(mech) -> str:
 
 def _drawing(kin) -> str:
     from .geometry import geometry
-    from .page.svg import svg
+    from .svg import svg
     if len(kin.shape) != 1:
         return "<p>(a batch of designs: draw one with <code>geometry(kin, design=…)</code>)</p>"
     return svg(geometry(kin))

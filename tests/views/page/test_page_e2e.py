@@ -1,14 +1,11 @@
 """The page end to end in a real headless Chromium (issue 13).
 
-Debian's chromium (/usr/bin/chromium, installed by ``make test`` through
-.ci/chromium.sh) driven by Playwright for Python; Playwright's own browser builds
-are never downloaded. The server is ``assur serve``'s application on loopback with
+The browser is tests/views/conftest.py's (Debian's chromium). The server is ``assur serve``'s application on loopback with
 the seed-003 hitch. The page logs "assur: redrawn in … ms" after every parameter
 change (the time from the input event to the new drawing); the test prints those
 times — measured, not asserted (benchmarks/page.py measures them too).
 """
 
-import os
 import re
 from pathlib import Path
 
@@ -16,21 +13,7 @@ import pytest
 
 from assur.io import bundled
 
-CHROMIUM = os.environ.get("ASSUR_CHROMIUM", "/usr/bin/chromium")
-
 pytestmark = pytest.mark.slow
-
-
-@pytest.fixture(scope="module")
-def browser():
-    if not Path(CHROMIUM).exists():
-        pytest.fail(f"{CHROMIUM} is missing: `make test` installs Debian's chromium "
-                    f"(.ci/chromium.sh, as root); install it to run the page's e2e test")
-    from playwright.sync_api import sync_playwright
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, headless=True)
-        yield b
-        b.close()
 
 
 @pytest.fixture(scope="module")

@@ -1,15 +1,16 @@
 """Drawings and animations (:mod:`assur.views.report.drawing`) of the seed-003 hitch:
 the drawing at two positions draws every point of the mechanism where the kinematics
 put it, a label per link; the animation's frames are of one size and show the
-mechanism moving; the GIF plays them forward and back; the PNG frames read back."""
+mechanism moving; the GIF plays them forward and back; the HTML report's vector
+frames put every point where the kinematics do, at the same positions as the GIF's."""
 
-import io
+import re
 
 import numpy as np
 import pytest
 from PIL import Image
 
-from assur.views.report.drawing import draw, frames_png_bytes, render_frames, write_gif
+from assur.views.report.drawing import animation, draw, render_frames, write_gif
 
 
 def test_the_drawing_puts_every_point_where_the_kinematics_do(hitch_analysis):
@@ -33,8 +34,6 @@ def test_frames_gif_and_pngs(hitch_analysis, tmp_path):
         assert gif.n_frames == 2 * 4 - 2 and gif.info["duration"] == 50
     with Image.open(write_gif(frames, tmp_path / "f.gif", bounce=False)) as gif:
         assert gif.n_frames == 4
-    pngs = frames_png_bytes(frames)
-    assert [Image.open(io.BytesIO(bytes(b))).size for b in pngs] == [f.size for f in frames]
     with pytest.raises(ValueError, match="no frames"):
         write_gif([], tmp_path / "none.gif")
 
@@ -48,3 +47,36 @@ def test_frames_of_a_two_coordinate_machine_are_at_most_the_asked_number(tmp_pat
     frames = render_frames(a, frames=3, dpi=20)
     assert len(frames) == 3
     assert frames[0].tobytes() != frames[-1].tobytes()
+
+
+@pytest.mark.parametrize("frames", [3, 7])
+def test_vector_frames_put_every_point_where_the_kinematics_do(hitch_analysis, frames):
+    """Frame k of the HTML animation draws each joint at its solved position on the
+    k-th of ``frames`` evenly spaced strokes over the range (y up: drawn at −y), and its
+    caption names that stroke."""
+    a = hitch_analysis
+    anim = animation(a, frames=frames)
+    groups = re.findall(r'<g class="frame"[^>]*>(.*?)</g></g>', anim["svg"])
+    assert len(groups) == len(anim["captions"]) == frames
+    S = np.linspace(a.kinematics.q()[0], a.kinematics.q()[-1], frames)
+    kin = a.mechanism.solve(S)
+    for k, body in enumerate(groups):
+        circles = np.array([(float(x), float(y)) for x, y in
+                            re.findall(r'<circle cx="([^"]+)" cy="([^"]+)"', body)])
+        for p in ("23", "34", "56", "67"):
+            xy = np.array([kin.x(p)[k], -kin.y(p)[k]])
+            assert np.hypot(*(circles - xy).T).min() < 1e-5, (p, k)  # %.6g of metres
+        assert anim["captions"][k] == f"S = {S[k]:.4g} m"
+
+
+def test_vector_frames_of_a_two_coordinate_machine_are_its_analysed_positions():
+    """A crane (two coordinates): at most ``frames`` of its analysed positions, the
+    first and the last among them, as the GIF's."""
+    from assur import io
+    a = io.load(io.bundled("crane_lv185")).analyze()
+    n = a.kinematics.shape[-1]
+    anim = animation(a, frames=3)
+    assert n > 3 and len(anim["captions"]) == 3
+    q = {c: a.kinematics.q(c) for c in a.kinematics.coordinates}
+    first = anim["captions"][0]
+    assert all(f"{c} = " in first for c in q)

@@ -232,7 +232,10 @@ def test_html_is_one_self_contained_file(report, hitch_analysis):
     for flag in notes + flags:
         assert flag in plain
     assert "Warnings and notes" in plain
-    assert len(p.imgs) >= 9 + 2  # the diagrams, the drawing, the animation player
+    assert len(p.imgs) >= 9 + 1  # the diagrams, the drawing
+    # the animation: vector frames in one inline SVG (no address), its player's captions
+    frames = re.findall(r'<g class="frame"', text)
+    assert len(frames) > 1 and 'id="anim-svg"' in text and 'id="anim-q">S = 0.42 m<' in text
 
 
 def test_figures_are_valid_png_and_svg(report):

@@ -10,7 +10,7 @@ or a CAD system (DESIGN.md §6: nothing here computes the mechanism):
   group with units, the edited TOML text, the analysis as the page's payload;
 * :mod:`assur.views.geometry` — the mechanism's drawing as plain data (points,
   bodies, joints over the positions), shared by the page, the SVG and the DXF;
-* :mod:`assur.views.page.svg` — the drawing as inline SVG (no matplotlib);
+* :mod:`assur.views.svg` — the drawing as inline SVG (no matplotlib);
 * :mod:`assur.views.page.dxf` — the drawing at chosen positions as DXF (ezdxf).
 
 Importing this package imports none of FastAPI, uvicorn or ezdxf; the server

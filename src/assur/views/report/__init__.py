@@ -172,18 +172,19 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             written["png"].append(p)
         if "svg" in formats:
             written["svg"].append(_figures.save(fig, out / "mechanism.svg"))
-    frames_png = False
+    anim = False
     if "gif" in formats and frames <= 0:
         raise ValueError(f"frames = {frames}: the GIF animation needs at least one frame")
     if {"gif", "html"} & set(formats) and frames > 0:
         step("animation")
-        imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design)
-        if "gif" in formats:
+        if "gif" in formats:  # raster frames only for the GIF; the HTML plays vectors
+            imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design)
             written["gif"] = [_drawing.write_gif(imgs, out / "mechanism.gif")]
-        frames_png = _drawing.frames_png_bytes(imgs)
+        if "html" in formats:
+            anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design)
     if "html" in formats:
         step("html")
         written["html"] = [_html.write_html(analysis, out / "report.html", lang=lang,
                                             figures=pngs, tables=tables, drawing=drawing_png,
-                                            animation=frames_png, design=design)]
+                                            animation=anim, design=design)]
     return written

@@ -16,7 +16,8 @@ The drawing is made from the model's rigid bodies (:attr:`assur.Mechanism.bodies
 (the first drawn in colour with labels, the others as light outlines).
 :func:`render_frames` renders the animation frames (Agg) and :func:`write_gif`
 writes them as an animated GIF (Pillow, as ``matplotlib.animation.PillowWriter``
-does); the HTML report plays the same frames.
+does); the HTML report plays the same positions as vector frames (:func:`animation`,
+drawn by :mod:`assur.views.svg` without matplotlib).
 """
 
 from __future__ import annotations
@@ -34,7 +35,7 @@ from ._canvas import new_figure
 from .labels import check_lang, t, unit
 from .tables import _View
 
-__all__ = ["draw", "render_frames", "write_gif", "frames_png_bytes"]
+__all__ = ["draw", "animation", "render_frames", "write_gif"]
 
 
 class _Geometry:
@@ -177,9 +178,11 @@ def _limits(ax, geo):
     ax.set_aspect("equal", adjustable="box")
 
 
-def _qtext(geo, v, i, lang):
+def _qtext(qs, v, i, lang):
+    """The coordinates of position ``i`` (``qs``: coordinate → values [m or rad]) in the
+    report's units."""
     parts = []
-    for c, q in geo.q.items():
+    for c, q in qs.items():
         val = float(v.degrees(np.degrees(q[i]))) if v.is_angle(c) else q[i]
         parts.append(f"{c} = {val:.4g} {unit(v.coord_unit(c), lang)}")
     return ", ".join(parts)
@@ -241,13 +244,13 @@ def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.
     ax.set_xlabel(f"{t('x_m', lang)} [{unit('m', lang)}]")
     ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
     ax.grid(True, alpha=0.3)
-    shown = "; ".join(_qtext(geo, v, i, lang) for i in positions)
+    shown = "; ".join(_qtext(geo.q, v, i, lang) for i in positions)
     ax.set_title(f"{localize(v.mech.title, lang)}\n{shown}", fontsize=10)
     return fig
 
 
-def _animation_geometry(v, frames):
-    """Geometry on a finer grid of the coordinate (one coordinate, one design), else the
+def _animation_kinematics(v, frames):
+    """The solve on a finer grid of the coordinate (one coordinate, one design), else the
     analysis' own positions."""
     if frames and v.k == 1 and len(v.kin.shape) == 1:
         q = v.kin.q()
@@ -261,13 +264,55 @@ def _animation_geometry(v, frames):
             sense = mo.direction if mo is not None else (1 if q[-1] >= q[0] else -1)
             hi = lo + sense * 2.0 * np.pi
         try:
-            kin = v.mech.solve(np.linspace(lo, hi, int(frames)))
-            return _Geometry(v, kin)
+            return v.mech.solve(np.linspace(lo, hi, int(frames)))
         except AssemblyError:
             # the finer grid crosses a position the user's own range does not: animate the
             # analysed positions only (the report's warnings already name any failure)
             pass
-    return _Geometry(v)
+    return v.kin
+
+
+def _shown(n, frames):
+    """The positions drawn as frames: every one (``frames <= 0`` or no more than
+    ``frames``), else ``frames`` of them evenly spaced."""
+    if frames <= 0 or n <= frames:
+        return list(range(n))
+    return np.unique(np.linspace(0, n - 1, int(frames)).round().astype(int)).tolist()
+
+
+def animation(analysis, frames=30, lang="en", design=None) -> dict:
+    """The animation over the range as vector frames for the HTML report's player: no
+    raster, no matplotlib (the positions are those of :func:`render_frames`).
+
+    Returns
+    -------
+    dict
+        ``{"svg": "<svg …>", "captions": [str per frame]}`` — the frames as one SVG
+        element (:func:`assur.views.svg.frames`), each caption the coordinates of its
+        frame in the report's units.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.drawing import animation
+    >>> a = examples.hitch_003().analyze([0.42, 0.67])  # S [m]
+    >>> anim = animation(a, frames=3)
+    >>> anim["svg"].count('<g class="frame"'), anim["captions"]
+    (3, ['S = 0.42 m', 'S = 0.545 m', 'S = 0.67 m'])
+    >>> animation(a, frames=3, lang="ru")["captions"][1]
+    'S = 0.545 м'
+    """
+    from ..geometry import geometry
+    from ..svg import frames as svg_frames
+
+    check_lang(lang)
+    v = _View(analysis, design)
+    kin = _animation_kinematics(v, frames)
+    geo = geometry(kin, design=v.design if len(kin.shape) == 2 else None)
+    q = {c: np.asarray(vals) for c, vals in geo["q"].items()}
+    shown = _shown(geo["n"], frames)
+    return {"svg": svg_frames(geo, shown),
+            "captions": [_qtext(q, v, i, lang) for i in shown]}
 
 
 def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4, height=5.0):
@@ -298,7 +343,7 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
 
     check_lang(lang)
     v = _View(analysis, design)
-    geo = _animation_geometry(v, frames)
+    geo = _Geometry(v, _animation_kinematics(v, frames))
     fig = new_figure(width, height)
     fig.set_dpi(dpi)
     ax = fig.add_subplot()
@@ -306,14 +351,12 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
     ax.grid(True, alpha=0.3)
     out = []
-    shown = (range(geo.n) if frames <= 0 or geo.n <= frames else
-             np.unique(np.linspace(0, geo.n - 1, int(frames)).round().astype(int)))
-    for k, i in enumerate(shown):
+    for k, i in enumerate(_shown(geo.n, frames)):
         for art in list(ax.lines) + list(ax.patches) + list(ax.texts):
             art.remove()
         _pose(ax, geo, i)
         _limits(ax, geo)
-        ax.set_title(f"{localize(v.mech.title, lang)}\n{_qtext(geo, v, i, lang)}", fontsize=9)
+        ax.set_title(f"{localize(v.mech.title, lang)}\n{_qtext(geo.q, v, i, lang)}", fontsize=9)
         fig.canvas.draw()
         if k == 0:  # the axes are fixed: lay the figure out once
             fig.set_layout_engine("none")
@@ -372,27 +415,3 @@ def write_gif(frames, path, duration=120, bounce=True) -> Path:
     seq[0].save(path, format="GIF", save_all=True, append_images=seq[1:], duration=duration,
                 loop=0)
     return path
-
-
-def frames_png_bytes(frames) -> list:
-    """The frames as small palette PNGs (bytes), for the HTML player.
-
-    Examples
-    --------
-    >>> import io
-    >>> from PIL import Image
-    >>> from assur.views.report.drawing import frames_png_bytes
-    >>> frames = [Image.new("RGB", (64, 48), c) for c in ("white", "grey", "black")]
-    >>> pngs = frames_png_bytes(frames)
-    >>> len(pngs), [p[1:4] for p in pngs][0]
-    (3, b'PNG')
-    >>> img = Image.open(io.BytesIO(pngs[1]))
-    >>> img.mode, img.size, img.convert("RGB").getpixel((0, 0))  # palette; size [px]; grey
-    ('P', (64, 48), (128, 128, 128))
-    """
-    out = []
-    for f in _palette(list(frames)):
-        buf = io.BytesIO()
-        f.save(buf, format="PNG")
-        out.append(buf.getvalue())
-    return out

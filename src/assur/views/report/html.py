@@ -1,7 +1,7 @@
 """One self-contained HTML file: model, tables, diagrams, drawing, animation, notes.
 
 Everything is inside the file: styles and the small animation player are inline,
-images are ``data:`` URIs (base64 PNG). It links to nothing outside itself (no
+images are ``data:`` URIs (base64 PNG), the animation an inline SVG of vector frames. It links to nothing outside itself (no
 CSS, scripts, fonts or network addresses), so it can be mailed or archived as is.
 
 Numbers in the HTML tables are rounded as the seeds print them (m to 3 decimals,
@@ -222,7 +222,8 @@ td:first-child, th:first-child { position: sticky; left: 0; background: #f6f8fa;
 table.kv td, table.kv th { text-align: left; }
 .notes { font-size: 0.86em; color: #57606a; margin: 0.3em 0 0 1.2em; }
 figure { display: inline-block; margin: 0.6em 0.6em 1em 0; vertical-align: top; }
-figure img { max-width: 100%; border: 1px solid #eaeef2; }
+figure img, figure svg { max-width: 100%; border: 1px solid #eaeef2; }
+figure svg { height: auto; background: #fff; }
 figcaption { font-size: 0.9em; color: #3d444d; }
 .warn { background: #fff8e1; border-left: 4px solid #e0a800; padding: 0.5em 1em;
         margin: 0.6em 0; }
@@ -241,7 +242,7 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 <li><a href="#model">{{ L.summary }}</a></li>
 {% for tab in tables %}<li><a href="#{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</a></li>
 {% endfor %}{% if figures %}<li><a href="#figures">{{ L.figures }}</a></li>{% endif %}
-{% if drawing or frames %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
+{% if drawing or animation %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
 <li><a href="#warnings">{{ L.warnings }}</a></li>
 </ul></nav>
 
@@ -279,21 +280,25 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 {% for f in figures %}<figure id="{{ f.anchor }}"><img src="{{ f.src }}" alt="{{ f.caption }}"><figcaption>{{ f.caption }}</figcaption></figure>
 {% endfor %}</section>{% endif %}
 
-{% if drawing or frames %}<section id="drawing"><h2>{{ L.drawing }}</h2>
+{% if drawing or animation %}<section id="drawing"><h2>{{ L.drawing }}</h2>
 {% if drawing %}<figure><img src="{{ drawing }}" alt="{{ L.drawing }}"><figcaption>{{ L.drawing }}</figcaption></figure>{% endif %}
-{% if frames %}<figure id="animation"><img id="anim-img" src="{{ frames[0] }}" alt="{{ L.animation }}">
-<figcaption>{{ L.animation }}</figcaption>
+{% if animation %}<figure id="animation">{{ animation.svg|safe }}
+<figcaption>{{ L.animation }}: <span id="anim-q">{{ animation.captions[0] }}</span></figcaption>
 <div class="player"><button type="button" id="anim-play">{{ L.play }}</button>
-<input type="range" id="anim-pos" min="0" max="{{ frames|length - 1 }}" value="0" aria-label="{{ L.position }}"></div>
+<input type="range" id="anim-pos" min="0" max="{{ animation.captions|length - 1 }}" value="0" aria-label="{{ L.position }}"></div>
 </figure>
 <script>
 (function () {
-  var frames = {{ frames|tojson }};
-  var img = document.getElementById("anim-img"), pos = document.getElementById("anim-pos");
+  var frames = document.querySelectorAll("#anim-svg > g.frame");
+  var captions = {{ animation.captions|tojson }};
+  var pos = document.getElementById("anim-pos"), cap = document.getElementById("anim-q");
   var i = 0, dir = 1, timer = null;
-  function show(k) { i = k; img.src = frames[k]; pos.value = k; }
-  function step() { var n = i + dir; if (n < 0 || n >= frames.length) { dir = -dir; n = i + dir; } show(n); }
-  function toggle() { if (timer) { clearInterval(timer); timer = null; } else { timer = setInterval(step, {{ interval }}); } }
+  function show(k) {
+    frames[i].setAttribute("display", "none"); frames[k].removeAttribute("display");
+    i = k; pos.value = k; cap.textContent = captions[k];
+  }
+  function step() { var n = i + dir; if (n < 0 || n >= frames.length) { dir = -dir; n = i + dir; } if (n >= 0 && n < frames.length) show(n); }
+  function toggle() { if (timer) { clearInterval(timer); timer = null; } else if (frames.length > 1) { timer = setInterval(step, {{ interval }}); } }
   document.getElementById("anim-play").addEventListener("click", toggle);
   pos.addEventListener("input", function () { if (timer) toggle(); show(+pos.value); });
   toggle();
@@ -344,16 +349,13 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     if drawing is None:
         drawing = _drawing.draw(analysis, lang=lang, design=design)
     if animation is None:
-        animation = _drawing.render_frames(analysis, lang=lang, design=design)
+        animation = _drawing.animation(analysis, lang=lang, design=design)
     drawing_uri = None
     if drawing is not False:
         png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
         drawing_uri = data_uri(bytes(png))
-    frames = []
-    if animation is not False and animation:
-        if not isinstance(animation[0], (bytes, bytearray)):
-            animation = _drawing.frames_png_bytes(animation)
-        frames = [data_uri(bytes(f)) for f in animation]
+    if animation is not False and animation and not animation.get("captions"):
+        animation = False
     env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
     tpl = env.from_string(_TEMPLATE)
     L = {k: v[lang] for k, v in TEXT.items()}
@@ -363,7 +365,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
         summary=_summary(analysis, lang),
         tables=[_table_view(tab, lang) for tab in tables],
         figures=_figure_items(dict(figures), lang),
-        drawing=drawing_uri, frames=frames, interval=int(interval),
+        drawing=drawing_uri, animation=animation or None, interval=int(interval),
         warnings=_warnings(analysis, tables, lang))
 
 
@@ -386,9 +388,10 @@ def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=Non
     drawing : Figure, bytes or False, optional
         The drawing of the mechanism; default :func:`assur.views.report.drawing.draw`;
         False leaves it out.
-    animation : list of PNG bytes or PIL images, or False, optional
-        Frames of the animation (played by an inline script); default
-        :func:`assur.views.report.drawing.render_frames`; False leaves it out.
+    animation : dict or False, optional
+        The animation as vector frames (``{"svg", "captions"}``, played by an inline
+        script); default :func:`assur.views.report.drawing.animation`; False leaves
+        it out.
     design : int, optional
         Design of a batch.
 

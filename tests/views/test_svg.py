@@ -1,4 +1,4 @@
-"""The inline SVG drawing (:mod:`assur.views.page.svg`): every labelled joint is a
+"""The inline SVG drawing (:mod:`assur.views.svg`): every labelled joint is a
 circle at its solved position (y up: drawn at −y), inside the view box; a ghost per
 extra position; positions out of range are refused."""
 
@@ -9,7 +9,7 @@ import pytest
 
 from assur import examples
 from assur.views.geometry import geometry
-from assur.views.page.svg import svg
+from assur.views.svg import svg
 
 
 @pytest.fixture(scope="module")

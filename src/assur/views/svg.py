@@ -3,8 +3,10 @@
 The same picture the page draws (:mod:`assur.views.geometry`): links in colours
 (a rigid link of three or more points as its lightly filled outline), cylinders as
 a barrel and a rod, frame pivots as triangles, joints as open circles, other points
-as dots, every point and link labelled, weights as arrows down. Used by the
-notebooks' ``_repr_html_`` (:mod:`assur.views.notebook`).
+as dots, every point and link labelled, weights as arrows down. :func:`svg` draws
+some positions (the notebooks' ``_repr_html_``, :mod:`assur.views.notebook`);
+:func:`frames` draws every position as one frame of an animation (the HTML report's
+player, :func:`assur.views.report.drawing.animation`).
 
 Examples
 --------
@@ -22,9 +24,9 @@ from html import escape
 
 import numpy as np
 
-from ..geometry import convex_hull
+from .geometry import convex_hull
 
-__all__ = ["svg"]
+__all__ = ["svg", "frames"]
 
 _COLORS = ("#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
            "#bcbd22", "#17becf", "#ff7f0e")
@@ -48,7 +50,7 @@ def _cylinders(geo):
     return out
 
 
-def _pose(geo, i, cyl, span, ghost, labels):
+def _pose(geo, i, cyl, span, ghost, labels, ids=True):
     xy = {p: (v[i][0], -v[i][1]) for p, v in geo["points"].items()}  # SVG y is down
     fs, hh = 0.028 * span, 0.035 * span
     op = ' opacity="0.3"' if ghost else ""
@@ -99,7 +101,7 @@ def _pose(geo, i, cyl, span, ghost, labels):
     joints = set(geo["joints"])
     for p, (x, y) in xy.items():
         j = p in joints
-        pid = "" if ghost else f' id="pt-{escape(p, quote=True)}"'
+        pid = "" if ghost or not ids else f' id="pt-{escape(p, quote=True)}"'
         out.append(f'<circle{pid} cx="{_f(x)}" cy="{_f(y)}" r="{_f((0.011 if j else 0.007) * span)}" '
                    f'fill="{"#fff" if j else "#000"}" stroke="#000" stroke-width="1.3" '
                    f'vector-effect="non-scaling-stroke"/>')
@@ -150,7 +152,7 @@ def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
     >>> import numpy as np
     >>> from assur import examples
     >>> from assur.views.geometry import geometry
-    >>> from assur.views.page.svg import svg
+    >>> from assur.views.svg import svg
     >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 3)))   # S [m]
     >>> s = svg(g, positions=[2, 0], width=400, height=300)   # S = 0.67 m in colour
     >>> s.startswith("<svg"), 'width="400" height="300"' in s   # [px]
@@ -158,20 +160,89 @@ def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
     >>> s.count('<g opacity="0.3">'), s.count('id="pt-')   # one ghost; the labelled points
     (1, 11)
     """
-    n = geo["n"]
-    positions = sorted({0, n - 1}) if positions is None else [int(i) for i in positions]
-    for i in positions:
-        if not -n <= i < n:
-            raise ValueError(f"positions must be in 0…{n - 1}, got {i}")
-    x0, y0, x1, y1 = geo["bounds"]
-    span = max(x1 - x0, y1 - y0, 1e-6)
-    m = 0.12 * span
+    positions = _positions(geo, positions)
+    span = _span(geo)
     cyl = _cylinders(geo)
     body = []
     for i in positions[1:]:
         body += _pose(geo, i, cyl, span, True, False)
     body += _pose(geo, positions[0], cyl, span, False, labels)
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+    return _element(geo, width, height, "".join(body))
+
+
+def frames(geo: dict, positions=None, width: int = 640, height: int = 500,
+           labels: bool = True, element_id: str = "anim-svg") -> str:
+    """Every position (or the chosen ones) as one frame of an animation: an SVG
+    element holding a group ``<g class="frame">`` per frame, the first shown, the others
+    ``display="none"`` (a script shows one at a time; printed, the first is seen). For an
+    HTML document: the element names no namespace address, as HTML needs none.
+
+    Parameters
+    ----------
+    geo : dict
+        :func:`assur.views.geometry.geometry`'s data.
+    positions : sequence of int, optional
+        The positions drawn, in the order played. Default: every one.
+    width, height : int
+        Size of the element [px].
+    labels : bool
+        Label points and links in every frame.
+    element_id : str
+        The element's ``id`` (the player finds its frames by it).
+
+    Returns
+    -------
+    str
+        ``<svg id=…>…</svg>`` (coordinates in m, y up; one view box for every frame).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.views.geometry import geometry
+    >>> from assur.views.svg import frames
+    >>> g = geometry(examples.hitch_003().solve(np.linspace(0.42, 0.67, 4)))   # S [m]
+    >>> s = frames(g)
+    >>> s.count('<g class="frame"'), s.count('<g class="frame" display="none"')
+    (4, 3)
+    >>> 'id="pt-' in s        # point ids are the page's, not repeated in every frame
+    False
+    """
+    n = geo["n"]
+    positions = list(range(n)) if positions is None else _positions(geo, positions)
+    span = _span(geo)
+    cyl = _cylinders(geo)
+    body = []
+    for k, i in enumerate(positions):
+        hidden = "" if k == 0 else ' display="none"'
+        body.append(f'<g class="frame"{hidden}>')
+        body += _pose(geo, i, cyl, span, False, labels, ids=False)
+        body.append("</g>")
+    return _element(geo, width, height, "".join(body), element_id, xmlns=False)
+
+
+def _positions(geo, positions):
+    n = geo["n"]
+    positions = sorted({0, n - 1}) if positions is None else [int(i) for i in positions]
+    for i in positions:
+        if not -n <= i < n:
+            raise ValueError(f"positions must be in 0…{n - 1}, got {i}")
+    return positions
+
+
+def _span(geo):
+    x0, y0, x1, y1 = geo["bounds"]
+    return max(x1 - x0, y1 - y0, 1e-6)
+
+
+def _element(geo, width, height, body, element_id=None, xmlns=True):
+    """The ``<svg>`` element around ``body``; without ``xmlns`` for an element inside an
+    HTML document (which names no address then)."""
+    x0, y0, x1, y1 = geo["bounds"]
+    m = 0.12 * _span(geo)
+    eid = f' id="{escape(element_id, quote=True)}"' if element_id else ""
+    ns = ' xmlns="http://www.w3.org/2000/svg"' if xmlns else ""
+    return (f'<svg{ns}{eid} width="{width}" height="{height}" '
             f'viewBox="{_f(x0 - m)} {_f(-(y1 + m))} {_f(x1 - x0 + 2 * m)} '
             f'{_f(y1 - y0 + 2.6 * m)}" preserveAspectRatio="xMidYMid meet" '
-            f'font-family="sans-serif">' + "".join(body) + "</svg>")
+            f'font-family="sans-serif">' + body + "</svg>")
