@@ -157,7 +157,8 @@ def test_statics_switch_to_the_fused_kernel_after_a_few_calls(monkeypatch):
 # the compiled fused kernel and its numpy evaluation (the tests' default backend)
 # ---------------------------------------------------------------------------------
 def _both_backends(fn):
-    """``fn()`` with the compiled kernels, then with their numpy evaluation."""
+    """``fn()`` with the compiled kernels, then with their numpy evaluation (the test
+    around it runs with numpy: building its case compiles nothing)."""
     from assur.kernel import vector as KV
     out = []
     for name in ("numba", "numpy"):
@@ -170,7 +171,6 @@ def _both_backends(fn):
 
 
 @pytest.mark.slow
-@pytest.mark.compiled
 @pytest.mark.parametrize("family", list(FAMILIES))
 @settings(SETTINGS, max_examples=1)   # each example compiles a kernel; the formulas are
 @given(data=st.data())                # the other tests' (30 examples per family)

@@ -99,7 +99,7 @@ def test_folded_code_equals_unfolded_on_bundled_models(name, monkeypatch):
     q = q.reshape(-1, len(mech.coordinates)).T if len(mech.coordinates) > 1 else q
     q = np.ascontiguousarray(q[:, :KV.SMALL])
     prog = mech.program()
-    ptab, trig, _ = mech.prepared(prog)
+    ptab, trig, _ = by_numpy(mech.prepared, prog)  # a pose point's pre-pass
     pts = tuple(prog.slot[p] for p in prog.out_pts)
     sca = tuple(prog.scal[s] for s in prog.out_sca)
     nq = len(KS.quantities(prog.k, pts, sca))

@@ -2,7 +2,7 @@
 small calls of a process that has not loaded numba) gives the compiled kernel's
 answers: outputs, first and second analogs, status codes and continuity depths, on
 random mechanisms of every group type (the samples of the group contract test,
-including parameters that cannot assemble), on four bundled models over their ranges
+including parameters that cannot assemble), on two bundled models over their ranges
 (one per kind of structure), and in the continuity check's corner cases (within and
 across the compiled kernel's work items). And a process that only checks a
 bundled model never imports numba (nor pint, scipy, matplotlib, pandas)."""
@@ -62,7 +62,7 @@ def _same(a, b, what):
 def test_vector_equals_compiled_on_every_group_type(type_name, data):
     sample = SAMPLES[type_name]
     b = sample.build(data)
-    case = b.build()
+    case = by_numpy(b.build)  # the case's own solves: not what is compared
     M, n, k = case.Q.shape
     q = case.Q.transpose(2, 0, 1).reshape(k, M * n)
     params = {}
@@ -76,10 +76,9 @@ def test_vector_equals_compiled_on_every_group_type(type_name, data):
     _same(got, want, type_name)
 
 
-# one model per kind of structure (a cylinder and a pose point, a crank six-bar, two
-# cylinders on a loader, a crane's two coordinates); every group type is compared on
-# random mechanisms above
-@pytest.mark.parametrize("name", ["hitch_003", "combine_002", "loader_lab1", "crane_lv185"])
+# a model of one coordinate (a cylinder, pose and rigid points, dyads) and one of two
+# (a crane); every group type is compared on random mechanisms above
+@pytest.mark.parametrize("name", ["hitch_003", "crane_lv185"])
 def test_vector_equals_compiled_on_bundled_models(name, monkeypatch):
     model = by_numpy(io.load, io.bundled(name))
     mech = model.mechanism
