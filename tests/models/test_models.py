@@ -24,7 +24,7 @@ def test_the_list_of_unassembling_models_is_current():
 #: bundled models whose HTML report another test writes (on a smaller range, with the
 #: same code); here their CSV tables over the whole range
 HTML_ELSEWHERE = {
-    # a grid of 13 × 8 positions: its report (an animation of 104 frames) is the slowest
+    # a grid of 13 × 8 positions: its report (maps of every quantity) is the slowest
     "loader_lab1": "tests/views/report/test_tables.py::test_analyze_writes_the_loader_report",
 }
 
@@ -40,10 +40,8 @@ def test_the_html_reports_written_elsewhere_are_tested_there():
 @pytest.mark.parametrize("name", MODELS)
 def test_analyze_writes_every_bundled_report(name, tmp_path):
     formats = "csv" if name in HTML_ELSEWHERE else "csv,html"
-    # three frames of the animation: its every frame is a full drawing (~0.2 s); the
-    # full animation is tested in tests/views/report and tests/views/cli
     r = CliRunner().invoke(app, ["analyze", str(io.bundled(name)), "-o", str(tmp_path),
-                                 "--format", formats, "--frames", "3"])
+                                 "--format", formats])
     if name in AS_PRINTED:
         assert r.exit_code == 1 and "Traceback" not in r.output, r.output
         assert f"{name}.toml" in r.output
