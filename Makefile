@@ -33,11 +33,16 @@ chromium:
 lint: $(STAMP)
 	$(VENV)/bin/lint-imports
 
+# The tests write their bytecode caches (pytest's rewritten test modules too) even
+# where the environment says not to (PYTHONDONTWRITEBYTECODE): a later run, and every
+# subprocess a test starts, then compiles nothing again (collection 18 s -> 9 s).
+TEST_ENV := env -u PYTHONDONTWRITEBYTECODE
+
 test: $(STAMP) chromium
-	$(PY) -m pytest -n 2 --dist worksteal --durations=10
+	$(TEST_ENV) $(PY) -m pytest -n 2 --dist worksteal --durations=10
 
 test-fast: $(STAMP) chromium
-	$(PY) -m pytest -n 2 --dist worksteal -m "not slow"
+	$(TEST_ENV) $(PY) -m pytest -n 2 --dist worksteal -m "not slow"
 
 bench: $(STAMP)
 	$(PY) benchmarks/run.py
