@@ -6,6 +6,7 @@ PYTHON ?= python3
 VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.assur-installed
+CORE_STAMP := $(VENV)/.assur-core-installed
 DOCS_STAMP := $(VENV)/.assur-docs-installed
 RELEASE_STAMP := $(VENV)/.assur-release-installed
 #: bundled models that must fail `assur check` (the seeds as printed cannot assemble)
@@ -17,11 +18,17 @@ $(PY):
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 
+# the package and its dependencies (what `make demo` and `make serve` need) …
+$(CORE_STAMP): pyproject.toml | $(PY)
+	$(PY) -m pip install -q -e .
+	@touch $(CORE_STAMP)
+
+# … and the test tools (pytest, hypothesis, Playwright, import-linter …) for the rest
 $(STAMP): pyproject.toml | $(PY)
 	$(PY) -m pip install -q -e '.[test]'
-	@touch $(STAMP)
+	@touch $(STAMP) $(CORE_STAMP)
 
-demo: $(STAMP)
+demo: $(CORE_STAMP)
 	$(VENV)/bin/assur demo
 
 # Debian's chromium for the page's end-to-end test (apt-get when missing; .ci/chromium.sh)
@@ -52,7 +59,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/page.py
 
 # the interactive page for the seed-003 hitch (docs/page.md)
-serve: $(STAMP)
+serve: $(CORE_STAMP)
 	$(VENV)/bin/assur serve examples/hitch_003.toml
 
 # The documentation site, offline, warnings as errors; a broken gallery example fails it.
