@@ -185,6 +185,9 @@ def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
     assert "-0.0," not in text and "nan" not in text.lower()
     page = (tmp_path / "simulation.html").read_text(encoding="utf-8")
     assert "Подъём секции косилки-плющилки" in page and "невязка баланса" in page
+    # the motion in real time as vector frames: one per 0.1 s over 4.5 s, captioned
+    assert page.count('<g class="frame"') == 46
+    assert 'id="anim-q">t = 0 с; S = ' in page and "data:image/gif" not in page
     summary = (tmp_path / "simulation_summary.csv").read_text(encoding="utf-8")
     assert "открытие предохранительного клапана" in summary
 

@@ -35,7 +35,7 @@ from ._canvas import new_figure
 from .labels import check_lang, t, unit
 from .tables import _View
 
-__all__ = ["draw", "animation", "render_frames", "write_gif"]
+__all__ = ["draw", "animation", "player", "render_frames", "write_gif"]
 
 
 class _Geometry:
@@ -313,6 +313,62 @@ def animation(analysis, frames=30, lang="en", design=None) -> dict:
     shown = _shown(geo["n"], frames)
     return {"svg": svg_frames(geo, shown),
             "captions": [_qtext(q, v, i, lang) for i in shown]}
+
+
+_PLAYER = """<figure id="animation">{svg}
+<figcaption>{title}: <span id="anim-q">{first}</span></figcaption>
+<div class="player"><button type="button" id="anim-play">{play}</button>
+<input type="range" id="anim-pos" min="0" max="{last}" value="0" aria-label="{position}"></div>
+</figure>
+<script>
+(function () {{
+  var frames = document.querySelectorAll("#anim-svg > g.frame");
+  var captions = {captions};
+  var pos = document.getElementById("anim-pos"), cap = document.getElementById("anim-q");
+  var i = 0, dir = 1, bounce = {bounce}, timer = null;
+  function show(k) {{
+    frames[i].setAttribute("display", "none"); frames[k].removeAttribute("display");
+    i = k; pos.value = k; cap.textContent = captions[k];
+  }}
+  function step() {{
+    var n = i + dir;
+    if (n < 0 || n >= frames.length) {{
+      if (bounce) {{ dir = -dir; n = i + dir; }} else {{ n = 0; }}
+    }}
+    show(n);
+  }}
+  function toggle() {{ if (timer) {{ clearInterval(timer); timer = null; }} else if (frames.length > 1) {{ timer = setInterval(step, {interval}); }} }}
+  document.getElementById("anim-play").addEventListener("click", toggle);
+  pos.addEventListener("input", function () {{ if (timer) toggle(); show(+pos.value); }});
+  toggle();
+}})();
+</script>"""
+
+
+def player(anim, lang="en", interval=120, bounce=True, title=None) -> str:
+    """The HTML of the animation's player: the frames of :func:`animation`, a caption
+    with the shown frame's position, a play/pause button and a slider, and the inline
+    script that plays them (forward and back with ``bounce``, else from the start
+    again), one frame every ``interval`` ms. User text is escaped.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.drawing import animation, player
+    >>> html = player(animation(examples.hitch_003().analyze([0.42, 0.67]), frames=3))
+    >>> html.count('<g class="frame"'), 'id="anim-q">S = 0.42 m<' in html
+    (3, True)
+    """
+    import html as _html
+    import json
+
+    esc = _html.escape
+    captions = json.dumps(list(anim["captions"]), ensure_ascii=True).replace("</", "<\\/")
+    return _PLAYER.format(
+        svg=anim["svg"], title=esc(title or t("animation", lang)),
+        first=esc(anim["captions"][0]), play=esc(t("play", lang)),
+        last=len(anim["captions"]) - 1, position=esc(t("position", lang)),
+        captions=captions, bounce="true" if bounce else "false", interval=int(interval))
 
 
 def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4, height=5.0):

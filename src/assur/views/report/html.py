@@ -242,7 +242,7 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 <li><a href="#model">{{ L.summary }}</a></li>
 {% for tab in tables %}<li><a href="#{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</a></li>
 {% endfor %}{% if figures %}<li><a href="#figures">{{ L.figures }}</a></li>{% endif %}
-{% if drawing or animation %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
+{% if drawing or player %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
 <li><a href="#warnings">{{ L.warnings }}</a></li>
 </ul></nav>
 
@@ -280,30 +280,9 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 {% for f in figures %}<figure id="{{ f.anchor }}"><img src="{{ f.src }}" alt="{{ f.caption }}"><figcaption>{{ f.caption }}</figcaption></figure>
 {% endfor %}</section>{% endif %}
 
-{% if drawing or animation %}<section id="drawing"><h2>{{ L.drawing }}</h2>
+{% if drawing or player %}<section id="drawing"><h2>{{ L.drawing }}</h2>
 {% if drawing %}<figure><img src="{{ drawing }}" alt="{{ L.drawing }}"><figcaption>{{ L.drawing }}</figcaption></figure>{% endif %}
-{% if animation %}<figure id="animation">{{ animation.svg|safe }}
-<figcaption>{{ L.animation }}: <span id="anim-q">{{ animation.captions[0] }}</span></figcaption>
-<div class="player"><button type="button" id="anim-play">{{ L.play }}</button>
-<input type="range" id="anim-pos" min="0" max="{{ animation.captions|length - 1 }}" value="0" aria-label="{{ L.position }}"></div>
-</figure>
-<script>
-(function () {
-  var frames = document.querySelectorAll("#anim-svg > g.frame");
-  var captions = {{ animation.captions|tojson }};
-  var pos = document.getElementById("anim-pos"), cap = document.getElementById("anim-q");
-  var i = 0, dir = 1, timer = null;
-  function show(k) {
-    frames[i].setAttribute("display", "none"); frames[k].removeAttribute("display");
-    i = k; pos.value = k; cap.textContent = captions[k];
-  }
-  function step() { var n = i + dir; if (n < 0 || n >= frames.length) { dir = -dir; n = i + dir; } if (n >= 0 && n < frames.length) show(n); }
-  function toggle() { if (timer) { clearInterval(timer); timer = null; } else if (frames.length > 1) { timer = setInterval(step, {{ interval }}); } }
-  document.getElementById("anim-play").addEventListener("click", toggle);
-  pos.addEventListener("input", function () { if (timer) toggle(); show(+pos.value); });
-  toggle();
-})();
-</script>{% endif %}
+{% if player %}{{ player|safe }}{% endif %}
 </section>{% endif %}
 
 <section id="warnings"><h2>{{ L.warnings }}</h2>
@@ -365,7 +344,8 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
         summary=_summary(analysis, lang),
         tables=[_table_view(tab, lang) for tab in tables],
         figures=_figure_items(dict(figures), lang),
-        drawing=drawing_uri, animation=animation or None, interval=int(interval),
+        drawing=drawing_uri,
+        player=(_drawing.player(animation, lang, interval) if animation else None),
         warnings=_warnings(analysis, tables, lang))
 
 

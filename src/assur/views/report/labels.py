@@ -269,6 +269,8 @@ TEXT = {
                             "ru": "минимум по диапазону подъёма на раме ({0}): {1:.4g} кН"},
     # simulation in time of a hydraulic drive (report/simulation.py; lab 6 figs. 6.3–6.7)
     "sim_report": {"en": "Simulation of the hydraulic drive", "ru": "Моделирование гидропривода"},
+    "sim_motion": {"en": "The mechanism in motion (real time)",
+                   "ru": "Механизм в движении (в реальном времени)"},
     "sim_time": {"en": "time t", "ru": "время t"},
     "sim_p": {"en": "Pressure at the pump p1 and at the cylinder p2",
               "ru": "Давление у насоса p1 и у гидроцилиндра p2"},

@@ -237,8 +237,9 @@ def write_simulation_report(result, outdir, title="", lang="en",
                             frame_step=0.1):
     """Write ``simulation.csv``, ``simulation_summary.csv``, the figures
     (``sim_<name>.png``), ``simulation.html`` (self-contained) and, given the
-    ``mechanism``, ``simulation.gif``: its drawing at S(t) every ``frame_step``
-    seconds, played in real time (:func:`assur.views.report.drawing.render_frames`).
+    ``mechanism``, its drawing at q(t) every ``frame_step`` seconds played in real
+    time: as vector frames in the HTML (:func:`assur.views.report.drawing.player`) and
+    as ``simulation.gif`` (:func:`assur.views.report.drawing.render_frames`).
 
     Returns
     -------
@@ -283,31 +284,43 @@ def write_simulation_report(result, outdir, title="", lang="en",
             p = out / f"sim_{name}.png"
             p.write_bytes(data)
             files.append(p)
-    gif_uri = None
-    if "gif" in formats and mechanism is not None:
-        from .drawing import render_frames, write_gif
+    motion = None
+    if mechanism is not None and ("gif" in formats or "html" in formats):
         ts = np.arange(0.0, result.t[-1] + 1e-9, frame_step)
         q = np.asarray(result.q)
         qf = np.interp(ts, result.t, q) if q.ndim == 1 else np.column_stack(
             [np.interp(ts, result.t, q[:, j]) for j in range(q.shape[1])])
-        frames = render_frames(mechanism.analyze(qf), frames=0, lang=lang)
+        motion = mechanism.analyze(qf)
+    if "gif" in formats and motion is not None:
+        from .drawing import render_frames, write_gif
+        frames = render_frames(motion, frames=0, lang=lang)
         p = write_gif(frames, out / "simulation.gif", duration=int(round(frame_step * 1e3)),
                       bounce=False)
         files.append(p)
-        gif_uri = data_uri(p.read_bytes(), "image/gif")
+    player_html = None
+    if "html" in formats and motion is not None:
+        # the mechanism at q(t) every frame_step, played in real time as vector frames
+        from .drawing import animation, player
+        anim = animation(motion, frames=0, lang=lang)
+        anim["captions"] = [f"t = {tk:.3g} {unit('s', lang)}; {c}"
+                            for tk, c in zip(ts, anim["captions"])]
+        player_html = player(anim, lang, interval=frame_step * 1e3, bounce=False,
+                             title=t("sim_motion", lang))
     if "html" in formats:
         esc = html.escape
         parts = [f"<!doctype html><html lang='{lang}'><head><meta charset='utf-8'>"
                  f"<title>{esc(title or t('sim_report', lang))}</title>"
                  "<style>body{font-family:sans-serif;max-width:60em;margin:auto}"
-                 "td{padding:2px 8px}img{max-width:100%}</style></head><body>",
+                 "td{padding:2px 8px}img{max-width:100%}"
+                 "figure svg{max-width:100%;height:auto;border:1px solid #eaeef2}"
+                 ".player input{width:60%;vertical-align:middle}</style></head><body>",
                  f"<h1>{esc(t('sim_report', lang))}</h1>",
                  f"<h2>{esc(title)}</h2>" if title else "", "<table>"]
         for label, value, u in summary(result, lang):
             parts.append(f"<tr><td>{esc(label)}</td><td>{esc(value)}</td><td>{esc(u)}</td></tr>")
         parts.append("</table>")
-        if gif_uri:
-            parts.append(f"<figure><img alt='motion' src='{gif_uri}'></figure>")
+        if player_html:
+            parts.append(player_html)
         for name, data in pngs.items():
             uri = data_uri(data)
             parts.append(f"<figure><img alt='{esc(name)}' src='{uri}'></figure>")
