@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 from pathlib import Path
 
 
@@ -21,3 +22,31 @@ def assert_csvs_clean(directory: Path, name: str) -> list[Path]:
                 assert math.isfinite(float(cell)), f"{name}: {f.name} holds {cell}"
                 assert cell != "-0.0", f"{name}: {f.name} holds -0.0"
     return files
+
+
+def label_problems(fig) -> list[str]:
+    """What a reader of ``fig`` would see wrong in its texts (titles, axis and tick
+    labels, legends, annotations): raw TeX — a ``\\``, ``_`` or ``$`` outside the math
+    segments — or a math segment matplotlib cannot parse (it would print it raw);
+    and a figure with no data on any of its axes."""
+    from matplotlib.mathtext import MathTextParser
+    from matplotlib.text import Text
+
+    parser = MathTextParser("path")
+    out = []
+    if not any(ax.has_data() for ax in fig.axes):
+        out.append("a figure with nothing drawn")
+    for text in fig.findobj(Text):
+        s = text.get_text()
+        parts = re.split(r"(?<!\\)\$", s)
+        if len(parts) % 2 == 0:  # an odd number of dollars: printed as they are
+            parts = [s]
+        for k, part in enumerate(parts):
+            if k % 2:
+                try:
+                    parser.parse(f"${part}$", 72)
+                except ValueError:
+                    out.append(f"math that does not parse: {s!r}")
+            elif re.search(r"[\\_$]", part):
+                out.append(f"raw TeX: {s!r}")
+    return out

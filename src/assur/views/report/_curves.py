@@ -15,12 +15,26 @@ _SPECIAL = set("_^$\\{}%#&~")
 
 
 def _math(sym, idx, prime=False):
-    """``φ_{34}`` in mathtext (plain text if the name has TeX specials)."""
-    if any(ch in _SPECIAL for ch in str(idx)) or any(ch.isalpha() for ch in str(idx)):
-        # letters in small mathtext subscripts are hard to read ("S6" looks like "56")
-        return f"{sym}{chr(39) if prime else ''} {idx}" if sym.startswith("\\") is False \
-            else f"{sym}{idx}"
-    return f"${sym}{chr(39) if prime else ''}_{{\\mathrm{{{idx}}}}}$"
+    """The symbol ``sym`` (mathtext, e.g. ``\\varphi``) of the link or point ``idx``:
+    ``φ_{34}`` with a numeric subscript; a name with letters or TeX specials after the
+    symbol as plain text (``φ′ w3``: letters in small mathtext subscripts are hard to
+    read, "S6" looks like "56"), printed as the model names it.
+
+    Examples
+    --------
+    >>> from assur.views.report._curves import _math
+    >>> _math(r"\\varphi", "34"), _math(r"\\varphi", "w3", prime=True)
+    ('$\\\\varphi_{\\\\mathrm{34}}$', "$\\\\varphi'$ w3")
+    >>> _math("y", "a_1")   # a plain symbol, a name with an underscore
+    'y a_1'
+    """
+    p = chr(39) if prime else ""
+    idx = str(idx)
+    if any(ch in _SPECIAL for ch in idx) or any(ch.isalpha() for ch in idx):
+        if sym.startswith("\\"):  # a dollar in the name is not the start of math
+            return f"${sym}{p}$ " + idx.replace("$", "\\$")
+        return f"{sym}{p} {idx}"
+    return f"${sym}{p}_{{\\mathrm{{{idx}}}}}$"
 
 
 _PHI = r"\varphi"

@@ -433,7 +433,8 @@ FIGURES = {"angles": angles, "distances": distances, "analogs": analogs, "transm
 
 
 def figures(analysis, lang="en", design=None, names=None) -> dict:
-    """Every diagram whose data exist, ``{name: Figure}`` in :data:`FIGURES` order.
+    """Every diagram whose data exist, ``{name: Figure}`` in :data:`FIGURES` order (a
+    diagram with nothing to draw for this machine is left out).
 
     Parameters
     ----------
@@ -467,6 +468,9 @@ def figures(analysis, lang="en", design=None, names=None) -> dict:
     out = {}
     for n in names:
         fig = FIGURES[n](analysis, lang, design)
-        if fig is not None:
+        # a figure with nothing drawn on it (e.g. a capacity diagram of a machine with
+        # no load to lift, link angles of a machine whose only link is a cylinder) is
+        # not a figure of this machine
+        if fig is not None and any(ax.has_data() for ax in fig.axes):
             out[n] = fig
     return out

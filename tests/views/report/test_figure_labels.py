@@ -1,0 +1,38 @@
+"""Every diagram of a report is drawn and readable (issue 23): no figure with nothing on
+it, no raw TeX in any text a reader sees — among the models, a steering drive whose
+links are named with letters (``w3``, ``a5``: once printed ``\\varphiw3``), a machine
+with no load to lift (no capacity diagram) and one whose only moving link is a
+cylinder (no link angles)."""
+
+import pytest
+
+from assur import io
+from assur.views.report._curves import _math
+from assur.views.report.figures import figures
+from tests.helpers.reports import label_problems
+
+
+@pytest.mark.parametrize("name", ["hitch_003", "steering_lab4", "spout_lab5",
+                                  "adapter_lab6", "combine_002", "crane_lv185"])
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_every_figure_drawn_and_no_raw_tex(name, lang):
+    a = io.load(io.bundled(name)).analyze()
+    figs = figures(a, lang)
+    assert figs
+    for fig_name, fig in figs.items():
+        assert not label_problems(fig), (name, fig_name, label_problems(fig))
+
+
+def test_the_diagrams_of_each_machine_are_its_own():
+    """Only the diagrams with data: the steering drive lifts nothing, the adapter's
+    only moving link is its cylinder."""
+    steering = figures(io.load(io.bundled("steering_lab4")).analyze())
+    adapter = figures(io.load(io.bundled("adapter_lab6")).analyze())
+    assert "capacity" not in steering and {"angles", "analogs"} <= set(steering)
+    assert not {"angles", "analogs"} & set(adapter)
+
+
+def test_a_symbol_of_a_name_with_letters_is_not_raw_tex():
+    assert _math(r"\varphi", "w3") == r"$\varphi$ w3"
+    assert _math(r"\varphi", "3") == r"$\varphi_{\mathrm{3}}$"
+    assert _math(r"\varphi", "a$b", prime=True) == r"$\varphi'$ a\$b"
