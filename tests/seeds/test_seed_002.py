@@ -245,10 +245,11 @@ def test_csv_and_xlsx_carry_the_distances(seed, tmp_path):
     text = write_csv(t21, tmp_path / "t.csv").read_text(encoding="utf-8")
     assert "l7 [m]" in text.splitlines()[0] and "phi9 [deg]" in text.splitlines()[0]
     wb = load_workbook(write_xlsx(tabs, tmp_path / "t.xlsx"))
-    head = [c.value for c in wb["2.1"][1]]
+    ws = wb.worksheets[0]  # table 2.1: symbols in row 2, units in row 3, numbers below
+    head = [f"{s} [{u}]" for s, u in zip((c.value for c in ws[2]), (c.value for c in ws[3]))]
     assert "l9 [m]" in head
     col = head.index("l9 [m]") + 1
-    assert wb["2.1"].cell(2, col).value == pytest.approx(float(t21["l9"][0]), abs=0)
+    assert ws.cell(4, col).value == pytest.approx(float(t21["l9"][0]), abs=0)
 
 
 def test_examples_and_motion(model):

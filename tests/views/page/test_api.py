@@ -12,7 +12,7 @@ from fastapi.testclient import TestClient
 
 from assur import io as aio
 from assur.io import bundled
-from assur.views.report.tables import seed_tables
+from assur.views.report.tables import seed_tables, sheet_name
 
 
 @pytest.fixture(scope="module")
@@ -141,8 +141,9 @@ def test_tables_download_equals_the_report_tables(client):
     r = client.post("/api/export/xlsx", json={"params": {}})
     import openpyxl
     wb = openpyxl.load_workbook(_io.BytesIO(r.content))
-    assert wb.sheetnames == [t.id for t in ref]
-    assert wb["4.1"]["B2"].value == t41["Fgc"][0]
+    assert wb.sheetnames == ["Inputs"] + [sheet_name(t) for t in ref]
+    ws = wb[sheet_name(t41)]
+    assert [c.value for c in ws[2]][:2] == ["S", "Fgc"] and ws["B4"].value == t41["Fgc"][0]
     out = client.post("/api/export/csv", json={"table": "9.9"}).json()
     assert out["ok"] is False and "this model has tables" in out["error"]["message"]
     assert client.post("/api/export/pdf", json={}).status_code == 404

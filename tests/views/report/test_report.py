@@ -24,6 +24,7 @@ import pytest
 from assur import Mechanism, examples
 from assur.core.columns import column_signs, formulas_of, signs_of
 from assur.views.report import FORMATS, report_steps, seed_tables, write_report
+from assur.views.report.tables import table_filename
 from assur.views.report import figures as report_figures
 from assur.views.report.html import write_html
 
@@ -168,22 +169,31 @@ def test_csv_round_trips_exactly(report, hitch_analysis):
             assert np.array_equal(back, np.asarray(col.values, dtype=float)), (tab.id, col.symbol)
 
 
-def test_xlsx_holds_the_csv_numbers(report):
+def test_xlsx_holds_the_csv_numbers(report, hitch_analysis):
+    """A sheet of the inputs first, then a sheet per table named by its id and title:
+    the title, the symbols and the units of the CSV's header above the CSV's numbers
+    (stored as numbers, every digit), the table's notes below."""
     from openpyxl import load_workbook
 
+    from assur.views.report.tables import sheet_name
+    tables = seed_tables(hitch_analysis)
     wb = load_workbook(report["out"] / "tables.xlsx", read_only=True)
-    assert wb.sheetnames == ["2.1", "2.2", "3.1", "4.1", "5.1", "6.1", "IC"]
-    for name in wb.sheetnames:
-        with open(report["out"] / f"table_{name.replace('.', '_').lower()}.csv",
-                  newline="", encoding="utf-8") as f:
+    assert wb.sheetnames == ["Inputs"] + [sheet_name(tab) for tab in tables]
+    inputs = [r for r in wb["Inputs"].iter_rows(values_only=True)]
+    assert ("P6", 27.5, "kN") in [tuple(r[:3]) for r in inputs]  # as the file gives it
+    for tab in tables:
+        with open(report["out"] / table_filename(tab), newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
-        sheet = [list(r) for r in wb[name].iter_rows(values_only=True)]
-        assert list(sheet[0]) == rows[0]
-        assert len(sheet) == len(rows)
-        for srow, crow in zip(sheet[1:], rows[1:]):
+        sheet = [list(r) for r in wb[sheet_name(tab)].iter_rows(values_only=True)]
+        assert sheet[0][0] == f"Table {tab.id} — {tab.title('en')}"
+        assert [f"{s} [{u}]" for s, u in zip(sheet[1], sheet[2])] == rows[0]
+        data = sheet[3:3 + len(rows) - 1]
+        for srow, crow in zip(data, rows[1:]):
             for sv, cv in zip(srow, crow):
                 assert isinstance(sv, (int, float)) and not isinstance(sv, bool)
                 assert float(sv) == float(cv)
+        notes = [r[0] for r in sheet[3 + len(data) + 1:]]
+        assert notes == [n["en"] for n in tab.notes]
     wb.close()
 
 

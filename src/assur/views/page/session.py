@@ -479,13 +479,16 @@ class PageModel:
         import tempfile
 
         from ...errors import ModelError
+        from ..report.html import model_inputs
         from ..report.tables import seed_tables, table_filename, write_csv, write_xlsx
         model = self.load(values)
-        tabs = seed_tables(model.analyze(), lang=lang)
+        analysis = model.analyze()
+        tabs = seed_tables(analysis, lang=lang)
         stem = Path(self.name).stem or "model"
         with tempfile.TemporaryDirectory() as d:
             if fmt == "xlsx":
-                p = write_xlsx(tabs, Path(d) / "tables.xlsx")
+                p = write_xlsx(tabs, Path(d) / "tables.xlsx", lang=lang,
+                               inputs=model_inputs(analysis, lang))
                 return (p.read_bytes(), "application/vnd.openxmlformats-officedocument."
                         "spreadsheetml.sheet", f"{stem}_tables.xlsx")
             if fmt != "csv":

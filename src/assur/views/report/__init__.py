@@ -140,7 +140,8 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
         written["csv"] = [write_csv(tab, out / table_filename(tab)) for tab in tables]
     if "xlsx" in formats:
         step("xlsx")
-        written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx")]
+        written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx", lang=lang,
+                                      inputs=_html.model_inputs(analysis, lang))]
     pngs, drawing_png = {}, None
     if {"png", "svg", "html"} & set(formats):
         step("figures")

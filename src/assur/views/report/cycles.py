@@ -298,7 +298,7 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
                      columns=["key", "claim", "model", "agrees", "why"]).to_csv(p, index=False)
         files.append(p)
     if "xlsx" in formats:
-        files.append(write_xlsx(tabs, out / "cycles.xlsx"))
+        files.append(write_xlsx(tabs, out / "cycles.xlsx", lang=lang))
     figs = figures(df, lang) if {"png", "html"} & set(formats) else {}
     pngs = {name: to_png_bytes(f) for name, f in figs.items()}
     if "png" in formats:

@@ -22,7 +22,7 @@ from ...texts import localize
 from .labels import TEXT, check_lang, t, unit
 from .values import parameter_value, solved_line
 
-__all__ = ["write_html", "render_html"]
+__all__ = ["write_html", "render_html", "model_inputs"]
 
 #: decimals shown per unit (the seeds' printed precision)
 DECIMALS = {"m": 3, "deg": 1, "-": 3, "rad/m": 3, "N": 0, "Pa": 0, "%": 1, "N·m": 0,
@@ -293,6 +293,42 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 </body>
 </html>
 """
+
+
+def model_inputs(analysis, lang="en") -> list:
+    """The inputs of the analysis as sections of rows, for the workbook's inputs sheet
+    (:func:`assur.views.report.tables.write_xlsx`): the model (title, name), the
+    generalized coordinates over the analysed range, every parameter with its value
+    in the unit the model file gave it, and the design conditions solved.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.views.report.html import model_inputs
+    >>> a = io.load(io.bundled("hitch_003")).analyze()
+    >>> sections = model_inputs(a)
+    >>> [h for h, _ in sections]
+    ['Model', 'Generalized coordinates', 'Parameters', 'Design conditions solved (Given/Find)']
+    >>> params = dict((n, (v, u)) for n, v, u in sections[2][1])
+    >>> params["P6"], params["L4"]   # as the file gives them; L4 solved [m]
+    ((27.5, 'kN'), (0.661283167, 'm'))
+    """
+    s = _summary(analysis, lang)
+    mech = analysis.mechanism
+    params = []
+    for n, v, u in s["params"]:
+        try:
+            v = float(v)
+        except ValueError:  # a batch of designs: its count and span, as text
+            pass
+        params.append((n, v, u))
+    out = [(t("summary", lang), [(localize(mech.title, lang),), (mech.name,)]),
+           (t("coordinates", lang), [(c,) for c in s["coords"]]),
+           (t("parameters", lang), [(t("name", lang), t("value", lang), t("unit", lang))]
+            + params)]
+    if s["solved"]:
+        out.append((t("solved", lang), [(line,) for line in s["solved"]]))
+    return out
 
 
 def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, animation=None,

@@ -51,6 +51,7 @@ TEXT = {
     "coordinates": {"en": "Generalized coordinates", "ru": "Обобщённые координаты"},
     "positions": {"en": "positions", "ru": "положений"},
     "table": {"en": "Table", "ru": "Таблица"},
+    "inputs_sheet": {"en": "Inputs", "ru": "Исходные данные"},
     "figure": {"en": "Figure", "ru": "Рисунок"},
     "play": {"en": "play / pause", "ru": "пуск / пауза"},
     "position": {"en": "position", "ru": "положение"},

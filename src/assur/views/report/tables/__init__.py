@@ -73,8 +73,11 @@ note; the numbers are assur's.
 
 Files: :func:`write_csv` writes a header ``symbol [unit]`` per column and every
 number with ``repr`` (a float read back is the same float); :func:`write_xlsx`
-one sheet per table with the same header and the same numbers as floats
-(an empty cell where a value is NaN or infinite, which Excel cannot hold).
+a workbook for people: a sheet of the inputs, then a sheet per table named by its
+id and title (:func:`sheet_name`) with the title, the symbols (bold) and units
+above the same numbers stored as floats with a display format per column
+(:func:`number_format`; an empty cell where a value is NaN or infinite, which
+Excel cannot hold), the table's notes below, the headers frozen.
 
 Modules, by concern: the data (:class:`Column`, :class:`Table`; ``_data``), one
 design of the analysis read in the tables' conventions (``_view``), the tables of
@@ -88,10 +91,11 @@ from __future__ import annotations
 from ....core.columns import TABLE_IDS
 from ._assemble import FORMULAS_ID, seed_tables
 from ._data import Column, Table, grid_of, wrap_degrees
-from ._files import table_filename, write_csv, write_xlsx
+from ._files import number_format, sheet_name, table_filename, write_csv, write_xlsx
 # the report's figures and drawing read an analysis as the tables do
 from ._forces import _capacity
 from ._view import ANALOG_CONVENTIONS, ANGLE_CONVENTIONS, _View
 
 __all__ = ["Column", "Table", "seed_tables", "write_csv", "write_xlsx", "table_filename",
+           "sheet_name", "number_format",
            "TABLE_IDS", "grid_of"]

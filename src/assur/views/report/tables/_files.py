@@ -9,7 +9,9 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["table_filename", "write_csv", "write_xlsx"]
+from ..labels import t, unit
+
+__all__ = ["table_filename", "write_csv", "write_xlsx", "sheet_name", "number_format"]
 
 
 def table_filename(table, ext="csv") -> str:
@@ -69,16 +71,79 @@ def write_csv(table, path) -> Path:
     return path
 
 
-def _sheet_name(table):
-    return table.id[:31]
+#: characters Excel refuses in a sheet name
+_SHEET_BAD = set('[]:*?/\\')
 
 
-def write_xlsx(tables, path) -> Path:
-    """Write the tables into one workbook, one sheet per table (named by its id).
+def sheet_name(table, lang="en", taken=()) -> str:
+    """The sheet of ``table``: its id and title, as much as Excel's 31 characters hold
+    (without the characters Excel refuses), unique among ``taken``.
 
-    Row 1 holds the ``symbol [unit]`` headers, the rows below the numbers as floats
-    (integers for flags); NaN and infinite values, which Excel cannot store, are
-    left as empty cells.
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> [sheet_name(t) for t in seed_tables(a)][:2]
+    ['2.1 Geometric analysis link ang', '2.2 Geometric analysis point co']
+    >>> sheet_name(seed_tables(a)[3], "ru")
+    '4.1 Результаты анализа на грузо'
+    """
+    text = "".join(ch for ch in f"{table.id} {table.title(lang)}" if ch not in _SHEET_BAD)
+    name = " ".join(text.split())[:31].rstrip()
+    k = 2
+    base = name
+    while name in taken:
+        tag = f" ({k})"
+        name = base[:31 - len(tag)].rstrip() + tag
+        k += 1
+    return name
+
+
+def number_format(values) -> str:
+    """Excel's display format of a column: integers as such, else fixed decimals that
+    show five significant digits of the column's largest magnitude (the cells keep
+    every digit; only the display is rounded).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> number_format(np.array([0.42, 0.67])), number_format(np.array([129614.2, 3.1]))
+    ('0.00000', '0')
+    >>> number_format(np.array([1, 0])), number_format(np.array([np.nan, 15.348]))
+    ('0', '0.000')
+    """
+    a = np.asarray(values)
+    if a.dtype.kind in "biu":
+        return "0"
+    a = np.abs(a[np.isfinite(a)].astype(float))
+    big = float(a.max()) if a.size else 0.0
+    if big == 0.0:
+        return "0"
+    decimals = int(min(6, max(0, 4 - math.floor(math.log10(big)))))
+    return "0." + "0" * decimals if decimals else "0"
+
+
+def write_xlsx(tables, path, lang="en", inputs=None) -> Path:
+    """Write the tables into one workbook: a sheet per table, named by its id and
+    title (:func:`sheet_name`), and first, given ``inputs``, a sheet of the inputs.
+
+    A table's sheet: row 1 the table's title, row 2 the symbols (bold), row 3 their
+    units (in ``lang``: м, кН in Russian), then a row per position — numbers stored as numbers (every digit; integers
+    for flags) with a display format per column (:func:`number_format`), NaN and
+    infinite values (which Excel cannot store) as empty cells — and below them the
+    table's notes. The three header rows and the first column stay in view (frozen).
+
+    Parameters
+    ----------
+    tables : sequence of Table
+    path : str or Path
+        The ``.xlsx`` file to write.
+    lang : {"en", "ru"}
+        Language of the titles and notes.
+    inputs : sequence of (str, sequence of tuple), optional
+        Sections of the inputs sheet: a heading and its rows (e.g. a parameter's name,
+        value and unit as given in the model file).
 
     Examples
     --------
@@ -89,40 +154,81 @@ def write_xlsx(tables, path) -> Path:
     >>> from assur.views.report import seed_tables
     >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
     >>> tables = seed_tables(a)
+    >>> inputs = [("Parameters", [("P6", 27.5, "kN")])]
     >>> with tempfile.TemporaryDirectory() as d:
-    ...     wb = load_workbook(write_xlsx(tables, Path(d) / "tables.xlsx"))
-    ...     ws = wb["4.1"]
-    ...     head, s, fgc = ws["A1"].value, ws["A2"].value, ws["B2"].value
+    ...     wb = load_workbook(write_xlsx(tables, Path(d) / "tables.xlsx", inputs=inputs))
+    ...     ws = wb[wb.sheetnames[4]]
+    ...     rows = [[c.value for c in row] for row in ws.iter_rows(max_row=4, max_col=2)]
+    ...     fmt, first = ws["B4"].number_format, wb["Inputs"]["A2"].value
     ...     wb.close()
-    >>> wb.sheetnames
-    ['2.1', '2.2', '3.1', '4.1', '5.1', '6.1', 'IC']
-    >>> head, s, round(fgc)  # S [m], Fgc [N]; seed 003 table 4.1: 129614
-    ('S [m]', 0.42, 129614)
+    >>> wb.sheetnames[:2], first
+    (['Inputs', '2.1 Geometric analysis link ang'], 'P6')
+    >>> rows[0][0], rows[1:3]  # title, symbols, units
+    ('Table 4.1 — Lift capacity: cylinder force, pressure, capacity, reserve', [['S', 'Fgc'], ['m', 'N']])
+    >>> rows[3][0], round(rows[3][1]), fmt  # S [m], Fgc [N]; seed 003 table 4.1: 129614
+    (0.42, 129614, '0')
     """
     from openpyxl import Workbook
+    from openpyxl.styles import Font
     from openpyxl.utils import get_column_letter
 
+    bold, title_font = Font(bold=True), Font(bold=True, size=12)
+    unit_font = Font(italic=True, color="57606A")
     wb = Workbook()
     wb.remove(wb.active)
+    taken = []
+    if inputs:
+        ws = wb.create_sheet(t("inputs_sheet", lang))
+        taken.append(ws.title)
+        width = [12, 14, 10]
+        for heading, rows in inputs:
+            ws.append([heading])
+            ws.cell(ws.max_row, 1).font = title_font
+            for row in rows:
+                ws.append([_xlsx_value(v) if not isinstance(v, str) else v for v in row])
+                for j, v in enumerate(row):
+                    if j < len(width):
+                        width[j] = max(width[j], min(60, len(str(v)) + 2))
+            ws.append([])
+        for j, w in enumerate(width, start=1):
+            ws.column_dimensions[get_column_letter(j)].width = w
     for tab in tables:
-        ws = wb.create_sheet(_sheet_name(tab))
-        ws.append([c.header for c in tab.columns])
+        ws = wb.create_sheet(sheet_name(tab, lang, taken))
+        taken.append(ws.title)
+        ws.append([f"{t('table', lang)} {tab.id} — {tab.title(lang)}"])
+        ws["A1"].font = title_font
+        ws.append([c.symbol for c in tab.columns])
+        ws.append([unit(c.unit, lang) for c in tab.columns])
+        for cell in ws[2]:
+            cell.font = bold
+        for cell in ws[3]:
+            cell.font = unit_font
         for row in zip(*(c.values for c in tab.columns)):
-            out = []
-            for x in row:
-                if isinstance(x, (bool, np.bool_, int, np.integer)):
-                    out.append(int(x))
-                else:
-                    x = float(x)
-                    out.append(x + 0.0 if math.isfinite(x) else None)  # no -0.0
-            ws.append(out)
-        ws.freeze_panes = "B2"
+            ws.append([_xlsx_value(x) for x in row])
         for j, c in enumerate(tab.columns, start=1):
-            ws.column_dimensions[get_column_letter(j)].width = max(10, len(c.header) + 2)
+            letter = get_column_letter(j)
+            fmt = number_format(c.values)
+            for (cell,) in ws.iter_rows(min_row=4, min_col=j, max_col=j):
+                cell.number_format = fmt
+            ws.column_dimensions[letter].width = max(10, len(c.symbol) + 3, len(c.unit) + 3)
+        notes = [n.get(lang, n.get("en", "")) for n in tab.notes]
+        if notes:
+            ws.append([])
+            for n in notes:
+                ws.append([n])
+        ws.freeze_panes = "B4"
     path = Path(path)
     with _exact_floats():
         wb.save(path)
     return path
+
+
+def _xlsx_value(x):
+    """A number as Excel stores it: integers as such, floats finite (no -0.0) or None."""
+    if isinstance(x, (bool, np.bool_, int, np.integer)):
+        return int(x)
+    x = float(x)
+    return x + 0.0 if math.isfinite(x) else None
 
 
 class _exact_floats:
