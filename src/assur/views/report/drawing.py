@@ -22,7 +22,6 @@ drawn by :mod:`assur.views.svg` without matplotlib).
 
 from __future__ import annotations
 
-import io
 from pathlib import Path
 
 import numpy as np

@@ -60,12 +60,16 @@ def _kind(g, lang):
     return g.kind if lang == "en" else g.kind_ru
 
 
+def _unit_text(u, lang):
+    """A display unit as a parameter's row shows it (``°`` for degrees)."""
+    return "°" if u.is_degrees else unit(u.text, lang)
+
+
 def _summary(analysis, lang):
     mech = analysis.mechanism
     kin = analysis.kinematics
     units = display_units(mech)
-    params = [(n, parameter_value(v, units[n]),
-               "°" if units[n].is_degrees else unit(units[n].text, lang))
+    params = [(n, parameter_value(v, units[n]), _unit_text(units[n], lang))
               for n, v in mech.params.items()]
     coords = []
     for c in kin.coordinates:
@@ -310,18 +314,19 @@ def model_inputs(analysis, lang="en") -> list:
     >>> [h for h, _ in sections]
     ['Model', 'Generalized coordinates', 'Parameters', 'Design conditions solved (Given/Find)']
     >>> params = dict((n, (v, u)) for n, v, u in sections[2][1])
-    >>> params["P6"], params["L4"]   # as the file gives them; L4 solved [m]
-    ((27.5, 'kN'), (0.661283167, 'm'))
+    >>> params["P6"], round(params["L4"][0], 9), params["L4"][1]  # as given; L4 solved [m]
+    ((27.5, 'kN'), 0.661283167, 'm')
     """
     s = _summary(analysis, lang)
     mech = analysis.mechanism
+    units = display_units(mech)
     params = []
-    for n, v, u in s["params"]:
-        try:
-            v = float(v)
-        except ValueError:  # a batch of designs: its count and span, as text
-            pass
-        params.append((n, v, u))
+    for n, v in mech.params.items():
+        a = np.asarray(v, dtype=float)
+        # a number in the file's unit, every digit; a batch of designs: its count and span
+        value = float(units[n].of(a.reshape(-1)[0])) if a.size == 1 else \
+            parameter_value(v, units[n])
+        params.append((n, value, _unit_text(units[n], lang)))
     out = [(t("summary", lang), [(localize(mech.title, lang),), (mech.name,)]),
            (t("coordinates", lang), [(c,) for c in s["coords"]]),
            (t("parameters", lang), [(t("name", lang), t("value", lang), t("unit", lang))]
@@ -369,8 +374,6 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     if drawing is not False:
         png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
         drawing_uri = data_uri(bytes(png))
-    if animation is not False and animation and not animation.get("captions"):
-        animation = False
     env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
     tpl = env.from_string(_TEMPLATE)
     L = {k: v[lang] for k, v in TEXT.items()}

@@ -76,8 +76,8 @@ _SHEET_BAD = set('[]:*?/\\')
 
 
 def sheet_name(table, lang="en", taken=()) -> str:
-    """The sheet of ``table``: its id and title, as much as Excel's 31 characters hold
-    (without the characters Excel refuses), unique among ``taken``.
+    """The sheet of ``table``: its id and the words of its title that Excel's 31
+    characters hold (without the characters Excel refuses), unique among ``taken``.
 
     Examples
     --------
@@ -85,12 +85,15 @@ def sheet_name(table, lang="en", taken=()) -> str:
     >>> from assur.views.report import seed_tables
     >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
     >>> [sheet_name(t) for t in seed_tables(a)][:2]
-    ['2.1 Geometric analysis link ang', '2.2 Geometric analysis point co']
+    ['2.1 Geometric analysis link', '2.2 Geometric analysis point']
     >>> sheet_name(seed_tables(a)[3], "ru")
-    '4.1 Результаты анализа на грузо'
+    '4.1 Результаты анализа на'
     """
     text = "".join(ch for ch in f"{table.id} {table.title(lang)}" if ch not in _SHEET_BAD)
-    name = " ".join(text.split())[:31].rstrip()
+    name = " ".join(text.split())
+    if len(name) > 31:  # whole words (the id at least)
+        cut = name[:32].rfind(" ")
+        name = name[:cut] if cut > len(table.id) else name[:31]
     k = 2
     base = name
     while name in taken:
@@ -162,7 +165,7 @@ def write_xlsx(tables, path, lang="en", inputs=None) -> Path:
     ...     fmt, first = ws["B4"].number_format, wb["Inputs"]["A2"].value
     ...     wb.close()
     >>> wb.sheetnames[:2], first
-    (['Inputs', '2.1 Geometric analysis link ang'], 'P6')
+    (['Inputs', '2.1 Geometric analysis link'], 'P6')
     >>> rows[0][0], rows[1:3]  # title, symbols, units
     ('Table 4.1 — Lift capacity: cylinder force, pressure, capacity, reserve', [['S', 'Fgc'], ['m', 'N']])
     >>> rows[3][0], round(rows[3][1]), fmt  # S [m], Fgc [N]; seed 003 table 4.1: 129614
