@@ -22,7 +22,7 @@ from ...texts import localize
 from .labels import TEXT, check_lang, t, unit
 from .values import parameter_value, solved_line
 
-__all__ = ["write_html", "render_html", "model_inputs"]
+__all__ = ["write_html", "render_html", "model_inputs", "stylesheet"]
 
 #: decimals shown per unit (the seeds' printed precision)
 DECIMALS = {"m": 3, "deg": 1, "-": 3, "rad/m": 3, "N": 0, "Pa": 0, "%": 1, "N·m": 0,
@@ -207,35 +207,7 @@ _TEMPLATE = r"""<!DOCTYPE html>
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>{{ title }} — {{ L.report }}</title>
 <style>
-body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif;
-       margin: 0 auto; max-width: 1180px; padding: 0 1.2em 3em; color: #1d2125;
-       line-height: 1.4; }
-h1 { margin: 0.8em 0 0.1em; font-size: 1.6em; }
-h2 { border-bottom: 2px solid #d0d7de; padding-bottom: 0.2em; margin-top: 1.8em; }
-h3 { margin: 1.4em 0 0.4em; font-size: 1.08em; }
-.sub { color: #57606a; margin: 0; }
-nav ul { columns: 2; padding-left: 1.2em; }
-nav a, a { color: #0b5cad; text-decoration: none; }
-.scroll { overflow-x: auto; border: 1px solid #d0d7de; border-radius: 4px; }
-table { border-collapse: collapse; font-size: 0.86em; font-variant-numeric: tabular-nums; }
-th, td { padding: 0.22em 0.6em; border-bottom: 1px solid #eaeef2; text-align: right;
-         white-space: nowrap; }
-th { background: #f6f8fa; position: sticky; top: 0; }
-th .u { display: block; font-weight: normal; color: #57606a; font-size: 0.9em; }
-td:first-child, th:first-child { position: sticky; left: 0; background: #f6f8fa; }
-table.kv td, table.kv th { text-align: left; }
-.notes { font-size: 0.86em; color: #57606a; margin: 0.3em 0 0 1.2em; }
-figure { display: inline-block; margin: 0.6em 0.6em 1em 0; vertical-align: top; }
-figure img, figure svg { max-width: 100%; border: 1px solid #eaeef2; }
-figure svg { height: auto; background: #fff; }
-figcaption { font-size: 0.9em; color: #3d444d; }
-.warn { background: #fff8e1; border-left: 4px solid #e0a800; padding: 0.5em 1em;
-        margin: 0.6em 0; }
-.warn li { margin: 0.3em 0; }
-.player button { font-size: 0.95em; margin-right: 0.6em; }
-.player input { width: 60%; vertical-align: middle; }
-footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
-</style>
+{{ css|safe }}</style>
 </head>
 <body>
 <h1>{{ title }}</h1>
@@ -297,6 +269,14 @@ footer { margin-top: 3em; color: #8c959f; font-size: 0.8em; }
 </body>
 </html>
 """
+
+
+def stylesheet() -> str:
+    """The report's stylesheet (``report.css`` beside this module), inlined into every
+    report so that the file stays self-contained."""
+    from importlib.resources import files
+
+    return files(__package__).joinpath("report.css").read_text(encoding="utf-8")
 
 
 def model_inputs(analysis, lang="en") -> list:
@@ -379,7 +359,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     L = {k: v[lang] for k, v in TEXT.items()}
     mech = analysis.mechanism
     return tpl.render(
-        lang=lang, L=L, title=localize(mech.title, lang), name=mech.name,
+        lang=lang, L=L, css=stylesheet(), title=localize(mech.title, lang), name=mech.name,
         summary=_summary(analysis, lang),
         tables=[_table_view(tab, lang) for tab in tables],
         figures=_figure_items(dict(figures), lang),
