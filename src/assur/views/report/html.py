@@ -11,6 +11,7 @@ XLSX files keep full precision.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from pathlib import Path
 
 import base64
@@ -200,75 +201,16 @@ def _warnings(analysis, tables, lang):
     return [dict(title=g, entries=items) for g, items in groups if items]
 
 
-_TEMPLATE = r"""<!DOCTYPE html>
-<html lang="{{ lang }}">
-<head>
-<meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<title>{{ title }} — {{ L.report }}</title>
-<style>
-{{ css|safe }}</style>
-</head>
-<body>
-<h1>{{ title }}</h1>
-<p class="sub">{{ L.report }} · {{ name }}</p>
 
-<nav><h2>{{ L.contents }}</h2>
-<ul>
-<li><a href="#model">{{ L.summary }}</a></li>
-{% for tab in tables %}<li><a href="#{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</a></li>
-{% endfor %}{% if figures %}<li><a href="#figures">{{ L.figures }}</a></li>{% endif %}
-{% if drawing or player %}<li><a href="#drawing">{{ L.drawing }}</a></li>{% endif %}
-<li><a href="#warnings">{{ L.warnings }}</a></li>
-</ul></nav>
 
-<section id="model"><h2>{{ L.summary }}</h2>
-<p><b>{{ L.coordinates }}:</b> {% for c in summary.coords %}{{ c }}{% if not loop.last %}; {% endif %}{% endfor %}</p>
-<h3>{{ L.parameters }}</h3>
-<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.value }}</th><th>{{ L.unit }}</th></tr>
-{% for n, v, u in summary.params %}<tr><td>{{ n }}</td><td>{{ v }}</td><td>{{ u }}</td></tr>
-{% endfor %}</table></div>
-<h3>{{ L.groups }}</h3>
-<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.kind }}</th><th>{{ L.inputs }}</th><th>{{ L.outputs }}</th><th>{{ L.links }}</th></tr>
-{% for g in summary.groups %}<tr>{% for c in g %}<td>{{ c }}</td>{% endfor %}</tr>
-{% endfor %}</table></div>
-<h3>{{ L.links }}</h3>
-<div class="scroll"><table class="kv"><tr><th>{{ L.name }}</th><th>{{ L.kind }}</th><th>{{ L.points }}</th></tr>
-{% for l in summary.links %}<tr>{% for c in l %}<td>{{ c }}</td>{% endfor %}</tr>
-{% endfor %}</table></div>
-{% if summary.machine %}<h3>{{ L.machine }}</h3><ul>{% for m in summary.machine %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
-{% if summary.solved %}<h3>{{ L.solved }}</h3><ul>{% for m in summary.solved %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
-{% if summary.dynamics %}<h3>{{ L.dynamics }}</h3><ul>{% for m in summary.dynamics %}<li>{{ m }}</li>{% endfor %}</ul>{% endif %}
-</section>
+@lru_cache(maxsize=1)
+def _template():
+    """The report's jinja2 template (``report.html.j2`` beside this module)."""
+    import jinja2
 
-<section id="tables"><h2>{{ L.tables }}</h2>
-{% for tab in tables %}
-<h3 id="{{ tab.anchor }}">{{ L.table }} {{ tab.id }} — {{ tab.title }}</h3>
-<div class="scroll"><table>
-<tr>{% for c in tab.cols %}<th title="{{ c.tip }}">{{ c.symbol }}<span class="u">[{{ c.unit }}]</span></th>{% endfor %}</tr>
-{% for row in tab.rows %}<tr>{% for v in row %}<td>{{ v }}</td>{% endfor %}</tr>
-{% endfor %}</table></div>
-{% if tab.notes %}<ul class="notes">{% for n in tab.notes %}<li>{{ n }}</li>{% endfor %}</ul>{% endif %}
-{% endfor %}
-</section>
-
-{% if figures %}<section id="figures"><h2>{{ L.figures }}</h2>
-{% for f in figures %}<figure id="{{ f.anchor }}"><img src="{{ f.src }}" alt="{{ f.caption }}"><figcaption>{{ f.caption }}</figcaption></figure>
-{% endfor %}</section>{% endif %}
-
-{% if drawing or player %}<section id="drawing"><h2>{{ L.drawing }}</h2>
-{% if drawing %}<figure><img src="{{ drawing }}" alt="{{ L.drawing }}"><figcaption>{{ L.drawing }}</figcaption></figure>{% endif %}
-{% if player %}{{ player|safe }}{% endif %}
-</section>{% endif %}
-
-<section id="warnings"><h2>{{ L.warnings }}</h2>
-{% for w in warnings %}<div class="warn"><b>{{ w.title }}</b><ul>{% for i in w.entries %}<li>{{ i }}</li>{% endfor %}</ul></div>
-{% else %}<p>{{ L.no_warnings }}</p>{% endfor %}
-</section>
-<footer>{{ L.generated }}</footer>
-</body>
-</html>
-"""
+    env = jinja2.Environment(loader=jinja2.PackageLoader("assur.views.report", ""),
+                             autoescape=True, undefined=jinja2.StrictUndefined)
+    return env.get_template("report.html.j2")
 
 
 def stylesheet() -> str:
@@ -335,8 +277,6 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     >>> '<html lang="ru"' in render_html(a, "ru", figures={}, drawing=False, animation=False)
     True
     """
-    import jinja2
-
     from . import drawing as _drawing
     from . import figures as _figures
     from .tables import seed_tables
@@ -354,8 +294,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     if drawing is not False:
         png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
         drawing_uri = data_uri(bytes(png))
-    env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
-    tpl = env.from_string(_TEMPLATE)
+    tpl = _template()
     L = {k: v[lang] for k, v in TEXT.items()}
     mech = analysis.mechanism
     return tpl.render(
