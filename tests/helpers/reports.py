@@ -8,14 +8,24 @@ import re
 from pathlib import Path
 
 
-def assert_csvs_clean(directory: Path, name: str) -> list[Path]:
-    """Every CSV table in ``directory`` has unique headers and only finite numbers,
-    none written ``-0.0``; returns the files (at least one)."""
+def read_report_csv(path, lang="en") -> list[list[str]]:
+    """The rows of a report's CSV in ``lang``'s dialect (Russian: ``;``, the decimal
+    comma, a byte-order mark), numbers still as text with a decimal point."""
+    from assur.views.report.tables._files import CSV_DIALECTS
+
+    sep, point, encoding = CSV_DIALECTS[lang]
+    with open(path, encoding=encoding, newline="") as fh:
+        rows = list(csv.reader(fh, delimiter=sep))
+    return [rows[0]] + [[c.replace(point, ".") for c in r] for r in rows[1:]]
+
+
+def assert_csvs_clean(directory: Path, name: str, lang: str = "en") -> list[Path]:
+    """Every CSV table in ``directory`` (in ``lang``'s dialect) has unique headers and
+    only finite numbers, none written ``-0.0``; returns the files (at least one)."""
     files = sorted(Path(directory).glob("*.csv"))
     assert files, f"{name}: no CSV file in {directory}"
     for f in files:
-        with open(f, encoding="utf-8") as fh:
-            rows = list(csv.reader(fh))
+        rows = read_report_csv(f, lang)
         assert len(set(rows[0])) == len(rows[0]), f"{name}: {f.name}: duplicate headers"
         for row in rows[1:]:
             for cell in row:

@@ -50,6 +50,11 @@ class Mechanism:
         How to show each parameter to the user (:class:`assur.core.quantities.Unit`: the
         unit a model file gave it, e.g. kN, MPa, mm, deg). Parameters without one are
         shown in the SI unit of their quantity (angles in degrees).
+    display : mapping, optional
+        How results are shown (:mod:`assur.core.display`): ``units`` (the unit
+        system: ``"file"``, ``"engineering"``, ``"si"``, ``"imperial"``), ``lang``
+        (``"en"``, ``"ru"`` or None) and ``given`` (the :class:`Unit` of each value a
+        model file writes with a unit, which the ``"file"`` system follows).
 
     Examples
     --------
@@ -70,7 +75,7 @@ class Mechanism:
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
                  machine=None, gravity: float | None = None, units: Mapping | None = None,
                  motions: Iterable = (), gravity_direction: float | None = None,
-                 _params_checked: bool = False):
+                 display: Mapping | None = None, _params_checked: bool = False):
         self.name = name
         self.title = title or name
         self.coordinates = tuple(coordinates)
@@ -81,6 +86,8 @@ class Mechanism:
         self.params = MappingProxyType(dict(params or {}))
         #: display unit of each parameter (:class:`assur.core.quantities.Unit`), as given
         self.units = MappingProxyType(dict(units or {}))
+        #: how results are shown: ``units`` (system), ``lang``, ``given`` (the file's units)
+        self.display = MappingProxyType(dict(display or {}))
         self.groups = tuple(groups)
         self.links = tuple(links)
         self.distances = tuple(distances)
@@ -111,7 +118,7 @@ class Mechanism:
     # ---- copies (each returns a new mechanism) -----------------------------------
     #: attributes a copy may change without validating the structure again
     _DATA_ONLY = frozenset({"params", "title", "tables", "notes", "gravity", "units",
-                            "motions", "gravity_direction"})
+                            "motions", "gravity_direction", "display"})
 
     def _with(self, **kw):
         if kw and set(kw) <= self._DATA_ONLY and ("params" not in kw
@@ -125,7 +132,8 @@ class Mechanism:
                 self.program()
             new._memo = self._memo.structural()
             for k, v in kw.items():
-                setattr(new, k, MappingProxyType(dict(v)) if k in ("params", "tables", "units")
+                setattr(new, k, MappingProxyType(dict(v))
+                        if k in ("params", "tables", "units", "display")
                         else tuple(v) if k in ("notes", "motions") else v)
             if "params" in kw:
                 changed = {n: v for n, v in kw["params"].items() if v is not self.params[n]}
@@ -141,7 +149,7 @@ class Mechanism:
                  distances=self.distances, tables=self.tables, notes=self.notes,
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
                  gravity=self.gravity, units=self.units, motions=self.motions,
-                 gravity_direction=self.gravity_direction,
+                 gravity_direction=self.gravity_direction, display=self.display,
                  _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)

@@ -23,9 +23,14 @@ class Assembly:
     def mechanism(self) -> Mechanism:
         """The mechanism of the file, part by part."""
         sp = self.spec
+        shown = sp.display
+        display = {"units": (shown.units if shown is not None else None) or "file",
+                   "lang": shown.lang if shown is not None else None,
+                   "given": tuple(self.literal_units)}
         mech = self.guarded(("model",), lambda: Mechanism(
             sp.model.name, coordinates=self.coords, params=self.params, units=self.units,
-            title=text(sp.model.title), notes=tuple(text(n) for n in sp.model.notes)))
+            title=text(sp.model.title), notes=tuple(text(n) for n in sp.model.notes),
+            display=display))
         mech, known = self.add_frame(mech)
         mech = self.add_groups(mech, known)
         points = list(known)

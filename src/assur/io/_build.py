@@ -53,6 +53,7 @@ class Builder(Uses, Assembly, Conditions):
         self.param_use: dict = {}     # parameter -> (kind, path of the first use)
         self.param_flag: dict = {}    # parameter -> [(flag, path)]
         self.coord_kind: dict = {}    # coordinate -> (kind, path)
+        self.literal_units: list = []  # the Unit of each value written with a unit
 
     # ---- errors ----------------------------------------------------------------------
     def line(self, path) -> int:
@@ -168,6 +169,8 @@ class Builder(Uses, Assembly, Conditions):
             si = to_si(p, kind)
         except UnitError as e:
             raise self.error(path, f"{e}, found {S.show(v)}") from None
+        if p.unit:  # the units the file writes its values in (the "file" display units)
+            self.literal_units.append(display_unit(p, kind))
         if flag and not FLAGS[flag][0](si):
             raise self.error(path, f"expected {FLAGS[flag][1](kind)}, found {S.show(v)}")
         problem = span(kind, flag, si)
@@ -310,6 +313,8 @@ class Builder(Uses, Assembly, Conditions):
             self.drive, self.simulation = build_drive(self, mech)
         self.warnings = self.unused_parameters(mech)
         self.precheck_memory(mech)
+        # the units of every value written with one, the drive's too (the "file" display)
+        mech = mech._with(display=dict(mech.display, given=tuple(self.literal_units)))
         conds_mech, solved = self.solve(mech)
         grid, axes = self.positions(conds_mech)
         return conds_mech, grid, axes, solved

@@ -213,6 +213,15 @@ class TablesSpec(_Table):
     second_order: StrictBool = None
 
 
+class DisplaySpec(_Table):
+    """``[display]``: how the model's results are shown (:mod:`assur.core.display`)."""
+    #: the unit system: "file" (each kind in the unit the file writes it in),
+    #: "engineering", "si" or "imperial"
+    units: typing.Literal["file", "engineering", "si", "imperial"] = None
+    #: the language of reports and pages: "en" or "ru"
+    lang: typing.Literal["en", "ru"] = None
+
+
 class SolveSpec(_Table):
     unknown: Name
     bracket: tuple[Value, Value]
@@ -233,6 +242,7 @@ class FileSpec(_Table):
     cylinders: list[CylinderSpec] = []
     machine: Optional[MachineSpec] = None
     tables: Optional[TablesSpec] = None
+    display: Optional[DisplaySpec] = None
     solve: list[SolveSpec] = []
     #: [dynamics]: checked by :mod:`assur.io._dynamics` (flywheel, counter-masses)
     dynamics: Optional[dict[str, Any]] = None

@@ -25,7 +25,8 @@ import math
 import re
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import NamedTuple
+
+from ..core.units import _DEG, COMMON_UNITS, _Common, _normalise, common_unit  # noqa: F401
 
 _NUMBER = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 _UNIT_CHARS = re.compile(r"^[A-Za-zµμΩ°%·²³0-9*/^(). _-]*$")
@@ -71,93 +72,6 @@ KINDS[TIME.name] = TIME
 VELOCITY = Kind("velocity", "a velocity", "m/s", '"0.05 m/s"')
 KINDS[VELOCITY.name] = VELOCITY
 
-
-class _Common(NamedTuple):
-    """A unit of :data:`COMMON_UNITS`: ``factor`` to SI base units and the exponents of
-    length, mass, time and of the radian in its base units."""
-
-    factor: float
-    length: int = 0
-    mass: int = 0
-    time: int = 0
-    radian: int = 0
-
-    @property
-    def dimension(self) -> tuple:
-        """pint's dimensionality (the radian is dimensionless)."""
-        return (self.length, self.mass, self.time)
-
-    @property
-    def is_angle(self) -> bool:
-        """Whose root unit is the radian (pint's test of an angle)."""
-        return (self.length, self.mass, self.time, self.radian) == (0, 0, 0, 1)
-
-    @property
-    def is_number(self) -> bool:
-        """Whose root unit is dimensionless."""
-        return (self.length, self.mass, self.time, self.radian) == (0, 0, 0, 0)
-
-
-_DEG = 0.017453292519943295  # pint's degree in radians (= math.radians(1.0))
-
-#: the common units, keyed as written after :func:`_normalise` with no spaces around
-#: ``*`` and ``/``: factor to SI base units and dimension, bitwise those of pint
-#: (the odd last digits of l, cm³, l/min are pint's own rounding)
-COMMON_UNITS: dict[str, _Common] = {
-    # length
-    "m": _Common(1.0, length=1), "mm": _Common(0.001, length=1),
-    "cm": _Common(0.01, length=1), "km": _Common(1000.0, length=1),
-    # angle
-    "deg": _Common(_DEG, radian=1), "degree": _Common(_DEG, radian=1),
-    "degrees": _Common(_DEG, radian=1), "rad": _Common(1.0, radian=1),
-    "radian": _Common(1.0, radian=1),
-    # force, pressure, moment, spring rate
-    "N": _Common(1.0, 1, 1, -2), "kN": _Common(1000.0, 1, 1, -2),
-    "MN": _Common(1000000.0, 1, 1, -2),
-    "Pa": _Common(1.0, -1, 1, -2), "kPa": _Common(1000.0, -1, 1, -2),
-    "MPa": _Common(1000000.0, -1, 1, -2), "bar": _Common(100000.0, -1, 1, -2),
-    "N*m": _Common(1.0, 2, 1, -2), "kN*m": _Common(1000.0, 2, 1, -2),
-    "N/m": _Common(1.0, 0, 1, -2), "kN/m": _Common(1000.0, 0, 1, -2),
-    "N/mm": _Common(1000.0, 0, 1, -2),
-    # mass, moment of inertia, density
-    "kg": _Common(1.0, mass=1), "g": _Common(0.001, mass=1), "t": _Common(1000.0, mass=1),
-    "kg*m**2": _Common(1.0, 2, 1), "kg/m**3": _Common(1.0, -3, 1),
-    # time, velocity, acceleration, angular velocity
-    "s": _Common(1.0, time=1), "ms": _Common(0.001, time=1), "min": _Common(60.0, time=1),
-    "m/s": _Common(1.0, 1, 0, -1), "mm/s": _Common(0.001, 1, 0, -1),
-    "m/s**2": _Common(1.0, 1, 0, -2),
-    "rad/s": _Common(1.0, time=-1, radian=1), "rpm": _Common(0.10471975511965977, time=-1, radian=1),
-    # area, volume, flow, kinematic viscosity
-    "m**2": _Common(1.0, length=2), "mm**2": _Common(1e-06, length=2),
-    "cm**2": _Common(0.0001, length=2),
-    "m**3": _Common(1.0, length=3), "cm**3": _Common(1.0000000000000002e-06, length=3),
-    "l": _Common(0.0010000000000000002, length=3), "L": _Common(0.0010000000000000002, length=3),
-    "l/min": _Common(1.666666666666667e-05, 3, 0, -1),
-    "L/min": _Common(1.666666666666667e-05, 3, 0, -1),
-    "m**3/s": _Common(1.0, 3, 0, -1), "mm**2/s": _Common(1e-06, 2, 0, -1),
-    "m**2/s": _Common(1.0, 2, 0, -1),
-    # hydraulic line coefficients (inertance, laminar and turbulent loss)
-    "Pa*s**2/m": _Common(1.0, -2, 1, 0), "Pa*s/m": _Common(1.0, -2, 1, -1),
-    "Pa*s**2/m**2": _Common(1.0, -3, 1, 0),
-    # per length, per time, power
-    "m**-1": _Common(1.0, length=-1), "1/m": _Common(1.0, length=-1),
-    "m**-2": _Common(1.0, length=-2), "1/m**2": _Common(1.0, length=-2),
-    "1/s": _Common(1.0, time=-1), "Hz": _Common(1.0, time=-1),
-    "W": _Common(1.0, 2, 1, -3), "kW": _Common(1000.0, 2, 1, -3),
-    # plain numbers
-    "%": _Common(0.01), "percent": _Common(0.01),
-}
-
-_AROUND_OPS = re.compile(r"\s*([*/])\s*")
-
-
-def _key(unit: str) -> str:
-    return _AROUND_OPS.sub(r"\1", _normalise(unit).strip())
-
-
-def common_unit(unit: str) -> _Common | None:
-    """``unit``'s entry in :data:`COMMON_UNITS`, or None (then pint reads it)."""
-    return COMMON_UNITS.get(_key(unit))
 
 
 def _is_degree(unit: str) -> bool:
@@ -271,11 +185,6 @@ def _root(unit: str):
 @lru_cache(maxsize=4096)
 def _dimensionality(unit: str):
     return registry().Quantity(1.0, _parse_units(unit)).dimensionality
-
-
-def _normalise(unit: str) -> str:
-    return (unit.replace("·", "*").replace("²", "**2").replace("³", "**3")
-            .replace("°", "deg").replace("^", "**"))
 
 
 def unit_kind(raw: Raw) -> Kind | None:

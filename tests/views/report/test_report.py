@@ -23,6 +23,7 @@ import pytest
 
 from assur import Mechanism, examples
 from assur.core.columns import column_signs, formulas_of, signs_of
+from assur.core.display import factor
 from assur.views.report import FORMATS, report_steps, seed_tables, write_report
 from assur.views.report.tables import table_filename
 from assur.views.report import figures as report_figures
@@ -42,6 +43,11 @@ def report(hitch_analysis, tmp_path_factory):
     # every format; an animation of 12 frames (the default 30 render the same code)
     files = write_report(hitch_analysis, out, progress=steps.append, frames=12)
     return dict(out=out, files=files, steps=steps, seconds=time.perf_counter() - t0)
+
+
+def as_unit(values, unit, target):
+    """Values written in ``unit`` (a CSV header's) in the seed's printed ``target``."""
+    return np.asarray(values, dtype=float) * (factor(unit) / factor(target))
 
 
 def read_csv(path):
@@ -106,13 +112,14 @@ def test_csv_table_3_1_kinematics(report):
 
 
 def test_csv_table_4_1_capacity(report):
-    """Seed 003, Таблица 4.1: Fgc [N], Pgc [Pa], G56, GS6 [N], ΔGS65 [%]."""
+    """Seed 003, Таблица 4.1: Fgc [N], Pgc [Pa], G56, GS6 [N], ΔGS65 [%]; the report
+    writes them in the units hitch_003.toml gives forces and pressures in (kN, MPa)."""
     c, u = read_csv(report["out"] / "table_4_1.csv")
-    ours = {"Fgc": "Fgc", "Pgc": "Pgc", "G56": "G56", "GS6": "GS6", "dGS65": "dGS65"}
-    units = {"Fgc": "N", "Pgc": "Pa", "G56": "N", "GS6": "N", "dGS65": "%"}
-    for seed, sym in ours.items():
-        assert u[sym] == units[seed]
-        assert_printed(c[sym], T003_4_1, seed)
+    printed = {"Fgc": "N", "Pgc": "Pa", "G56": "N", "GS6": "N", "dGS65": "%"}
+    shown = {"Fgc": "kN", "Pgc": "MPa", "G56": "kN", "GS6": "kN", "dGS65": "%"}
+    for sym, seed_unit in printed.items():
+        assert u[sym] == shown[sym]
+        assert_printed(as_unit(c[sym], u[sym], seed_unit), T003_4_1, sym)
 
 
 def test_csv_table_5_1_reactions(report, hitch_analysis):
@@ -127,11 +134,11 @@ def test_csv_table_5_1_reactions(report, hitch_analysis):
         if col == "S":
             continue
         if col == "Fgc":
-            assert_printed(c["Fgc"], T003_5_1, col)
+            assert_printed(as_unit(c["Fgc"], u["Fgc"], "N"), T003_5_1, col)
             continue
         sign = signs.get(col, 1)
-        assert u[col] == "N"
-        assert_printed(sign * c[col], T003_5_1, col)
+        assert u[col] == "kN"  # the file's unit of force
+        assert_printed(sign * as_unit(c[col], u[col], "N"), T003_5_1, col)
     # the table itself marks the flipped columns and says why
     t51 = next(t for t in seed_tables(hitch_analysis) if t.id == "5.1")
     assert {col.symbol for col in t51.columns if col.printed_sign < 0} == {
@@ -142,11 +149,13 @@ def test_csv_table_5_1_reactions(report, hitch_analysis):
 def test_csv_table_6_1_stability(report):
     """Seed 003, Таблица 6.1: Ra, Rb [N], ΔRa, ΔRb [%] and the seed's flagged GS6max."""
     c, u = read_csv(report["out"] / "table_6_1.csv")
-    for col in ["Ra", "Rb", "dRa", "dRb", "GS6max"]:
-        assert_printed(c[col], T003_6_1, col)
-    assert u["dRa"] == "%" and u["GS6max"] == "N"
+    for col, seed_unit in (("Ra", "N"), ("Rb", "N"), ("dRa", "%"), ("dRb", "%"),
+                           ("GS6max", "N")):
+        assert_printed(as_unit(c[col], u[col], seed_unit), T003_6_1, col)
+    # every force in the file's unit, the model's formula column (declared in N) too
+    assert u["dRa"] == "%" and u["Ra"] == u["GS6max"] == u["G_max"] == "kN"
     assert np.all(c["steerable"] == 1)
-    assert np.all(c["G_max"] < c["GS6max"] - 1e4)  # the correct limit is far below
+    assert np.all(c["G_max"] < c["GS6max"] - 10.0)  # the correct limit is far below [kN]
 
 
 def test_csv_instantaneous_centre_check(report):
@@ -158,8 +167,9 @@ def test_csv_instantaneous_centre_check(report):
 
 
 def test_csv_round_trips_exactly(report, hitch_analysis):
-    """Full precision: every number read back is the float in the table."""
-    for tab in seed_tables(hitch_analysis):
+    """Full precision: every number read back is the float in the table (in the
+    report's display units)."""
+    for tab in seed_tables(hitch_analysis, units="file"):
         with open(report["out"] / f"table_{tab.id.replace('.', '_').lower()}.csv",
                   newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
@@ -176,7 +186,7 @@ def test_xlsx_holds_the_csv_numbers(report, hitch_analysis):
     from openpyxl import load_workbook
 
     from assur.views.report.tables import sheet_name
-    tables = seed_tables(hitch_analysis)
+    tables = seed_tables(hitch_analysis, units="file")
     wb = load_workbook(report["out"] / "tables.xlsx", read_only=True)
     assert wb.sheetnames == ["Inputs"] + [sheet_name(tab) for tab in tables]
     inputs = [r for r in wb["Inputs"].iter_rows(values_only=True)]
@@ -276,7 +286,7 @@ def test_russian_labels(hitch_analysis, tmp_path):
     path = write_html(hitch_analysis, tmp_path / "ru.html", lang="ru", figures=figs, animation=False)
     text = html.unescape(path.read_text(encoding="utf-8"))
     for s in ["Таблица 2.1", "Таблица 6.1", "Предупреждения и примечания", "Параметры",
-              "Рисунок 1 — Грузоподъёмность", "Схема механизма", "[Па]", "[град]"]:
+              "Рисунок 1 — Грузоподъёмность", "Схема механизма", "[МПа]", "[°]"]:
         assert s in text, s
     assert "Warnings and notes" not in text
 

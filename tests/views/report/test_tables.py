@@ -165,12 +165,12 @@ def test_analyze_writes_the_loader_report(tmp_path):
                                 "--format", fmts])
         assert r.exit_code == 0, r.output
         assert (out / ("tables.xlsx" if lang == "en" else "report.html")).stat().st_size > 0
-        csvs = assert_csvs_clean(out, f"loader_lab1 ({lang})")
+        csvs = assert_csvs_clean(out, f"loader_lab1 ({lang})", lang)
         assert {p.name for p in csvs} >= {"table_2_1.csv", "table_3_1.csv", "table_4_1.csv",
                                           "table_5_1.csv", "table_6_1.csv"}
     html = (tmp_path / "ru" / "report.html").read_text()
     assert "карта по S и S1" in html
-    assert re.search(r"S = [0-9.]+ м, S1 = [0-9.]+ м", html)  # positions in Russian units
+    assert re.search(r"S = [0-9,]+ м, S1 = [0-9,]+ м", html)  # positions in Russian units
 
 
 def test_capacity_map_table_g(grid_analysis):

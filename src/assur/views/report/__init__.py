@@ -63,8 +63,8 @@ def report_steps(formats=FORMATS, frames=30) -> list:
     return steps
 
 
-def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, design=None,
-                 frames=30, positions=None) -> dict:
+def write_report(analysis, outdir, formats=FORMATS, lang=None, progress=None, design=None,
+                 frames=30, positions=None, units=None) -> dict:
     """Write tables, diagrams, the drawing, the animation and the HTML report.
 
     Parameters
@@ -78,9 +78,10 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
         (``tables.xlsx``), ``png``/``svg`` (``fig_<name>.png``… and
         ``mechanism.png``), ``gif`` (``mechanism.gif``), ``html`` (``report.html``,
         self-contained).
-    lang : {"en", "ru"}
-        Language of titles and labels (tables' headers are symbols and SI units in
-        both).
+    lang : {"en", "ru"}, optional
+        Language of titles, labels, units and numbers (Russian: Russian unit symbols,
+        the decimal comma, CSV files separated by ``;``); default: the model file's
+        ``[display] lang``, else English.
     progress : callable, optional
         ``progress(step_name)`` is called as each step starts (see
         :func:`report_steps`).
@@ -91,6 +92,11 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
         GIF nor the HTML report's).
     positions : sequence of int, optional
         Indices of the positions drawn (default: the first and the last).
+    units : str or DisplayUnits, optional
+        The display units of every table, file, figure and text: ``"file"`` (each
+        kind of quantity in the unit the model file writes it in), ``"engineering"``,
+        ``"si"`` or ``"imperial"`` (:mod:`assur.core.display`); default: the model
+        file's ``[display] units``, else ``"file"``.
 
     Returns
     -------
@@ -120,7 +126,11 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
     from . import figures as _figures
     from . import html as _html
 
-    check_lang(lang)
+    from ...core.display import unit_system
+
+    mech = analysis.mechanism
+    lang = check_lang(lang or mech.display.get("lang") or "en")
+    du = unit_system(mech, units) if not hasattr(units, "convert") else units
     formats = tuple(formats)
     bad = [f for f in formats if f not in FORMATS]
     if bad:
@@ -134,25 +144,25 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             progress(name)
 
     step("tables")
-    tables = seed_tables(analysis, lang, design=design)
+    tables = seed_tables(analysis, lang, design=design, units=du)
     if "csv" in formats:
         step("csv")
-        written["csv"] = [write_csv(tab, out / table_filename(tab)) for tab in tables]
+        written["csv"] = [write_csv(tab, out / table_filename(tab), lang) for tab in tables]
     if "xlsx" in formats:
         step("xlsx")
         written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx", lang=lang,
-                                      inputs=_html.model_inputs(analysis, lang))]
+                                      inputs=_html.model_inputs(analysis, lang, du))]
     pngs, drawing_png = {}, None
     if {"png", "svg", "html"} & set(formats):
         step("figures")
-        figs = dict(_figures.figures(analysis, lang, design=design))
+        figs = dict(_figures.figures(analysis, lang, design=design, units=du))
         if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
             from . import dynamics as _dynamics
             figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
-                                          balancing=analysis.balancing))
+                                          balancing=analysis.balancing, units=du))
         if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
             from .lift import lift_test_figure
-            figs["lift_test"] = lift_test_figure(analysis, lang)
+            figs["lift_test"] = lift_test_figure(analysis, lang, units=du)
         for name, fig in figs.items():
             # a figure of maps (two coordinates) has its title above the panels
             caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
@@ -165,7 +175,7 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
             if "svg" in formats:
                 written["svg"].append(_figures.save(fig, out / f"fig_{name}.svg"))
         step("drawing")
-        fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design)
+        fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design, units=du)
         drawing_png = _figures.to_png_bytes(fig)
         if "png" in formats:
             p = out / "mechanism.png"
@@ -179,13 +189,15 @@ def write_report(analysis, outdir, formats=FORMATS, lang="en", progress=None, de
     if {"gif", "html"} & set(formats) and frames > 0:
         step("animation")
         if "gif" in formats:  # raster frames only for the GIF; the HTML plays vectors
-            imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design)
+            imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design,
+                                          units=du)
             written["gif"] = [_drawing.write_gif(imgs, out / "mechanism.gif")]
         if "html" in formats:
-            anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design)
+            anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design,
+                                      units=du)
     if "html" in formats:
         step("html")
         written["html"] = [_html.write_html(analysis, out / "report.html", lang=lang,
                                             figures=pngs, tables=tables, drawing=drawing_png,
-                                            animation=anim, design=design)]
+                                            animation=anim, design=design, units=du)]
     return written

@@ -131,10 +131,12 @@ class _Plot:
     paths (the coordinates move together, ``[range] paired = true``): the curves
     against the first coordinate that changes monotonically along the path."""
 
-    def __init__(self, analysis, lang, design):
+    def __init__(self, analysis, lang, design, units=None):
         self.lang = check_lang(lang)
-        self.v = _View(analysis, design)
+        self.v = _View(analysis, design, units=units)
         v = self.v
+        #: the unit of each axes' values as given to :meth:`line` (shown in the display units)
+        self._units: dict = {}
         self.grid = None
         self.c = v.coords[0]
         if v.k == 2:
@@ -142,8 +144,9 @@ class _Plot:
         if v.k == 1 or self.grid is None:
             k = 0 if v.k == 1 else path_abscissa([v.coord_values(c) for c in v.coords])
             c = v.coords[k]
-            self.x = v.coord_values(c)
-            self.xlabel = f"{v.coord_label(c)[lang]} [{unit(v.coord_unit(c), lang)}]"
+            self.x, xu = v.units.convert(v.coord_values(c), v.coord_unit(c))
+            self.x = np.asarray(self.x, dtype=float)
+            self.xlabel = f"{v.coord_label(c)[lang]} [{unit(xu, lang)}]"
             if v.k > 1:
                 others = ", ".join(o for o in v.coords if o != c)
                 self.xlabel += "; " + t("paired_axis", lang, others)
@@ -160,19 +163,30 @@ class _Plot:
         return self.grid is not None
 
     def axes(self, title, ylabel, yunit, width=6.4, height=4.0):
+        """New axes whose curves are given in ``yunit`` (``"N"``, ``"Pa"``, ``"deg"``…,
+        the unit of the values passed to :meth:`line` and :meth:`y`) and shown in the
+        display unit of its kind."""
         fig = new_figure(width, height)
+        shown = self.v.units.convert(0.0, yunit)[1]
         if self.is_map:
-            return fig, _MapAxes(title, ylabel, yunit)
-        ax = fig.add_subplot()
-        ax.set_title(title)
-        ax.set_xlabel(self.xlabel)
-        ax.set_ylabel(f"{ylabel} [{unit(yunit, self.lang)}]")
-        ax.grid(True, alpha=0.35)
+            ax = _MapAxes(title, ylabel, shown)
+        else:
+            ax = fig.add_subplot()
+            ax.set_title(title)
+            ax.set_xlabel(self.xlabel)
+            ax.set_ylabel(f"{ylabel} [{unit(shown, self.lang)}]")
+            ax.grid(True, alpha=0.35)
+        self._units[id(ax)] = yunit
         return fig, ax
+
+    def y(self, ax, values):
+        """``values`` given in the unit of ``ax`` (:meth:`axes`) in its display unit."""
+        shown, _ = self.v.units.convert(values, self._units.get(id(ax), "-"))
+        return shown
 
     def axis_label(self, c):
         v = self.v
-        return f"{c} [{unit(v.coord_unit(c), self.lang)}]"
+        return f"{c} [{unit(v.units.convert(0.0, v.coord_unit(c))[1], self.lang)}]"
 
     def surface(self, y):
         """Values over the positions as a 2-D array (second coordinate × first)."""
@@ -194,6 +208,8 @@ class _Plot:
         fig.set_size_inches(4.3 * ncol, 3.5 * nrow + 0.5)
         u1, u2, _, _ = self.grid
         c1, c2 = self.v.coords
+        u1 = np.asarray(self.v.units.convert(u1, self.v.coord_unit(c1))[0], dtype=float)
+        u2 = np.asarray(self.v.units.convert(u2, self.v.coord_unit(c2))[0], dtype=float)
         yu = unit(maps.yunit, self.lang)
         title = t("f_map", self.lang, maps.title, c1, c2) + f"; {maps.ylabel} [{yu}]"
         labels = list(dict.fromkeys(lab for _, lab in maps.levels if lab))
@@ -227,10 +243,10 @@ class _Plot:
         in the wrapped convention is broken where it wraps; a curve equal to one
         drawn before on these axes gets another style and the label ``this = that``.
         On a map figure the curve is kept and drawn as a map by :meth:`done`."""
+        y = np.asarray(self.y(ax, y), dtype=float)
         if isinstance(ax, _MapAxes):
-            ax.series.append((label, np.asarray(y, dtype=float)))
+            ax.series.append((label, y))
             return
-        y = np.asarray(y, dtype=float)
         drawn = self._drawn.setdefault(id(ax), [])
         same = [lab for yy, lab in drawn if yy.shape == y.shape and np.allclose(
             yy, y, rtol=0.0, atol=1e-9 * max(float(np.max(np.abs(y))) if y.size else 0.0, 1.0))]

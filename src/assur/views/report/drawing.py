@@ -38,7 +38,8 @@ __all__ = ["draw", "animation", "player", "render_frames", "write_gif"]
 
 
 class _Geometry:
-    """Point positions of one design over a set of positions: ``xy[name]`` (n, 2)."""
+    """Point positions of one design over a set of positions: ``xy[name]`` (n, 2), in
+    the display unit of length of the view (:attr:`_View.units`)."""
 
     def __init__(self, view, kin=None):
         kin = kin if kin is not None else view.kin
@@ -56,8 +57,9 @@ class _Geometry:
 
         self.n = n
         self.xy = {}
+        per_m = 1.0 / view.units["length"].scale  # display units of length per metre
         for p in list(mech.frame_points) + list(kin.points):
-            self.xy[p] = np.stack([pick(kin.x(p)), pick(kin.y(p))], axis=-1)
+            self.xy[p] = np.stack([pick(kin.x(p)), pick(kin.y(p))], axis=-1) * per_m
         self.q = {c: pick(kin.q(c)) for c in kin.coordinates}
         self.bodies = {b: v for b, v in mech.bodies.items()}
         # a passive cylinder (on a named distance) is drawn as a cylinder between its ends
@@ -183,12 +185,12 @@ def _qtext(qs, v, i, lang):
     parts = []
     for c, q in qs.items():
         val = float(v.degrees(np.degrees(q[i]))) if v.is_angle(c) else q[i]
-        parts.append(f"{c} = {val:.4g} {unit(v.coord_unit(c), lang)}")
+        parts.append(f"{c} = {v.text(val, v.coord_unit(c), lang)}")
     return ", ".join(parts)
 
 
 def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.0,
-         height=5.5):
+         height=5.5, units=None):
     """A drawing of the mechanism at some of the analysis' positions.
 
     Parameters
@@ -202,6 +204,9 @@ def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.
         Design of a batch.
     labels : bool
         Label points and links.
+    units : str or DisplayUnits, optional
+        Display units of the axes and the coordinates (:mod:`assur.core.display`);
+        default: the model file's.
 
     Returns
     -------
@@ -219,14 +224,14 @@ def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.
     >>> [text.get_text() for text in ax.texts][:10]  # links, then frame pivots
     ['2', '3', '4', '5', '6', '7', '01', '03', '05', '07']
     >>> draw(a, positions=[4], lang="ru").axes[0].get_title().splitlines()[1]  # S [м]
-    'S = 0.5311 м'
+    'S = 0,5311 м'
     >>> draw(a, positions=[10])
     Traceback (most recent call last):
     ...
     ValueError: positions must be in 0…9, got 10
     """
     check_lang(lang)
-    v = _View(analysis, design)
+    v = _View(analysis, design, units=units)
     geo = _Geometry(v)
     if positions is None:
         positions = sorted({0, geo.n - 1})
@@ -240,8 +245,8 @@ def draw(analysis, positions=None, lang="en", design=None, labels=True, width=7.
         _pose(ax, geo, i, ghost=True)
     _pose(ax, geo, positions[0], labels=labels)
     _limits(ax, geo)
-    ax.set_xlabel(f"{t('x_m', lang)} [{unit('m', lang)}]")
-    ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
+    ax.set_xlabel(f"{t('x_m', lang)} [{unit(v.units['length'].text, lang)}]")
+    ax.set_ylabel(f"{t('y_m', lang)} [{unit(v.units['length'].text, lang)}]")
     ax.grid(True, alpha=0.3)
     shown = "; ".join(_qtext(geo.q, v, i, lang) for i in positions)
     ax.set_title(f"{localize(v.mech.title, lang)}\n{shown}", fontsize=10)
@@ -279,7 +284,7 @@ def _shown(n, frames):
     return np.unique(np.linspace(0, n - 1, int(frames)).round().astype(int)).tolist()
 
 
-def animation(analysis, frames=30, lang="en", design=None) -> dict:
+def animation(analysis, frames=30, lang="en", design=None, units=None) -> dict:
     """The animation over the range as vector frames for the HTML report's player: no
     raster, no matplotlib (the positions are those of :func:`render_frames`).
 
@@ -299,13 +304,13 @@ def animation(analysis, frames=30, lang="en", design=None) -> dict:
     >>> anim["svg"].count('<g class="frame"'), anim["captions"]
     (3, ['S = 0.42 m', 'S = 0.545 m', 'S = 0.67 m'])
     >>> animation(a, frames=3, lang="ru")["captions"][1]
-    'S = 0.545 м'
+    'S = 0,545 м'
     """
     from ..geometry import geometry
     from ..svg import frames as svg_frames
 
     check_lang(lang)
-    v = _View(analysis, design)
+    v = _View(analysis, design, units=units)
     kin = _animation_kinematics(v, frames)
     geo = geometry(kin, design=v.design if len(kin.shape) == 2 else None)
     q = {c: np.asarray(vals) for c, vals in geo["q"].items()}
@@ -370,7 +375,8 @@ def player(anim, lang="en", interval=120, bounce=True, title=None) -> str:
         captions=captions, bounce="true" if bounce else "false", interval=int(interval))
 
 
-def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4, height=5.0):
+def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4, height=5.0,
+                  units=None):
     """Frames of the animation over the range, as PIL images.
 
     The mechanism is solved again on ``frames`` evenly spaced values of its
@@ -397,13 +403,13 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     from PIL import Image
 
     check_lang(lang)
-    v = _View(analysis, design)
+    v = _View(analysis, design, units=units)
     geo = _Geometry(v, _animation_kinematics(v, frames))
     fig = new_figure(width, height)
     fig.set_dpi(dpi)
     ax = fig.add_subplot()
-    ax.set_xlabel(f"{t('x_m', lang)} [{unit('m', lang)}]")
-    ax.set_ylabel(f"{t('y_m', lang)} [{unit('m', lang)}]")
+    ax.set_xlabel(f"{t('x_m', lang)} [{unit(v.units['length'].text, lang)}]")
+    ax.set_ylabel(f"{t('y_m', lang)} [{unit(v.units['length'].text, lang)}]")
     ax.grid(True, alpha=0.3)
     out = []
     for k, i in enumerate(_shown(geo.n, frames)):

@@ -49,7 +49,7 @@ __all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", 
            "capacity", "force", "pressure", "reactions", "hodograph", "stability"]
 
 
-def angles(analysis, lang="en", design=None):
+def angles(analysis, lang="en", design=None, units=None):
     """Link angles φ [°] against the coordinate (seed 003 table 2.1).
 
     Examples
@@ -65,7 +65,7 @@ def angles(analysis, lang="en", design=None):
     >>> [round(float(y), 1) for y in ax.lines[2].get_ydata()[:2]]  # φ34 [deg], table 2.1
     [-18.2, -8.4]
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     kin = p.v.kin
     fig, ax = p.axes(t("f_angles", lang), t("y_angle", lang), "deg")
     for link in kin.links:
@@ -80,7 +80,7 @@ _TITLES = {"f_distances": {"en": "Named distances", "ru": "Расстояния 
            "along": {"en": "along the rotation", "ru": "по вращению"}}
 
 
-def distances(analysis, lang="en", design=None):
+def distances(analysis, lang="en", design=None, units=None):
     """Named distances [m] against the coordinate (seed 002: the helper vectors l7 =
     |C–O6|, l9 = |A–O3|); None without named distances.
 
@@ -96,7 +96,7 @@ def distances(analysis, lang="en", design=None):
     >>> distances(hitch) is None  # the hitch names no distances
     True
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     if not v.mech.distances:
         return None
@@ -107,7 +107,7 @@ def distances(analysis, lang="en", design=None):
     return p.done(fig, ax)
 
 
-def analogs(analysis, lang="en", design=None):
+def analogs(analysis, lang="en", design=None, units=None):
     """Angular-velocity analogs dφ/dq (seed 003 fig. 3.1 dφ3(S)).
 
     Examples
@@ -125,7 +125,7 @@ def analogs(analysis, lang="en", design=None):
     >>> round(float(ax.lines[2].get_ydata()[0]), 3)  # dφ34 at S = 0.420 m [rad/m]
     6.719
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     kin, v = p.v.kin, p.v
     ylabel = t("y_analog", lang, p.c)
     if v.rate_sign(p.c) != 1:  # the seeds' convention: along the crank's rotation
@@ -143,7 +143,7 @@ def analogs(analysis, lang="en", design=None):
     return p.done(fig, ax)
 
 
-def transmission(analysis, lang="en", design=None):
+def transmission(analysis, lang="en", design=None, units=None):
     """Transmission numbers I = dY/dq of the model's transmission points (seed 003
     fig. 3.2 I56, IS6); None without transmission points.
 
@@ -158,7 +158,7 @@ def transmission(analysis, lang="en", design=None):
     >>> [round(float(y), 3) for y in ax.lines[1].get_ydata()[:3]]  # IS6 [-], table 3.1
     [4.713, 4.483, 4.419]
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     kin, v = p.v.kin, p.v
     pts = list(v.mech.tables.get("transmissions", ()))
     if not pts:
@@ -177,7 +177,7 @@ def transmission(analysis, lang="en", design=None):
     return p.done(fig, ax)
 
 
-def capacity(analysis, lang="en", design=None):
+def capacity(analysis, lang="en", design=None, units=None):
     """Lift capacity G [kN] at the transmission points with the load acting there
     (seed 003 fig. 4.1); None without cylinders.
 
@@ -194,11 +194,11 @@ def capacity(analysis, lang="en", design=None):
     """
     from .tables import _capacity
 
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     if not v.a.cylinders:
         return None
-    fig, ax = p.axes(t("f_capacity", lang), t("y_capacity", lang), "kN")
+    fig, ax = p.axes(t("f_capacity", lang), t("y_capacity", lang), "N")
     n = 0
     several = len(v.a.cylinders) > 1
     loads_drawn = set()
@@ -207,20 +207,20 @@ def capacity(analysis, lang="en", design=None):
             if not v.moves_point(res.cylinder.coordinate, pt):  # undefined: not its chain
                 continue
             g, _ = _capacity(v, res, pt)
-            p.line(ax, g / 1e3, _math("G", pt) + (f" ({name})" if several else ""))
+            p.line(ax, g, _math("G", pt) + (f" ({name})" if several else ""))
             n += 1
             if pt in loads_drawn:
                 continue
             loads_drawn.add(pt)
             for wname, P in v.weights_at(pt)[:1]:
-                ax.axhline(P / 1e3, ls="--", lw=1, color="0.3",
-                           label=t("load", lang, wname, P / 1e3))
+                ax.axhline(p.y(ax, P), ls="--", lw=1, color="0.3",
+                           label=t("load", lang, wname, v.text(P, "N", lang)))
                 n += 1
     p.legend(fig, ax, n)
     return p.done(fig, ax)
 
 
-def force(analysis, lang="en", design=None):
+def force(analysis, lang="en", design=None, units=None):
     """Cylinder force [kN] by virtual work with the available force F_max (seed 003
     fig. 4.2); None without cylinders.
 
@@ -235,27 +235,27 @@ def force(analysis, lang="en", design=None):
     >>> round(float(ax.lines[0].get_ydata()[0]), 1)  # Fgc at S = 0.420 m [kN], table 4.1: 129.614
     129.6
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     if not v.a.cylinders:
         return None
-    fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "kN")
+    fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "N")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.force) / 1e3, f"$F_{{{res.cylinder.length}}}$ ({name})")
+        p.line(ax, v.pick(res.force), f"$F_{{{res.cylinder.length}}}$ ({name})")
         fm = v.pick(res.force_max)  # over positions for a double-rod cylinder (side auto)
         fmax = float(fm[0])
         if np.ptp(fm) > 0:
-            p.line(ax, fm / 1e3, t("force_max", lang, float(np.max(fm)) / 1e3))
+            p.line(ax, fm, t("force_max", lang, v.text(float(np.max(fm)), "N", lang)))
         elif fmax > 0:
-            ax.axhline(fmax / 1e3, ls="--", lw=1, color="C3", label=t("force_max", lang,
-                                                                       fmax / 1e3))
+            ax.axhline(p.y(ax, fmax), ls="--", lw=1, color="C3",
+                       label=t("force_max", lang, v.text(fmax, "N", lang)))
         n += 2
     p.legend(fig, ax, n)
     return p.done(fig, ax)
 
 
-def pressure(analysis, lang="en", design=None):
+def pressure(analysis, lang="en", design=None, units=None):
     """Cylinder pressure [MPa] with the largest working pressure p_max (seed 003
     fig. 4.3); None without cylinders.
 
@@ -270,17 +270,18 @@ def pressure(analysis, lang="en", design=None):
     >>> round(float(max(ax.lines[0].get_ydata())), 2)  # largest Pgc [MPa], table 4.1: 16.064
     16.06
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     if not v.a.cylinders:
         return None
-    fig, ax = p.axes(t("f_pressure", lang), t("y_pressure", lang), "MPa")
+    fig, ax = p.axes(t("f_pressure", lang), t("y_pressure", lang), "Pa")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.pressure) / 1e6, f"$p_{{{res.cylinder.length}}}$ ({name})")
+        p.line(ax, v.pick(res.pressure), f"$p_{{{res.cylinder.length}}}$ ({name})")
         pmax = v.scalar(res.p_max)
         if pmax > 0:
-            ax.axhline(pmax / 1e6, ls="--", lw=1, color="C3", label=t("p_max", lang, pmax / 1e6))
+            ax.axhline(p.y(ax, pmax), ls="--", lw=1, color="C3",
+                       label=t("p_max", lang, v.text(pmax, "Pa", lang)))
         n += 2
     p.legend(fig, ax, n)
     return p.done(fig, ax)
@@ -298,7 +299,7 @@ def _reactions(v):
     return out
 
 
-def reactions(analysis, lang="en", design=None):
+def reactions(analysis, lang="en", design=None, units=None):
     """Magnitudes of the joint reactions [kN] (seed 003 fig. 5.4); None without loads.
 
     Examples
@@ -312,23 +313,23 @@ def reactions(analysis, lang="en", design=None):
     >>> round(float(ax.lines[0].get_ydata()[0]), 2)  # R56 at S = 0.420 m [kN], table 5.1: 48.480
     48.48
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     if not v.mech.loads:
         return None
-    fig, ax = p.axes(t("f_reactions", lang), t("y_reaction", lang), "kN", width=7.2)
+    fig, ax = p.axes(t("f_reactions", lang), t("y_reaction", lang), "N", width=7.2)
     rs = _reactions(v)
     markers = "osv^Dx+<>pP*h"
     for k, (name, i, j) in enumerate(rs):
         # reactions equal in magnitude (a two-force link) overlap: distinct markers show it
-        p.line(ax, v.pick(v.a.statics.reaction_magnitude(i, j)) / 1e3,
+        p.line(ax, v.pick(v.a.statics.reaction_magnitude(i, j)),
                _math("R", name[1:] if name.startswith("R") else name),
                marker=markers[k % len(markers)], markersize=4, markerfacecolor="none")
     p.legend(fig, ax, len(rs))
     return p.done(fig, ax)
 
 
-def hodograph(analysis, lang="en", design=None):
+def hodograph(analysis, lang="en", design=None, units=None):
     """Hodograph of the largest frame reaction: its y against its x component [kN]
     (the force of the frame on the link) over the positions, equal scales, with the
     first and last positions marked and the direction of travel; None without
@@ -347,7 +348,7 @@ def hodograph(analysis, lang="en", design=None):
     >>> round(float(ax.lines[0].get_ydata()[0]), 2)  # R01y at S = 0.420 m [kN], table 5.1: 129.558
     129.56
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     if not v.mech.loads:
         return None
@@ -358,7 +359,8 @@ def hodograph(analysis, lang="en", design=None):
             continue
         link = j if i == "0" else i
         r = st.reaction("0", link)
-        rx, ry = v.pick(r[..., 0]) / 1e3, v.pick(r[..., 1]) / 1e3
+        rx = np.asarray(v.units.convert(v.pick(r[..., 0]), "N")[0], dtype=float)
+        ry = np.asarray(v.units.convert(v.pick(r[..., 1]), "N")[0], dtype=float)
         peak = float(np.max(np.hypot(rx, ry)))
         if best is None or peak > best[0]:
             best = (peak, name, link, rx, ry)
@@ -369,8 +371,9 @@ def hodograph(analysis, lang="en", design=None):
     fig = new_figure(6.0, 5.0)
     ax = fig.add_subplot()
     ax.set_title(title)
-    ax.set_xlabel(f"$R_x$ [{unit('kN', lang)}]")
-    ax.set_ylabel(f"$R_y$ [{unit('kN', lang)}]")
+    fu = unit(v.units["force"].text, lang)
+    ax.set_xlabel(f"$R_x$ [{fu}]")
+    ax.set_ylabel(f"$R_y$ [{fu}]")
     ax.grid(True, alpha=0.35)
     # over a grid of two coordinates the reaction sweeps an area: points, not a path
     ax.plot(rx, ry, "o" if p.is_map else "-o", ms=3, color="C0", zorder=2)
@@ -378,7 +381,7 @@ def hodograph(analysis, lang="en", design=None):
     for k, key, style in ((0, "start", dict(marker="o", color="C2")),
                           (-1, "end", dict(marker="s", color="C3"))):
         if v.k == 1:
-            qtxt = f"{c} = {p.x[k]:.4g} {unit(v.coord_unit(c), lang)}"
+            qtxt = f"{c} = {v.text(v.coord_values(c)[k], v.coord_unit(c), lang)}"
         else:
             qtxt = v.at_text(range(len(rx))[k], lang)
         ax.plot(rx[k], ry[k], ls="none", ms=8, zorder=3, label=f"{t(key, lang)}: {qtxt}",
@@ -395,7 +398,7 @@ def hodograph(analysis, lang="en", design=None):
     return fig
 
 
-def stability(analysis, lang="en", design=None):
+def stability(analysis, lang="en", design=None, units=None):
     """Share of the total weight on the steered axle [%] with the rule's limit
     (seed 003 fig. 6.2); None without machine data.
 
@@ -410,7 +413,7 @@ def stability(analysis, lang="en", design=None):
     >>> [round(float(y), 1) for y in ax.lines[0].get_ydata()[:3]]  # dRa [%], table 6.1
     [23.8, 23.5, 23.5]
     """
-    p = _Plot(analysis, lang, design)
+    p = _Plot(analysis, lang, design, units)
     v = p.v
     st = v.a.stability
     if st is None:
@@ -432,7 +435,7 @@ FIGURES = {"angles": angles, "distances": distances, "analogs": analogs, "transm
            "hodograph": hodograph, "stability": stability}
 
 
-def figures(analysis, lang="en", design=None, names=None) -> dict:
+def figures(analysis, lang="en", design=None, names=None, units=None) -> dict:
     """Every diagram whose data exist, ``{name: Figure}`` in :data:`FIGURES` order (a
     diagram with nothing to draw for this machine is left out).
 
@@ -444,6 +447,9 @@ def figures(analysis, lang="en", design=None, names=None) -> dict:
         Design of a batch (required for a batch).
     names : iterable of str, optional
         A subset of :data:`FIGURES`.
+    units : str or DisplayUnits, optional
+        The display units of every axis and legend (:mod:`assur.core.display`);
+        default: the model file's ``[display] units``, else ``"file"``.
 
     Examples
     --------
@@ -467,7 +473,7 @@ def figures(analysis, lang="en", design=None, names=None) -> dict:
         raise ValueError(f"figure names must be among: {list(FIGURES)}; got {bad}")
     out = {}
     for n in names:
-        fig = FIGURES[n](analysis, lang, design)
+        fig = FIGURES[n](analysis, lang, design, units)
         # a figure with nothing drawn on it (e.g. a capacity diagram of a machine with
         # no load to lift, link angles of a machine whose only link is a cylinder) is
         # not a figure of this machine

@@ -4,9 +4,13 @@ Everything is inside the file: styles and the small animation player are inline,
 images are ``data:`` URIs (base64 PNG), the animation an inline SVG of vector frames. It links to nothing outside itself (no
 CSS, scripts, fonts or network addresses), so it can be mailed or archived as is.
 
-Numbers in the HTML tables are rounded as the seeds print them (m to 3 decimals,
-degrees and % to 1, N and Pa to whole units, dimensionless to 3); the CSV and
-XLSX files keep full precision.
+Every value is shown in the report's display units (:mod:`assur.core.display`: the
+model file's, engineering, SI or imperial) and language (Russian with the decimal
+comma). The numbers of a table column share one count of decimals that shows four
+significant digits of its largest magnitude
+(:func:`assur.views.report.numbers.decimals`); the closure residuals are one check
+line under their table, not a column of 1e-16 noise. The CSV and XLSX files keep
+full precision.
 """
 
 from __future__ import annotations
@@ -18,34 +22,13 @@ import base64
 
 import numpy as np
 
-from ...core.quantities import display_units
+from ...core.display import DisplayUnits, parameter_units, unit_system
 from ...texts import localize
 from .labels import TEXT, check_lang, t, unit
+from .numbers import decimals, number, quantity
 from .values import parameter_value, solved_line
 
 __all__ = ["write_html", "render_html", "model_inputs", "stylesheet"]
-
-#: decimals shown per unit (the seeds' printed precision)
-DECIMALS = {"m": 3, "deg": 1, "-": 3, "rad/m": 3, "N": 0, "Pa": 0, "%": 1, "N·m": 0,
-            "m/rad": 3}
-
-def _fmt(x, u, lang):
-    """A number as the seeds print it."""
-    if isinstance(x, (bool, np.bool_)):
-        return t("yes" if x else "no", lang)
-    if isinstance(x, (int, np.integer)):
-        return str(int(x))
-    x = float(x)
-    if np.isnan(x):
-        return "—"
-    if np.isinf(x):
-        return "∞" if x > 0 else "−∞"
-    d = DECIMALS.get(u, 4)
-    if x != 0 and (abs(x) < 0.5 * 10.0 ** (-d) or abs(x) >= 1e9):
-        return f"{x:.3g}"
-    s = f"{x:.{d}f}"
-    return s.lstrip("-") if float(s) == 0 else s
-
 
 def data_uri(data: bytes, mime: str = "image/png") -> str:
     """``data:`` URI of an image, for embedding it in an HTML report."""
@@ -66,21 +49,20 @@ def _unit_text(u, lang):
     return "°" if u.is_degrees else unit(u.text, lang)
 
 
-def _summary(analysis, lang):
+def _summary(analysis, lang, du):
     mech = analysis.mechanism
     kin = analysis.kinematics
-    units = display_units(mech)
-    params = [(n, parameter_value(v, units[n]), _unit_text(units[n], lang))
+    units = parameter_units(mech, du)
+    params = [(n, parameter_value(v, units[n], lang), _unit_text(units[n], lang))
               for n, v in mech.params.items()]
     coords = []
     for c in kin.coordinates:
         q = np.asarray(kin.q(c), dtype=float)
-        is_angle = mech.coordinate_kind(c) == "angle"
-        qq, u = (np.degrees(q), "deg") if is_angle else (q, "m")
+        kind = "angle" if mech.coordinate_kind(c) == "angle" else "length"
         # over several coordinates: each one's own values, not the grid's positions
         n = q.shape[-1] if kin.k == 1 else np.unique(q.reshape(-1, q.shape[-1])[0]).size
-        coords.append(f"{c}: {qq.min():.6g} … {qq.max():.6g} {unit(u, lang)} "
-                      f"({n} {t('positions', lang)})")
+        coords.append(f"{c}: {number(du.value(q.min(), kind), None, lang, 6)} … "
+                      f"{quantity(q.max(), kind, du, lang, 6)} ({n} {t('positions', lang)})")
     if kin.k > 1:  # the grid's shape, or paired paths
         shape = [np.unique(np.asarray(kin.q(c), float).reshape(-1, kin.n)[0]).size
                  for c in kin.coordinates]
@@ -103,57 +85,75 @@ def _summary(analysis, lang):
             tag = " (steered)" if name == mc.steered and lang == "en" else (
                 " (управляемая)" if name == mc.steered else "")
             machine.append(f"{'axle' if lang == 'en' else 'ось'} {name}{tag}: "
-                           f"x = {x:.6g} {unit('m', lang)}")
+                           f"x = {quantity(x, 'length', du, lang, 6)}")
         for name, p, x in tuple(mc.weights) + tuple(mc.counterweights):
-            machine.append(f"{name}: {p:.6g} {unit('N', lang)}, x = {x:.6g} {unit('m', lang)}")
-        machine.append(f"min share: {100 * mc.min_share:g} %" if lang == "en"
-                       else f"минимальная доля: {100 * mc.min_share:g} %")
-    solved = [solved_line(sc, mech, lang, units) for sc in getattr(analysis, "solved", ())]
+            machine.append(f"{name}: {quantity(p, 'force', du, lang, 6)}, "
+                           f"x = {quantity(x, 'length', du, lang, 6)}")
+        share = number(100 * mc.min_share, None, lang, 6)
+        machine.append(f"min share: {share} %" if lang == "en"
+                       else f"минимальная доля: {share} %")
+    solved = [solved_line(sc, mech, lang, units, du) for sc in getattr(analysis, "solved", ())]
     return dict(params=params, coords=coords, groups=groups, links=links, machine=machine,
-                solved=solved, dynamics=_dynamics_lines(analysis, lang))
+                solved=solved, dynamics=_dynamics_lines(analysis, lang, du))
 
 
-def _dynamics_lines(analysis, lang):
+def _dynamics_lines(analysis, lang, du):
     """The crank dynamics in a few lines: speed, reduced moment of inertia, driving
     moment, the common centre of mass, the flywheel and the balancing (lab 3)."""
     dyn = getattr(analysis, "dynamics", None)
     if dyn is None:
         return []
-    mm = 1e3
-    w = np.abs(np.ravel(dyn.qdot))
+
+    def q(si, kind):
+        return quantity(si, kind, du, lang)
+
+    w = float(np.mean(np.abs(np.ravel(dyn.qdot))))
     c = dyn.centre
-    out = [t("dyn_speed", lang, dyn.coordinate, float(w.mean()), float(w.mean()) * 30 / np.pi),
-           t("dyn_jred", lang, float(np.min(dyn.reduced_inertia)),
-             float(np.max(dyn.reduced_inertia))),
-           t("dyn_md", lang, float(np.min(dyn.driving_moment)),
-             float(np.max(dyn.driving_moment))),
-           t("dyn_centre", lang, float(c.amplitude_x) * mm, float(c.amplitude_y) * mm,
-             float(c.area) * mm * mm, float(c.mass))]
+    rpm = f"{number(w * 30 / np.pi, None, lang)} {unit('rpm', lang)}"
+    out = [t("dyn_speed", lang, dyn.coordinate, q(w, "angular_velocity"), rpm),
+           t("dyn_jred", lang, q(float(np.min(dyn.reduced_inertia)), "inertia"),
+             q(float(np.max(dyn.reduced_inertia)), "inertia")),
+           t("dyn_md", lang, q(float(np.min(dyn.driving_moment)), "moment"),
+             q(float(np.max(dyn.driving_moment)), "moment")),
+           t("dyn_centre", lang, q(float(c.amplitude_x), "length"),
+             q(float(c.amplitude_y), "length"), q(float(c.area), "area"),
+             q(float(c.mass), "mass"))]
     fw = getattr(analysis, "flywheel", None)
     if fw is not None:
-        out.append(t("dyn_flywheel", lang, fw.delta, fw.J_flywheel, fw.omega_min, fw.omega_max,
-                     fw.driving_moment, fw.J_classical, fw.J_mertsalov))
+        out.append(t("dyn_flywheel", lang, number(fw.delta, None, lang),
+                     q(fw.J_flywheel, "inertia"), q(fw.omega_min, "angular_velocity"),
+                     q(fw.omega_max, "angular_velocity"), q(fw.driving_moment, "moment"),
+                     q(fw.J_classical, "inertia"), q(fw.J_mertsalov, "inertia")))
     b = getattr(analysis, "balancing", None)
     if b is not None:
-        placed = "; ".join(t("dyn_mass", lang, m.link, float(m.m), float(m.along) * mm,
-                             float(m.offset) * mm) for m in b.masses) or "—"
+        placed = "; ".join(t("dyn_mass", lang, m.link, q(float(m.m), "mass"),
+                             q(float(m.along), "length"), q(float(m.offset), "length"))
+                           for m in b.masses) or "—"
         out.append(t("dyn_balance", lang, t(f"objective_{b.objective}", lang), placed,
-                     float(b.after.amplitude_x) * mm, float(b.after.amplitude_y) * mm,
-                     float(b.after.area) * mm * mm))
+                     q(float(b.after.amplitude_x), "length"),
+                     q(float(b.after.amplitude_y), "length"), q(float(b.after.area), "area")))
     return out
 
 
+#: the tables' column of closure residuals, shown in the report as one check line
+CLOSURE = "closure"
+
+
 def _table_view(tab, lang):
-    cols = []
+    cols, shown, checks = [], [], []
     for c in tab.columns:
+        if c.symbol == CLOSURE:  # noise of 1e-16: one line, not a column
+            worst = float(np.nanmax(np.abs(c.values))) if len(c.values) else 0.0
+            checks.append(t("closure_check", lang,
+                            f"{number(worst, None, lang, 2)} {unit(c.unit, lang)}"))
+            continue
         mark = "*" if c.printed_sign < 0 else ""
         tip = c.label.get(lang, "") + (f" — {t('printed_sign', lang)}" if mark else "")
         cols.append(dict(symbol=c.symbol + mark, unit=unit(c.unit, lang), tip=tip))
-    rows = []
-    for i in range(len(tab)):
-        rows.append([_fmt(c.values[i], c.unit, lang) for c in tab.columns])
+        shown.append((c, decimals(c.values)))
+    rows = [[number(c.values[i], d, lang) for c, d in shown] for i in range(len(tab))]
     return dict(id=tab.id, anchor=_anchor("table-", tab.id), title=tab.title(lang), cols=cols,
-                rows=rows, notes=[n.get(lang, n.get("en", "")) for n in tab.notes])
+                rows=rows, notes=checks + [n.get(lang, n.get("en", "")) for n in tab.notes])
 
 
 def _figure_items(figures, lang):
@@ -221,11 +221,18 @@ def stylesheet() -> str:
     return files(__package__).joinpath("report.css").read_text(encoding="utf-8")
 
 
-def model_inputs(analysis, lang="en") -> list:
+def _units(analysis, units):
+    """The report's :class:`DisplayUnits` (a system's name, or None: the file's choice)."""
+    return units if isinstance(units, DisplayUnits) else unit_system(analysis.mechanism, units)
+
+
+def model_inputs(analysis, lang="en", units=None) -> list:
     """The inputs of the analysis as sections of rows, for the workbook's inputs sheet
     (:func:`assur.views.report.tables.write_xlsx`): the model (title, name), the
     generalized coordinates over the analysed range, every parameter with its value
-    in the unit the model file gave it, and the design conditions solved.
+    in its display unit (``units``: a system or :class:`DisplayUnits`; the default,
+    the model file's: each parameter in the unit the file gave it), and the design
+    conditions solved.
 
     Examples
     --------
@@ -238,16 +245,19 @@ def model_inputs(analysis, lang="en") -> list:
     >>> params = dict((n, (v, u)) for n, v, u in sections[2][1])
     >>> params["P6"], round(params["L4"][0], 9), params["L4"][1]  # as given; L4 solved [m]
     ((27.5, 'kN'), 0.661283167, 'm')
+    >>> dict((n, (v, u)) for n, v, u in model_inputs(a, units="imperial")[2][1])["P6"]
+    (6182.245935242037, 'lbf')
     """
-    s = _summary(analysis, lang)
+    du = _units(analysis, units)
+    s = _summary(analysis, lang, du)
     mech = analysis.mechanism
-    units = display_units(mech)
+    units = parameter_units(mech, du)
     params = []
     for n, v in mech.params.items():
         a = np.asarray(v, dtype=float)
-        # a number in the file's unit, every digit; a batch of designs: its count and span
+        # a number in its display unit, every digit; a batch of designs: count and span
         value = float(units[n].of(a.reshape(-1)[0])) if a.size == 1 else \
-            parameter_value(v, units[n])
+            parameter_value(v, units[n], lang)
         params.append((n, value, _unit_text(units[n], lang)))
     out = [(t("summary", lang), [(localize(mech.title, lang),), (mech.name,)]),
            (t("coordinates", lang), [(c,) for c in s["coords"]]),
@@ -259,7 +269,7 @@ def model_inputs(analysis, lang="en") -> list:
 
 
 def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, animation=None,
-                design=None, interval=120) -> str:
+                design=None, interval=120, units=None) -> str:
     """The report as an HTML string (see :func:`write_html`).
 
     Examples
@@ -271,9 +281,9 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     >>> page = render_html(a, figures={}, drawing=False, animation=False)  # tables only
     >>> re.search(r"<title>(.*?)</title>", page).group(1)
     'Mini-tractor mounted-implement hitch (seed 003) — Analysis report'
-    >>> rows = re.findall(r"<tr><td>0\\.420</td>.*?</tr>", page)  # S = 0.420 m of each table
-    >>> re.findall(r"<td>(.*?)</td>", rows[3])  # table 4.1 as printed [m, N, Pa, N, N, %]
-    ['0.420', '129614', '15348729', '33139', '31354', '14.0']
+    >>> rows = re.findall(r"<tr><td>0\\.4200</td>.*?</tr>", page)  # S = 0.42 m in each table
+    >>> re.findall(r"<td>(.*?)</td>", rows[3])  # table 4.1 in the file's units [m, kN, MPa, kN, kN, %]
+    ['0.4200', '129.6', '15.35', '33.14', '31.35', '14.02']
     >>> '<html lang="ru"' in render_html(a, "ru", figures={}, drawing=False, animation=False)
     True
     """
@@ -282,14 +292,15 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     from .tables import seed_tables
 
     check_lang(lang)
+    du = _units(analysis, units)
     if tables is None:
-        tables = seed_tables(analysis, lang, design=design)
+        tables = seed_tables(analysis, lang, design=design, units=du)
     if figures is None:
-        figures = _figures.figures(analysis, lang, design=design)
+        figures = _figures.figures(analysis, lang, design=design, units=du)
     if drawing is None:
-        drawing = _drawing.draw(analysis, lang=lang, design=design)
+        drawing = _drawing.draw(analysis, lang=lang, design=design, units=du)
     if animation is None:
-        animation = _drawing.animation(analysis, lang=lang, design=design)
+        animation = _drawing.animation(analysis, lang=lang, design=design, units=du)
     drawing_uri = None
     if drawing is not False:
         png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
@@ -299,7 +310,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     mech = analysis.mechanism
     return tpl.render(
         lang=lang, L=L, css=stylesheet(), title=localize(mech.title, lang), name=mech.name,
-        summary=_summary(analysis, lang),
+        summary=_summary(analysis, lang, du),
         tables=[_table_view(tab, lang) for tab in tables],
         figures=_figure_items(dict(figures), lang),
         drawing=drawing_uri,
@@ -308,7 +319,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
 
 
 def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=None,
-               animation=None, design=None) -> Path:
+               animation=None, design=None, units=None) -> Path:
     """Write the whole report as one self-contained HTML file.
 
     Parameters
@@ -322,7 +333,8 @@ def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=Non
         The diagrams (PNG bytes or matplotlib figures); default: all of
         :func:`assur.views.report.figures.figures`.
     tables : list of Table, optional
-        Default: :func:`assur.views.report.tables.seed_tables`.
+        In the display units; default: :func:`assur.views.report.tables.seed_tables`
+        in ``units``.
     drawing : Figure, bytes or False, optional
         The drawing of the mechanism; default :func:`assur.views.report.drawing.draw`;
         False leaves it out.
@@ -332,6 +344,9 @@ def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=Non
         it out.
     design : int, optional
         Design of a batch.
+    units : str or DisplayUnits, optional
+        The display units (:data:`assur.core.display.SYSTEMS`); default: the model
+        file's ``[display] units``, else ``"file"``.
 
     Returns
     -------
@@ -353,7 +368,8 @@ def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=Non
     >>> "Механизм навески мини-трактора" in page  # the model's title in Russian
     True
     """
-    text = render_html(analysis, lang, figures, tables, drawing, animation, design)
+    text = render_html(analysis, lang, figures, tables, drawing, animation, design,
+                       units=units)
     path = Path(path)
     path.write_text(text, encoding="utf-8")
     return path

@@ -113,6 +113,8 @@ TEXT = {
     "c_x": {"en": "x of point {0}", "ru": "X точки {0}"},
     "c_y": {"en": "y of point {0}", "ru": "Y точки {0}"},
     "c_closure": {"en": "largest closure residual", "ru": "наибольшая невязка замыкания"},
+    "closure_check": {"en": "closure of every group ≤ {0} at every position",
+                      "ru": "невязка замыкания каждой группы ≤ {0} во всех положениях"},
     "c_U": {"en": "transfer ratio ω{0}/ω{1}", "ru": "передаточное отношение ω{0}/ω{1}"},
     "c_I": {"en": "transmission number dY/d{1} of point {0}",
             "ru": "передаточное число dY/d{1} точки {0}"},
@@ -123,8 +125,8 @@ TEXT = {
               "ru": "сила на ГЦ по реакциям ({0})"},
     "c_p": {"en": "cylinder pressure ({0})", "ru": "давление в ГЦ ({0})"},
     "c_G": {"en": "lift capacity at point {0}", "ru": "грузоподъёмность в точке {0}"},
-    "c_dG": {"en": "capacity reserve at {0} against {1} = {2:.6g} N",
-             "ru": "запас грузоподъёмности в точке {0} относительно {1} = {2:.6g} Н"},
+    "c_dG": {"en": "capacity reserve at {0} against {1} = {2}",
+             "ru": "запас грузоподъёмности в точке {0} относительно {1} = {2}"},
     "c_Rx": {"en": "x component of {0}", "ru": "проекция {0} на ось X"},
     "c_Ry": {"en": "y component of {0}", "ru": "проекция {0} на ось Y"},
     "c_R": {"en": "magnitude of {0} (force of {1} on {2})",
@@ -162,10 +164,10 @@ TEXT = {
     "y_pressure": {"en": "pressure p", "ru": "давление p"},
     "y_reaction": {"en": "reaction |R|", "ru": "реакция |R|"},
     "y_share": {"en": "share of the total weight", "ru": "доля от общего веса"},
-    "load": {"en": "load {0} = {1:.4g} kN", "ru": "нагрузка {0} = {1:.4g} кН"},
-    "force_max": {"en": "available $F_{{max}}$ = {0:.4g} kN",
-                  "ru": "максимальная $F_{{max}}$ = {0:.4g} кН"},
-    "p_max": {"en": "$p_{{max}}$ = {0:.4g} MPa", "ru": "$p_{{max}}$ = {0:.4g} МПа"},
+    "load": {"en": "load {0} = {1}", "ru": "нагрузка {0} = {1}"},
+    "force_max": {"en": "available $F_{{max}}$ = {0}",
+                  "ru": "максимальная $F_{{max}}$ = {0}"},
+    "p_max": {"en": "$p_{{max}}$ = {0}", "ru": "$p_{{max}}$ = {0}"},
     "min_share": {"en": "limit {0:g} %", "ru": "предел {0:g} %"},
     "steered_axle": {"en": "steered axle {0}", "ru": "управляемая ось {0}"},
     "other_axle": {"en": "axle {0}", "ru": "ось {0}"},
@@ -177,28 +179,25 @@ TEXT = {
     "centre_of_mass": {"en": "centre of mass", "ru": "центр масс"},
     "dynamics": {"en": "Crank dynamics (inertia, flywheel, balancing)",
                  "ru": "Динамика (силы инерции, маховик, уравновешивание)"},
-    "dyn_speed": {"en": "crank {0}: mean |ω| = {1:.4g} rad/s ({2:.4g} rpm)",
-                  "ru": "кривошип {0}: среднее |ω| = {1:.4g} рад/с ({2:.4g} об/мин)"},
-    "dyn_jred": {"en": "reduced moment of inertia J_red = {0:.4g} … {1:.4g} kg·m²",
-                 "ru": "приведённый момент инерции J_пр = {0:.4g} … {1:.4g} кг·м²"},
-    "dyn_md": {"en": "driving moment M_d = {0:.4g} … {1:.4g} N·m (table D)",
-               "ru": "движущий момент M_д = {0:.4g} … {1:.4g} Н·м (таблица D)"},
-    "dyn_centre": {"en": "common centre of mass of {3:.4g} kg: A_x = {0:.3f} mm, A_y = {1:.3f} mm, "
-                         "enclosed area {2:.4g} mm²",
-                   "ru": "общий центр масс {3:.4g} кг: A_x = {0:.3f} мм, A_y = {1:.3f} мм, "
-                         "площадь траектории {2:.4g} мм²"},
-    "dyn_flywheel": {"en": "flywheel (energy–mass method): δ = {0:.4g}, J_f = {1:.4g} kg·m² "
-                           "(ω = {2:.4g} … {3:.4g} rad/s, constant M_d = {4:.4g} N·m; the "
-                           "approximations ΔE_max/(δω²) = {5:.4g}, Mertsalov {6:.4g} kg·m²)",
-                     "ru": "маховик (метод энергомасс): δ = {0:.4g}, J_м = {1:.4g} кг·м² "
-                           "(ω = {2:.4g} … {3:.4g} рад/с, постоянный M_д = {4:.4g} Н·м; "
-                           "приближения ΔE_max/(δω²) = {5:.4g}, по Мерцалову {6:.4g} кг·м²)"},
-    "dyn_mass": {"en": "{1:.4g} kg on link {0} at {2:.1f} mm along, {3:.1f} mm offset",
-                 "ru": "{1:.4g} кг на звене {0}: {2:.1f} мм вдоль, {3:.1f} мм в сторону"},
-    "dyn_balance": {"en": "balancing ({0}): {1}; then A_x = {2:.3f} mm, A_y = {3:.3f} mm, "
-                          "area {4:.4g} mm²",
-                    "ru": "уравновешивание ({0}): {1}; после него A_x = {2:.3f} мм, "
-                          "A_y = {3:.3f} мм, площадь {4:.4g} мм²"},
+    "dyn_speed": {"en": "crank {0}: mean |ω| = {1} ({2})",
+                  "ru": "кривошип {0}: среднее |ω| = {1} ({2})"},
+    "dyn_jred": {"en": "reduced moment of inertia J_red = {0} … {1}",
+                 "ru": "приведённый момент инерции J_пр = {0} … {1}"},
+    "dyn_md": {"en": "driving moment M_d = {0} … {1} (table D)",
+               "ru": "движущий момент M_д = {0} … {1} (таблица D)"},
+    "dyn_centre": {"en": "common centre of mass of {3}: A_x = {0}, A_y = {1}, enclosed area {2}",
+                   "ru": "общий центр масс {3}: A_x = {0}, A_y = {1}, площадь траектории {2}"},
+    "dyn_flywheel": {"en": "flywheel (energy–mass method): δ = {0}, J_f = {1} (ω = {2} … {3}, "
+                           "constant M_d = {4}; the approximations ΔE_max/(δω²) = {5}, "
+                           "Mertsalov {6})",
+                     "ru": "маховик (метод энергомасс): δ = {0}, J_м = {1} (ω = {2} … {3}, "
+                           "постоянный M_д = {4}; приближения ΔE_max/(δω²) = {5}, по Мерцалову "
+                           "{6})"},
+    "dyn_mass": {"en": "{1} on link {0} at {2} along, {3} offset",
+                 "ru": "{1} на звене {0}: {2} вдоль, {3} в сторону"},
+    "dyn_balance": {"en": "balancing ({0}): {1}; then A_x = {2}, A_y = {3}, area {4}",
+                    "ru": "уравновешивание ({0}): {1}; после него A_x = {2}, A_y = {3}, "
+                          "площадь {4}"},
     "c_dist": {"en": "distance {0} = |{1}–{2}|", "ru": "расстояние {0} = |{1}–{2}|"},
     "c_ddist": {"en": "analog d{0}/d{1} of the distance {0}",
                 "ru": "аналог d{0}/d{1} расстояния {0}"},
@@ -229,10 +228,10 @@ TEXT = {
               "ru": "Перемещение общего центра масс за оборот кривошипа"},
     "dyn_before": {"en": "without counter-masses", "ru": "без противовесов"},
     "dyn_after": {"en": "with counter-masses", "ru": "с противовесами"},
-    "dyn_amp": {"en": "A_x = {0:.2f} mm, A_y = {1:.2f} mm, area {2:.2f} mm²",
-            "ru": "A_x = {0:.2f} мм, A_y = {1:.2f} мм, площадь {2:.2f} мм²"},
-    "dyn_mean": {"en": "about its mean (x̄, ȳ) = ({0:.1f}, {1:.1f}) mm",
-             "ru": "относительно среднего (x̄, ȳ) = ({0:.1f}, {1:.1f}) мм"},
+    "dyn_amp": {"en": "A_x = {0}, A_y = {1}, area {2}",
+            "ru": "A_x = {0}, A_y = {1}, площадь {2}"},
+    "dyn_mean": {"en": "about its mean (x̄, ȳ) = ({0}, {1}) {2}",
+             "ru": "относительно среднего (x̄, ȳ) = ({0}, {1}) {2}"},
     "dyn_f_hodo": {"en": "Reaction hodographs over a turn", "ru": "Годографы реакций за оборот"},
     "dyn_f_mred": {"en": "Reduced moment on the crank", "ru": "Приведённый момент на кривошипе"},
     "dyn_m_all": {"en": "all loads, inertia included", "ru": "все нагрузки с силами инерции"},
@@ -243,8 +242,8 @@ TEXT = {
     "dyn_f_wit": {"en": "Energy–mass diagram and the flywheel",
               "ru": "Диаграмма энергомасс и маховик"},
     "dyn_wit_tan": {"en": "tangents of ω_max, ω_min", "ru": "касательные ω_max, ω_min"},
-    "dyn_fw": {"en": "they meet at (−J_f, −T0): J_f = {0:.4g} kg·m², δ = {1:.4g}",
-           "ru": "пересекаются в (−J_м, −T0): J_м = {0:.4g} кг·м², δ = {1:.4g}"},
+    "dyn_fw": {"en": "they meet at (−J_f, −T0): J_f = {0}, δ = {1}",
+           "ru": "пересекаются в (−J_м, −T0): J_м = {0}, δ = {1}"},
     "dyn_omega": {"en": "crank speed |ω|", "ru": "угловая скорость кривошипа |ω|"},
     "dyn_angle": {"en": "crank angle {0}", "ru": "угол кривошипа {0}"},
     "dyn_energy": {"en": "work of the loads ΔE", "ru": "работа сил ΔE"},
@@ -257,17 +256,16 @@ TEXT = {
                 "ru": "вертикальное усилие, развиваемое в точке навески {0}"},
     "c_Gtest_frame": {"en": "vertical force available at the test frame's point {0}",
                       "ru": "вертикальное усилие на раме испытаний в точке {0}"},
-    "lift_test_note": {"en": "at {0:g} % of the relief pressure: {1:.4g} MPa, cylinder force "
-                             "{2:.4g} kN; {3} heights of the hitch point evenly spaced over "
-                             "the lift range; the implement's weight is not part of the test",
-                       "ru": "при {0:g} % давления настройки предохранительного клапана: "
-                             "{1:.4g} МПа, усилие гидроцилиндров {2:.4g} кН; {3} высот точки "
-                             "навески равномерно по диапазону подъёма; вес орудия в испытание "
-                             "не входит"},
-    "lift_test_min": {"en": "minimum over the lift range at the hitch point {0}: {1:.4g} kN",
-                      "ru": "минимум по диапазону подъёма в точке навески {0}: {1:.4g} кН"},
-    "lift_test_min_frame": {"en": "minimum over the lift range on the frame ({0}): {1:.4g} kN",
-                            "ru": "минимум по диапазону подъёма на раме ({0}): {1:.4g} кН"},
+    "lift_test_note": {"en": "at {0} of the relief pressure: {1}, cylinder force {2}; {3} heights "
+                             "of the hitch point evenly spaced over the lift range; the "
+                             "implement's weight is not part of the test",
+                       "ru": "при {0} давления настройки предохранительного клапана: {1}, "
+                             "усилие гидроцилиндров {2}; {3} высот точки навески равномерно по "
+                             "диапазону подъёма; вес орудия в испытание не входит"},
+    "lift_test_min": {"en": "minimum over the lift range at the hitch point {0}: {1}",
+                      "ru": "минимум по диапазону подъёма в точке навески {0}: {1}"},
+    "lift_test_min_frame": {"en": "minimum over the lift range on the frame ({0}): {1}",
+                            "ru": "минимум по диапазону подъёма на раме ({0}): {1}"},
     # simulation in time of a hydraulic drive (report/simulation.py; lab 6 figs. 6.3–6.7)
     "sim_report": {"en": "Simulation of the hydraulic drive", "ru": "Моделирование гидропривода"},
     "sim_motion": {"en": "The mechanism in motion (real time)",
@@ -327,11 +325,11 @@ TEXT = {
                        "ru": "их аналоги, передаточные отношения и числа"},
     "absent_capacity": {"en": "the capacity of cylinder {0}", "ru": "грузоподъёмность "
                                                                     "гидроцилиндра {0}"},
-    "g_min": {"en": "{0}: minimum {1:.6g} kN at {2}", "ru": "{0}: минимум {1:.6g} кН при {2}"},
-    "g_reach": {"en": "{0} at the farthest reach of {1} (X{1} = {2:.6g} m, seed 001 lab 1 "
-                      "eq. 14a): {3:.6g} kN at {4}",
-                "ru": "{0} при наибольшем вылете точки {1} (X{1} = {2:.6g} м, источник 001, "
-                      "лаб. 1, формула 14а): {3:.6g} кН при {4}"},
+    "g_min": {"en": "{0}: minimum {1} at {2}", "ru": "{0}: минимум {1} при {2}"},
+    "g_reach": {"en": "{0} at the farthest reach of {1} (X{1} = {2}, seed 001 lab 1 "
+                      "eq. 14a): {3} at {4}",
+                "ru": "{0} при наибольшем вылете точки {1} (X{1} = {2}, источник 001, "
+                      "лаб. 1, формула 14а): {3} при {4}"},
     "g_dead": {"en": "the capacities carry the dead loads of the links {0} (seed 001 lab 1 "
                      "eq. 14)",
                "ru": "грузоподъёмность учитывает постоянные нагрузки звеньев {0} (источник "
@@ -348,12 +346,12 @@ TEXT = {
                     "те же числа, что в таблице 4.1, в виде карты"},
     "paired_axis": {"en": "{0} moves with it", "ru": "{0} изменяется вместе с ней"},
     "f_map": {"en": "{0}: map over {1} and {2}", "ru": "{0}: карта по {1} и {2}"},
-    "gmax_min": {"en": "{0}: minimum {1:.6g} kN ({2:.6g} kg at g = {3:.6g} m/s²) at {4}",
-                 "ru": "{0}: минимум {1:.6g} кН ({2:.6g} кг при g = {3:.6g} м/с²) при {4}"},
+    "gmax_min": {"en": "{0}: minimum {1} ({2} at g = {3}) at {4}",
+                 "ru": "{0}: минимум {1} ({2} при g = {3}) при {4}"},
 }
 
 #: SI unit symbols -> Russian spelling
-UNITS_RU = {"m": "м", "deg": "град", "-": "-", "N": "Н", "Pa": "Па", "%": "%",
+UNITS_RU = {"m": "м", "deg": "°", "-": "-", "N": "Н", "Pa": "Па", "%": "%",
             "rad/m": "рад/м", "rad": "рад", "kN": "кН", "MPa": "МПа", "N·m": "Н·м",
             "kg": "кг", "kg·m²": "кг·м²", "N/m": "Н/м", "m/rad": "м/рад", "m/m": "м/м",
             "rad/rad": "рад/рад", "rad/s": "рад/с", "rad/s²": "рад/с²", "J": "Дж",
@@ -379,7 +377,9 @@ _ATOMS_RU = {"m": "м", "mm": "мм", "cm": "см", "dm": "дм", "km": "км", 
              "MN": "МН", "Pa": "Па", "kPa": "кПа", "MPa": "МПа", "GPa": "ГПа", "bar": "бар",
              "kg": "кг", "g": "г", "t": "т", "s": "с", "min": "мин", "h": "ч", "rad": "рад",
              "deg": "град", "rpm": "об/мин", "l": "л", "L": "л", "W": "Вт", "kW": "кВт",
-             "J": "Дж", "kJ": "кДж", "kgf": "кгс", "tf": "тс", "Hz": "Гц", "percent": "%"}
+             "J": "Дж", "kJ": "кДж", "kgf": "кгс", "tf": "тс", "Hz": "Гц", "percent": "%",
+             "in": "дюйм", "inch": "дюйм", "ft": "фут", "lbf": "фунт-сила", "lb": "фунт",
+             "psi": "фунт/дюйм²", "gal": "галлон", "hp": "л. с.", "mrad": "мрад"}
 
 
 def unit(u: str, lang: str) -> str:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import dataclasses
 
 from ..labels import TEXT, check_lang
-from ._data import Column, Table, _both, _same
+from ._data import Column, Table, _both, _same, in_units
 from ._forces import _table_4_1, _table_5_1, _table_5_2, _table_g
 from ._kinematics import _table_2_1, _table_2_2, _table_3_1, _table_ic
 from ._machines import _table_6_1, _table_d, _table_l
@@ -22,7 +22,8 @@ _BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_g, _table_5_
              _table_d, _table_6_1, _table_ic, _table_l)
 
 
-def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> list:
+def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None,
+                units=None) -> list:
     """The worksheet's tables of an analysis, as data.
 
     Parameters
@@ -42,6 +43,12 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> 
         crank's direction of rotation (d/dφ1 · sign φ1', the seeds' convention:
         seed 002 writes φ1' = −1 for its clockwise crank); default: the model's
         ``tables["analogs"]``, else per coordinate.
+    units : str or DisplayUnits, optional
+        Show every column in these display units (a system of
+        :data:`assur.core.display.SYSTEMS` or a
+        :class:`assur.core.display.DisplayUnits`). Default: the columns in SI (angles
+        in degrees, capacity reserves in %), the data the seeds' tests compare; the
+        notes are written in the model file's display units either way.
 
     Returns
     -------
@@ -59,7 +66,7 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> 
     4.713
     """
     check_lang(lang)
-    v = _View(analysis, design, angles=angles, analogs=analogs)
+    v = _View(analysis, design, angles=angles, analogs=analogs, units=units)
     tables = [t for t in (b(v) for b in _BUILDERS) if t is not None]
     tables = _with_formulas(v, tables)
     # the model may name columns as its seed does (``tables.symbols``: F_S → Fgc …)
@@ -68,7 +75,10 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None) -> 
         tables = [dataclasses.replace(t, columns=tuple(
             dataclasses.replace(c, symbol=rename.get(c.symbol, c.symbol)) for c in t.columns))
             for t in tables]
-    return _unique(v, _with_signs(v, tables))
+    tables = _unique(v, _with_signs(v, tables))
+    if units is not None:
+        tables = [in_units(t, v.units) for t in tables]
+    return tables
 
 
 def _unique(v, tables):

@@ -3,6 +3,7 @@ coordinates and the labels of both languages (:mod:`assur.views.report.tables`).
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -10,7 +11,7 @@ import numpy as np
 from ....texts import LANGS, localize
 from ..labels import TEXT, check_lang
 
-__all__ = ["Column", "Table", "grid_of", "wrap_degrees"]
+__all__ = ["Column", "Table", "grid_of", "wrap_degrees", "in_units"]
 
 
 def _both(key, *args):
@@ -244,3 +245,29 @@ def grid_of(q1, q2):
     if np.unique(i2 * len(u1) + i1).size != q1.size:
         return None
     return u1, u2, i1, i2
+
+
+def in_units(table, units):
+    """``table`` with every column shown in ``units`` (a
+    :class:`assur.core.display.DisplayUnits`): values converted from the column's unit
+    to the display unit of its kind, the unit renamed; a column of no known kind (a
+    count, a ratio) stays as it is.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.core.display import unit_system
+    >>> from assur.views.report import seed_tables
+    >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
+    >>> t = in_units(seed_tables(a)[3], unit_system(None, "engineering"))   # table 4.1
+    >>> [c.unit for c in t.columns]
+    ['mm', 'kN', 'MPa', 'kN', 'kN', '%']
+    >>> round(float(t["Fgc"][0]), 3)  # seed 003 table 4.1: 129614 N [kN]
+    129.614
+    """
+    cols = []
+    for c in table.columns:
+        values, text = units.convert(c.values, c.unit)
+        cols.append(c if text == c.unit else
+                    dataclasses.replace(c, values=np.asarray(values), unit=text))
+    return dataclasses.replace(table, columns=tuple(cols))

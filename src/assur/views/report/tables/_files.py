@@ -30,18 +30,29 @@ def table_filename(table, ext="csv") -> str:
     return f"table_{table.id.replace('.', '_').lower()}.{ext}"
 
 
-def _cell(v):
+def _cell(v, lang="en"):
     if isinstance(v, (bool, np.bool_)):
         return str(int(v))
     if isinstance(v, (int, np.integer)):
         return str(int(v))
-    return repr(float(v) + 0.0)  # + 0.0: never "-0.0"
+    text = repr(float(v) + 0.0)  # + 0.0: never "-0.0"
+    return text.replace(".", ",") if lang == "ru" else text
 
 
-def write_csv(table, path) -> Path:
-    """Write one table as CSV: header ``symbol [unit]``, numbers with ``repr`` (exact).
+#: the CSV dialect of each language: separator, decimal mark, encoding (a Russian
+#: Excel reads ``;`` and the decimal comma as a table, and UTF-8 only after a BOM)
+CSV_DIALECTS = {"en": (",", ".", "utf-8"), "ru": (";", ",", "utf-8-sig")}
 
-    NaN (undefined, e.g. a singular ratio) is written ``nan``, infinity ``inf``.
+
+def write_csv(table, path, lang="en") -> Path:
+    """Write one table as CSV: a header ``symbol [unit]`` per column and every number
+    exact (``repr``: a float read back is the same float).
+
+    In English the separator is ``,`` and the decimal point ``.`` (UTF-8); in Russian
+    (``lang="ru"``) the separator is ``;``, the decimal mark a comma and the units
+    Russian, in UTF-8 with a byte-order mark, so that a Russian Excel opens the file
+    as a table (:data:`CSV_DIALECTS`). NaN (undefined, e.g. a singular ratio) is
+    written ``nan``, infinity ``inf``.
 
     Examples
     --------
@@ -55,19 +66,25 @@ def write_csv(table, path) -> Path:
     ...     p = write_csv(t, Path(d) / "table_4_1.csv")
     ...     with open(p, encoding="utf-8") as f:
     ...         rows = list(csv.reader(f))
+    ...     p = write_csv(t, Path(d) / "table_4_1_ru.csv", lang="ru")
+    ...     with open(p, encoding="utf-8-sig") as f:
+    ...         ru = list(csv.reader(f, delimiter=";"))
     >>> rows[0]
     ['S [m]', 'Fgc [N]', 'Pgc [Pa]', 'G56 [N]', 'GS6 [N]', 'dGS65 [%]']
     >>> len(rows), float(rows[1][0]), round(float(rows[1][1]))  # S [m], Fgc [N]; seed: 129614
     (11, 0.42, 129614)
     >>> float(rows[-1][5]) == float(t["dGS65"][-1])  # exact: written with repr [%]
     True
+    >>> ru[0][:3], ru[1][0]
+    (['S [м]', 'Fgc [Н]', 'Pgc [Па]'], '0,42')
     """
+    sep, _, encoding = CSV_DIALECTS[lang]
     path = Path(path)
-    with open(path, "w", newline="", encoding="utf-8") as f:
-        w = csv.writer(f)
-        w.writerow([c.header for c in table.columns])
+    with open(path, "w", newline="", encoding=encoding) as f:
+        w = csv.writer(f, delimiter=sep)
+        w.writerow([f"{c.symbol} [{unit(c.unit, lang)}]" for c in table.columns])
         for row in zip(*(c.values for c in table.columns)):
-            w.writerow([_cell(x) for x in row])
+            w.writerow([_cell(x, lang) for x in row])
     return path
 
 
@@ -104,27 +121,27 @@ def sheet_name(table, lang="en", taken=()) -> str:
 
 
 def number_format(values) -> str:
-    """Excel's display format of a column: integers as such, else fixed decimals that
-    show five significant digits of the column's largest magnitude (the cells keep
-    every digit; only the display is rounded).
+    """Excel's display format of a column: the decimals every view shows it with
+    (:func:`assur.views.report.numbers.decimals`: integers as such, else fixed
+    decimals that show four significant digits of the column's largest magnitude;
+    e-notation for a column of tiny values); the cells keep every digit.
 
     Examples
     --------
     >>> import numpy as np
     >>> number_format(np.array([0.42, 0.67])), number_format(np.array([129614.2, 3.1]))
-    ('0.00000', '0')
+    ('0.0000', '0')
     >>> number_format(np.array([1, 0])), number_format(np.array([np.nan, 15.348]))
-    ('0', '0.000')
+    ('0', '0.00')
+    >>> number_format(np.array([1e-16, 3e-16]))   # closure residuals [m]
+    '0.0E+00'
     """
-    a = np.asarray(values)
-    if a.dtype.kind in "biu":
-        return "0"
-    a = np.abs(a[np.isfinite(a)].astype(float))
-    big = float(a.max()) if a.size else 0.0
-    if big == 0.0:
-        return "0"
-    decimals = int(min(6, max(0, 4 - math.floor(math.log10(big)))))
-    return "0." + "0" * decimals if decimals else "0"
+    from ..numbers import decimals
+
+    d = decimals(values)
+    if d is None:
+        return "0.0E+00"
+    return "0." + "0" * d if d else "0"
 
 
 def write_xlsx(tables, path, lang="en", inputs=None) -> Path:

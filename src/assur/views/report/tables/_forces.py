@@ -7,7 +7,8 @@ import numpy as np
 
 from ....errors import SingularPositionError
 from ....texts import LANGS
-from ..labels import TEXT, unit
+from ..labels import TEXT
+from ..numbers import number
 from ._data import Column, Table, _both, _same, grid_of
 
 
@@ -54,7 +55,8 @@ def _table_4_1(v):
             for wname, P in v.weights_at(p)[:1]:
                 if P > 0:
                     cols.append(Column(f"dG{p}{sfx}", "%", (g - P) / P * 100.0,
-                                       _both("c_dG", p, wname, P)))
+                                       {lang: TEXT["c_dG"][lang].format(
+                                           p, wname, v.text(P, "N", lang)) for lang in LANGS}))
         note = v.absent_note(c, absent, (), "absent_capacity", name)
         if note:
             notes.append(note)
@@ -87,9 +89,10 @@ def _table_g(v):
             z = np.full((len(u1), len(u2)), np.nan)
             z[i1, i2] = g
             for k, val in enumerate(u2):
-                cols.append(Column(f"G{p}_{c}@{c2}={val:.6g}", "N", z[:, k],
+                shown, _ = v.units.convert(val, v.coord_unit(c2))
+                cols.append(Column(f"G{p}_{c}@{c2}={number(float(shown), significant=6)}", "N", z[:, k],
                                    {lang: f"{TEXT['c_G'][lang].format(p)} ({name}), "
-                                          f"{c2} = {val:.6g} {unit(v.coord_unit(c2), lang)}"
+                                          f"{c2} = {v.text(val, v.coord_unit(c2), lang)}"
                                     for lang in LANGS}))
     if len(cols) == 1:
         return None
@@ -104,11 +107,13 @@ def _capacity_extrema(v, extrema):
     notes = []
     for sym, p, g in extrema:
         i = int(np.argmin(g))
-        notes.append({lang: TEXT["g_min"][lang].format(sym, g[i] / 1e3, v.at_text(i, lang))
+        notes.append({lang: TEXT["g_min"][lang].format(sym, v.text(g[i], "N", lang),
+                                                       v.at_text(i, lang))
                       for lang in LANGS})
         x = v.pick(v.kin.x(p))
         j = int(np.argmax(x))
-        notes.append({lang: TEXT["g_reach"][lang].format(sym, p, x[j], g[j] / 1e3,
+        notes.append({lang: TEXT["g_reach"][lang].format(sym, p, v.text(x[j], "m", lang),
+                                                         v.text(g[j], "N", lang),
                                                          v.at_text(j, lang))
                       for lang in LANGS})
     dead = dead_load_links(v.mech)
@@ -178,8 +183,9 @@ def _table_5_2(v):
     if dyn is None:
         return None
     w = float(np.mean(np.abs(v.pick(dyn.qdot))))
-    note = {"en": f"with the inertia loads at the crank's speed (mean |ω| = {w:.6g} rad/s) "
-                  f"and the weights", "ru": f"с силами инерции при скорости кривошипа "
-                                            f"(среднее |ω| = {w:.6g} рад/с) и весами"}
+    note = {"en": f"with the inertia loads at the crank's speed (mean |ω| = "
+                  f"{v.text(w, 'rad/s', 'en')}) and the weights",
+            "ru": f"с силами инерции при скорости кривошипа (среднее |ω| = "
+                  f"{v.text(w, 'rad/s', 'ru')}) и весами"}
     return Table("5.2", _both("t5.2"), tuple(_reaction_columns(v, dyn.statics)),
                  (_REACTION_NOTE, note))

@@ -69,7 +69,8 @@ def _table_6_1(v):
             i = int(np.argmin(vals))
             if np.isfinite(vals[i]):
                 notes.append({lang: TEXT["gmax_min"][lang].format(
-                    sym, vals[i] / 1e3, vals[i] / g, g, v.at_text(i, lang)) for lang in LANGS})
+                    sym, v.text(vals[i], "N", lang), v.text(vals[i] / g, "kg", lang),
+                    v.text(g, "m/s²", lang), v.at_text(i, lang)) for lang in LANGS})
     return Table("6.1", _both("t6.1"), tuple(cols), tuple(notes))
 
 
@@ -85,9 +86,12 @@ def _table_l(v):
             Column(f"G{h}_test", "N", lt.hitch_force, _both("c_Gtest", h))]
     if f is not None:
         cols.append(Column(f"G{f}_test", "N", lt.frame_force, _both("c_Gtest_frame", f)))
-    notes = [_both("lift_test_note", 100 * lt.test.pressure_share, lt.pressure / 1e6,
-                   lt.force_cylinder / 1e3, len(lt.s)),
-             _both("lift_test_min", h, lt.hitch_minimum / 1e3)]
+    notes = [{lang: TEXT["lift_test_note"][lang].format(
+                  v.text(100 * lt.test.pressure_share, "%", lang), v.text(lt.pressure, "Pa", lang),
+                  v.text(lt.force_cylinder, "N", lang), len(lt.s)) for lang in LANGS},
+             {lang: TEXT["lift_test_min"][lang].format(h, v.text(lt.hitch_minimum, "N", lang))
+              for lang in LANGS}]
     if f is not None:
-        notes.append(_both("lift_test_min_frame", f, lt.frame_minimum / 1e3))
+        notes.append({lang: TEXT["lift_test_min_frame"][lang].format(
+            f, v.text(lt.frame_minimum, "N", lang)) for lang in LANGS})
     return Table("L", _both("tL"), tuple(cols), tuple(notes))

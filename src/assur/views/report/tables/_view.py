@@ -19,11 +19,14 @@ ANALOG_CONVENTIONS = ("coordinate", "rotation")
 class _View:
     """One design of an Analysis as 1-D arrays over the positions."""
 
-    def __init__(self, analysis, design=None, angles=None, analogs=None):
+    def __init__(self, analysis, design=None, angles=None, analogs=None, units=None):
+        from ....core.display import DisplayUnits, unit_system
         self.a = analysis
         self.kin = analysis.kinematics
         self.mech = analysis.mechanism
         tabs = self.mech.tables
+        #: the units notes and labels are written in (:class:`assur.core.display.DisplayUnits`)
+        self.units = units if isinstance(units, DisplayUnits) else unit_system(self.mech, units)
         #: angle columns: "continuous" (along the positions) or "wrapped" to [0°, 360°)
         self.angles = angles or tabs.get("angles", "continuous")
         #: analogs of a crank angle: per its "coordinate", or along its "rotation"
@@ -139,12 +142,10 @@ class _View:
         return [Column(c, self.coord_unit(c), self.coord_values(c), self.coord_label(c))
                 for c in self.coords]
 
-    def positions_text(self, bad):
-        """'S = 0.42, 0.45' for the positions where ``bad``."""
+    def positions_text(self, bad, lang="en"):
+        """'S = 420 mm; S = 450 mm' for the positions where ``bad``."""
         idx = np.flatnonzero(bad)
-        parts = []
-        for i in idx[:6]:
-            parts.append(", ".join(f"{c} = {self.coord_values(c)[i]:.6g}" for c in self.coords))
+        parts = [self.at_text(i, lang) for i in idx[:6]]
         return "; ".join(parts) + ("; …" if len(idx) > 6 else "")
 
     # loads ---------------------------------------------------------------------------
@@ -185,9 +186,15 @@ class _View:
         return out
 
     def at_text(self, i, lang="en"):
-        """'S = 1.2 m, S1 = 0.8 m' of position ``i`` (units spelt for ``lang``)."""
-        return ", ".join(f"{c} = {self.coord_values(c)[i]:.6g} {unit(self.coord_unit(c), lang)}"
+        """'S = 1.2 m, S1 = 0.8 m' of position ``i`` (in the display units, for ``lang``)."""
+        return ", ".join(f"{c} = {self.text(self.coord_values(c)[i], self.coord_unit(c), lang)}"
                          for c in self.coords)
+
+    def text(self, value, unit_text, lang="en"):
+        """A value given in ``unit_text`` (``"m"``, ``"deg"``, ``"N"``…) with its unit,
+        in the display units and ``lang`` (:func:`assur.views.report.numbers.value_text`)."""
+        from ..numbers import value_text
+        return value_text(value, unit_text, self.units, lang)
 
     def transmission_points(self):
         pts = list(self.mech.tables.get("transmissions", ()))
@@ -200,5 +207,6 @@ def _singular_note(view, what, values):
     bad = ~np.isfinite(values)
     if not bad.any():
         return None
-    return {lang: TEXT["singular"][lang].format(what, int(bad.sum()), view.positions_text(bad))
+    return {lang: TEXT["singular"][lang].format(what, int(bad.sum()),
+                                                view.positions_text(bad, lang))
             for lang in TEXT["singular"]}
