@@ -91,9 +91,21 @@ def test_analyze_csv_values_are_the_seed_tables(tmp_path):
     assert_printed(t21["phi34 [deg]"].to_numpy(), T003_2_1, "phi34")
     assert_printed(t31["IS6 [-]"].to_numpy(), T003_3_1a, "IS6")
     assert_printed(t31["U65 [-]"].to_numpy(), T003_3_1a, "U65")
-    assert_printed(t41["Pgc [Pa]"].to_numpy(), T003_4_1, "Pgc")
-    assert_printed(t41["Fgc [N]"].to_numpy(), T003_4_1, "Fgc")
-    assert_printed(t41["GS6 [N]"].to_numpy(), T003_4_1, "GS6")
+    # in the units hitch_003.toml writes pressures and forces in (MPa, kN)
+    assert_printed(t41["Pgc [MPa]"].to_numpy() * 1e6, T003_4_1, "Pgc")
+    assert_printed(t41["Fgc [kN]"].to_numpy() * 1e3, T003_4_1, "Fgc")
+    assert_printed(t41["GS6 [kN]"].to_numpy() * 1e3, T003_4_1, "GS6")
+    # --units: the same numbers in another system; in Russian, ';' and the decimal comma
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out / "imp"),
+                            "--format", "csv", "--units", "imperial", "--lang", "ru"])
+    assert r.exit_code == 0, r.output
+    t41 = pd.read_csv(out / "imp" / "table_4_1.csv", sep=";", decimal=",", encoding="utf-8-sig")
+    assert list(t41.columns)[:3] == ["S [дюйм]", "Fgc [фунт-сила]", "Pgc [фунт/дюйм²]"]
+    assert_printed(t41["Pgc [фунт/дюйм²]"].to_numpy() * 6894.7572931683635, T003_4_1, "Pgc")
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out / "x"),
+                            "--format", "csv", "--units", "metric"])
+    assert r.exit_code == 1 and "--units must be one of: file, engineering, si, imperial" in \
+        r.output
 
 
 def test_draw_at_chosen_positions(tmp_path):
@@ -110,7 +122,11 @@ def test_draw_at_chosen_positions(tmp_path):
 def test_tables_prints_the_seed_tables():
     r = runner.invoke(app, ["tables", str(bundled("hitch_003")), "--table", "4.1"])
     assert r.exit_code == 0, r.output
-    assert "4.1" in r.output and "Fgc [N]" in r.output and "129614" in r.output
+    assert "4.1" in r.output and "Fgc [kN]" in r.output and "129.6" in r.output  # file's units
+    r = runner.invoke(app, ["tables", str(bundled("hitch_003")), "--table", "4.1", "--units",
+                            "si", "--lang", "ru"])
+    assert r.exit_code == 0, r.output
+    assert "Fgc [Н]" in r.output and "129614" in r.output and "0,4200" in r.output
     r = runner.invoke(app, ["tables", str(bundled("hitch_003")), "--table", "9.9"])
     assert r.exit_code == 1 and "this model has tables" in r.output
 

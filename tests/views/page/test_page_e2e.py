@@ -43,14 +43,23 @@ def test_hitch_page_end_to_end(browser, url, page_log):
     cell0 = page.text_content("#value-Y56")
     row0 = page.get_attribute("#table tr.current", "data-row")
     assert abs(y0 - 0.2) < 1e-9   # seed 003 §2.2: Y56(Smin) = 0.2 m (the Find condition)
-    assert page.text_content("#position-text").startswith("S = 0.4200 m")
+    assert page.text_content("#position-text").startswith("S = 0.42 m")
     page.fill("#stroke", "50")
     y1 = float(page.get_attribute("#pt-56", "data-y"))
     assert y1 > y0 + 0.05          # the lift rises with the stroke
     assert page.text_content("#value-Y56") != cell0
     assert float(page.text_content("#value-Y56")) == pytest.approx(y1, rel=1e-4)
     assert page.get_attribute("#table tr.current", "data-row") == "50" != row0
-    assert page.text_content("#position-text").startswith("S = 0.5450 m")
+    assert page.text_content("#position-text").startswith("S = 0.545 m")
+
+    # the units shown: engineering (mm) for the position and the tables, then the file's
+    page.select_option("#units", "engineering")
+    page.wait_for_function("document.getElementById('position-text').textContent"
+                           ".startsWith('S = 545 mm')")
+    assert float(page.text_content("#value-Y56")) == pytest.approx(1e3 * y1, rel=1e-4)
+    page.select_option("#units", "file")
+    page.wait_for_function("document.getElementById('position-text').textContent"
+                           ".startsWith('S = 0.545 m')")
 
     # a link length that cannot assemble: the message in place of the drawing
     n = len(logs)

@@ -220,7 +220,7 @@ def test_column_names_unique_when_a_coordinate_is_named_like_a_link(tmp_path):
 
 
 def test_no_negative_zero_in_files_or_terminal(tmp_path):
-    from assur.views.cli import _fmt_cell
+    from assur.views.report.numbers import decimals, number
     from assur.views.report.tables import Column, Table, write_csv, write_xlsx
     tab = Table("2.1", {"en": "t", "ru": "t"}, (Column("S", "m", np.array([-0.0, 1.0])),
                                                  Column("phi3", "deg", np.array([0.0, -0.0]))))
@@ -230,4 +230,7 @@ def test_no_negative_zero_in_files_or_terminal(tmp_path):
     ws = openpyxl.load_workbook(write_xlsx([tab], tmp_path / "t.xlsx")).active
     vals = [c.value for row in ws.iter_rows(min_row=2) for c in row]
     assert all(not (v == 0 and np.signbit(v)) for v in vals)
-    assert _fmt_cell(-0.0) == "0" and _fmt_cell(-2.0) == "-2" and _fmt_cell(-1e-9) == "-1e-09"
+    # the terminal and the HTML print with the column's decimals: never "-0"
+    assert number(-0.0, 0) == "0" and number(-2.0, 0) == "-2" and number(-1e-9, 3) == "0.000"
+    assert [number(v, decimals([-2.0, -1.0, -0.149])) for v in (-2.0, -1.0, -0.149)] == \
+        ["-2.000", "-1.000", "-0.149"]  # one count of decimals per column

@@ -27,7 +27,6 @@ from ._report import analyze, check, demo, tables
 from ._synthesis import fit, optimize, sweep, tolerance
 # the consoles, the options' values and two helpers, importable from here as before
 from ._common import FORMATS, LANGS, _positions, console, err
-from ._report import _fmt_cell
 
 __all__ = ["app", "main"]
 

@@ -112,48 +112,78 @@ def _formats(value: str):
     return fmts
 
 
-def _positions(analysis, draw_at):
+def _positions(analysis, draw_at, du=None):
     """Indices of the positions nearest to the coordinate values ``draw_at`` (one
-    coordinate; e.g. "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a
-    crank). A crank angle matches its positions modulo 360° (188.229 finds the
-    position written −171.771)."""
+    coordinate), written in the display units ``du`` (default: the model file's; e.g.
+    "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a crank). A crank angle
+    matches its positions modulo one turn (188.229° finds the position written
+    −171.771°)."""
     if not draw_at:
         return None
+    from ...core.display import unit_system
+    from ..report.numbers import number
+    from ..report.labels import unit as unit_label
+
     kin = analysis.kinematics
     if kin.k != 1 or len(kin.shape) != 1:
         _fail("--draw-at needs a model with one coordinate and one design")
     import numpy as np
+    du = du if du is not None else unit_system(analysis.mechanism)
     angle = analysis.mechanism.coordinate_kind(kin.coordinates[0]) == "angle"
-    unit = "°" if angle else "m"
+    u = du["angle" if angle else "length"]
+    shown = "°" if u.is_degrees else unit_label(u.text, "en")
     try:
         values = [float(v.strip().removesuffix("°").removesuffix("deg").strip() if angle
                         else v) for v in draw_at.split(",") if v.strip()]
     except ValueError:
-        _fail(f"--draw-at must be comma-separated numbers ({'degrees' if angle else 'm'}), "
-              f"got {draw_at!r}")
+        _fail(f"--draw-at must be comma-separated numbers ({shown}), got {draw_at!r}")
     if not values:
         _fail(f"--draw-at must name at least one position, got {draw_at!r}")
-    q = np.degrees(kin.q()) if angle else kin.q()
+    si = np.asarray(values) * u.scale  # [m or rad]
+    q = kin.q()
     lo, hi = float(q.min()), float(q.max())
+
+    def span():
+        return (f"{number(u.of(lo), None, 'en', 6)} … {number(u.of(hi), None, 'en', 6)} "
+                f"{shown}")
+
     if not angle:
-        bad = [v for v in values if not lo <= v <= hi]
+        bad = [v for v, s in zip(values, si) if not lo - 1e-12 <= s <= hi + 1e-12]
         if bad:
-            _fail(f"--draw-at {bad} is outside the range {lo:.6g} … {hi:.6g} m")
-        return [int(abs(q - v).argmin()) for v in values]
+            _fail(f"--draw-at {bad} is outside the range {span()}")
+        return [int(abs(q - s).argmin()) for s in si]
     # crank angles: the nearest position on the circle; a value farther from every
     # position than the largest step between neighbouring positions is not in the range
     step = float(np.max(np.abs(np.diff(q)))) if q.size > 1 else 0.0
     out, bad = [], []
-    for v in values:
-        d = np.abs((q - v + 180.0) % 360.0 - 180.0)
+    for v, s in zip(values, si):
+        d = np.abs((q - s + np.pi) % (2 * np.pi) - np.pi)
         i = int(d.argmin())
         if d[i] > max(step, 1e-9):
             bad.append(v)
         out.append(i)
     if bad:
-        _fail(f"--draw-at {bad} [{unit}] is outside the positions of "
-              f"{kin.coordinates[0]}: {lo:.6g}° … {hi:.6g}° ({q.size} positions)")
+        _fail(f"--draw-at {bad} [{shown}] is outside the positions of "
+              f"{kin.coordinates[0]}: {span()} ({q.size} positions)")
     return out
+
+
+def _units(model, units: str):
+    """The display units of a command: ``--units`` (checked), else the model file's
+    ``[display] units``, else the file's own units."""
+    from ...core.display import SYSTEMS, unit_system
+
+    if units and units not in SYSTEMS:
+        _fail(f"--units must be one of: {', '.join(SYSTEMS)}; got {units!r}")
+    return unit_system(model.mechanism, units or None)
+
+
+def _lang(model, lang: str) -> str:
+    """``--lang`` (checked), else the model file's ``[display] lang``, else English."""
+    if lang:
+        _check_lang(lang)
+        return lang
+    return model.mechanism.display.get("lang") or "en"
 
 
 def _summary(files, output: str):

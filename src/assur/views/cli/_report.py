@@ -9,18 +9,26 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from ._common import (FORMATS, _assemble, _check_lang, _fail, _formats, _load, _ok,
-                      _output_dir, _positions, _shape_text, _summary, console)
+from ._common import (FORMATS, _assemble, _check_lang, _fail, _formats, _lang, _load, _ok,
+                      _output_dir, _positions, _shape_text, _summary, _units, console)
+
+#: the options every worksheet command shares
+UNITS_HELP = ("Units shown: file (each quantity in the unit the model file writes it in), "
+              "engineering (mm, deg, kN, MPa), si (m, rad, N, Pa) or imperial (in, lbf, "
+              "psi); default: the file's [display] units, else file.")
+LANG_HELP = "Language: ru or en; default: the file's [display] lang, else en."
 
 
-def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
+def check(file: Path = typer.Argument(..., help="Model file (TOML)."),
+          units: str = typer.Option("", "--units", help=UNITS_HELP)):
     """Validate a model file, solve its conditions and assemble it over its range."""
-    import numpy as np
-
+    from ...core.display import parameter_units
+    from ..report.numbers import quantity
     from ..report.values import solved_line
 
     t0 = time.perf_counter()
     model = _load(file)
+    du = _units(model, units)
     _assemble(model)
     m = model.mechanism
     tab = Table(title=f"{m.title}", show_header=True, header_style="bold")
@@ -34,31 +42,38 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML).")):
     rng = model.range
     for j, c in enumerate(m.coordinates):
         col = rng if rng.ndim == 1 else model.ranges[c]  # its own values, not the grid
-        if m.coordinate_kind(c) == "angle":
-            deg = np.degrees(col)
-            tab.add_row(f"range of {c}", f"{deg[0]:.6g}° … {deg[-1]:.6g}° ({col.size} "
-                                         f"positions, {deg.min():.6g}° … {deg.max():.6g}°)")
+        kind = "angle" if m.coordinate_kind(c) == "angle" else "length"
+
+        def q(v):
+            return quantity(float(v), kind, du, "en", 6)
+
+        if kind == "angle":
+            tab.add_row(f"range of {c}", f"{q(col[0])} … {q(col[-1])} ({col.size} "
+                                         f"positions, {q(col.min())} … {q(col.max())})")
         else:
-            tab.add_row(f"range of {c}", f"{col.min():.6g} … {col.max():.6g} m ({col.size} "
+            tab.add_row(f"range of {c}", f"{q(col.min())} … {q(col.max())} ({col.size} "
                                          f"positions)")
     if len(m.coordinates) > 1:  # the grid's shape, or paired paths
         tab.add_row("positions", _shape_text(model))
     for mo in m.motions:
         tab.add_row(f"motion of {mo.coordinate}", mo.describe())
     for s in model.solved:
-        tab.add_row(f"solved {s.condition.unknown}", solved_line(s, m, "en"))
+        tab.add_row(f"solved {s.condition.unknown}",
+                    solved_line(s, m, "en", parameter_units(m, du), du))
     console.print(tab)
     _ok(f"{file} assembles at every position ({time.perf_counter() - t0:.2f} s)")
 
 
-def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30):
+def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, units=""):
     from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
     from ...errors import AssemblyError, ModelError, SingularPositionError
     from ..report import report_steps, write_report
 
+    du = _units(model, units)
+    lang = _lang(model, lang)
     analysis = _assemble(model)
-    positions = _positions(analysis, draw_at)
+    positions = _positions(analysis, draw_at, du)
     out = _output_dir(output)
     with Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False,
                                               style="progress.description"),
@@ -70,7 +85,7 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30):
 
         try:
             files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
-                                 positions=positions, frames=frames)
+                                 positions=positions, frames=frames, units=du)
         except OSError as e:  # disk full, permissions changed: one message, no traceback
             _fail(f"{output}: cannot write the report: {e.strerror or e}")
         except (AssemblyError, ModelError, SingularPositionError) as e:
@@ -81,40 +96,49 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30):
 def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
             output: str = typer.Option("assur-report", "-o", "--output",
                                        help="Output directory."),
-            lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
+            lang: str = typer.Option("", "--lang", help=LANG_HELP),
+            units: str = typer.Option("", "--units", help=UNITS_HELP),
             format: str = typer.Option(",".join(FORMATS), "--format",
                                        help="Comma-separated: csv,xlsx,html,png,svg,gif."),
             draw_at: str = typer.Option("", "--draw-at",
-                                        help="Coordinate values to draw the mechanism at: "
-                                             "cylinder lengths in m (0.42,0.55), crank "
-                                             "angles in degrees (14.679,188.229); default: "
-                                             "first and last."),
+                                        help="Coordinate values to draw the mechanism at, "
+                                             "in the units shown (--units): cylinder "
+                                             "lengths (0.42,0.55 in m), crank angles "
+                                             "(14.679,188.229 in degrees); default: first "
+                                             "and last."),
             frames: int = typer.Option(30, "--frames", min=0,
                                        help="Frames of the mechanism's animation (GIF, "
                                             "HTML report), at most; 0: no animation.")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
-    _check_lang(lang)
+    if lang:
+        _check_lang(lang)
     fmts = _formats(format)
     if frames == 0 and "gif" in fmts:
         _fail("--frames 0 writes no animation: leave gif out of --format")
     model = _load(file)
-    _, files = _run_report(model, output, lang, fmts, draw_at, frames)
+    _, files = _run_report(model, output, lang, fmts, draw_at, frames, units)
     _summary(files, output)
 
 
 def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
            table: str = typer.Option("", "--table", help="Only these tables, e.g. 2.1,4.1."),
-           lang: str = typer.Option("en", "--lang", help="Titles: ru or en."),
+           lang: str = typer.Option("", "--lang", help=LANG_HELP),
+           units: str = typer.Option("", "--units", help=UNITS_HELP),
            columns: int = typer.Option(6, "--columns", help="Columns per printed block.")):
     """Print the seed-like tables of a model in the terminal."""
     import numpy as np
 
+    from ..report.labels import unit as unit_label
+    from ..report.numbers import decimals, number
     from ..report.tables import seed_tables
 
-    _check_lang(lang)
+    if lang:
+        _check_lang(lang)
     model = _load(file)
+    du = _units(model, units)
+    lang = _lang(model, lang)
     analysis = _assemble(model)
-    tabs = seed_tables(analysis, lang=lang)
+    tabs = seed_tables(analysis, lang=lang, units=du)
     wanted = [t.strip() for t in table.split(",") if t.strip()]
     known = [t.id for t in tabs]
     bad = [w for w in wanted if w not in known]
@@ -129,36 +153,24 @@ def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
             rt = Table(title=f"{t.id} — {t.title(lang)}" if k == 0 else None,
                        header_style="bold", title_justify="left")
             for c in part:
-                rt.add_column(f"{c.symbol} [{c.unit}]", justify="right", no_wrap=True,
-                              overflow="fold")
+                rt.add_column(f"{c.symbol} [{unit_label(c.unit, lang)}]", justify="right",
+                              no_wrap=True, overflow="fold")
             n = len(np.atleast_1d(first.values))
+            digits = [decimals(c.values) for c in part]  # one count of decimals per column
             for i in range(n):
-                rt.add_row(*[_fmt_cell(np.atleast_1d(c.values)[i]) for c in part])
+                rt.add_row(*[number(np.atleast_1d(c.values)[i], d, lang)
+                             for c, d in zip(part, digits)])
             console.print(rt)
 
 
-def _fmt_cell(v):
-    import math
-    if isinstance(v, (bool,)) or (hasattr(v, "dtype") and v.dtype == bool):
-        return "yes" if v else "no"
-    v = float(v)
-    if math.isnan(v):
-        return ""
-    if math.isinf(v):
-        return "∞" if v > 0 else "−∞"
-    if 1e3 <= abs(v) < 1e10:
-        out = f"{v:.0f}"  # forces, pressures: whole N, Pa as the seeds print them
-    else:
-        out = f"{v:.5g}"
-    return out.lstrip("-") if float(out) == 0 else out  # never "-0"
-
-
 def demo(output: str = typer.Option("assur-demo", "-o", "--output"),
-         lang: str = typer.Option("en", "--lang")):
+         lang: str = typer.Option("", "--lang", help=LANG_HELP),
+         units: str = typer.Option("", "--units", help=UNITS_HELP)):
     """Analyze the bundled seed-003 hitch into ./assur-demo/."""
     from ...io import bundled
 
-    _check_lang(lang)
+    if lang:
+        _check_lang(lang)
     model = _load(bundled("hitch_003"))
-    _, files = _run_report(model, output, lang, FORMATS)
+    _, files = _run_report(model, output, lang, FORMATS, units=units)
     _summary(files, output)

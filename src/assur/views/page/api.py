@@ -45,6 +45,9 @@ class _Request(BaseModel):
 
     params: dict[Name, Number] = Field(default_factory=dict, max_length=MAX_PARAMS)
     lang: Literal["en", "ru"] = "en"
+    #: the units results are shown in (:data:`assur.core.display.SYSTEMS`); None: the
+    #: model file's choice
+    units: Optional[Literal["file", "engineering", "si", "imperial"]] = None
 
 
 class AnalyzeRequest(_Request):

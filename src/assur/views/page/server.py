@@ -209,11 +209,13 @@ def _add_api_routes(app, pm, lang):
             "parameters": pm.parameters(),
             "texts": page_texts(),
             "lang": lang,
+            "units": m.display.get("units") or "file",
         }
 
     @app.post("/api/analyze")
     def analyze(req: AnalyzeRequest):
-        out = pm.compute(dict(req.params), positions=req.positions, lang=req.lang)
+        out = pm.compute(dict(req.params), positions=req.positions, lang=req.lang,
+                         units=req.units)
         # serialized here: the payload is plain (lists of floats, None for NaN), and
         # FastAPI's generic encoder would walk it element by element
         return Response(json.dumps(out, allow_nan=False, separators=(",", ":")),
@@ -249,7 +251,8 @@ def _add_export_routes(app, pm):
                     "kind": "validation",
                     "message": f"format must be one of: csv, xlsx, toml, dxf; got {fmt!r}"}},
                     status_code=404)
-            data, media, name = pm.export_tables(dict(req.params), fmt, req.table, req.lang)
+            data, media, name = pm.export_tables(dict(req.params), fmt, req.table, req.lang,
+                                                 req.units)
             return _download(data, media, name)
         except (ModelError, AssemblyError, SingularPositionError) as e:
             return _user_error(e)

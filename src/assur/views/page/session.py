@@ -378,13 +378,17 @@ class PageModel:
         q = np.linspace(r[0], r[-1], int(positions))
         return dataclasses.replace(model, range=q)
 
-    def compute(self, values: dict, positions: int = 101, lang: str = "en") -> dict:
+    def compute(self, values: dict, positions: int = 101, lang: str = "en",
+                units: str | None = None) -> dict:
         """The page's payload for the parameters ``values``.
 
         Returns
         -------
         dict
-            ``{"ok": True, "geometry", "tables", "solved", "warnings", "ms"}`` or
+            ``{"ok": True, "geometry", "tables", "solved", "warnings", "units", "ms"}``
+            (the tables in the display units ``units``: a system of
+            :data:`assur.core.display.SYSTEMS`, default the model file's; ``units``:
+            the system and the units of length and angle the position is shown in) or
             ``{"ok": False, "error": {"kind", "message"}, "ms"}``; ``kind`` is
             ``"model"`` (the file or a value), ``"assembly"`` (the mechanism cannot
             assemble) or ``"singular"``.
@@ -405,8 +409,12 @@ class PageModel:
         >>> out = pm.compute({"L5": 1e6})                  # [m]
         >>> out["ok"], out["error"]["kind"]
         (False, 'model')
+        >>> out = pm.compute({}, positions=11, units="imperial")
+        >>> out["units"]["length"], out["tables"][3]["columns"][1]["unit"]   # S; Fgc
+        ('in', 'lbf')
         """
         from ...errors import AssemblyError, ModelError, SingularPositionError
+        from ..report.labels import unit
         from ..report.tables import seed_tables
         from ...texts import localize
         from ..geometry import geometry
@@ -415,9 +423,11 @@ class PageModel:
         if positions is not None and not 2 <= positions <= MAX_POSITIONS:
             raise ValueError(f"positions must be in 2…{MAX_POSITIONS}, got {positions}")
         try:
+            from ...core.display import unit_system
             model = self.load(values)
             analysis = self.model_on(model, positions).analyze()
-            tables = seed_tables(analysis, lang=lang)
+            du = unit_system(analysis.mechanism, units)
+            tables = seed_tables(analysis, lang=lang, units=du)
             geo = geometry(analysis.kinematics)
         except AssemblyError as e:
             return _error("assembly", e, t0)
@@ -437,6 +447,10 @@ class PageModel:
                             for c in mech.coordinates],
             "geometry": geo,
             "tables": [_table_json(t, lang) for t in tables],
+            "units": {"system": du.system, "length": unit(du["length"].text, lang),
+                      "length_scale": du["length"].scale,
+                      "angle": unit(du["angle"].text, lang),
+                      "angle_scale": du["angle"].scale},
             "solved": solved,
             "warnings": [str(w) for w in model.warnings],
             "ms": round(1e3 * (time.perf_counter() - t0), 2),
@@ -449,8 +463,10 @@ class PageModel:
         return "-"
 
     def export_tables(self, values: dict, fmt: str, table: str | None = None,
-                      lang: str = "en") -> tuple[bytes, str, str]:
-        """The tables of the edited model over the file's own range.
+                      lang: str = "en", units: str | None = None) -> tuple[bytes, str, str]:
+        """The tables of the edited model over the file's own range, in the display
+        units ``units`` (default: the model file's) and ``lang`` (Russian CSV: ``;``
+        and the decimal comma).
 
         Parameters
         ----------
@@ -471,6 +487,9 @@ class PageModel:
         ('text/csv; charset=utf-8', 'hitch_003_table_2_1.csv')
         >>> data.decode("utf-8").splitlines()[0]
         'S [m],phi2 [deg],phi3 [deg],phi34 [deg],phi4 [deg],phi5 [deg],phi6 [deg],phi7 [deg]'
+        >>> data, _, _ = pm.export_tables({}, "csv", table="2.1", lang="ru", units="si")
+        >>> data.decode("utf-8-sig").splitlines()[1].split(";")[:2]     # S [m], φ2 [rad]
+        ['0,42', '1,6001246213093063']
         >>> pm.export_tables({}, "pdf")
         Traceback (most recent call last):
         ...
@@ -481,14 +500,16 @@ class PageModel:
         from ...errors import ModelError
         from ..report.html import model_inputs
         from ..report.tables import seed_tables, table_filename, write_csv, write_xlsx
+        from ...core.display import unit_system
         model = self.load(values)
         analysis = model.analyze()
-        tabs = seed_tables(analysis, lang=lang)
+        du = unit_system(analysis.mechanism, units)
+        tabs = seed_tables(analysis, lang=lang, units=du)
         stem = Path(self.name).stem or "model"
         with tempfile.TemporaryDirectory() as d:
             if fmt == "xlsx":
                 p = write_xlsx(tabs, Path(d) / "tables.xlsx", lang=lang,
-                               inputs=model_inputs(analysis, lang))
+                               inputs=model_inputs(analysis, lang, du))
                 return (p.read_bytes(), "application/vnd.openxmlformats-officedocument."
                         "spreadsheetml.sheet", f"{stem}_tables.xlsx")
             if fmt != "csv":
@@ -497,7 +518,7 @@ class PageModel:
             tab = tabs[0] if not table else next((t for t in tabs if t.id == table), None)
             if tab is None:
                 raise ModelError(f"table {table!r}: this model has tables {ids}")
-            p = write_csv(tab, Path(d) / table_filename(tab))
+            p = write_csv(tab, Path(d) / table_filename(tab), lang)
             return p.read_bytes(), "text/csv; charset=utf-8", f"{stem}_{p.name}"
 
 
@@ -512,10 +533,12 @@ def _finite(values):
 
 
 def _table_json(t, lang):
+    from ..report.labels import unit
     return {
         "id": t.id,
         "title": t.title(lang),
-        "columns": [{"symbol": c.symbol, "unit": c.unit, "label": c.label.get(lang, ""),
+        "columns": [{"symbol": c.symbol, "unit": unit(c.unit, lang),
+                     "label": c.label.get(lang, ""),
                      "values": _finite(c.values)} for c in t.columns],
         "notes": [n.get(lang, "") for n in t.notes],
     }

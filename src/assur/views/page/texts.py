@@ -36,6 +36,10 @@ PAGE_TEXT = {
     "add_plot": {"en": "add a plot", "ru": "добавить график"},
     "remove": {"en": "remove", "ru": "убрать"},
     "positions": {"en": "positions", "ru": "положений"},
+    "units_file": {"en": "units of the model file", "ru": "единицы файла модели"},
+    "units_engineering": {"en": "mm, kN, MPa", "ru": "мм, кН, МПа"},
+    "units_si": {"en": "SI: m, rad, N, Pa", "ru": "СИ: м, рад, Н, Па"},
+    "units_imperial": {"en": "in, lbf, psi", "ru": "дюйм, фунт-сила, фунт/дюйм²"},
 }
 
 

@@ -10,6 +10,7 @@ const COLORS = ["#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2"
 const state = {
   info: null,          // GET /api/model
   lang: document.body.dataset.lang || "en",
+  units: "file",       // the unit system results are shown in (file, engineering, si, imperial)
   values: {},          // parameter -> value in the file's unit (current)
   base: {},            // parameter -> value of the file
   data: null,          // last successful payload of /api/analyze
@@ -127,7 +128,8 @@ function resetParams() {
 
 // ---- requests -------------------------------------------------------------------
 function body(extra) {
-  return JSON.stringify(Object.assign({params: changed(), lang: state.lang}, extra || {}));
+  return JSON.stringify(Object.assign({params: changed(), lang: state.lang, units: state.units},
+                                      extra || {}));
 }
 
 function request() {
@@ -378,9 +380,12 @@ function positionText(i) {
   if (!state.data) return "";
   const parts = [];
   for (const c of state.data.coordinates) {
-    const v = state.data.geometry.q[c.name][i];
-    parts.push(c.kind === "angle" ? `${c.name} = ${fmt(v * 180 / Math.PI)}°`
-                                  : `${c.name} = ${v.toFixed(4)} m`);
+    const v = state.data.geometry.q[c.name][i];   // [m or rad], shown in the page's units
+    const u = state.data.units;
+    const shown = c.kind === "angle" ? v / u.angle_scale : v / u.length_scale;
+    const unit = c.kind === "angle" ? u.angle : u.length;
+    parts.push(unit === "°" || unit === "deg" ? `${c.name} = ${fmt(shown)}°`
+                                             : `${c.name} = ${fmt(shown)} ${unit}`);
   }
   return parts.join(", ") + ` (${T("position")} ${i + 1}/${state.data.geometry.n})`;
 }
@@ -560,6 +565,8 @@ async function start() {
   const r = await fetch("/api/model");
   state.info = await r.json();
   if (!document.body.dataset.lang) state.lang = state.info.lang;
+  state.units = state.info.units;
+  $("units").value = state.units;
   applyTexts();
   buildParams();
   $("stroke").addEventListener("input", () => {
@@ -568,6 +575,10 @@ async function start() {
   });
   $("play").addEventListener("click", togglePlay);
   $("reset").addEventListener("click", resetParams);
+  $("units").addEventListener("change", () => {
+    state.units = $("units").value;
+    request();
+  });
   $("lang-toggle").addEventListener("click", () => {
     state.lang = state.lang === "en" ? "ru" : "en";
     applyTexts();
