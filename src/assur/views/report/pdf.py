@@ -39,7 +39,23 @@ _INSTALL = ("install Chromium (Debian/Ubuntu: `apt-get install chromium`) or set
 
 
 class PdfError(RuntimeError):
-    """The PDF could not be made: no Chromium found, Chromium failed or timed out."""
+    """The PDF could not be made: no Chromium found, Chromium failed or timed out.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from assur.views.report.pdf import PdfError, write_pdf
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     html = Path(d) / "report.html"
+    ...     _ = html.write_text("<!DOCTYPE html><p>One page.</p>")
+    ...     try:
+    ...         write_pdf(html, Path(d) / "report.pdf", chromium=Path(d) / "no-browser")
+    ...     except PdfError as e:
+    ...         error = e
+    >>> isinstance(error, RuntimeError), "apt-get install chromium" in str(error)
+    (True, True)
+    """
 
 
 def find_chromium() -> str:
