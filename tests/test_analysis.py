@@ -67,8 +67,9 @@ def test_report_summary_and_figures(cleaning):
     _, a = cleaning
     page = html.unescape(render_html(a, lang="ru", figures={}, animation=False))
     assert "Динамика (силы инерции, маховик, уравновешивание)" in page
-    assert re.search(r"маховик \(метод энергомасс\): δ = 0\.05, J_м = [0-9.]+ кг·м²", page)
-    assert re.search(r"общий центр масс [0-9.]+ кг: A_x = 3\.\d{3} мм", page)
+    # in the file's units (lengths in mm), with the decimal comma
+    assert re.search(r"маховик \(метод энергомасс\): δ = 0,05, J_м = [0-9,]+ кг·м²", page)
+    assert re.search(r"общий центр масс [0-9,]+ кг: A_x = 3,\d{3} мм", page)
     en = html.unescape(render_html(a, lang="en", figures={}, animation=False))
     assert "Mertsalov" in en and "crank j1: mean |ω| = 30 rad/s" in en
 

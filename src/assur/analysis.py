@@ -10,6 +10,7 @@ from .core import statics as _statics
 from .core.inputs import check_finite
 from .machines.cylinders import cylinder_results
 from .core.motion import rod_rates
+from .texts import Text
 
 __all__ = ["Analysis", "analyze", "gravity_of", "add_dynamics", "add_lift_test"]
 
@@ -178,9 +179,10 @@ def analyze(mech, q, params=None, qdot=None, qddot=None, g=None, **solve_kw):
         rates = rod_rates(kin)   # the rods' [motion]: inertia loads without Python
         if rates is not None:
             qdot, qddot = rates
-            notes.append(f"{mech.name}: inertia loads at the rod motion of [motion] ("
-                         + "; ".join(mo.describe() for mo in mech.motions
-                                     if mo.kind == "length" and mo.has_speed) + ")")
+            # the motions themselves are shown with the model (in the user's units)
+            notes.append(Text(f"{mech.name}: inertia loads at the rod motion of [motion]",
+                              ru=f"{mech.name}: силы инерции при движении штока по "
+                                 f"[motion]"))
     st = _statics.solve(kin, qdot=qdot, qddot=qddot, g=g)
     cyl = cylinder_results(kin, st, g=g)
     stab = None
@@ -270,9 +272,11 @@ def add_dynamics(analysis, spec=None):
         if asks:
             raise ModelError(f"{mech.name}: [dynamics] needs the speed of the crank {c}: "
                              f"add [motion] {c} = {{ direction = \"cw\", speed = \"300 rpm\" }}")
-        analysis.notes.append(f"{mech.name}: the links have masses but the crank {c} has no "
-                              f"speed ([motion]): inertia loads, reduced moment and flywheel "
-                              f"are not computed")
+        analysis.notes.append(Text(
+            f"{mech.name}: the links have masses but the crank {c} has no speed ([motion]): "
+            f"inertia loads, reduced moment and flywheel are not computed",
+            ru=f"{mech.name}: у звеньев есть массы, но скорость кривошипа {c} не задана "
+               f"([motion]): силы инерции, приведённый момент и маховик не рассчитаны"))
         return analysis
     qdot, qddot = motion.rates(kin.q(c))
     dyn = crank_dynamics(kin, qdot, qddot)

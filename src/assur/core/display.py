@@ -81,6 +81,9 @@ KINDS = {
     "angle_per_length": _Kind("rad/m", "rad/mm", "rad/in", (("length", -1),)),
     "length_per_angle": _Kind("m/rad", "mm/rad", "in/rad", (("length", 1),)),
     "length_per_angle2": _Kind("m/rad²", "mm/rad²", "in/rad²", (("length", 1),)),
+    "angle_per_length2": _Kind("rad/m²", "rad/mm²", "rad/in²", (("length", -2),)),
+    "per_length": _Kind("1/m", "1/mm", "1/in", (("length", -1),)),
+    "per_length2": _Kind("1/m²", "1/mm²", "1/in²", (("length", -2),)),
     "inertia_per_angle": _Kind("kg·m²/rad", "kg·m²/rad", "lb·ft²/rad"),
     "number": _Kind("-", "-", "-"),
     "percent": _Kind("%", "%", "%"),
@@ -98,6 +101,9 @@ _DERIVED = {
     "angle_per_length": {("m",): "rad/m", ("mm",): "rad/mm", ("in",): "rad/in"},
     "length_per_angle": {("m",): "m/rad", ("mm",): "mm/rad", ("in",): "in/rad"},
     "length_per_angle2": {("m",): "m/rad²", ("mm",): "mm/rad²", ("in",): "in/rad²"},
+    "angle_per_length2": {("m",): "rad/m²", ("mm",): "rad/mm²", ("in",): "rad/in²"},
+    "per_length": {("m",): "1/m", ("mm",): "1/mm", ("in",): "1/in"},
+    "per_length2": {("m",): "1/m²", ("mm",): "1/mm²", ("in",): "1/in²"},
 }
 
 #: shown texts that are not a unit pint reads (factor 1 to themselves)
@@ -320,4 +326,7 @@ def parameter_units(mech, units: DisplayUnits) -> dict:
     if units.system == "file":
         return shown
     quantities = parameter_quantities(mech)
-    return {name: units.units.get(quantities.get(name), u) for name, u in shown.items()}
+    # a parameter no group uses (a position of the range, a condition's target): the
+    # kind of the unit the file wrote it in
+    return {name: units.units.get(quantities.get(name) or kind_of(u.text), u)
+            for name, u in shown.items()}

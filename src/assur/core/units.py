@@ -112,6 +112,10 @@ COMMON_UNITS: dict[str, _Common] = {
     "in/rad": _Common(0.0254, length=1, radian=-1),
     "m/rad**2": _Common(1.0, length=1, radian=-2), "mm/rad**2": _Common(0.001, length=1, radian=-2),
     "in/rad**2": _Common(0.0254, length=1, radian=-2),
+    "rad/m**2": _Common(1.0, length=-2, radian=1), "rad/mm**2": _Common(1e6, length=-2, radian=1),
+    "rad/in**2": _Common(1550.0031000062002, length=-2, radian=1),
+    "1/mm": _Common(1000.0, length=-1), "1/in": _Common(39.37007874015748, length=-1),
+    "1/mm**2": _Common(1e6, length=-2), "1/in**2": _Common(1550.0031000062002, length=-2),
     "kg*m**2/rad": _Common(1.0, 2, 1, 0, -1), "lb*ft**2/rad": _Common(0.0421401100938048, 2, 1, 0, -1),
 }
 

@@ -17,6 +17,7 @@ from ..groups.base import ref_value, signed_name
 from . import _schema as S
 from ._entries import unreadable
 from ._errors import key_path
+from ..texts import Text
 from ._units import ANGLE, LENGTH, UnitError, display_unit, parse, to_si, unit_kind
 
 
@@ -203,7 +204,8 @@ class Conditions:
             self.memory(mech, paths[::-1], 1.0, counts)
 
     def unused_parameters(self, mech):
-        """Warnings (``file:line: params.<name>: …``) for the parameters that nothing
+        """Warnings (``file:line: params.<name>: …``, :class:`assur.texts.Text` in English
+        and Russian) for the parameters that nothing
         uses: no group, frame point, load, cylinder, machine value, range, motion,
         ``[[solve]]`` condition (unknown, bracket, target) or table formula."""
         from ..core.columns import formulas_of
@@ -219,7 +221,10 @@ class Conditions:
                 path = ("params", name)
                 line = self.line(path)
                 file = getattr(line, "file", None) or self.file
-                out.append(f"{file}:{int(line)}: {key_path(path)}: the parameter {name!r} is "
-                           f"not used by any group, frame point, load, condition or table "
-                           f"(a misspelt name?)")
+                where = f"{file}:{int(line)}: {key_path(path)}"
+                out.append(Text(f"{where}: the parameter {name!r} is not used by any group, "
+                                f"frame point, load, condition or table (a misspelt name?)",
+                                ru=f"{where}: параметр {name!r} не используется ни группой, ни "
+                                   f"точкой стойки, ни нагрузкой, ни условием, ни таблицей "
+                                   f"(опечатка в имени?)"))
         return out

@@ -27,7 +27,8 @@ from pydantic_core import PydanticCustomError
 from ._schema_tables import (LOAD_TABLE_BEGIN, LOAD_TABLE_END, TABLE_BEGIN, TABLE_END,
                              load_types_table, schema_table)
 from ._schema_types import group_spec, group_types, load_spec, load_types
-from ._schema_values import (Branch, FramePoint, Name, Sign, Terms, Text, Value, _Table,
+from ._schema_values import (Branch, FramePoint, Name, ShownName, Sign, Terms, Text, Value,
+                             _Table,
                              _distance, _value)
 from ._schema_words import allowed_keys, describe, did_you_mean, show, validate
 
@@ -138,7 +139,8 @@ class MotionSpec(_Table):
 
 
 class CylinderSpec(_Table):
-    name: Name
+    #: a string, or { en = "…", ru = "…" } (the report shows the language's)
+    name: ShownName
     coordinate: Optional[Name] = None
     distance: Optional[Name] = None
     supply: Optional[Name] = None
@@ -156,7 +158,7 @@ class CylinderSpec(_Table):
 
 # ---- [machine] ----------------------------------------------------------------------
 class WeightItem(_Table):
-    name: Name
+    name: ShownName
     P: Terms
     x: Terms
 

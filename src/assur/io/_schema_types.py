@@ -12,13 +12,14 @@ from typing import Optional
 from pydantic import StrictStr, create_model, model_validator
 from pydantic_core import PydanticCustomError
 
-from ._schema_values import Branch, Name, Value, _Table
+from ._schema_values import Branch, Name, ShownName, Value, _Table
 
 
 # ---- [[groups]] ---------------------------------------------------------------------
 class _Group(_Table):
     type: StrictStr
-    name: Name
+    #: a string, or { en = "…", ru = "…" } (the report shows the language's)
+    name: ShownName
     links: list[Name] = []
 
 
@@ -81,7 +82,7 @@ class _Load(_Table):
 
 #: the annotation of a load field by its role (:data:`assur.core.loads.ROLES`)
 _LOAD_ROLE_TYPES = {"point": Name, "link": Name, "links": tuple[Name, Name], "value": Value,
-                    "name": Name, "sign": typing.Literal[1, -1], "coordinate": Name}
+                    "name": ShownName, "sign": typing.Literal[1, -1], "coordinate": Name}
 
 
 def load_spec(cls) -> type[_Load]:

@@ -67,6 +67,27 @@ def _text(v):
 Text = Annotated[Any, AfterValidator(_text)]
 
 
+def _shown_name(v):
+    """A name shown to the reader: a non-empty string, or ``{ en = "…", ru = "…" }``
+    (the English name, or the first given, identifies it; reports show the
+    language's)."""
+    from ..texts import text
+
+    if isinstance(v, dict):
+        t = text(_text(v))
+        if not all(x.strip() for x in v.values()):
+            raise PydanticCustomError("name", "expected a non-empty name in every language")
+        return t
+    if not isinstance(v, str):
+        raise PydanticCustomError("name", 'expected a name: a string, or a table of languages '
+                                          'such as { en = "arm 34", ru = "плечо 34" }')
+    return _name(v)
+
+
+#: a group's name: a string, or a table of languages (a :class:`assur.texts.Text`)
+ShownName = Annotated[Any, AfterValidator(_shown_name)]
+
+
 def _terms(v):
     if isinstance(v, list):
         if not v:

@@ -42,6 +42,7 @@ from ._curves import _PHI, _math, _Plot
 # the canvas and the curves' helpers, importable from here as before the split
 from ._canvas import titled_axes
 from ._curves import broken, path_abscissa, plot_order, wrap_breaks
+from ...texts import localize
 from .labels import check_lang, t, unit
 
 __all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
@@ -207,7 +208,7 @@ def capacity(analysis, lang="en", design=None, units=None):
             if not v.moves_point(res.cylinder.coordinate, pt):  # undefined: not its chain
                 continue
             g, _ = _capacity(v, res, pt)
-            p.line(ax, g, _math("G", pt) + (f" ({name})" if several else ""))
+            p.line(ax, g, _math("G", pt) + (f" ({localize(name, lang)})" if several else ""))
             n += 1
             if pt in loads_drawn:
                 continue
@@ -242,7 +243,7 @@ def force(analysis, lang="en", design=None, units=None):
     fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "N")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.force), f"$F_{{{res.cylinder.length}}}$ ({name})")
+        p.line(ax, v.pick(res.force), f"$F_{{{res.cylinder.length}}}$ ({localize(name, lang)})")
         fm = v.pick(res.force_max)  # over positions for a double-rod cylinder (side auto)
         fmax = float(fm[0])
         if np.ptp(fm) > 0:
@@ -277,7 +278,8 @@ def pressure(analysis, lang="en", design=None, units=None):
     fig, ax = p.axes(t("f_pressure", lang), t("y_pressure", lang), "Pa")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.pressure), f"$p_{{{res.cylinder.length}}}$ ({name})")
+        p.line(ax, v.pick(res.pressure),
+               f"$p_{{{res.cylinder.length}}}$ ({localize(name, lang)})")
         pmax = v.scalar(res.p_max)
         if pmax > 0:
             ax.axhline(p.y(ax, pmax), ls="--", lw=1, color="C3",

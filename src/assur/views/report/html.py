@@ -63,6 +63,7 @@ def _summary(analysis, lang, du):
         n = q.shape[-1] if kin.k == 1 else np.unique(q.reshape(-1, q.shape[-1])[0]).size
         coords.append(f"{c}: {number(du.value(q.min(), kind), None, lang, 6)} … "
                       f"{quantity(q.max(), kind, du, lang, 6)} ({n} {t('positions', lang)})")
+    coords += [_motion_line(mo, du, lang) for mo in mech.motions]
     if kin.k > 1:  # the grid's shape, or paired paths
         shape = [np.unique(np.asarray(kin.q(c), float).reshape(-1, kin.n)[0]).size
                  for c in kin.coordinates]
@@ -70,7 +71,8 @@ def _summary(analysis, lang, du):
                       + (f"{' × '.join(map(str, shape))} = " if np.prod(shape) == kin.n
                          else t("paired", lang) + ", ")
                       + f"{kin.n} {t('positions', lang)}")
-    groups = [(g.name, _kind(g, lang), ", ".join(g.inputs()), ", ".join(g.outputs()),
+    groups = [(localize(g.name, lang), _kind(g, lang), ", ".join(g.inputs()),
+               ", ".join(g.outputs()),
                ", ".join(g.group_links())) for g in mech.groups if g.type_name != "frame"]
     links = []
     for b, v in mech.bodies.items():
@@ -87,7 +89,7 @@ def _summary(analysis, lang, du):
             machine.append(f"{'axle' if lang == 'en' else 'ось'} {name}{tag}: "
                            f"x = {quantity(x, 'length', du, lang, 6)}")
         for name, p, x in tuple(mc.weights) + tuple(mc.counterweights):
-            machine.append(f"{name}: {quantity(p, 'force', du, lang, 6)}, "
+            machine.append(f"{localize(name, lang)}: {quantity(p, 'force', du, lang, 6)}, "
                            f"x = {quantity(x, 'length', du, lang, 6)}")
         share = number(100 * mc.min_share, None, lang, 6)
         machine.append(f"min share: {share} %" if lang == "en"
@@ -95,6 +97,35 @@ def _summary(analysis, lang, du):
     solved = [solved_line(sc, mech, lang, units, du) for sc in getattr(analysis, "solved", ())]
     return dict(params=params, coords=coords, groups=groups, links=links, machine=machine,
                 solved=solved, dynamics=_dynamics_lines(analysis, lang, du))
+
+
+#: the directions of a motion in the report's languages
+_DIRECTIONS = {"cw": {"en": "clockwise", "ru": "по часовой стрелке"},
+               "ccw": {"en": "counter-clockwise", "ru": "против часовой стрелки"},
+               "extend": {"en": "extending", "ru": "выдвижение"},
+               "retract": {"en": "retracting", "ru": "втягивание"}}
+
+
+def _motion_line(mo, du, lang):
+    """A coordinate's motion ([motion]) in the display units: ``j1: clockwise, |ω| =
+    31.42 rad/s``; a speed or law given over time as its span."""
+    direction = _DIRECTIONS[mo.direction_name][lang]
+    rate = "velocity" if mo.kind == "length" else "angular_velocity"
+    sym = "|v|" if mo.kind == "length" else "|ω|"
+    if mo.law_t:
+        coord = "length" if mo.kind == "length" else "angle"
+        span = (f"{quantity(mo.law_q[0], coord, du, lang)} … "
+                f"{quantity(mo.law_q[-1], coord, du, lang)}, "
+                f"{quantity(mo.law_t[0], 'time', du, lang)} … "
+                f"{quantity(mo.law_t[-1], 'time', du, lang)}")
+        return f"{mo.coordinate}: {direction}, q(t): {span}"
+    if mo.speed is not None:
+        return f"{mo.coordinate}: {direction}, {sym} = {quantity(mo.speed, rate, du, lang)}"
+    if mo.t:
+        return (f"{mo.coordinate}: {direction}, {sym}(t) = "
+                f"{quantity(min(mo.omega), rate, du, lang)} … "
+                f"{quantity(max(mo.omega), rate, du, lang)}")
+    return f"{mo.coordinate}: {direction}"
 
 
 def _dynamics_lines(analysis, lang, du):
@@ -109,8 +140,7 @@ def _dynamics_lines(analysis, lang, du):
 
     w = float(np.mean(np.abs(np.ravel(dyn.qdot))))
     c = dyn.centre
-    rpm = f"{number(w * 30 / np.pi, None, lang)} {unit('rpm', lang)}"
-    out = [t("dyn_speed", lang, dyn.coordinate, q(w, "angular_velocity"), rpm),
+    out = [t("dyn_speed", lang, dyn.coordinate, q(w, "angular_velocity")),
            t("dyn_jred", lang, q(float(np.min(dyn.reduced_inertia)), "inertia"),
              q(float(np.max(dyn.reduced_inertia)), "inertia")),
            t("dyn_md", lang, q(float(np.min(dyn.driving_moment)), "moment"),
@@ -176,13 +206,20 @@ def _figure_items(figures, lang):
     return items
 
 
+def _file_names(text):
+    """``text`` with each path of a model file cut to its file name (a report names the
+    file, not the folders of the machine that ran it)."""
+    import re
+    return re.sub(r"(?:[A-Za-z]:)?[^\s:]*[/\\]([^/\\\s:]+\.toml)", r"\1", str(text))
+
+
 def _warnings(analysis, tables, lang):
     mech = analysis.mechanism
     groups = []
     model_notes = ([localize(n, lang) for n in mech.notes]
                    + list(getattr(analysis.kinematics, "failures", []))
-                   + list(analysis.model_warnings)
-                   + list(getattr(analysis, "notes", ())))
+                   + [_file_names(localize(w, lang)) for w in analysis.model_warnings]
+                   + [localize(n, lang) for n in getattr(analysis, "notes", ())])
     groups.append((t("model_notes", lang), model_notes))
     from ...core.columns import formulas_of, signs_of
     sign_notes = [localize(m.note, lang) for m in signs_of(mech) if m.note]

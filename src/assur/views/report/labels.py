@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import re
 
+from ...texts import Text, localize
+
 LANGS = ("en", "ru")
 
 #: key -> {lang: text}
@@ -24,7 +26,7 @@ TEXT = {
     "links": {"en": "Links", "ru": "Звенья"},
     "machine": {"en": "Machine (stability)", "ru": "Машина (устойчивость)"},
     "solved": {"en": "Design conditions solved (Given/Find)",
-               "ru": "Решённые условия синтеза (Given/Find)"},
+               "ru": "Решённые условия синтеза (Дано/Найти)"},
     "tables": {"en": "Tables", "ru": "Таблицы"},
     "figures": {"en": "Diagrams", "ru": "Графики"},
     "drawing": {"en": "Drawing of the mechanism", "ru": "Схема механизма"},
@@ -179,8 +181,8 @@ TEXT = {
     "centre_of_mass": {"en": "centre of mass", "ru": "центр масс"},
     "dynamics": {"en": "Crank dynamics (inertia, flywheel, balancing)",
                  "ru": "Динамика (силы инерции, маховик, уравновешивание)"},
-    "dyn_speed": {"en": "crank {0}: mean |ω| = {1} ({2})",
-                  "ru": "кривошип {0}: среднее |ω| = {1} ({2})"},
+    "dyn_speed": {"en": "crank {0}: mean |ω| = {1}",
+                  "ru": "кривошип {0}: среднее |ω| = {1}"},
     "dyn_jred": {"en": "reduced moment of inertia J_red = {0} … {1}",
                  "ru": "приведённый момент инерции J_пр = {0} … {1}"},
     "dyn_md": {"en": "driving moment M_d = {0} … {1} (table D)",
@@ -211,8 +213,8 @@ TEXT = {
     "c_Tspring": {"en": "tension of one spring {0}", "ru": "сила растяжения одной пружины {0}"},
     "c_Fspring": {"en": "force of all the springs {0} (count × tension)",
                   "ru": "сила всех пружин {0} (количество × растяжение)"},
-    "wrapped": {"en": "angles wrapped to [0°, 360°) as the seeds print them",
-                "ru": "углы приведены к [0°, 360°), как в исходных расчётах"},
+    "wrapped": {"en": "angles wrapped to [{0}, {1}) as the seeds print them",
+                "ru": "углы приведены к [{0}; {1}), как в исходных расчётах"},
     "rotation": {"en": "analogs along the direction of rotation of {0} ({1}): dφ/d{0} · "
                        "sign {0}' with {0}' = {2:+d}, as the seeds write them",
                  "ru": "аналоги по направлению вращения {0} ({1}): dφ/d{0} · sign {0}', "
@@ -367,9 +369,11 @@ def check_lang(lang: str) -> str:
 
 
 def t(key: str, lang: str, *args) -> str:
-    """The text ``key`` in ``lang``, formatted with ``args``."""
+    """The text ``key`` in ``lang``, formatted with ``args`` (a model's name or text
+    given in several languages, :class:`assur.texts.Text`, in ``lang``'s)."""
     s = TEXT[key][check_lang(lang)]
-    return s.format(*args) if args else s
+    return s.format(*(localize(a, lang) if isinstance(a, Text) else a for a in args)) \
+        if args else s
 
 
 #: unit atoms (a symbol with its prefix) -> Russian spelling, for units a user wrote

@@ -8,15 +8,18 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ....texts import LANGS, localize
+from ....texts import LANGS, Text, localize
 from ..labels import TEXT, check_lang
 
 __all__ = ["Column", "Table", "grid_of", "wrap_degrees", "in_units"]
 
 
 def _both(key, *args):
-    """{lang: text} for a label key."""
-    return {lang: (txt.format(*args) if args else txt) for lang, txt in TEXT[key].items()}
+    """{lang: text} for a label key (a model's name given in several languages, a
+    :class:`assur.texts.Text`, in each language's)."""
+    return {lang: (txt.format(*(localize(a, lang) if isinstance(a, Text) else a
+                                for a in args)) if args else txt)
+            for lang, txt in TEXT[key].items()}
 
 
 def _same(text):

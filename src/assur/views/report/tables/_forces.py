@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ....errors import SingularPositionError
-from ....texts import LANGS
+from ....texts import LANGS, localize
 from ..labels import TEXT
 from ..numbers import number
 from ._data import Column, Table, _both, _same, grid_of
@@ -56,7 +56,8 @@ def _table_4_1(v):
                 if P > 0:
                     cols.append(Column(f"dG{p}{sfx}", "%", (g - P) / P * 100.0,
                                        {lang: TEXT["c_dG"][lang].format(
-                                           p, wname, v.text(P, "N", lang)) for lang in LANGS}))
+                                           p, localize(wname, lang), v.text(P, "N", lang))
+                                        for lang in LANGS}))
         note = v.absent_note(c, absent, (), "absent_capacity", name)
         if note:
             notes.append(note)
@@ -91,7 +92,8 @@ def _table_g(v):
             for k, val in enumerate(u2):
                 shown, _ = v.units.convert(val, v.coord_unit(c2))
                 cols.append(Column(f"G{p}_{c}@{c2}={number(float(shown), significant=6)}", "N", z[:, k],
-                                   {lang: f"{TEXT['c_G'][lang].format(p)} ({name}), "
+                                   {lang: f"{TEXT['c_G'][lang].format(p)} "
+                                          f"({localize(name, lang)}), "
                                           f"{c2} = {v.text(val, v.coord_unit(c2), lang)}"
                                     for lang in LANGS}))
     if len(cols) == 1:

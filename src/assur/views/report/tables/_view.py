@@ -111,7 +111,8 @@ class _View:
         """Notes of the conventions in force (wrapped angles; analogs along a rotation)."""
         notes = []
         if self.angles == "wrapped":
-            notes.append(_both("wrapped"))
+            notes.append({lang: TEXT["wrapped"][lang].format(
+                self.text(0.0, "deg", lang), self.text(360.0, "deg", lang)) for lang in LANGS})
         if analogs:
             for c in self.coords:
                 if self.analogs == "rotation" and self.is_angle(c):
