@@ -22,11 +22,23 @@ def _pint(unit):
     return ureg, u, q
 
 
+#: products of two non-metric units: pint multiplies their factors in the order of its
+#: parsed unit dictionary, which depends on what it parsed before (lbf*ft is 1.35…4006
+#: in a fresh process, 1.35…4001 after some other units), so one ulp either way
+_ORDER_DEPENDENT = {"lbf*ft", "ft*lbf", "lbf*in", "lb*ft**2", "lb*ft**2/rad"}
+
+
+def _same_as_pint(table, pint_value, unit):
+    if unit in _ORDER_DEPENDENT:
+        return abs(table - pint_value) <= 2 * abs(pint_value) * 2.0 ** -52
+    return table == pint_value  # bitwise
+
+
 @pytest.mark.parametrize("unit", sorted(COMMON_UNITS))
 def test_table_entry_is_pints(unit):
     ureg, u, q = _pint(unit)
     c = COMMON_UNITS[unit]
-    assert c.factor == float(q.to_base_units().magnitude)  # bitwise
+    assert _same_as_pint(c.factor, float(q.to_base_units().magnitude), unit)
     dims = q.dimensionality
     assert c.dimension == (dims.get("[length]", 0), dims.get("[mass]", 0),
                            dims.get("[time]", 0))
@@ -58,7 +70,7 @@ def test_table_reads_as_pint(unit, kind):
             pint_si = _units.math.radians(2.5)
         else:
             pint_si = 2.5 * float(q.to(kind.si or "dimensionless").magnitude)
-        assert _units.to_si(raw, kind) == pint_si
+        assert _same_as_pint(_units.to_si(raw, kind), pint_si, unit)
 
 
 @pytest.mark.parametrize("text", ["kN * m", "kN*m", " kg*m^2", "kg·m²", "m/s^2", "22°"])

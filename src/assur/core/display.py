@@ -218,13 +218,31 @@ class DisplayUnits:
         return self.units[kind]
 
     def value(self, si, kind: str):
-        """``si`` [SI] of ``kind`` in its display unit (a float, or an array)."""
+        """``si`` [SI] of ``kind`` in its display unit (a float, or an array).
+
+        Examples
+        --------
+        >>> from assur.core.display import unit_system
+        >>> unit_system(None, "engineering").value(17.5e6, "pressure")   # [MPa]
+        17.5
+        """
         return self.units[kind].of(si)
 
     def convert(self, values, text: str):
         """Values shown in ``text`` (a table column's unit: ``"m"``, ``"deg"``,
         ``"kN"``…) converted to this system: ``(values, unit text)``; a unit of no
-        known kind is returned as it is."""
+        known kind is returned as it is.
+
+        Examples
+        --------
+        >>> from assur.core.display import unit_system
+        >>> si = unit_system(None, "si")
+        >>> v, u = si.convert(180.0, "deg")            # 180° [rad]
+        >>> round(float(v), 6), u
+        (3.141593, 'rad')
+        >>> si.convert(2.5, "MPa/s")                   # no kind: as it is
+        (2.5, 'MPa/s')
+        """
         kind = kind_of(text)
         if kind is None:
             return values, text

@@ -252,7 +252,14 @@ def _template():
 
 def stylesheet() -> str:
     """The report's stylesheet (``report.css`` beside this module), inlined into every
-    report so that the file stays self-contained."""
+    report so that the file stays self-contained.
+
+    Examples
+    --------
+    >>> from assur.views.report.html import stylesheet
+    >>> "@media print" in stylesheet() or "table" in stylesheet()
+    True
+    """
     from importlib.resources import files
 
     return files(__package__).joinpath("report.css").read_text(encoding="utf-8")

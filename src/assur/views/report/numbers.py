@@ -126,11 +126,7 @@ def quantity(si, kind: str, units, lang: str = "en", significant: int = SIGNIFIC
     '30°'
     """
     u = units[kind]
-    text = number(u.of(si), None, lang, significant)
-    label = unit_label(u.text, lang)
-    if label == "-":
-        return text
-    return f"{text}{label}" if label == "°" else f"{text} {label}"
+    return _with_unit(number(u.of(si), None, lang, significant), u.text, lang)
 
 
 def value_text(value, unit: str, units, lang: str = "en",
@@ -147,8 +143,13 @@ def value_text(value, unit: str, units, lang: str = "en",
     ('420 mm', '0,2562 рад')
     """
     v, text = units.convert(value, unit)
-    shown = number(float(v), None, lang, significant)
-    label = unit_label(text, lang)
-    if label == "-":
-        return shown
-    return f"{shown}{label}" if label == "°" else f"{shown} {label}"
+    return _with_unit(number(float(v), None, lang, significant), text, lang)
+
+
+def _with_unit(number_text: str, unit: str, lang: str) -> str:
+    """A number with its unit: degrees as ``30°`` in every language, a plain number
+    alone, otherwise ``27.5 kN``."""
+    if unit in ("deg", "°"):
+        return f"{number_text}°"
+    label = unit_label(unit, lang)
+    return number_text if label == "-" else f"{number_text} {label}"
