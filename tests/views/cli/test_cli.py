@@ -48,7 +48,7 @@ def test_analyze_writes_seed_tables_and_the_report_lists_the_solved_conditions(t
 def test_bad_options_exit_1(tmp_path):
     r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "--lang", "de"])
     assert r.exit_code == 1 and "--lang must be one of" in r.output
-    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "--format", "pdf"])
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "--format", "doc"])
     assert r.exit_code == 1 and "--format must be" in r.output
 
 
@@ -147,3 +147,20 @@ def test_analyze_frames_option(tmp_path):
     assert r.exit_code == 1 and "--frames 0" in r.output and "Traceback" not in r.output
     r = CliRunner().invoke(app, ["analyze", model, "-o", str(tmp_path / "c"), "--frames", "-1"])
     assert r.exit_code != 0 and "Traceback" not in r.output
+
+
+def test_analyze_prints_the_report_to_pdf(tmp_path, monkeypatch):
+    """``--format pdf``: the HTML report printed on A4 by Chromium (installed by the
+    project, make chromium); without a browser, one message before any analysis."""
+    out = tmp_path / "pdf"
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(out), "--format",
+                            "csv,pdf", "--lang", "ru"])
+    assert r.exit_code == 0, r.output
+    data = (out / "report.pdf").read_bytes()
+    assert data.startswith(b"%PDF") and data.count(b"/Type /Page") >= 3
+    assert not (out / "report.html").exists()  # printed from a report of its own
+    monkeypatch.setenv("ASSUR_CHROMIUM", str(tmp_path / "no-such-browser"))
+    monkeypatch.setenv("PATH", str(tmp_path))
+    r = runner.invoke(app, ["analyze", str(bundled("hitch_003")), "-o", str(tmp_path / "x"),
+                            "--format", "pdf"])
+    assert r.exit_code == 1 and "chromium" in r.output.lower() and "Traceback" not in r.output

@@ -87,3 +87,39 @@ def test_russian_numbers_and_the_written_page(hitch_analysis, pages, tmp_path):
                       drawing=False)
     assert path.read_text(encoding="utf-8") == en
     assert not re.search(r'(src|href)="https?://', en)  # self-contained
+
+
+@pytest.mark.parametrize("name", ["hitch_003", "loader_lab1", "combine_002", "steering_lab4"])
+def test_first_page_holds_the_verdicts_each_its_tables_value(name):
+    """The first section after the title is the verdicts; each links to the table or
+    section that shows it, and its number is that table's cell at that row (the same
+    value, in the same display units)."""
+    import html as _html
+
+    from assur import io
+    from assur.core.display import unit_system
+    from assur.views.report.verdicts import verdicts
+
+    a = io.load(io.bundled(name)).analyze()
+    for lang, system in (("en", "file"), ("ru", "imperial")):
+        du = unit_system(a.mechanism, system)
+        tabs = seed_tables(a, lang, units=du)
+        page = render_html(a, lang, figures={}, animation=False, drawing=False, tables=tabs,
+                           units=du)
+        sections = re.findall(r'<section id="([a-z]+)"', page)
+        assert sections[0] == "verdicts", sections
+        items = re.findall(r'<li class="verdict (\w+)">.*?<a href="#([\w-]+)">(.*?)</a></li>',
+                           page)
+        ids = set(re.findall(r'id="([\w-]+)"', page))
+        vs = verdicts(a, tabs, du, lang)
+        assert len(items) == len(vs) >= 2
+        assert {(s, h, _html.unescape(t)) for s, h, t in items} == \
+            {(v.status, v.anchor, v.text) for v in vs}
+        for status, href, _ in items:
+            assert href in ids, href
+        by_id = {t.id: t for t in tabs}
+        for v in vs:
+            if v.table is None:
+                continue
+            col = by_id[v.table].column(v.column)
+            assert v.value == col.values[v.row]  # the table's own number

@@ -19,7 +19,8 @@ console = Console(stderr=False, markup=False, emoji=False, highlight=False)
 err = Console(stderr=True, markup=False, emoji=False, highlight=False)
 LANGS = ("ru", "en")
 
-FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")  # = assur.views.report.FORMATS
+FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif", "pdf")  # = assur.views.report.FORMATS
+DEFAULT_FORMATS = FORMATS[:-1]  # = assur.views.report.DEFAULT_FORMATS (pdf needs Chromium)
 
 
 def _version(value: bool):

@@ -9,7 +9,7 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from ._common import (FORMATS, _assemble, _check_lang, _fail, _formats, _lang, _load, _ok,
+from ._common import (DEFAULT_FORMATS, _assemble, _check_lang, _fail, _formats, _lang, _load, _ok,
                       _output_dir, _positions, _shape_text, _summary, _units, console)
 
 #: the options every worksheet command shares
@@ -69,6 +69,7 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, un
 
     from ...errors import AssemblyError, ModelError, SingularPositionError
     from ..report import report_steps, write_report
+    from ..report.pdf import PdfError
 
     du = _units(model, units)
     lang = _lang(model, lang)
@@ -88,6 +89,8 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, un
                                  positions=positions, frames=frames, units=du)
         except OSError as e:  # disk full, permissions changed: one message, no traceback
             _fail(f"{output}: cannot write the report: {e.strerror or e}")
+        except PdfError as e:  # Chromium failed or timed out printing the report
+            _fail(f"{output}: {e}")
         except (AssemblyError, ModelError, SingularPositionError) as e:
             _fail(f"{model.source}: {e}")
     return analysis, files
@@ -98,8 +101,10 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                        help="Output directory."),
             lang: str = typer.Option("", "--lang", help=LANG_HELP),
             units: str = typer.Option("", "--units", help=UNITS_HELP),
-            format: str = typer.Option(",".join(FORMATS), "--format",
-                                       help="Comma-separated: csv,xlsx,html,png,svg,gif."),
+            format: str = typer.Option(",".join(DEFAULT_FORMATS), "--format",
+                                       help="Comma-separated: csv,xlsx,html,png,svg,gif,pdf "
+                                            "(pdf: the HTML report printed on A4 by "
+                                            "Chromium, which must be installed)."),
             draw_at: str = typer.Option("", "--draw-at",
                                         help="Coordinate values to draw the mechanism at, "
                                              "in the units shown (--units): cylinder "
@@ -115,6 +120,12 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
     fmts = _formats(format)
     if frames == 0 and "gif" in fmts:
         _fail("--frames 0 writes no animation: leave gif out of --format")
+    if "pdf" in fmts:  # a missing browser fails before the analysis, not after
+        from ..report.pdf import PdfError, find_chromium
+        try:
+            find_chromium()
+        except PdfError as e:
+            _fail(str(e))
     model = _load(file)
     _, files = _run_report(model, output, lang, fmts, draw_at, frames, units)
     _summary(files, output)
@@ -172,5 +183,5 @@ def demo(output: str = typer.Option("assur-demo", "-o", "--output"),
     if lang:
         _check_lang(lang)
     model = _load(bundled("hitch_003"))
-    _, files = _run_report(model, output, lang, FORMATS, units=units)
+    _, files = _run_report(model, output, lang, DEFAULT_FORMATS, units=units)
     _summary(files, output)

@@ -27,14 +27,17 @@ from pathlib import Path
 from .labels import check_lang
 from .tables import Column, Table, seed_tables, table_filename, write_csv, write_xlsx
 
-__all__ = ["write_report", "report_steps", "FORMATS", "seed_tables", "write_csv", "write_xlsx",
-           "Table", "Column"]
+__all__ = ["write_report", "report_steps", "FORMATS", "DEFAULT_FORMATS", "seed_tables",
+           "write_csv", "write_xlsx", "Table", "Column"]
 
-#: every output format :func:`write_report` knows
-FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif")
+#: every output format :func:`write_report` knows (``pdf``: printed from the HTML report
+#: by Chromium, :mod:`assur.views.report.pdf`)
+FORMATS = ("csv", "xlsx", "html", "png", "svg", "gif", "pdf")
+#: the formats written unless others are asked for (the PDF needs a browser)
+DEFAULT_FORMATS = FORMATS[:-1]
 
 
-def report_steps(formats=FORMATS, frames=30) -> list:
+def report_steps(formats=DEFAULT_FORMATS, frames=30) -> list:
     """Names of the steps :func:`write_report` announces to ``progress``, in order
     (so a progress bar can know its length).
 
@@ -43,8 +46,10 @@ def report_steps(formats=FORMATS, frames=30) -> list:
     >>> from assur.views.report import report_steps
     >>> report_steps(("csv",))
     ['tables', 'csv']
-    >>> report_steps()  # every format
+    >>> report_steps()  # the default formats
     ['tables', 'csv', 'xlsx', 'figures', 'drawing', 'animation', 'html']
+    >>> report_steps(("pdf",))  # printed from the report, without its animation
+    ['tables', 'figures', 'drawing', 'pdf']
     >>> report_steps(("html",), frames=0)  # no animation
     ['tables', 'figures', 'drawing', 'html']
     """
@@ -54,16 +59,19 @@ def report_steps(formats=FORMATS, frames=30) -> list:
         steps.append("csv")
     if "xlsx" in fm:
         steps.append("xlsx")
-    if fm & {"png", "svg", "html"}:
+    if fm & {"png", "svg", "html", "pdf"}:
         steps += ["figures", "drawing"]
     if fm & {"gif", "html"} and frames > 0:
         steps.append("animation")
     if "html" in fm:
         steps.append("html")
+    if "pdf" in fm:
+        steps.append("pdf")
     return steps
 
 
-def write_report(analysis, outdir, formats=FORMATS, lang=None, progress=None, design=None,
+def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=None,
+                 design=None,
                  frames=30, positions=None, units=None) -> dict:
     """Write tables, diagrams, the drawing, the animation and the HTML report.
 
@@ -117,10 +125,10 @@ def write_report(analysis, outdir, formats=FORMATS, lang=None, progress=None, de
     ['tables', 'csv', 'xlsx']
     >>> [p.name for p in files["csv"]][:3], files["xlsx"][0].name, all(sizes)
     (['table_2_1.csv', 'table_2_2.csv', 'table_3_1.csv'], 'tables.xlsx', True)
-    >>> write_report(a, "unused", formats=("pdf",))
+    >>> write_report(a, "unused", formats=("doc",))
     Traceback (most recent call last):
     ...
-    ValueError: formats must be among: ['csv', 'xlsx', 'html', 'png', 'svg', 'gif']; got ['pdf']
+    ValueError: formats must be among: ['csv', 'xlsx', 'html', 'png', 'svg', 'gif', 'pdf']; got ['doc']
     """
     from . import drawing as _drawing
     from . import figures as _figures
@@ -153,7 +161,7 @@ def write_report(analysis, outdir, formats=FORMATS, lang=None, progress=None, de
         written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx", lang=lang,
                                       inputs=_html.model_inputs(analysis, lang, du))]
     pngs, drawing_png = {}, None
-    if {"png", "svg", "html"} & set(formats):
+    if {"png", "svg", "html", "pdf"} & set(formats):
         step("figures")
         figs = dict(_figures.figures(analysis, lang, design=design, units=du))
         if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
@@ -200,4 +208,16 @@ def write_report(analysis, outdir, formats=FORMATS, lang=None, progress=None, de
         written["html"] = [_html.write_html(analysis, out / "report.html", lang=lang,
                                             figures=pngs, tables=tables, drawing=drawing_png,
                                             animation=anim, design=design, units=du)]
+    if "pdf" in formats:
+        step("pdf")
+        from .pdf import write_pdf
+        if "html" in formats:
+            written["pdf"] = [write_pdf(written["html"][0], out / "report.pdf")]
+        else:  # printed from the HTML report (no animation is printed)
+            import tempfile
+            with tempfile.TemporaryDirectory() as tmp:
+                page = _html.write_html(analysis, Path(tmp) / "report.html", lang=lang,
+                                        figures=pngs, tables=tables, drawing=drawing_png,
+                                        animation=False, design=design, units=du)
+                written["pdf"] = [write_pdf(page, out / "report.pdf")]
     return written

@@ -206,6 +206,20 @@ def _figure_items(figures, lang):
     return items
 
 
+#: the order of the verdicts on the first page: what fails, what is near its limit, then
+#: the rest as the analysis gives them
+_FIRST = {"fail": 0, "warn": 1}
+
+
+def _verdicts(analysis, tables, du, lang):
+    """The first page's verdicts (:func:`assur.views.report.verdicts.verdicts`) on the
+    tables as the report shows them, each linking to its table or section."""
+    from .verdicts import verdicts
+    out = verdicts(analysis, tables, du, lang)
+    out = sorted(out, key=lambda v: _FIRST.get(v.status, 2))
+    return [dict(status=v.status, text=v.text, href=v.anchor) for v in out]
+
+
 def _file_names(text):
     """``text`` with each path of a model file cut to its file name (a report names the
     file, not the folders of the machine that ran it)."""
@@ -359,7 +373,8 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
         figures=_figure_items(dict(figures), lang),
         drawing=drawing_uri,
         player=(_drawing.player(animation, lang, interval) if animation else None),
-        warnings=_warnings(analysis, tables, lang))
+        warnings=_warnings(analysis, tables, lang),
+        verdicts=_verdicts(analysis, tables, du, lang))
 
 
 def write_html(analysis, path, lang="en", figures=None, tables=None, drawing=None,

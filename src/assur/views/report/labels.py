@@ -19,6 +19,11 @@ TEXT = {
     # report structure
     "report": {"en": "Analysis report", "ru": "Отчёт о расчёте"},
     "contents": {"en": "Contents", "ru": "Содержание"},
+    "verdicts": {"en": "Verdicts", "ru": "Выводы"},
+    "status_ok": {"en": "met", "ru": "выполнено"},
+    "status_warn": {"en": "near its limit", "ru": "близко к пределу"},
+    "status_fail": {"en": "not met", "ru": "не выполнено"},
+    "status_info": {"en": "key figure", "ru": "основной показатель"},
     "summary": {"en": "Model", "ru": "Модель"},
     "parameters": {"en": "Parameters", "ru": "Параметры"},
     "groups": {"en": "Structural groups (solved in this order)",
