@@ -96,8 +96,8 @@ def _symbol_like(word: str) -> bool:
     symbol whose parts are short (R_ij, p_max, F_S), a file name (hitch_003.toml)."""
     if len(word) <= 2 or re.fullmatch(r"[A-Z]{1,5}", word) or re.search(r"\d", word):
         return True
-    if word.endswith(".toml"):
-        return True
+    if word.endswith(".toml") or re.fullmatch(r"[a-z_]+\.[\w.\[\]]+", word):
+        return True  # a file, or a key of a model file (params.XN, groups[3].length)
     parts = word.split("_")
     return len(parts) > 1 and all(len(p) <= 4 for p in parts)
 
@@ -121,3 +121,15 @@ def latin_words(text: str, allowed=frozenset()) -> list[str]:
 def systems():
     """The unit systems, in order."""
     return SYSTEMS
+
+
+def axis_units(fig) -> list[str]:
+    """The units the axes of ``fig`` name: ``[unit]`` of each axis label, and a colour
+    bar's label (its unit alone)."""
+    out = []
+    for ax in fig.axes:
+        for label in (ax.get_xlabel(), ax.get_ylabel()):
+            out += re.findall(r"\[([^\]]+)\]", label)
+        if getattr(ax, "_colorbar", None) is not None or ax.get_label() == "<colorbar>":
+            out += [u for u in (ax.get_ylabel(),) if u and "[" not in u]
+    return out

@@ -7,20 +7,32 @@ cylinder (no link angles)."""
 import pytest
 
 from assur import io
+from assur.core.display import SYSTEMS, unit_system
 from assur.views.report._curves import _math
 from assur.views.report.figures import figures
+from tests.helpers.documents import allowed_units, axis_units
 from tests.helpers.reports import label_problems
 
+NAMES = ["hitch_003", "steering_lab4", "spout_lab5", "adapter_lab6", "combine_002",
+         "crane_lv185"]
 
-@pytest.mark.parametrize("name", ["hitch_003", "steering_lab4", "spout_lab5",
-                                  "adapter_lab6", "combine_002", "crane_lv185"])
+
+@pytest.mark.parametrize("name", NAMES)
 @pytest.mark.parametrize("lang", ["en", "ru"])
 def test_every_figure_drawn_and_no_raw_tex(name, lang):
+    """... and every axis in the report's display units: each model and language in
+    another unit system, all four systems covered."""
     a = io.load(io.bundled(name)).analyze()
-    figs = figures(a, lang)
+    system = SYSTEMS[(NAMES.index(name) + (lang == "ru") * 2) % len(SYSTEMS)]
+    du = unit_system(a.mechanism, system)
+    figs = figures(a, lang, units=du)
     assert figs
+    allowed = allowed_units(du, lang)
     for fig_name, fig in figs.items():
         assert not label_problems(fig), (name, fig_name, label_problems(fig))
+        units = axis_units(fig)
+        assert units, (name, fig_name)  # every figure's axes name their unit
+        assert set(units) <= allowed, (name, system, lang, fig_name, set(units) - allowed)
 
 
 def test_the_diagrams_of_each_machine_are_its_own():
