@@ -57,6 +57,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/design.py
 	$(PY) benchmarks/sensitivity.py
 	$(PY) benchmarks/page.py
+	$(PY) benchmarks/report.py
 
 # the interactive page for the seed-003 hitch (docs/page.md)
 serve: $(CORE_STAMP)

@@ -50,10 +50,9 @@ class Text(str):
         return (_rebuild, (str(self), self.translations))
 
     def __repr__(self):
-        if not self.translations:
-            return super().__repr__()
-        tr = ", ".join(f"{k}={v!r}" for k, v in self.translations.items())
-        return f"Text({str.__repr__(self)}, {tr})"
+        # the text as a name is written in messages ("rigid point 'arm 34' …") and in a
+        # group's repr: its identifying (English) string; the translations are data
+        return str.__repr__(self)
 
 
 def _rebuild(en, translations):

@@ -87,7 +87,8 @@ def model_symbols(mech, tables=()) -> set[str]:
 
 #: functions a formula in a note may name, and the standards a report cites
 _FORMULA_WORDS = {"acos", "asin", "atan", "atan2", "sin", "cos", "tan", "sqrt", "hypot",
-                  "abs", "exp", "log", "max", "min", "sign", "ISO", "SAE", "DIN", "GOST"}
+                  "abs", "exp", "log", "max", "min", "sign", "ctg", "tg", "arcctg", "arctg",
+                  "ISO", "SAE", "DIN", "GOST"}
 
 
 def _symbol_like(word: str) -> bool:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ....core.loads import Weight
-from ....texts import LANGS
+from ....texts import LANGS, localize
 from ..labels import TEXT, unit
 from ._data import Column, _both, wrap_degrees
 
@@ -182,8 +182,8 @@ class _View:
                 parts.append(f"{TEXT['absent_points'][lang]} {', '.join(points)}")
             if links:
                 parts.append(f"{TEXT['absent_links'][lang]} {', '.join(links)}")
-            out[lang] = TEXT["absent"][lang].format(c, "; ".join(parts),
-                                                    TEXT[what][lang].format(*args))
+            what_text = TEXT[what][lang].format(*(localize(a, lang) for a in args))
+            out[lang] = TEXT["absent"][lang].format(c, "; ".join(parts), what_text)
         return out
 
     def at_text(self, i, lang="en"):
