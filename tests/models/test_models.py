@@ -1,6 +1,9 @@
 """Every bundled model (one file per machine, src/assur/models/): `assur analyze`
-writes its report, and no CSV of it holds NaN or inf; a model kept as its seed prints
-it (it cannot assemble) fails with one located message, never a traceback."""
+writes its tables, and no CSV of it holds NaN or inf; a model kept as its seed prints
+it (it cannot assemble) fails with one located message, never a traceback. Each
+model's HTML report (its figures and drawing) is rendered, shown and printed in
+Chromium by tests/views/report/test_html_browser.py, its documents in every unit
+system by tests/models/test_models_documents.py."""
 
 from pathlib import Path
 
@@ -21,12 +24,13 @@ def test_the_list_of_unassembling_models_is_current():
     assert AS_PRINTED <= set(MODELS)
 
 
-#: bundled models whose HTML report another test writes (on a smaller range, with the
-#: same code); here their CSV tables over the whole range
+#: where every bundled model's HTML report is written and checked (here: the tables,
+#: through the command line)
 HTML_ELSEWHERE = {
-    # a grid of 13 × 8 positions: its report (maps of every quantity) is the slowest
-    "loader_lab1": "tests/views/report/test_tables.py::test_analyze_writes_the_loader_report",
-}
+    name: "tests/views/report/test_html_browser.py::"
+          "test_the_report_reads_on_the_screen_and_prints_on_a4" for name in MODELS}
+HTML_ELSEWHERE["loader_lab1"] = \
+    "tests/views/report/test_tables.py::test_analyze_writes_the_loader_report"
 
 
 def test_the_html_reports_written_elsewhere_are_tested_there():
