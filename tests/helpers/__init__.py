@@ -72,3 +72,14 @@ def by_numpy(make, *args):
         return make(*args)
     finally:
         KV.set_backend(was)
+
+
+def python_output(code: str) -> str:
+    """The standard output of ``code`` run by this interpreter in a fresh process
+    (stripped): what a module imports on its own, away from the test session's."""
+    import subprocess
+    import sys
+
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       check=True)
+    return r.stdout.strip()

@@ -31,12 +31,9 @@ def test_repr_html_of_mechanism_result_and_model():
 
 
 def test_display_does_not_import_matplotlib():
-    import subprocess
-    import sys
+    from tests.helpers import python_output
     code = ("import sys, numpy as np; from assur import examples; "
             "examples.hitch_003().analyze(np.linspace(0.42, 0.67, 3))._repr_html_(); "
             "print('matplotlib' in sys.modules)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True)
-    assert out.stdout.strip() == "False"
+    assert python_output(code) == "False"
 

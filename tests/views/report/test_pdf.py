@@ -7,14 +7,13 @@ that hangs (stopped at the timeout), one that writes no PDF."""
 import re
 import shutil
 import stat
-import subprocess
-import sys
 import time
 
 import pytest
 
 from assur.views.report.html import write_html
 from assur.views.report.pdf import PdfError, find_chromium, write_pdf
+from tests.helpers import python_output
 
 
 @pytest.fixture(scope="module")
@@ -97,6 +96,4 @@ def test_the_module_imports_neither_matplotlib_nor_the_cli():
     code = ("import sys, assur.views.report.pdf; "
             "print(sorted(m for m in sys.modules if m.split('.')[0] == 'matplotlib' "
             "or m.startswith('assur.views.cli')))")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                       check=True)
-    assert r.stdout.strip() == "[]"
+    assert python_output(code) == "[]"

@@ -79,6 +79,8 @@ TEXT = {
     "t4.1": {"en": "Lift capacity: cylinder force, pressure, capacity, reserve",
              "ru": "Результаты анализа на грузоподъёмность (сила и давление в ГЦ, "
                    "грузоподъёмность, запас)"},
+    "t4.1_cylinders": {"en": "Cylinders: force and pressure",
+                       "ru": "Гидроцилиндры: сила и давление"},
     "t5.1": {"en": "Force analysis: joint reactions (force of link i on link j)",
              "ru": "Результаты силового анализа (реакция R_ij — сила звена i на звено j)"},
     "t5.2": {"en": "Kinetostatics: joint reactions with the inertia loads (force of link i "

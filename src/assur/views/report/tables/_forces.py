@@ -62,7 +62,11 @@ def _table_4_1(v):
         if note:
             notes.append(note)
     notes += _capacity_extrema(v, extrema)
-    return Table("4.1", _both("t4.1"), tuple(cols), tuple(notes))
+    # named by what it holds: a machine that lifts nothing (a steering drive, a spout)
+    # has its cylinders' forces and pressures only
+    lifts = any(c.unit == "%" or c.symbol.startswith("G") for c in cols[len(v.coords):])
+    return Table("4.1", _both("t4.1" if lifts else "t4.1_cylinders"), tuple(cols),
+                 tuple(notes))
 
 
 def _table_g(v):
