@@ -60,3 +60,14 @@ def label_problems(fig) -> list[str]:
             elif re.search(r"[\\_$]", part):
                 out.append(f"raw TeX: {s!r}")
     return out
+
+
+#: bundled models that extend another and add only what the analysis report does not
+#: show (``[design]``, ``[tolerances]``, a ``[model]`` title): their report has the base's
+#: tables, figures and layout, so the report's own checks (screen, print, units, language)
+#: run on the base (tests/models/test_models.py checks that this still holds)
+SAME_REPORT = {"hitch_003_design": "hitch_003", "hitch_003_tolerances": "hitch_003",
+               "cleaning_lab3_design": "cleaning_lab3",
+               "conditioner_lab2_design": "conditioner_lab2"}
+#: the top-level keys such a variant may have
+REPORT_NEUTRAL_KEYS = {"extends", "model", "design", "tolerances"}

@@ -7,13 +7,14 @@ system by tests/models/test_models_documents.py."""
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 from assur import io
 from assur.views.cli import app
 from tests.helpers import ROOT
-from tests.helpers.reports import assert_csvs_clean
+from tests.helpers.reports import REPORT_NEUTRAL_KEYS, SAME_REPORT, assert_csvs_clean
 
 MODELS = sorted(p.stem for p in Path(io.bundled("hitch_003")).parent.glob("*.toml"))
 #: the bundled files kept as their seed prints them: they load, and cannot assemble
@@ -53,3 +54,24 @@ def test_analyze_writes_every_bundled_report(name, tmp_path):
     assert r.exit_code == 0, r.output
     assert (tmp_path / "report.html").exists() == ("html" in formats)
     assert_csvs_clean(tmp_path, name)
+
+
+@pytest.mark.parametrize("variant", sorted(SAME_REPORT))
+def test_a_variant_reported_as_its_base_differs_only_where_the_report_does_not_look(variant):
+    """The report checks skip these variants (tests.helpers.reports.SAME_REPORT): each
+    only adds design or tolerance sections (and its own title) to its base, so its
+    mechanism, parameters and range are the base's."""
+    import tomllib
+
+    base = SAME_REPORT[variant]
+    raw = tomllib.loads(io.bundled(variant).read_text(encoding="utf-8"))
+    assert set(raw) <= REPORT_NEUTRAL_KEYS, set(raw) - REPORT_NEUTRAL_KEYS
+    assert raw["extends"] == f"{base}.toml"
+    assert set(raw.get("model", {})) <= {"name", "title", "notes"}
+    v, b = io.load(io.bundled(variant)), io.load(io.bundled(base))
+    vm, bm = v.mechanism, b.mechanism
+    assert [(g.type_name, str(g.name)) for g in vm.groups] == \
+        [(g.type_name, str(g.name)) for g in bm.groups]
+    assert {k: np.asarray(x).tolist() for k, x in vm.params.items()} == \
+        {k: np.asarray(x).tolist() for k, x in bm.params.items()}
+    assert np.array_equal(v.range, b.range)

@@ -4,7 +4,9 @@ gives its kind and read back to the same numbers (a Russian CSV with ``;`` and t
 decimal comma); the HTML report's text writes no value in another unit, no NaN or
 infinity, and its Russian no English word (symbols, names and file names aside).
 
-The diagrams of each machine in each system are checked by
+A variant that only adds design or tolerance sections to a bundled model is reported as
+its base (tests.helpers.reports.SAME_REPORT, checked in test_models.py). The diagrams of
+each machine in each system are checked by
 tests/views/report/test_figures_labels.py and tests/views/report/test_html_browser.py.
 """
 
@@ -25,12 +27,13 @@ from assur.views.report.labels import unit
 from assur.views.report.tables import seed_tables, table_filename, write_csv, write_xlsx
 from tests.helpers.documents import (allowed_units, latin_words, model_symbols, model_texts,
                                      unit_violations, visible, without)
-from tests.helpers.reports import read_report_csv
+from tests.helpers.reports import SAME_REPORT, read_report_csv
 
 MODELS = sorted(p.stem for p in Path(io.bundled("hitch_003")).parent.glob("*.toml"))
 #: the bundled files kept as their seed prints them: they cannot assemble
 AS_PRINTED = {"header_000", "combine_002_printed"}
-REPORTED = [m for m in MODELS if m not in AS_PRINTED]
+#: every bundled model that assembles, but the variants whose report is their base's
+REPORTED = [m for m in MODELS if m not in AS_PRINTED and m not in SAME_REPORT]
 
 
 @lru_cache(maxsize=None)
