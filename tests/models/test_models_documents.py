@@ -1,8 +1,9 @@
 """Every bundled model's documents in every unit system and both languages (issue 23):
-the tables, their CSV files and the workbook hold every value in the unit the system
-gives its kind and read back to the same numbers (a Russian CSV with ``;`` and the
-decimal comma); the HTML report's text writes no value in another unit, no NaN or
-infinity, and its Russian no English word (symbols, names and file names aside).
+the tables and their CSV files (each system in each language) and a workbook hold
+every value in the unit the system gives its kind and read back to the same numbers
+(a Russian CSV with ``;`` and the decimal comma); the HTML report (each system once,
+each language twice) writes no value in another unit, no NaN or infinity, and in
+Russian no English word (symbols, names and file names aside).
 
 A variant that only adds design or tolerance sections to a bundled model is reported as
 its base (tests.helpers.reports.SAME_REPORT, checked in test_models.py). The diagrams of
@@ -88,6 +89,8 @@ def test_documents_in_every_unit_system_and_language(name, tmp_path):
             _check_tables(name, tabs, du, lang, out)
             if (system, lang) in workbooks:
                 _check_workbook(name, a, tabs, du, lang, out)
+            if (SYSTEMS.index(system) + LANGS.index(lang)) % 2:
+                continue  # the report in each system once, in each language twice
             page = render_html(a, lang, figures={}, drawing=False, animation=False,
                                tables=tabs, units=du)
             text = visible(page)
