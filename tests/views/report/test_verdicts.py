@@ -214,3 +214,21 @@ def test_the_units_may_be_named_and_the_language_is_checked():
     assert verdicts(a, tables, "file") == found
     with pytest.raises(ValueError, match="lang must be one of"):
         verdicts(a, tables, du, "de")
+
+
+def test_a_cylinder_without_a_relief_setting_is_not_above_it():
+    """spout_lab5.toml gives its cylinder no relief pressure: its largest pressure is a
+    key figure (info), not a failure against p_max = 0."""
+    from assur import io
+    from assur.core.display import unit_system
+    from assur.views.report.tables import seed_tables
+    from assur.views.report.verdicts import verdicts
+
+    a = io.load(io.bundled("spout_lab5")).analyze()
+    du = unit_system(a.mechanism)
+    for lang in ("en", "ru"):
+        tabs = seed_tables(a, lang, units=du)
+        (p,) = [v for v in verdicts(a, tabs, du, lang) if v.key.startswith("pressure")]
+        assert p.status == "info" and "∞" not in p.text
+        t41 = next(t for t in tabs if t.id == p.table)
+        assert p.value == max(t41[p.column])  # the column's largest value

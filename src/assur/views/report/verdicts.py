@@ -85,6 +85,11 @@ _TEXT = {
                       "ru": "наибольшее давление в напорной линии {line} (гидроцилиндры "
                             "{name}; {symbol}): {value} при {at}, {share} от давления "
                             "настройки предохранительного клапана {p_max}"},
+    "pressure_free": {"en": "largest pressure in cylinder {name} ({symbol}): {value} at {at} "
+                            "(the model gives no relief pressure to compare it with)",
+                      "ru": "наибольшее давление в гидроцилиндре {name} ({symbol}): {value} при "
+                            "{at} (давление настройки предохранительного клапана в модели не "
+                            "задано)"},
     "pressure_warn": {"en": " — within {margin} of the relief pressure",
                       "ru": " — до давления настройки меньше {margin}"},
     "pressure_fail": {"en": " — above the relief pressure",
@@ -420,6 +425,14 @@ def _pressures(page):
             continue
         row, value = found
         p_max = min(_scalar(r.p_max) for _, r in members)   # the lowest setting
+        if not p_max > 0.0:  # no relief setting in the model: the figure, no verdict
+            text = page.t("pressure_free",
+                          name=", ".join(localize(n, page.lang) for n, _ in members),
+                          symbol=col.symbol, value=page.value(col, value),
+                          at=page.at(tab, row))
+            out.append(Verdict(f"pressure_{str(name)}", "info", _sentence(text),
+                               anchor_of(tab.id), tab.id, col.symbol, row, value))
+            continue
         shown_max = float(page.units.convert(p_max, "Pa")[0])
         ratio = value / shown_max if shown_max > 0 else float("inf")
         text = page.t("pressure_line" if isinstance(line, str) else "pressure",
