@@ -232,3 +232,6 @@ def test_a_cylinder_without_a_relief_setting_is_not_above_it():
         assert p.status == "info" and "∞" not in p.text
         t41 = next(t for t in tabs if t.id == p.table)
         assert p.value == max(t41[p.column])  # the column's largest value
+    # its analysis notes the motion its inertia loads are taken at: a note, not a warning
+    assert a.notes and not a.model_warnings
+    assert {v.key: v.status for v in verdicts(a, tabs, du)}["warnings"] == "ok"

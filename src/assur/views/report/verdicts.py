@@ -505,7 +505,9 @@ def _notes(page):
     if notes:
         out.append(Verdict("slips", "info", _sentence(page.t("slips", count=len(notes))),
                            WARNINGS))
-    warnings = list(page.a.model_warnings or ()) + list(getattr(page.a, "notes", ()) or ())
+    # the model file's problems (an unused parameter …); the analysis' own notes (the
+    # motion its inertia loads are taken at) inform, and stand in the warnings section
+    warnings = list(page.a.model_warnings or ())
     if warnings:
         out.append(Verdict("warnings", "warn",
                            _sentence(page.t("warnings", count=len(warnings))), WARNINGS))
