@@ -293,7 +293,7 @@ def unit_system(mech, system: str | None = None) -> DisplayUnits:
     file's units the ``file`` system follows; None: no file).
 
     ``system`` None: the one the model file chose (``[display] units``), else
-    ``"file"``.
+    ``"file"``; a :class:`DisplayUnits` is returned as it is (every view takes either).
 
     Examples
     --------
@@ -305,6 +305,8 @@ def unit_system(mech, system: str | None = None) -> DisplayUnits:
     >>> [unit_system(None, s)["angle"].text for s in ("file", "si", "imperial")]
     ['deg', 'rad', 'deg']
     """
+    if isinstance(system, DisplayUnits):
+        return system
     if system is None:
         system = (mech.display.get("units") if mech is not None else None) or "file"
     check_system(system)

@@ -138,7 +138,7 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
 
     mech = analysis.mechanism
     lang = check_lang(lang or mech.display.get("lang") or "en")
-    du = unit_system(mech, units) if not hasattr(units, "convert") else units
+    du = unit_system(mech, units)
     formats = tuple(formats)
     bad = [f for f in formats if f not in FORMATS]
     if bad:

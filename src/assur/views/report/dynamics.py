@@ -39,8 +39,6 @@ def _units(dynamics, units):
     """The :class:`assur.core.display.DisplayUnits` of the figures (default: the model
     file's)."""
     from ...core.display import unit_system
-    if hasattr(units, "convert"):
-        return units
     return unit_system(dynamics.kinematics.mechanism, units)
 
 
@@ -249,7 +247,7 @@ def energy_mass(flywheel, lang="en", units=None):
     """
     lang = check_lang(lang)
     from ...core.display import unit_system
-    du = units if hasattr(units, "convert") else unit_system(None, units)
+    du = unit_system(None, units)
     fig = new_figure(9.6, 4.2)
     ax, ax2 = fig.subplots(1, 2)
     J = du.value(np.ravel(flywheel.reduced_inertia), "inertia")

@@ -22,7 +22,7 @@ import base64
 
 import numpy as np
 
-from ...core.display import DisplayUnits, parameter_units, unit_system
+from ...core.display import parameter_units, unit_system
 from ...texts import localize
 from .labels import TEXT, check_lang, t, unit
 from .numbers import decimals, number, quantity
@@ -173,7 +173,8 @@ def _table_view(tab, lang):
     cols, shown, checks = [], [], []
     for c in tab.columns:
         if c.symbol == CLOSURE:  # noise of 1e-16: one line, not a column
-            worst = float(np.nanmax(np.abs(c.values))) if len(c.values) else 0.0
+            # np.max, not nanmax: a residual that is not a number shows as "—"
+            worst = float(np.max(np.abs(c.values))) if len(c.values) else 0.0
             checks.append(t("closure_check", lang,
                             f"{number(worst, None, lang, 2)} {unit(c.unit, lang)}"))
             continue
@@ -281,7 +282,7 @@ def stylesheet() -> str:
 
 def _units(analysis, units):
     """The report's :class:`DisplayUnits` (a system's name, or None: the file's choice)."""
-    return units if isinstance(units, DisplayUnits) else unit_system(analysis.mechanism, units)
+    return unit_system(analysis.mechanism, units)
 
 
 def model_inputs(analysis, lang="en", units=None) -> list:

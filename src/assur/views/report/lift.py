@@ -38,7 +38,7 @@ def lift_test_figure(analysis, lang="en", units=None):
     lt = getattr(analysis, "lift_test", None)
     if lt is None:
         return None
-    du = units if hasattr(units, "convert") else unit_system(analysis.mechanism, units)
+    du = unit_system(analysis.mechanism, units)
     fig = new_figure()
     ax = fig.add_subplot()
     h, f = lt.test.hitch, lt.test.frame

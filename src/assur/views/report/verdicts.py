@@ -45,7 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...core.display import DisplayUnits, kind_of, unit_system
+from ...core.display import kind_of, unit_system
 from ...texts import localize
 from .labels import TEXT, check_lang
 from .numbers import number, quantity, value_text
@@ -317,8 +317,7 @@ def verdicts(analysis, tables, units, lang="en") -> list:
     давления настройки предохранительного клапана 17,5 МПа — до давления настройки меньше 10 %.
     """
     check_lang(lang)
-    if not isinstance(units, DisplayUnits):
-        units = unit_system(analysis.mechanism, units)
+    units = unit_system(analysis.mechanism, units)
     page = _Page(analysis, tables, units, lang)
     out = [_assembly(page)]
     out += _capacities(page)

@@ -20,13 +20,13 @@ class _View:
     """One design of an Analysis as 1-D arrays over the positions."""
 
     def __init__(self, analysis, design=None, angles=None, analogs=None, units=None):
-        from ....core.display import DisplayUnits, unit_system
+        from ....core.display import unit_system
         self.a = analysis
         self.kin = analysis.kinematics
         self.mech = analysis.mechanism
         tabs = self.mech.tables
         #: the units notes and labels are written in (:class:`assur.core.display.DisplayUnits`)
-        self.units = units if isinstance(units, DisplayUnits) else unit_system(self.mech, units)
+        self.units = unit_system(self.mech, units)
         #: angle columns: "continuous" (along the positions) or "wrapped" to [0°, 360°)
         self.angles = angles or tabs.get("angles", "continuous")
         #: analogs of a crank angle: per its "coordinate", or along its "rotation"
