@@ -223,7 +223,7 @@ def _frame_basis(kin, link):
     return P, u, n
 
 
-def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=1000, popsize=30,
+def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=1000, popsize=15,
             tol=1e-10):
     """Counter-masses that minimise the amplitudes (or the area) of the common
     centre of mass over the positions of ``kin`` (one turn), within bounds.
@@ -302,9 +302,10 @@ def balance(kin, counter_masses, objective="amplitudes", seed=0, maxiter=1000, p
         z = z.reshape(len(cms), 3, -1)
         mu, a, b = z[:, 0], z[:, 1], z[:, 2]  # (C, S)
         w = np.stack([mu, mu * a, mu * b], 1).reshape(3 * len(cms), -1)  # (3C, S)
-        numer = N0[:, None, :] + np.einsum("cdn,cs->dsn", B, w)
+        numer = (w.T @ B.reshape(len(B), -1)).reshape(-1, 2, kin.n)  # (S, 2, n), one BLAS product
         Mt = M0 + mu.sum(0)
-        return numer[0] / Mt[:, None], numer[1] / Mt[:, None], Mt
+        return ((N0[0] + numer[:, 0]) / Mt[:, None], (N0[1] + numer[:, 1]) / Mt[:, None],
+                Mt)
 
     def cost(z):
         x, y, _ = path(z)
