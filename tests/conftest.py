@@ -10,7 +10,9 @@
 * Hypothesis profiles: ``ci`` (the default when ``CI`` is set, as in ``.ci/run``):
   derandomized — a fixed seed, the same examples on every run — and every property
   test at its full number of examples; ``dev`` (the default otherwise): random
-  seeds and a fifth of the examples (at least 10), for quick local runs. Choose one
+  seeds and a fifth of the examples (at least 10), for quick local runs; ``deep``:
+  random seeds, every example, and the property tests that report their worst error
+  ratio as a ``target`` hill-climb towards larger ones (a hunt by hand). Choose one
   with ``--hypothesis-profile=ci`` or ``ASSUR_HYPOTHESIS=ci``. Property tests size
   their example counts with :func:`tests.helpers.examples`.
 * Kernels are evaluated by numpy (``ASSUR_KERNELS=numpy`` unless set: the same emitted

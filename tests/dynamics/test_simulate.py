@@ -283,7 +283,10 @@ def test_crane_steady_speeds_are_the_dividers_split(crane):
     stiff = Circuit(tuple(dataclasses.replace(c, bulk_modulus=100 * c.bulk_modulus)
                           if c.role == "volume" else c for c in crane.drive.components))
     t = np.linspace(0.0, 2.0, 201)
-    r = simulate_model(dataclasses.replace(crane, drive=stiff), t_end=2.0, t_eval=t)
+    # BDF: on oil this stiff Radau's implicit stages take 3× as long (19 s against 6 s
+    # here) for the same speeds to 1e-6 m/s; the default method runs the other tests
+    r = simulate_model(dataclasses.replace(crane, drive=stiff), t_end=2.0, t_eval=t,
+                       method="BDF")
     assert r.status == 0, r.message
     win = (t >= 0.5) & (t <= 2.0)
     i0, i1 = np.flatnonzero(win)[[0, -1]]

@@ -25,13 +25,20 @@ SEEDS = SHARED / "seeds"
 
 settings.register_profile("ci", derandomize=True, deadline=None, print_blob=True)
 settings.register_profile("dev", deadline=None)
+settings.register_profile("deep", deadline=None, print_blob=True)
 #: the hypothesis profile of this run (see tests/conftest.py)
 PROFILE = os.environ.get("ASSUR_HYPOTHESIS") or ("ci" if os.environ.get("CI") else "dev")
+#: whether the property tests that report their worst error ratio as a hypothesis
+#: ``target`` also hill-climb towards larger ratios after generating their examples
+#: (``Phase.target``): in the ``deep`` profile only — a hunt for the worst case, run
+#: by hand (``ASSUR_HYPOTHESIS=deep``), which roughly doubles those tests' time
+TARGETING = PROFILE == "deep"
 
 
 def examples(n: int) -> int:
-    """Examples of a property test: ``n`` in the ``ci`` profile, n/5 (≥ 10) in ``dev``."""
-    return n if PROFILE == "ci" else max(10, n // 5)
+    """Examples of a property test: ``n`` in the ``ci`` and ``deep`` profiles, n/5 (≥ 10)
+    in ``dev``."""
+    return n if PROFILE in ("ci", "deep") else max(10, n // 5)
 
 
 def import_path(name: str, path: Path):
