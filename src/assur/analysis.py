@@ -41,6 +41,9 @@ class Analysis:
         What the analysis left out and why (e.g. masses without a crank speed).
     model_warnings : tuple of str
         The model file's warnings (unused parameters), shown in the report.
+    source : str or None
+        The model file's name (``hitch_003.toml``, no folders), when the analysis
+        is a model file's (:meth:`assur.io.Model.analyze`); shown in the report.
 
     Examples
     --------
@@ -67,6 +70,7 @@ class Analysis:
         self.lift_test = None
         self.notes = []
         self.model_warnings = ()
+        self.source = None
         #: the coordinate rates (q̇, q̈) of the statics (a rod's [motion]), or None
         self.rates = None
 

@@ -185,6 +185,7 @@ class Model:
         add_lift_test(analysis, self.lift_test)
         analysis.solved = tuple(self.solved)
         analysis.model_warnings = tuple(self.warnings)  # shown among the report's warnings
+        analysis.source = self.source.name if self.source else None  # the file, not its folders
         return analysis
 
     def _repr_html_(self):

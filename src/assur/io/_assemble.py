@@ -306,7 +306,7 @@ class Assembly:
             out["reactions"] = {n: tuple(v) for n, v in t.reactions.items()}
         if t.symbols is not None:
             out["symbols"] = dict(t.symbols)
-        for key in ("angles", "analogs", "second_order"):
+        for key in ("angles", "analogs", "second_order", "numbering"):
             if getattr(t, key) is not None:
                 out[key] = getattr(t, key)
         if t.dead_loads is not None:  # links whose loads every capacity carries

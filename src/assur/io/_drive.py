@@ -145,6 +145,18 @@ def _si(builder, mech, path, v, kind, flag=None):
     return float(mech.params[si]) if isinstance(si, str) else float(si)
 
 
+def _shown_name(builder, path, v):
+    """A component's name as the reader sees it (:class:`assur.texts.Text` for a table
+    of languages), or the builder's located error."""
+    from pydantic_core import PydanticCustomError
+
+    from ._schema_values import _shown_name as shown
+    try:
+        return shown(v)
+    except PydanticCustomError as e:
+        raise builder.error(path, e.message()) from None
+
+
 def _component(builder, mech, types, entry, at):
     if not isinstance(entry, dict):
         raise builder.error(at, "expected a table (a [[drive]] entry)")
@@ -179,6 +191,8 @@ def _component(builder, mech, types, entry, at):
             if not isinstance(v, list):
                 raise builder.error(path, f"expected a list of numbers, found {S.show(v)}")
             kw[key] = tuple(_si(builder, mech, path + (j,), x, NUMBER) for j, x in enumerate(v))
+        elif key == "name":  # a name shown in reports: a string or { en = …, ru = … }
+            kw[key] = _shown_name(builder, path, v)
         else:
             if not isinstance(v, str):
                 raise builder.error(path, f"expected a string, found {S.show(v)}")

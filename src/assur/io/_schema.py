@@ -213,6 +213,9 @@ class TablesSpec(_Table):
     dead_loads: list[Name] = None
     #: second-order analogs (ddphi, dd<distance>, dU) in table 3.1
     second_order: StrictBool = None
+    #: how the report numbers its tables: "report" (1, 2, … in the report's order, the
+    #: default) or "seed" (the seed worksheet's numbers 2.1 … 6.1: the seed-003 hitch)
+    numbering: typing.Literal["report", "seed"] = None
 
 
 class DisplaySpec(_Table):

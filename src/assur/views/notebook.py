@@ -123,7 +123,7 @@ def _tables_html(tables, lang="en") -> str:
                                         for c in t.columns) + "</tr>"
                        for i in range(min(n, MAX_ROWS)))
         more = f"<p>… {n - MAX_ROWS} more rows</p>" if n > MAX_ROWS else ""
-        out.append(f"<h4>{word} {escape(t.id)}. {escape(t.title(lang))}</h4>"
+        out.append(f"<h4>{word} {escape(t.label)}. {escape(t.title(lang))}</h4>"
                    f"<table><tr>{head}</tr>{body}</table>{more}")
     return "".join(out)
 

@@ -308,13 +308,16 @@ def test_only_tables_whose_data_exist(tmp_path):
     a = lift_without_loads().analyze(np.linspace(0.42, 0.67, 6))
     assert [t.id for t in seed_tables(a)] == ["2.1", "2.2", "3.1"]
     files = write_report(a, tmp_path / "lift", formats=("csv", "html", "png"), frames=4)
-    assert sorted(p.name for p in files["csv"]) == ["table_2_1.csv", "table_2_2.csv",
-                                                    "table_3_1.csv"]
+    # numbered in the report's order, named by what they hold (no [tables] numbering)
+    assert sorted(p.name for p in files["csv"]) == [
+        "table_1_geometric_analysis_link_angles.csv",
+        "table_2_geometric_analysis_point_coordinates.csv",
+        "table_3_kinematic_analysis_transfer_ratios_transmission.csv"]
     figs = {p.name for p in files["png"]}
     assert {"fig_angles.png", "fig_analogs.png", "mechanism.png"} <= figs
     assert not figs & {"fig_capacity.png", "fig_reactions.png", "fig_stability.png"}
     text = (tmp_path / "lift" / "report.html").read_text(encoding="utf-8")
-    assert "Table 4.1" not in text and "Table 2.1" in text
+    assert "Table 4" not in text and "Table 1 — Geometric analysis: link angles" in text
 
 
 def crank_rocker(positions):

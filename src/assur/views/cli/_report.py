@@ -161,7 +161,7 @@ def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
         first, rest = t.columns[0], t.columns[1:]
         for k in range(0, max(len(rest), 1), max(columns, 1)):
             part = [first] + list(rest[k:k + columns])
-            rt = Table(title=f"{t.id} — {t.title(lang)}" if k == 0 else None,
+            rt = Table(title=f"{t.label} — {t.title(lang)}" if k == 0 else None,
                        header_style="bold", title_justify="left")
             for c in part:
                 rt.add_column(f"{c.symbol} [{unit_label(c.unit, lang)}]", justify="right",

@@ -536,6 +536,7 @@ def _table_json(t, lang):
     from ..report.labels import unit
     return {
         "id": t.id,
+        "label": t.label,
         "title": t.title(lang),
         "columns": [{"symbol": c.symbol, "unit": unit(c.unit, lang),
                      "label": c.label.get(lang, ""),

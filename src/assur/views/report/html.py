@@ -183,7 +183,8 @@ def _table_view(tab, lang):
         cols.append(dict(symbol=c.symbol + mark, unit=unit(c.unit, lang), tip=tip))
         shown.append((c, decimals(c.values)))
     rows = [[number(c.values[i], d, lang) for c, d in shown] for i in range(len(tab))]
-    return dict(id=tab.id, anchor=_anchor("table-", tab.id), title=tab.title(lang), cols=cols,
+    return dict(id=tab.id, label=tab.label, anchor=_anchor("table-", tab.id),
+                title=tab.title(lang), cols=cols,
                 rows=rows, notes=checks + [n.get(lang, n.get("en", "")) for n in tab.notes])
 
 
@@ -248,7 +249,7 @@ def _warnings(analysis, tables, lang):
             txt = n.get(lang, n.get("en", ""))
             if txt not in seen and n.get("en") not in seen:
                 seen.add(txt)
-                other.append(f"{t('table', lang)} {tab.id}: {txt}")
+                other.append(f"{t('table', lang)} {tab.label}: {txt}")
     groups.append((t("table_notes", lang), other))
     return [dict(title=g, entries=items) for g, items in groups if items]
 
@@ -301,6 +302,8 @@ def model_inputs(analysis, lang="en", units=None) -> list:
     >>> sections = model_inputs(a)
     >>> [h for h, _ in sections]
     ['Model', 'Generalized coordinates', 'Parameters', 'Design conditions solved (Given/Find)']
+    >>> sections[0][1][-1]   # the file, not its folders
+    ('model file', 'hitch_003.toml')
     >>> params = dict((n, (v, u)) for n, v, u in sections[2][1])
     >>> params["P6"], round(params["L4"][0], 9), params["L4"][1]  # as given; L4 solved [m]
     ((27.5, 'kN'), 0.661283167, 'm')
@@ -318,7 +321,10 @@ def model_inputs(analysis, lang="en", units=None) -> list:
         value = float(units[n].of(a.reshape(-1)[0])) if a.size == 1 else \
             parameter_value(v, units[n], lang)
         params.append((n, value, _unit_text(units[n], lang)))
-    out = [(t("summary", lang), [(localize(mech.title, lang),), (mech.name,)]),
+    model = [(localize(mech.title, lang),), (mech.name,)]
+    if getattr(analysis, "source", None):
+        model.append((t("model_file", lang), analysis.source))
+    out = [(t("summary", lang), model),
            (t("coordinates", lang), [(c,) for c in s["coords"]]),
            (t("parameters", lang), [(t("name", lang), t("value", lang), t("unit", lang))]
             + params)]
@@ -369,6 +375,7 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     mech = analysis.mechanism
     return tpl.render(
         lang=lang, L=L, css=stylesheet(), title=localize(mech.title, lang), name=mech.name,
+        source=getattr(analysis, "source", None),
         summary=_summary(analysis, lang, du),
         tables=[_table_view(tab, lang) for tab in tables],
         figures=_figure_items(dict(figures), lang),

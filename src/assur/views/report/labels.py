@@ -18,6 +18,7 @@ LANGS = ("en", "ru")
 TEXT = {
     # report structure
     "report": {"en": "Analysis report", "ru": "Отчёт о расчёте"},
+    "model_file": {"en": "model file", "ru": "файл модели"},
     "contents": {"en": "Contents", "ru": "Содержание"},
     "verdicts": {"en": "Verdicts", "ru": "Выводы"},
     "status_ok": {"en": "met", "ru": "выполнено"},

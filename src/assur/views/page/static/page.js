@@ -398,7 +398,7 @@ function currentTable() {
 function buildTableSelect(tables) {
   const s = $("table-select");
   s.textContent = "";
-  for (const t of tables) s.appendChild(h("option", {value: t.id}, `${t.id} — ${t.title}`));
+  for (const t of tables) s.appendChild(h("option", {value: t.id}, `${t.label} — ${t.title}`));
   s.value = state.table;
 }
 
@@ -422,7 +422,7 @@ function renderTable() {
   tab.textContent = "";
   $("table-notes").textContent = "";
   if (!t) return;
-  $("table-notes").appendChild(h("h3", {}, `${T("table")} ${t.id}. ${t.title}`));
+  $("table-notes").appendChild(h("h3", {}, `${T("table")} ${t.label}. ${t.title}`));
   for (const n of t.notes) if (n) $("table-notes").appendChild(h("p", {}, n));
   const head = h("tr");
   for (const c of t.columns)
@@ -472,7 +472,7 @@ function buildPlotSelect(tables) {
   s.appendChild(h("option", {value: ""}, "+ " + T("add_plot")));
   const nc = state.data.coordinates.length;
   for (const t of tables) {
-    const og = h("optgroup", {label: `${t.id} — ${t.title}`});
+    const og = h("optgroup", {label: `${t.label} — ${t.title}`});
     for (const c of t.columns.slice(nc))
       og.appendChild(h("option", {value: `${t.id}\u0000${c.symbol}`}, `${c.symbol} [${c.unit}]`));
     s.appendChild(og);

@@ -12,7 +12,7 @@ from ._kinematics import _table_2_1, _table_2_2, _table_3_1, _table_ic
 from ._machines import _table_6_1, _table_d, _table_l
 from ._view import _View
 
-__all__ = ["seed_tables"]
+__all__ = ["seed_tables", "numbered", "NUMBERINGS"]
 
 #: id of the table of extra formulas that name no table
 FORMULAS_ID = "F"
@@ -78,7 +78,36 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None,
     tables = _unique(v, _with_signs(v, tables))
     if units is not None:
         tables = [in_units(t, v.units) for t in tables]
-    return tables
+    return numbered(tables, analysis.mechanism.tables.get("numbering", "report"))
+
+
+#: how tables may be numbered (``[tables] numbering``)
+NUMBERINGS = ("report", "seed")
+
+
+def numbered(tables, numbering="report") -> list:
+    """``tables`` with the numbers the report shows (:attr:`Table.label`): 1, 2, … in
+    their order (``"report"``), or the seed-003 worksheet's ids 2.1 … 6.1 (``"seed"``,
+    the bundled hitch's ``[tables] numbering``).
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.report.tables import numbered, seed_tables
+    >>> tabs = seed_tables(examples.hitch_003().analyze(examples.hitch_003_range()))
+    >>> [t.label for t in tabs]  # hitch_003.toml: numbering = "seed"
+    ['2.1', '2.2', '3.1', '4.1', '5.1', '6.1', 'IC']
+    >>> [t.label for t in numbered(tabs)]
+    ['1', '2', '3', '4', '5', '6', '7']
+    >>> numbered(tabs, "page")
+    Traceback (most recent call last):
+    ...
+    ValueError: numbering must be one of: ['report', 'seed']; got 'page'
+    """
+    if numbering not in NUMBERINGS:
+        raise ValueError(f"numbering must be one of: {list(NUMBERINGS)}; got {numbering!r}")
+    return [dataclasses.replace(t, number=t.id if numbering == "seed" else str(k))
+            for k, t in enumerate(tables, start=1)]
 
 
 def _unique(v, tables):

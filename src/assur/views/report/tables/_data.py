@@ -104,6 +104,10 @@ class Table:
         The first column(s) are the generalized coordinate(s).
     notes : tuple of dict
         Notes by language (singular positions, seed signs, flagged formulas).
+    number : str
+        The number the report shows (``"3"``; the seed-003 hitch: ``"4.1"``, its
+        worksheet's), given by :func:`seed_tables` from ``[tables] numbering``;
+        empty: the id. :attr:`label` is the one shown.
 
     Examples
     --------
@@ -121,6 +125,21 @@ class Table:
     titles: dict
     columns: tuple
     notes: tuple = ()
+    number: str = ""
+
+    @property
+    def label(self) -> str:
+        """The number the report shows (:attr:`number`, else the :attr:`id`).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.views.report import seed_tables
+        >>> tabs = seed_tables(io.load(io.bundled("loader_lab1")).analyze())
+        >>> [(t.id, t.label) for t in tabs][:4]  # numbered in the report's order
+        [('2.1', '1'), ('2.2', '2'), ('3.1', '3'), ('4.1', '4')]
+        """
+        return self.number or self.id
 
     def title(self, lang="en") -> str:
         """The title in ``lang`` ("en" or "ru").

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -15,19 +16,31 @@ __all__ = ["table_filename", "write_csv", "write_xlsx", "sheet_name", "number_fo
 
 
 def table_filename(table, ext="csv") -> str:
-    """``table_2_1.csv``, ``table_ic.csv``.
+    """The file of a table: its number as the report shows it (:attr:`Table.label`) and
+    what it holds — ``table_4_cylinders_force_and_pressure.csv``; a table numbered as
+    its seed's worksheet (``[tables] numbering = "seed"``) by that number alone,
+    ``table_2_1.csv``, ``table_ic.csv``.
 
     Examples
     --------
-    >>> from assur import examples
+    >>> from assur import examples, io
     >>> from assur.views.report import seed_tables
     >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
     >>> [table_filename(t) for t in seed_tables(a)][::3]
     ['table_2_1.csv', 'table_4_1.csv', 'table_ic.csv']
     >>> table_filename(seed_tables(a)[0], "xlsx")
     'table_2_1.xlsx'
+    >>> tabs = seed_tables(io.load(io.bundled("steering_lab4")).analyze())
+    >>> [table_filename(t) for t in tabs][:2]
+    ['table_1_geometric_analysis_link_angles.csv', 'table_2_geometric_analysis_point_coordinates.csv']
     """
-    return f"table_{table.id.replace('.', '_').lower()}.{ext}"
+    if not table.number or table.number == table.id:
+        return f"table_{table.id.replace('.', '_').lower()}.{ext}"
+    words = re.findall(r"[a-z0-9]+", table.title("en").lower())
+    slug = "_".join(words)
+    if len(slug) > 48:  # whole words
+        slug = slug[:49].rsplit("_", 1)[0]
+    return f"table_{table.number.replace('.', '_')}{'_' + slug if slug else ''}.{ext}"
 
 
 def _cell(v, lang="en"):
@@ -93,7 +106,7 @@ _SHEET_BAD = set('[]:*?/\\')
 
 
 def sheet_name(table, lang="en", taken=()) -> str:
-    """The sheet of ``table``: its id and the words of its title that Excel's 31
+    """The sheet of ``table``: its number and the words of its title that Excel's 31
     characters hold (without the characters Excel refuses), unique among ``taken``.
 
     Examples
@@ -106,11 +119,11 @@ def sheet_name(table, lang="en", taken=()) -> str:
     >>> sheet_name(seed_tables(a)[3], "ru")
     '4.1 Результаты анализа на'
     """
-    text = "".join(ch for ch in f"{table.id} {table.title(lang)}" if ch not in _SHEET_BAD)
+    text = "".join(ch for ch in f"{table.label} {table.title(lang)}" if ch not in _SHEET_BAD)
     name = " ".join(text.split())
-    if len(name) > 31:  # whole words (the id at least)
+    if len(name) > 31:  # whole words (the number at least)
         cut = name[:32].rfind(" ")
-        name = name[:cut] if cut > len(table.id) else name[:31]
+        name = name[:cut] if cut > len(table.label) else name[:31]
     k = 2
     base = name
     while name in taken:
@@ -215,7 +228,7 @@ def write_xlsx(tables, path, lang="en", inputs=None) -> Path:
     for tab in tables:
         ws = wb.create_sheet(sheet_name(tab, lang, taken))
         taken.append(ws.title)
-        ws.append([f"{t('table', lang)} {tab.id} — {tab.title(lang)}"])
+        ws.append([f"{t('table', lang)} {tab.label} — {tab.title(lang)}"])
         ws["A1"].font = title_font
         ws.append([c.symbol for c in tab.columns])
         ws.append([unit(c.unit, lang) for c in tab.columns])
