@@ -21,7 +21,7 @@ def _placeholders(mech=None):
     """What each placeholder of the reference stands for in ``mech`` (its coordinates,
     points, links, axles); ``<formula>`` is the model's own and checked by name."""
     if mech is None:
-        return {"<name>": r"\w+", "<formula>": None}
+        return {"<name>": r"\w+", "<formula>": None, "<n>": "[0-9]+"}
     links = [l.name for l in mech.links] + list(mech.bodies)
     axles = list(mech.machine.machine.axles) if mech.machine is not None else []
     springs = [ld.name for ld in mech.loads if type(ld).__name__ == "Spring"]
@@ -30,7 +30,8 @@ def _placeholders(mech=None):
             "<axle>": _alt([a.lower() for a in axles] + axles) if axles else "(?!)",
             "<d>": _alt([d.name for d in mech.distances]) if mech.distances else "(?!)",
             "<s>": _alt(springs) if springs else "(?!)",
-            "<formula>": None, "<name>": r"\w+", "<value>": r"-?[0-9][0-9.e+-]*"}
+            "<formula>": None, "<name>": r"\w+", "<value>": r"-?[0-9][0-9.e+-]*",
+            "<n>": "[0-9]+"}
 
 
 def _patterns(section, mech=None):

@@ -310,9 +310,7 @@ def test_only_tables_whose_data_exist(tmp_path):
     files = write_report(a, tmp_path / "lift", formats=("csv", "html", "png"), frames=4)
     # numbered in the report's order, named by what they hold (no [tables] numbering)
     assert sorted(p.name for p in files["csv"]) == [
-        "table_1_geometric_analysis_link_angles.csv",
-        "table_2_geometric_analysis_point_coordinates.csv",
-        "table_3_kinematic_analysis_transfer_ratios_transmission.csv"]
+        "table_1_link_angles.csv", "table_2_points.csv", "table_3_analogs.csv"]
     figs = {p.name for p in files["png"]}
     assert {"fig_angles.png", "fig_analogs.png", "mechanism.png"} <= figs
     assert not figs & {"fig_capacity.png", "fig_reactions.png", "fig_stability.png"}

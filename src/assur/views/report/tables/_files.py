@@ -12,12 +12,20 @@ import numpy as np
 
 from ..labels import t, unit
 
-__all__ = ["table_filename", "write_csv", "write_xlsx", "sheet_name", "number_format"]
+__all__ = ["TABLE_CONTENTS", "table_filename", "write_csv", "write_xlsx", "sheet_name",
+           "number_format"]
+
+
+#: what each table holds, in a file name (by the table's id)
+TABLE_CONTENTS = {"2.1": "link_angles", "2.2": "points", "3.1": "analogs", "4.1": "cylinders",
+            "G": "capacity_maps", "5.1": "reactions", "5.2": "reactions_with_inertia",
+            "D": "crank_dynamics", "6.1": "axle_loads", "IC": "ic_check", "L": "lift_test",
+            "F": "formulas"}
 
 
 def table_filename(table, ext="csv") -> str:
     """The file of a table: its number as the report shows it (:attr:`Table.label`) and
-    what it holds — ``table_4_cylinders_force_and_pressure.csv``; a table numbered as
+    what it holds (:data:`TABLE_CONTENTS`) — ``table_4_cylinders.csv``; a table numbered as
     its seed's worksheet (``[tables] numbering = "seed"``) by that number alone,
     ``table_2_1.csv``, ``table_ic.csv``.
 
@@ -31,16 +39,13 @@ def table_filename(table, ext="csv") -> str:
     >>> table_filename(seed_tables(a)[0], "xlsx")
     'table_2_1.xlsx'
     >>> tabs = seed_tables(io.load(io.bundled("steering_lab4")).analyze())
-    >>> [table_filename(t) for t in tabs][:2]
-    ['table_1_geometric_analysis_link_angles.csv', 'table_2_geometric_analysis_point_coordinates.csv']
+    >>> [table_filename(t) for t in tabs][:4]
+    ['table_1_link_angles.csv', 'table_2_points.csv', 'table_3_analogs.csv', 'table_4_cylinders.csv']
     """
     if not table.number or table.number == table.id:
         return f"table_{table.id.replace('.', '_').lower()}.{ext}"
-    words = re.findall(r"[a-z0-9]+", table.title("en").lower())
-    slug = "_".join(words)
-    if len(slug) > 48:  # whole words
-        slug = slug[:49].rsplit("_", 1)[0]
-    return f"table_{table.number.replace('.', '_')}{'_' + slug if slug else ''}.{ext}"
+    what = TABLE_CONTENTS.get(table.id, re.sub(r"\W+", "_", table.id.lower()))
+    return f"table_{table.number.replace('.', '_')}_{what}.{ext}"
 
 
 def _cell(v, lang="en"):
