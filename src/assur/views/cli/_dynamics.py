@@ -37,7 +37,7 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
         _fail(f"{file}: {e}")
     try:
         files = write_simulation_report(result, out, localize(model.mechanism.title, lang),
-                                        lang, mechanism=model.mechanism)
+                                        lang, model=model)
     except OSError as e:
         _fail(f"{output}: cannot write the report: {e.strerror or e}")
     if not result.success:

@@ -50,7 +50,6 @@ from ._canvas import new_figure, titled_axes, to_png_bytes
 from ._cycles_text import _T, _t, verdict_word
 from ._cycles_verdicts import (ABOUT, EFFECTIVE, PAPER, SEPARATE, Verdict, _by, conclusions,
                                drive_sweep, pump_conclusions)
-from .html import data_uri
 from .labels import check_lang, unit
 from .tables import Column, Table, write_csv, write_xlsx
 
@@ -194,43 +193,6 @@ def figures(df, lang="en"):
     return out
 
 
-_TEMPLATE = """<!doctype html>
-<html lang="{{ lang }}"><head><meta charset="utf-8"><title>{{ title }}</title>
-<style>body{font-family:sans-serif;max-width:64em;margin:auto;padding:0 1em}
-table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;padding:2px 6px;
-text-align:right}td.l,th.l{text-align:left}.yes{color:#060;font-weight:bold}
-.no{color:#a00;font-weight:bold}img{max-width:100%}</style></head><body>
-<h1>{{ report }}</h1><h2>{{ title }}</h2>
-<section id="conclusions"><h2>{{ L.conclusions }}</h2>
-<table><tr><th class="l">{{ L.claim }}</th><th class="l">{{ L.model }}</th>
-<th class="l">{{ L.verdict }}</th><th class="l">{{ L.why }}</th></tr>
-{% for v in verdicts %}<tr><td class="l">{{ v.claim }}</td><td class="l">{{ v.model }}</td>
-<td class="l {{ 'yes' if v.agrees else 'no' }}">{{ L.agrees if v.agrees else L.disagrees }}</td>
-<td class="l">{{ v.why }}</td></tr>
-{% endfor %}</table><p>{{ criteria }}</p></section>
-<section id="slips"><h2>{{ L.slips }}</h2><ul>{% for n in notes %}<li>{{ n }}</li>{% endfor %}
-</ul></section>
-<section id="drive"><h2>{{ L.drive }}</h2>
-<table><tr><th class="l"></th><th class="l"></th><th>f [{{ m2 }}]</th>
-<th>{{ L.combined }} [{{ ms }}]</th><th>{{ L.separate }} [{{ ms }}]</th></tr>
-{% for r in drive %}<tr><td class="l">{{ r[0] }}</td><td class="l">{{ r[1] }}</td>
-<td>{{ "%.4g"|format(r[2]) }}</td><td>{{ "%.3f"|format(r[3]) }}</td>
-<td>{{ "%.3f"|format(r[4]) }}</td></tr>{% endfor %}</table></section>
-<section id="figures"><h2>{{ L.figures }}</h2>
-{% for f in figures %}<figure><img alt="{{ f.name }}" src="{{ f.uri }}"></figure>{% endfor %}
-</section>
-<section id="tables"><h2>{{ L.tables }}</h2>
-{% for tab in tables %}<h3>{{ tab.title }}</h3><table><tr>{% for h in tab.header %}
-<th>{{ h }}</th>{% endfor %}</tr>{% for row in tab.rows %}<tr>{% for x in row %}
-<td>{{ x }}</td>{% endfor %}</tr>{% endfor %}</table>{% endfor %}</section>
-</body></html>
-"""
-
-
-def _cell(x, u):
-    return f"{x:.0f}" if u == "N" else (f"{x:.3f}" if u == "-" else f"{x:.4g}")
-
-
 def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png", "html"),
                         periods=PERIODS, g=None):
     """Seed 004's sweep of a model with a drive (every scenario, T_c = 4…20 s; the
@@ -267,7 +229,6 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
     ...
     assur.errors.ModelError: model 'hitch_003' has no hydraulic drive: its cycle runs between ...
     """
-    import jinja2
     import pandas as pd
 
     from ...errors import ModelError
@@ -307,26 +268,43 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
             p.write_bytes(data)
             files.append(p)
     if "html" in formats:
-        coords = model.drive.coordinates
-        stroke_text = "; ".join(f"{c}: {a:.4g} → {b:.4g} {unit('m', lang)}"
-                                for c, a, b in zip(coords, start, end))
-        L = {k: localize(v, lang) for k, v in _T.items()}
-        drive = [(c, _t(side, lang), f, vc, vs) for c, side, f, vc, vs in
-                 drive_speeds(model.drive)]
-        views = [{"title": tab.title(lang), "header": [c.header for c in tab.columns],
-                  "rows": [[_cell(x, c.unit) for x, c in zip(row, tab.columns)]
-                           for row in zip(*(c.values for c in tab.columns))]}
-                 for tab in tabs]
-        env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined)
-        text = env.from_string(_TEMPLATE).render(
-            lang=lang, L=L, report=L["report"], title=localize(model.mechanism.title, lang),
-            verdicts=verdicts, criteria=_t("criteria", lang, 100 * ABOUT, 100 * EFFECTIVE,
-                                           stroke_text),
-            notes=[localize(n, lang) for n in model.mechanism.notes],
-            drive=drive, m2=unit("m²", lang), ms=unit("m/s", lang),
-            figures=[{"name": n, "uri": data_uri(d)} for n, d in pngs.items()],
-            tables=views)
         p = out / "cycles.html"
-        p.write_text(text, encoding="utf-8")
+        p.write_text(_document(model, lang, start, end, verdicts, tabs, figs, pngs),
+                     encoding="utf-8")
         files.append(p)
     return df, verdicts, files
+
+
+def _document(model, lang, start, end, verdicts, tabs, figs, pngs):
+    """The work-cycle report as a document (:mod:`assur.views.report.document`): the
+    model's inputs and drive, the paper's conclusions as verdicts (agrees: ok, does
+    not: fail) with the criteria, the drive's rod speeds, the numbered tables and
+    figures, the paper's slips among the notes."""
+    from .document import drive_rows, model_rows, render_document
+    from .numbers import number
+    L = {k: localize(v, lang) for k, v in _T.items()}
+    source = model.source.name if model.source else None
+    coords = model.drive.coordinates
+    stroke_text = "; ".join(f"{c}: {number(a, None, lang)} → {number(b, None, lang)} "
+                            f"{unit('m', lang)}" for c, a, b in zip(coords, start, end))
+    marks = [{"status": "ok" if v.agrees else "fail", "href": None,
+              "text": f"{L['claim']}: {v.claim} {L['model']}: {v.model} — "
+                      f"{L['agrees'] if v.agrees else L['disagrees']}: {v.why}"}
+             for v in verdicts]
+    drive = [(c, _t(side, lang), number(f, None, lang), number(vc, 3, lang),
+              number(vs, 3, lang)) for c, side, f, vc, vs in drive_speeds(model.drive)]
+    sections = [{"anchor": "drive-speeds", "title": L["drive"],
+                 "header": ("", "", f"f [{unit('m²', lang)}]",
+                            f"{L['combined']} [{unit('m/s', lang)}]",
+                            f"{L['separate']} [{unit('m/s', lang)}]"),
+                 "rows": drive, "notes": []}]
+    return render_document(
+        lang=lang, title=localize(model.mechanism.title, lang), kind=L["report"],
+        name=model.name, source=source,
+        inputs=model_rows(model.mechanism, lang, source=source)
+        + [drive_rows(model.drive, lang, mechanism=model.mechanism)],
+        verdicts=marks, verdicts_title=L["conclusions"],
+        verdicts_notes=[_t("criteria", lang, 100 * ABOUT, 100 * EFFECTIVE, stroke_text)],
+        sections=sections, tables=tabs,
+        figures={n: (d, figs[n].axes[0].get_title()) for n, d in pngs.items()},
+        notes=[localize(n, lang) for n in model.mechanism.notes])

@@ -44,7 +44,7 @@ def _kind(g, lang):
     return g.kind if lang == "en" else g.kind_ru
 
 
-def _unit_text(u, lang):
+def unit_text(u, lang):
     """A display unit as a parameter's row shows it (``°`` for degrees)."""
     return "°" if u.is_degrees else unit(u.text, lang)
 
@@ -53,7 +53,7 @@ def _summary(analysis, lang, du):
     mech = analysis.mechanism
     kin = analysis.kinematics
     units = parameter_units(mech, du)
-    params = [(n, parameter_value(v, units[n], lang), _unit_text(units[n], lang))
+    params = [(n, parameter_value(v, units[n], lang), unit_text(units[n], lang))
               for n, v in mech.params.items()]
     coords = []
     for c in kin.coordinates:
@@ -169,7 +169,10 @@ def _dynamics_lines(analysis, lang, du):
 CLOSURE = "closure"
 
 
-def _table_view(tab, lang):
+def table_view(tab, lang):
+    """A table as the reports show it (:attr:`Table.label`, title, symbols with their
+    units, every number with its column's decimals, the closure residuals as one check
+    line among the notes), for the templates."""
     cols, shown, checks = [], [], []
     for c in tab.columns:
         if c.symbol == CLOSURE:  # noise of 1e-16: one line, not a column
@@ -188,7 +191,10 @@ def _table_view(tab, lang):
                 rows=rows, notes=checks + [n.get(lang, n.get("en", "")) for n in tab.notes])
 
 
-def _figure_items(figures, lang):
+def figure_items(figures, lang):
+    """``{name: Figure or PNG bytes or (either, caption)}`` as the templates' numbered
+    figures: anchor, ``data:`` URI and the caption "Figure k — …" (a figure's caption
+    by default: its first axes' title)."""
     from ._canvas import to_png_bytes
 
     items = []
@@ -256,14 +262,15 @@ def _warnings(analysis, tables, lang):
 
 
 
-@lru_cache(maxsize=1)
-def _template():
-    """The report's jinja2 template (``report.html.j2`` beside this module)."""
+@lru_cache(maxsize=None)
+def template(name="report.html.j2"):
+    """A jinja2 template of the reports beside this module: ``report.html.j2`` (the
+    analysis) or ``document.html.j2`` (:mod:`assur.views.report.document`)."""
     import jinja2
 
     env = jinja2.Environment(loader=jinja2.PackageLoader("assur.views.report", ""),
                              autoescape=True, undefined=jinja2.StrictUndefined)
-    return env.get_template("report.html.j2")
+    return env.get_template(name)
 
 
 def stylesheet() -> str:
@@ -320,7 +327,7 @@ def model_inputs(analysis, lang="en", units=None) -> list:
         # a number in its display unit, every digit; a batch of designs: count and span
         value = float(units[n].of(a.reshape(-1)[0])) if a.size == 1 else \
             parameter_value(v, units[n], lang)
-        params.append((n, value, _unit_text(units[n], lang)))
+        params.append((n, value, unit_text(units[n], lang)))
     model = [(localize(mech.title, lang),), (mech.name,)]
     if getattr(analysis, "source", None):
         model.append((t("model_file", lang), analysis.source))
@@ -370,15 +377,15 @@ def render_html(analysis, lang="en", figures=None, tables=None, drawing=None, an
     if drawing is not False:
         png = drawing if isinstance(drawing, (bytes, bytearray)) else _figures.to_png_bytes(drawing)
         drawing_uri = data_uri(bytes(png))
-    tpl = _template()
+    tpl = template()
     L = {k: v[lang] for k, v in TEXT.items()}
     mech = analysis.mechanism
     return tpl.render(
         lang=lang, L=L, css=stylesheet(), title=localize(mech.title, lang), name=mech.name,
         source=getattr(analysis, "source", None),
         summary=_summary(analysis, lang, du),
-        tables=[_table_view(tab, lang) for tab in tables],
-        figures=_figure_items(dict(figures), lang),
+        tables=[table_view(tab, lang) for tab in tables],
+        figures=figure_items(dict(figures), lang),
         drawing=drawing_uri,
         player=(_drawing.player(animation, lang, interval) if animation else None),
         warnings=_warnings(analysis, tables, lang),

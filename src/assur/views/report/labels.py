@@ -19,6 +19,25 @@ TEXT = {
     # report structure
     "report": {"en": "Analysis report", "ru": "Отчёт о расчёте"},
     "model_file": {"en": "model file", "ru": "файл модели"},
+    "inputs_section": {"en": "Inputs", "ru": "Исходные данные"},
+    "sim_results": {"en": "Events and energy balance", "ru": "События и баланс энергии"},
+    "quantity": {"en": "quantity", "ru": "величина"},
+    "motion": {"en": "The mechanism in motion", "ru": "Движение механизма"},
+    "drive_section": {"en": "Hydraulic drive", "ru": "Гидропривод"},
+    "component": {"en": "component", "ru": "элемент"},
+    "drive_gear_pump": {"en": "gear pump", "ru": "шестерённый насос"},
+    "drive_relief_valve": {"en": "relief valve", "ru": "предохранительный клапан"},
+    "drive_directional_valve": {"en": "directional valve", "ru": "распределитель"},
+    "drive_line": {"en": "line", "ru": "трубопровод"},
+    "drive_line_losses": {"en": "line losses", "ru": "потери в магистрали"},
+    "drive_oil_volume": {"en": "oil volume", "ru": "объём жидкости"},
+    "drive_cylinder": {"en": "cylinder", "ru": "гидроцилиндр"},
+    "drive_flow_divider": {"en": "flow divider", "ru": "делитель потока"},
+    "drive_position_raise": {"en": "raise (to the piston side)",
+                             "ru": "подъём (в поршневую полость)"},
+    "drive_position_lower": {"en": "lower (to the rod side)", "ru": "опускание (в штоковую полость)"},
+    "key": {"en": "key", "ru": "ключ"},
+    "title": {"en": "title", "ru": "название"},
     "contents": {"en": "Contents", "ru": "Содержание"},
     "verdicts": {"en": "Verdicts", "ru": "Выводы"},
     "status_ok": {"en": "met", "ru": "выполнено"},
@@ -313,9 +332,9 @@ TEXT = {
     "sim_en_loads": {"en": "work against the loads", "ru": "работа против нагрузок"},
     "sim_en_oil": {"en": "work of compressing the oil", "ru": "работа сжатия жидкости"},
     "sim_en_residual": {"en": "residual of the balance", "ru": "невязка баланса"},
-    "sim_steady_line": {"en": "steady rod speed Q/A = {0:.4g} m/s; {1} evaluations of "
+    "sim_steady_line": {"en": "steady rod speed Q/A = {0} m/s; {1} evaluations of "
                               "the right-hand side",
-                        "ru": "установившаяся скорость штока Q/A = {0:.4g} м/с; "
+                        "ru": "установившаяся скорость штока Q/A = {0} м/с; "
                               "{1} вычислений правой части"},
     "renamed": {"en": "{0} is also a coordinate's name: this column is {1}",
                 "ru": "{0} — также имя обобщённой координаты: этот столбец назван {1}"},

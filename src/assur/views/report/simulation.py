@@ -20,15 +20,14 @@ figure the pump's pressure too, and ``reduced_mass`` shows the diagonal of M(q(t
 
 from __future__ import annotations
 
-import html
 from pathlib import Path
 
 import numpy as np
 
 from ...texts import Text, localize
 from ._canvas import new_figure, titled_axes, to_png_bytes
-from .html import data_uri
 from .labels import check_lang, t, unit
+from .numbers import number
 
 __all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
 
@@ -41,8 +40,8 @@ _TEXT = {
     "divider": Text("lost in the flow divider", ru="потери в делителе потока"),
     "pump": Text("pump pressure p_p = max p1", ru="давление насоса p_p = max p1"),
     "mass": Text("Diagonal of the mass matrix M_jj", ru="Диагональ матрицы масс M_jj"),
-    "steady": Text("steady rod speed s·Q/A of {0} = {1:.4g} m/s",
-                   ru="установившаяся скорость штока s·Q/A {0} = {1:.4g} м/с"),
+    "steady": Text("steady rod speed s·Q/A of {0} = {1} m/s",
+                   ru="установившаяся скорость штока s·Q/A {0} = {1} м/с"),
     "evals": Text("{0} evaluations of the right-hand side",
                   ru="{0} вычислений правой части"),
 }
@@ -212,29 +211,31 @@ def summary(result, lang="en"):
     rows = [(t("sim_status", lang, t("sim_reached", lang) if done else result.message),
              "", "")]
     if len(result.coordinates) == 1:
-        rows.append((t("sim_steady_line", lang, result.steady_speed, result.nfev), "", ""))
+        rows.append((t("sim_steady_line", lang, number(result.steady_speed, None, lang),
+                       result.nfev), "", ""))
         for name, times in result.events.items():
             for x in times:
-                rows.append((t(f"sim_ev_{name}", lang), f"{x:.4f}", unit("s", lang)))
+                rows.append((t(f"sim_ev_{name}", lang), number(x, 4, lang), unit("s", lang)))
     else:
         for c, v in zip(result.coordinates, result.steady_speed):
-            rows.append((_tx("steady", lang, c, v), "", ""))
+            rows.append((_tx("steady", lang, c, number(v, None, lang)), "", ""))
         rows.append((_tx("evals", lang, result.nfev), "", ""))
         for x, name, c in result.event_log:
-            rows.append((f"{t(f'sim_ev_{name}', lang)} ({c})", f"{x:.4f}", unit("s", lang)))
+            rows.append((f"{t(f'sim_ev_{name}', lang)} ({c})", number(x, 4, lang),
+                         unit("s", lang)))
     keys = ["pump", "relief", "line", "impact", "mechanism_kinetic", "line_kinetic", "loads",
             "oil", "residual"]
     if len(result.coordinates) > 1:
         keys.insert(2, "divider")
     for key in keys:
         label = _tx(key, lang) if key == "divider" else t(f"sim_en_{key}", lang)
-        rows.append((label, f"{result.energy[key]:.6g}", unit("J", lang)))
+        rows.append((label, number(result.energy[key], None, lang, 6), unit("J", lang)))
     return rows
 
 
 def write_simulation_report(result, outdir, title="", lang="en",
                             formats=("csv", "png", "html", "gif"), mechanism=None,
-                            frame_step=0.1):
+                            frame_step=0.1, model=None):
     """Write ``simulation.csv``, ``simulation_summary.csv``, the figures
     (``sim_<name>.png``), ``simulation.html`` (self-contained) and, given the
     ``mechanism``, its drawing at q(t) every ``frame_step`` seconds played in real
@@ -265,6 +266,9 @@ def write_simulation_report(result, outdir, title="", lang="en",
     'lift-off from the stop'
     """
     check_lang(lang)
+    if model is not None:
+        mechanism = model.mechanism if mechanism is None else mechanism
+        title = title or localize(model.mechanism.title, lang)
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files = []
@@ -281,7 +285,7 @@ def write_simulation_report(result, outdir, title="", lang="en",
     pngs = {name: to_png_bytes(f) for name, f in figs.items()}
     if "png" in formats:
         for name, data in pngs.items():
-            p = out / f"sim_{name}.png"
+            p = out / f"simulation_{name}.png"
             p.write_bytes(data)
             files.append(p)
     motion = None
@@ -307,25 +311,34 @@ def write_simulation_report(result, outdir, title="", lang="en",
         player_html = player(anim, lang, interval=frame_step * 1e3, bounce=False,
                              title=t("sim_motion", lang))
     if "html" in formats:
-        esc = html.escape
-        parts = [f"<!doctype html><html lang='{lang}'><head><meta charset='utf-8'>"
-                 f"<title>{esc(title or t('sim_report', lang))}</title>"
-                 "<style>body{font-family:sans-serif;max-width:60em;margin:auto}"
-                 "td{padding:2px 8px}img{max-width:100%}"
-                 "figure svg{max-width:100%;height:auto;border:1px solid #eaeef2}"
-                 ".player input{width:60%;vertical-align:middle}</style></head><body>",
-                 f"<h1>{esc(t('sim_report', lang))}</h1>",
-                 f"<h2>{esc(title)}</h2>" if title else "", "<table>"]
-        for label, value, u in summary(result, lang):
-            parts.append(f"<tr><td>{esc(label)}</td><td>{esc(value)}</td><td>{esc(u)}</td></tr>")
-        parts.append("</table>")
-        if player_html:
-            parts.append(player_html)
-        for name, data in pngs.items():
-            uri = data_uri(data)
-            parts.append(f"<figure><img alt='{esc(name)}' src='{uri}'></figure>")
-        parts.append("</body></html>")
         p = out / "simulation.html"
-        p.write_text("\n".join(parts), encoding="utf-8")
+        captioned = {name: (data, figs[name].axes[0].get_title()) for name, data in pngs.items()}
+        p.write_text(_document(result, title, lang, captioned, player_html, model, mechanism),
+                     encoding="utf-8")
         files.append(p)
     return files
+
+
+def _document(result, title, lang, figures, player_html, model, mechanism):
+    """The simulation report as a document (:mod:`assur.views.report.document`): the
+    model's inputs and its drive, the run's status as the verdict, the events and the
+    energy balance, the numbered figures and the motion."""
+    from .document import drive_rows, model_rows, render_document
+    source = model.source.name if model is not None and model.source else None
+    inputs = []
+    if mechanism is not None:
+        inputs += model_rows(mechanism, lang, source=source)
+        if model is not None and model.drive is not None:
+            inputs.append(drive_rows(model.drive, lang, mechanism=mechanism))
+    rows = summary(result, lang)
+    verdict = {"status": "ok" if result.status == 0 else "fail", "text": rows[0][0],
+               "href": "results"}
+    sections = [{"anchor": "results", "title": t("sim_results", lang),
+                 "header": (t("quantity", lang), t("value", lang), t("unit", lang)),
+                 "rows": rows[1:], "notes": []}]
+    notes = [localize(n, lang) for n in mechanism.notes] if mechanism is not None else []
+    return render_document(
+        lang=lang, title=title or t("sim_report", lang), kind=t("sim_report", lang),
+        name=mechanism.name if mechanism is not None else "", source=source, inputs=inputs,
+        verdicts=[verdict], sections=sections, figures=figures, player=player_html,
+        notes=notes)
