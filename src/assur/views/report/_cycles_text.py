@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from ...texts import Text, localize
-from .labels import check_lang
+from .labels import check_lang, formatted
 
 __all__ = ["verdict_word"]
 
@@ -175,4 +175,4 @@ def verdict_word(agrees, lang="en"):
 
 def _t(key, lang, *args):
     s = localize(_T[key], lang)
-    return s.format(*args) if args else s
+    return formatted(s, lang, *args) if args else s

@@ -92,20 +92,21 @@ def drive_rows(circuit, lang="en", units=None, mechanism=None) -> tuple:
             v = getattr(comp, f.name)
             if f.name == "name" or v is None:
                 continue
+            key = t(f"dk_{f.name}", lang) if f"dk_{f.name}" in TEXT else f.name
             q = comp.quantities.get(f.name)
             if q in _DRIVE_KINDS:
                 u = du[_DRIVE_KINDS[q]]
-                rows.append((who, f.name, number(float(u.of(float(v))), None, lang),
+                rows.append((who, key, number(float(u.of(float(v))), None, lang),
                              unit_text(u, lang)))
             elif isinstance(v, (int, float)) and not isinstance(v, bool):
-                rows.append((who, f.name, number(float(v), None, lang),
+                rows.append((who, key, number(float(v), None, lang),
                              unit(_SI.get(q, "-"), lang)))
             elif isinstance(v, tuple):
-                rows.append((who, f.name, "; ".join(number(float(x), None, lang) for x in v),
+                rows.append((who, key, "; ".join(number(float(x), None, lang) for x in v),
                              unit("-", lang)))
             else:  # a word of the file ("raise"), in the report's language where known
                 word = f"drive_{f.name}_{v}"
-                rows.append((who, f.name, t(word, lang) if word in TEXT else localize(v, lang),
+                rows.append((who, key, t(word, lang) if word in TEXT else localize(v, lang),
                              ""))
     return (t("drive_section", lang), (t("component", lang), t("key", lang), t("value", lang),
                                         t("unit", lang)), rows)

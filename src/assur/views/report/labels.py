@@ -8,7 +8,9 @@ language (``"м"``, ``"Н"`` in Russian).
 
 from __future__ import annotations
 
+import numbers
 import re
+import string
 
 from ...texts import Text, localize
 
@@ -25,6 +27,34 @@ TEXT = {
     "motion": {"en": "The mechanism in motion", "ru": "Движение механизма"},
     "drive_section": {"en": "Hydraulic drive", "ru": "Гидропривод"},
     "component": {"en": "component", "ru": "элемент"},
+    # the keys of a [[drive]] component: the file's key in English, its meaning in Russian
+    "dk_a1": {"en": "a1", "ru": "коэффициент a1 (инерция столба)"},
+    "dk_a2": {"en": "a2", "ru": "коэффициент a2 (ламинарные потери)"},
+    "dk_a3": {"en": "a3", "ru": "коэффициент a3 (турбулентные потери)"},
+    "dk_bore": {"en": "bore", "ru": "диаметр поршня"},
+    "dk_bulk_modulus": {"en": "bulk_modulus", "ru": "приведённый модуль упругости"},
+    "dk_coordinate": {"en": "coordinate", "ru": "обобщённая координата"},
+    "dk_count": {"en": "count", "ru": "число гидроцилиндров"},
+    "dk_density": {"en": "density", "ru": "плотность жидкости"},
+    "dk_diameter": {"en": "diameter", "ru": "внутренний диаметр"},
+    "dk_displacement": {"en": "displacement", "ru": "рабочий объём"},
+    "dk_dp_nominal": {"en": "dp_nominal", "ru": "номинальный перепад давления"},
+    "dk_eta_volumetric": {"en": "eta_volumetric", "ru": "объёмный КПД"},
+    "dk_fittings": {"en": "fittings", "ru": "местные сопротивления ΣK"},
+    "dk_length": {"en": "length", "ru": "длина"},
+    "dk_nominal_flow": {"en": "nominal_flow", "ru": "номинальный расход"},
+    "dk_position": {"en": "position", "ru": "позиция"},
+    "dk_regulation_range": {"en": "regulation_range", "ru": "диапазон регулирования"},
+    "dk_rod": {"en": "rod", "ru": "диаметр штока"},
+    "dk_roughness": {"en": "roughness", "ru": "шероховатость"},
+    "dk_s_min": {"en": "s_min", "ru": "длина на упоре (втянут)"},
+    "dk_s_max": {"en": "s_max", "ru": "длина на упоре (выдвинут)"},
+    "dk_setting": {"en": "setting", "ru": "давление настройки"},
+    "dk_share": {"en": "share", "ru": "доля расхода"},
+    "dk_shares": {"en": "shares", "ru": "доли расхода"},
+    "dk_speed": {"en": "speed", "ru": "частота вращения"},
+    "dk_viscosity": {"en": "viscosity", "ru": "кинематическая вязкость"},
+    "dk_volume": {"en": "volume", "ru": "объём"},
     "drive_gear_pump": {"en": "gear pump", "ru": "шестерённый насос"},
     "drive_relief_valve": {"en": "relief valve", "ru": "предохранительный клапан"},
     "drive_directional_valve": {"en": "directional valve", "ru": "распределитель"},
@@ -395,12 +425,40 @@ def check_lang(lang: str) -> str:
     return lang
 
 
+class _Numbers(string.Formatter):
+    """``str.format`` whose numbers take the decimal comma in Russian."""
+
+    def __init__(self, lang):
+        super().__init__()
+        self.lang = lang
+
+    def format_field(self, value, format_spec):
+        text = super().format_field(value, format_spec)
+        if self.lang == "ru" and isinstance(value, numbers.Real) and not isinstance(value, bool):
+            text = text.replace(".", ",")
+        return text
+
+
+def formatted(text: str, lang: str, *args) -> str:
+    """``text.format(*args)`` with every number in ``lang``'s notation (the decimal
+    comma in Russian) and a :class:`assur.texts.Text` argument in ``lang``.
+
+    Examples
+    --------
+    >>> from assur.views.report.labels import formatted
+    >>> formatted("{0:.2f} × {1}", "ru", 1.5, "S1"), formatted("{0:g} s", "en", 0.25)
+    ('1,50 × S1', '0.25 s')
+    """
+    return _Numbers(lang).format(text, *(localize(a, lang) if isinstance(a, Text) else a
+                                         for a in args))
+
+
 def t(key: str, lang: str, *args) -> str:
     """The text ``key`` in ``lang``, formatted with ``args`` (a model's name or text
-    given in several languages, :class:`assur.texts.Text`, in ``lang``'s)."""
+    given in several languages, :class:`assur.texts.Text`, in ``lang``'s; numbers with
+    the decimal comma in Russian, :func:`formatted`)."""
     s = TEXT[key][check_lang(lang)]
-    return s.format(*(localize(a, lang) if isinstance(a, Text) else a for a in args)) \
-        if args else s
+    return formatted(s, lang, *args) if args else s
 
 
 #: unit atoms (a symbol with its prefix) -> Russian spelling, for units a user wrote

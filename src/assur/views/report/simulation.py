@@ -26,7 +26,7 @@ import numpy as np
 
 from ...texts import Text, localize
 from ._canvas import new_figure, titled_axes, to_png_bytes
-from .labels import check_lang, t, unit
+from .labels import check_lang, formatted, t, unit
 from .numbers import number
 
 __all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
@@ -49,7 +49,7 @@ _TEXT = {
 
 def _tx(key, lang, *args):
     s = localize(_TEXT[key], lang)
-    return s.format(*args) if args else s
+    return formatted(s, lang, *args) if args else s
 
 
 def figures(result, lang="en"):
