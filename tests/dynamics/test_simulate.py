@@ -174,21 +174,22 @@ def test_cli_simulate_writes_tables_figures_and_report(tmp_path):
     assert r.exit_code == 0, r.output
     assert "reached t_end" in r.output
     for name in FIGURES:
-        assert (tmp_path / f"sim_{name}.png").stat().st_size > 0
+        assert (tmp_path / f"simulation_{name}.png").stat().st_size > 0
     from PIL import Image
     with Image.open(tmp_path / "simulation.gif") as gif:  # 0.1 s a frame over 4.5 s
         # (equal frames at rest on a stop are merged by the GIF writer)
         assert 20 < gif.n_frames <= 46
-    df = pd.read_csv(tmp_path / "simulation.csv")
+    # Russian: ";" and the decimal comma, as the analysis' CSV files
+    df = pd.read_csv(tmp_path / "simulation.csv", sep=";", decimal=",", encoding="utf-8-sig")
     assert len(df) == 2251 and "p1 [MPa]" in df.columns
-    text = (tmp_path / "simulation.csv").read_text()
-    assert "-0.0," not in text and "nan" not in text.lower()
+    text = (tmp_path / "simulation.csv").read_text(encoding="utf-8-sig")
+    assert "-0,0;" not in text and "nan" not in text.lower() and "." not in text.split("\n")[1]
     page = (tmp_path / "simulation.html").read_text(encoding="utf-8")
     assert "Подъём секции косилки-плющилки" in page and "невязка баланса" in page
     # the motion in real time as vector frames: one per 0.1 s over 4.5 s, captioned
     assert page.count('<g class="frame"') == 46
     assert 'id="anim-q">t = 0 с; S = ' in page and "data:image/gif" not in page
-    summary = (tmp_path / "simulation_summary.csv").read_text(encoding="utf-8")
+    summary = (tmp_path / "simulation_summary.csv").read_text(encoding="utf-8-sig")
     assert "открытие предохранительного клапана" in summary
 
 
@@ -364,13 +365,13 @@ def test_cli_simulate_the_crane(tmp_path):
                                      str(out), "--lang", lang, "--duration", "0.6"])
         assert r.exit_code == 0, r.output
         for name in FIGURES:
-            assert (out / f"sim_{name}.png").stat().st_size > 0
-        df = pd.read_csv(out / "simulation.csv")
+            assert (out / f"simulation_{name}.png").stat().st_size > 0
+        df = pd.read_csv(out / "simulation.csv", sep=";", decimal=",", encoding="utf-8-sig")
         assert {"S1 [m]", "S2 [m]", "p1 S1 [MPa]", "p1 S2 [MPa]", "p_pump [MPa]",
                 "Q_relief S2 [l/min]"} <= set(df.columns)
         np.testing.assert_allclose(df["p_pump [MPa]"],
                                    df[["p1 S1 [MPa]", "p1 S2 [MPa]"]].max(axis=1))
-        summary = (out / "simulation_summary.csv").read_text(encoding="utf-8")
+        summary = (out / "simulation_summary.csv").read_text(encoding="utf-8-sig")
         assert word in summary and "(S1)" in summary
         assert (out / "simulation.gif").stat().st_size > 0
 

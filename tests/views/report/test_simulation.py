@@ -37,7 +37,9 @@ def test_figures_draw_the_columns_and_the_summary_says_the_same_in_both_language
     np.testing.assert_allclose(p2.get_xdata(), df["t [s]"], rtol=1e-12)
     en, ru = summary(result), summary(result, "ru")
     assert len(en) == len(ru) and en[0][0] != ru[0][0]
-    assert [row[1] for row in en] == [row[1] for row in ru]  # the same numbers
+    # the same numbers, with the decimal comma in Russian
+    assert [row[1] for row in en] == [row[1].replace(",", ".") for row in ru]
+    assert all("." not in row[1] for row in ru)
 
 
 def test_the_written_report_holds_the_time_series(result, tmp_path):

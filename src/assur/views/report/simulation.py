@@ -273,13 +273,16 @@ def write_simulation_report(result, outdir, title="", lang="en",
     out.mkdir(parents=True, exist_ok=True)
     files = []
     if "csv" in formats:
+        # the analysis' CSV dialect: in Russian ";" and the decimal comma (UTF-8, BOM)
+        from .tables import CSV_DIALECTS
+        sep, mark, encoding = CSV_DIALECTS[lang]
         p = out / "simulation.csv"
-        time_series(result).to_csv(p, index=False)
+        time_series(result).to_csv(p, index=False, sep=sep, decimal=mark, encoding=encoding)
         files.append(p)
         import pandas as pd
         p = out / "simulation_summary.csv"
         pd.DataFrame(summary(result, lang), columns=["item", "value", "unit"]).to_csv(
-            p, index=False)
+            p, index=False, sep=sep, encoding=encoding)
         files.append(p)
     figs = figures(result, lang) if ("png" in formats or "html" in formats) else {}
     pngs = {name: to_png_bytes(f) for name, f in figs.items()}
