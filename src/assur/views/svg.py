@@ -28,7 +28,7 @@ from .geometry import convex_hull
 
 __all__ = ["svg", "frames"]
 
-_COLORS = ("#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+COLORS = ("#1f77b4", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
            "#bcbd22", "#17becf", "#ff7f0e")
 
 
@@ -36,7 +36,9 @@ def _f(v):
     return f"{v:.6g}"
 
 
-def _cylinders(geo):
+def cylinder_parts(geo):
+    """``{body: (barrel, rod)}`` [m]: the drawn lengths of each variable-length body's
+    barrel and rod (fixed over the positions, overlapping at the shortest)."""
     out = {}
     for b in geo["bodies"]:
         if b["variable"] and len(b["points"]) >= 2:
@@ -61,7 +63,7 @@ def _pose(geo, i, cyl, span, ghost, labels, ids=True):
         if b["name"] == "0":
             continue
         pts = [xy[p] for p in b["points"] if p in xy]
-        col = "#888" if ghost else _COLORS[k % len(_COLORS)]
+        col = "#888" if ghost else COLORS[k % len(COLORS)]
         k += 1
         if b["name"] in cyl and len(pts) >= 2:
             a, c = np.array(pts[0]), np.array(pts[1])
@@ -161,8 +163,8 @@ def svg(geo: dict, positions=None, width: int = 560, height: int = 420,
     (1, 11)
     """
     positions = _positions(geo, positions)
-    span = _span(geo)
-    cyl = _cylinders(geo)
+    span = view_span(geo)
+    cyl = cylinder_parts(geo)
     body = []
     for i in positions[1:]:
         body += _pose(geo, i, cyl, span, True, False)
@@ -210,8 +212,8 @@ def frames(geo: dict, positions=None, width: int = 640, height: int = 500,
     """
     n = geo["n"]
     positions = list(range(n)) if positions is None else _positions(geo, positions)
-    span = _span(geo)
-    cyl = _cylinders(geo)
+    span = view_span(geo)
+    cyl = cylinder_parts(geo)
     body = []
     for k, i in enumerate(positions):
         hidden = "" if k == 0 else ' display="none"'
@@ -230,7 +232,8 @@ def _positions(geo, positions):
     return positions
 
 
-def _span(geo):
+def view_span(geo):
+    """The larger side of the bounds over every position [m] (the scale of marks)."""
     x0, y0, x1, y1 = geo["bounds"]
     return max(x1 - x0, y1 - y0, 1e-6)
 
@@ -239,7 +242,7 @@ def _element(geo, width, height, body, element_id=None, xmlns=True):
     """The ``<svg>`` element around ``body``; without ``xmlns`` for an element inside an
     HTML document (which names no address then)."""
     x0, y0, x1, y1 = geo["bounds"]
-    m = 0.12 * _span(geo)
+    m = 0.12 * view_span(geo)
     eid = f' id="{escape(element_id, quote=True)}"' if element_id else ""
     ns = ' xmlns="http://www.w3.org/2000/svg"' if xmlns else ""
     return (f'<svg{ns}{eid} width="{width}" height="{height}" '

@@ -377,13 +377,15 @@ def player(anim, lang="en", interval=120, bounce=True, title=None) -> str:
 
 def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4, height=5.0,
                   units=None):
-    """Frames of the animation over the range, as PIL images.
+    """Frames of the animation over the range, as PIL images (``width`` × ``height``
+    in at ``dpi``).
 
     The mechanism is solved again on ``frames`` evenly spaced values of its
     coordinate (one coordinate and one design; otherwise at most ``frames`` of the
     analysis' positions, evenly spaced among them, are drawn; ``frames=0``: every
-    one of the analysis' positions, e.g. the instants of a simulation), on fixed
-    axes, rendered with Agg.
+    one of the analysis' positions, e.g. the instants of a simulation), on one fixed
+    view, drawn with Pillow (:mod:`assur.views.raster`: the picture of the HTML
+    report's player) under the machine's title and the frame's coordinates.
 
     Returns
     -------
@@ -400,30 +402,17 @@ def render_frames(analysis, frames=30, lang="en", design=None, dpi=80, width=6.4
     >>> frames[0].tobytes() != frames[1].tobytes()  # the hitch moved
     True
     """
-    from PIL import Image
+    from ..geometry import geometry
+    from ..raster import images
 
     check_lang(lang)
     v = _View(analysis, design, units=units)
-    geo = _Geometry(v, _animation_kinematics(v, frames))
-    fig = new_figure(width, height)
-    fig.set_dpi(dpi)
-    ax = fig.add_subplot()
-    ax.set_xlabel(f"{t('x_m', lang)} [{unit(v.units['length'].text, lang)}]")
-    ax.set_ylabel(f"{t('y_m', lang)} [{unit(v.units['length'].text, lang)}]")
-    ax.grid(True, alpha=0.3)
-    out = []
-    for k, i in enumerate(_shown(geo.n, frames)):
-        for art in list(ax.lines) + list(ax.patches) + list(ax.texts):
-            art.remove()
-        _pose(ax, geo, i)
-        _limits(ax, geo)
-        ax.set_title(f"{localize(v.mech.title, lang)}\n{_qtext(geo.q, v, i, lang)}", fontsize=9)
-        fig.canvas.draw()
-        if k == 0:  # the axes are fixed: lay the figure out once
-            fig.set_layout_engine("none")
-        buf = np.asarray(fig.canvas.buffer_rgba())
-        out.append(Image.fromarray(buf[..., :3].copy()))
-    return out
+    kin = _animation_kinematics(v, frames)
+    geo = geometry(kin, design=v.design if len(kin.shape) == 2 else None)
+    q = {c: np.asarray(vals) for c, vals in geo["q"].items()}
+    shown = _shown(geo["n"], frames)
+    return images(geo, shown, int(round(width * dpi)), int(round(height * dpi)),
+                  [_qtext(q, v, i, lang) for i in shown], title=localize(v.mech.title, lang))
 
 
 def _palette(frames):
