@@ -123,15 +123,23 @@ def test_cli_cycles_writes_tables_figures_and_report(tmp_path, lang, crane):
     r = CliRunner().invoke(app, ["cycles", str(io.bundled(crane)), "-o", str(tmp_path),
                                  "--lang", lang])
     assert r.exit_code == 0, r.output
+    # the file's units (the cranes write forces in N… or kN), the language's CSV dialect
+    from assur.core.display import unit_system
+    from assur.views.report.labels import unit
+    from assur.views.report.tables import CSV_DIALECTS
+    du = unit_system(io.load(io.bundled(crane)).mechanism)
+    sep, mark, encoding = CSV_DIALECTS[lang]
+    s_, n_ = unit(du["time"].text, lang), unit(du["force"].text, lang)
     for s in SCENARIOS:
-        df = pd.read_csv(tmp_path / f"cycles_{s}.csv")
-        assert list(df["T [s]"]) == list(range(4, 21))
-        assert {"F1_max [N]", "Fs1_max [N]", "Fd1_max [N]", "F2_max [N]"} <= set(df.columns)
-        assert (df["F1_max [N]"] >= df["Fs1_max [N]"] - 1e-6).all()
+        df = pd.read_csv(tmp_path / f"cycles_{s}.csv", sep=sep, decimal=mark,
+                         encoding=encoding)
+        assert list(df[f"T [{s_}]"]) == list(range(4, 21))
+        assert {f"F1_max [{n_}]", f"Fs1_max [{n_}]", f"F2_max [{n_}]"} <= set(df.columns)
+        assert (df[f"F1_max [{n_}]"] >= df[f"Fs1_max [{n_}]"] - 1e-6).all()
     for name in FIGURES:
         assert (tmp_path / f"cycles_{name}.png").stat().st_size > 0
     assert (tmp_path / "cycles.xlsx").stat().st_size > 0
-    conc = pd.read_csv(tmp_path / "cycles_conclusions.csv")
+    conc = pd.read_csv(tmp_path / "cycles_conclusions.csv", sep=sep, encoding=encoding)
     assert list(conc["key"]) == ["boom_excess", "stick_excess", "dynamic_fall",
                                  "effective_below", "pump_forces", "pump_dynamic"]
     page = (tmp_path / "cycles.html").read_text(encoding="utf-8")

@@ -84,3 +84,61 @@ def test_drive_rows_name_every_component_in_the_display_units():
                      "гидроцилиндр «ГЦ рукояти»": ("80", "мм")}
     _, _, si = drive_rows(model.drive, "en", "si", model.mechanism)
     assert [r[2:] for r in si if r[1] == "setting"] == [("25000000", "Pa")]
+
+
+def test_the_simulation_in_every_unit_system():
+    """The time series, the summary and the figures in the units chosen: each column's
+    values are the SI ones through its unit's factor (COMMON_UNITS, pint's); a rate
+    (psi/s) or a mass per length (lb/in) in the system's units of its parts."""
+    from assur.core.display import SYSTEMS, unit_system
+    from assur.core.units import common_unit
+    from assur.views.report.simulation import figures, summary, time_series
+    from tests.helpers.documents import allowed_units, axis_units
+
+    model = io.load(io.bundled("adapter_lab6"))
+    r = simulate(model.mechanism, model.drive, 0.5, t_eval=np.linspace(0.0, 0.5, 6))
+    si = time_series(r, "si", model.mechanism)
+    assert {"S [m]", "p1 [Pa]", "F [N]", "Q_pump [m³/s]", "m' [kg/m]"} <= set(si.columns)
+    for system in SYSTEMS:
+        allowed = allowed_units(unit_system(model.mechanism, system), "en")
+
+        def factor(u):  # SI per unit; a unit outside the system: None
+            if u in allowed:
+                return common_unit(u).factor
+            top, _, bottom = u.rpartition("/")
+            if top in allowed and bottom in allowed:
+                return common_unit(top).factor / common_unit(bottom).factor
+            return None
+
+        df = time_series(r, system, model.mechanism)
+        for name in df.columns:
+            if name.startswith("phase"):
+                continue
+            base, u = re.fullmatch(r"(.+) \[(.+)\]", name).groups()
+            assert factor(u) is not None, (system, name)
+            ref = si[next(c for c in si.columns if c.startswith(base + " ["))]
+            np.testing.assert_allclose(df[name].to_numpy(float) * factor(u),
+                                       ref.to_numpy(float), rtol=1e-12, atol=1e-300,
+                                       err_msg=f"{system}: {name}")
+        units = {row[2] for row in summary(r, "en", system, model.mechanism) if row[2]}
+        assert all(factor(u) for u in units), (system, units)
+        for fig in figures(r, "en", system, model.mechanism).values():
+            assert all(factor(u) for u in axis_units(fig)), (system, axis_units(fig))
+
+
+def test_cli_simulate_and_cycles_take_units_and_the_files_language(tmp_path):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from assur.views.cli import app
+    r = CliRunner().invoke(app, ["simulate", str(io.bundled("adapter_lab6")), "-o",
+                                 str(tmp_path / "sim"), "--duration", "0.3",
+                                 "--units", "imperial"])
+    assert r.exit_code == 0, r.output
+    df = pd.read_csv(tmp_path / "sim" / "simulation.csv")
+    assert {"S [in]", "p1 [psi]", "F [lbf]", "Q_pump [gal/min]"} <= set(df.columns)
+    page = visible((tmp_path / "sim" / "simulation.html").read_text(encoding="utf-8"))
+    assert "psi" in page and "MPa" not in page
+    r = CliRunner().invoke(app, ["simulate", str(io.bundled("adapter_lab6")), "-o",
+                                 str(tmp_path / "bad"), "--units", "cgs"])
+    assert r.exit_code != 0 and "--units must be one of" in r.output

@@ -169,6 +169,13 @@ def _positions(analysis, draw_at, du=None):
     return out
 
 
+#: the options every command that writes documents shares
+UNITS_HELP = ("Units shown: file (each quantity in the unit the model file writes it in), "
+              "engineering (mm, deg, kN, MPa), si (m, rad, N, Pa) or imperial (in, lbf, "
+              "psi); default: the file's [display] units, else file.")
+LANG_HELP = "Language: ru or en; default: the file's [display] lang, else en."
+
+
 def _units(model, units: str):
     """The display units of a command: ``--units`` (checked), else the model file's
     ``[display] units``, else the file's own units."""

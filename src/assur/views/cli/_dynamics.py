@@ -8,14 +8,16 @@ from pathlib import Path
 import typer
 from rich.text import Text
 
-from ._common import _check_lang, _fail, _load, _ok, _output_dir, _summary, console
+from ._common import LANG_HELP, UNITS_HELP, _fail, _lang, _load, _ok, _output_dir, \
+    _summary, _units, console
 
 
 def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[drive]] and "
                                                    "[simulation]."),
              output: str = typer.Option("assur-simulation", "-o", "--output",
                                         help="Output directory."),
-             lang: str = typer.Option("en", "--lang", help="Labels: ru or en."),
+             lang: str = typer.Option("", "--lang", help=LANG_HELP),
+             units: str = typer.Option("", "--units", help=UNITS_HELP),
              duration: float = typer.Option(0.0, "--duration",
                                             help="Simulated time in s (default: the "
                                                  "file's [simulation] duration).")):
@@ -27,8 +29,8 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
     from ..report.simulation import write_simulation_report
     from ...texts import localize
 
-    _check_lang(lang)
     model = _load(file)
+    lang, du = _lang(model, lang), _units(model, units)
     out = _output_dir(output)
     options = {"t_end": duration} if duration > 0 else {}
     try:
@@ -37,7 +39,7 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
         _fail(f"{file}: {e}")
     try:
         files = write_simulation_report(result, out, localize(model.mechanism.title, lang),
-                                        lang, model=model)
+                                        lang, model=model, units=du)
     except OSError as e:
         _fail(f"{output}: cannot write the report: {e.strerror or e}")
     if not result.success:
@@ -54,18 +56,19 @@ def cycles(file: Path = typer.Argument(..., help="Model file (TOML) of two cylin
                                                  "coordinates with [[drive]]."),
            output: str = typer.Option("assur-cycles", "-o", "--output",
                                       help="Output directory."),
-           lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
+           lang: str = typer.Option("", "--lang", help=LANG_HELP),
+           units: str = typer.Option("", "--units", help=UNITS_HELP)):
     """Seed 004's work cycles: max cylinder forces with their static and dynamic parts
     for combined and separate motion, cycle times 4–20 s (CSV, XLSX, PNG) and an HTML
     report that sets them against the paper's conclusions."""
     from ...errors import AssemblyError, ModelError
     from ..report.cycles import verdict_word, write_cycles_report
 
-    _check_lang(lang)
     model = _load(file)
+    lang, du = _lang(model, lang), _units(model, units)
     out = _output_dir(output)
     try:
-        _, verdicts, files = write_cycles_report(model, out, lang)
+        _, verdicts, files = write_cycles_report(model, out, lang, units=du)
     except (ModelError, AssemblyError, ValueError) as e:
         _fail(f"{file}: {e}")
     except OSError as e:

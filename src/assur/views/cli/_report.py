@@ -9,14 +9,9 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from ._common import (DEFAULT_FORMATS, _assemble, _check_lang, _fail, _formats, _lang, _load, _ok,
-                      _output_dir, _positions, _shape_text, _summary, _units, console)
-
-#: the options every worksheet command shares
-UNITS_HELP = ("Units shown: file (each quantity in the unit the model file writes it in), "
-              "engineering (mm, deg, kN, MPa), si (m, rad, N, Pa) or imperial (in, lbf, "
-              "psi); default: the file's [display] units, else file.")
-LANG_HELP = "Language: ru or en; default: the file's [display] lang, else en."
+from ._common import (DEFAULT_FORMATS, LANG_HELP, UNITS_HELP, _assemble, _check_lang, _fail,
+                      _formats, _lang, _load, _ok, _output_dir, _positions, _shape_text,
+                      _summary, _units, console)
 
 
 def check(file: Path = typer.Argument(..., help="Model file (TOML)."),

@@ -44,6 +44,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ...core.display import unit_system
 from ...dynamics.cycles import PERIODS, SCENARIOS, strokes, sweep
 from ...texts import localize
 from ._canvas import new_figure, titled_axes, to_png_bytes
@@ -51,7 +52,7 @@ from ._cycles_text import _T, _t, verdict_word
 from ._cycles_verdicts import (ABOUT, EFFECTIVE, PAPER, SEPARATE, Verdict, _by, conclusions,
                                drive_sweep, pump_conclusions)
 from .labels import check_lang, unit
-from .tables import Column, Table, write_csv, write_xlsx
+from .tables import Column, Table, in_units, write_csv, write_xlsx
 
 __all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "Verdict", "conclusions",
            "drive_sweep", "pump_conclusions", "tables",
@@ -142,22 +143,35 @@ def drive_speeds(circuit):
     return rows
 
 
-def _curves(df, lang, key, col, title):
+def _shown(du, values, si):
+    """Values [``si``: ``"N"`` or ``"s"``] in the display units ``du`` (None: forces in
+    kN, times in s): ``(values, unit)``."""
+    import numpy as np
+    values = np.asarray(values, dtype=float)
+    if du is None:
+        return (values / KN, "kN") if si == "N" else (values, si)
+    v, u = du.convert(values, si)
+    return np.asarray(v, dtype=float), u
+
+
+def _curves(df, lang, key, col, title, du=None):
     f = new_figure()
     sym = {"F1_max": "|F1|", "F2_max": "|F2|", "Fd1_max": "|F_d1|", "Fd2_max": "|F_d2|"}
-    ax = titled_axes(f, localize(_T[title], lang), f"{_t('T', lang)} [{unit('s', lang)}]",
-                     f"max {sym[col[0]]} [{unit('kN', lang)}]")
+    fu, tu = _shown(du, 0.0, "N")[1], _shown(du, 0.0, "s")[1]
+    ax = titled_axes(f, localize(_T[title], lang), f"{_t('T', lang)} [{unit(tu, lang)}]",
+                     f"max {sym[col[0]]} [{unit(fu, lang)}]")
     for i, s in enumerate(SCENARIOS):
         d = _by(df, s)
         ls = "-" if s.startswith("combined") else "--"
         for c, style in zip(col, (ls, ":")):
-            ax.plot(d.index, d[c] / KN, style, marker="o", ms=3, color=f"C{i}",
+            ax.plot(_shown(du, d.index, "s")[0], _shown(du, d[c], "N")[0], style, marker="o",
+                    ms=3, color=f"C{i}",
                     label=_t(f"scenario_{s}", lang) + ("" if len(col) == 1 else f" — {c}"))
     ax.legend(fontsize="small")
     return f
 
 
-def figures(df, lang="en"):
+def figures(df, lang="en", units=None, mechanism=None):
     """``{name: Figure}`` of :data:`FIGURES` for a sweep.
 
     Examples
@@ -177,24 +191,27 @@ def figures(df, lang="en"):
     78.3
     """
     check_lang(lang)
-    out = {name: _curves(df, lang, name, (c,), name) for name, c in (
+    du = None if units is None and mechanism is None else unit_system(mechanism, units)
+    out = {name: _curves(df, lang, name, (c,), name, du) for name, c in (
         ("max_F1", "F1_max"), ("max_F2", "F2_max"), ("dynamic_F1", "Fd1_max"),
         ("dynamic_F2", "Fd2_max"))}
     f = new_figure()
-    ax = titled_axes(f, _t("static", lang), f"{_t('T', lang)} [{unit('s', lang)}]",
-                     f"max |F_s| [{unit('kN', lang)}]")
+    fu, tu = _shown(du, 0.0, "N")[1], _shown(du, 0.0, "s")[1]
+    ax = titled_axes(f, _t("static", lang), f"{_t('T', lang)} [{unit(tu, lang)}]",
+                     f"max |F_s| [{unit(fu, lang)}]")
     for i, s in enumerate(SCENARIOS):
         d = _by(df, s)
-        ax.plot(d.index, d["Fs1_max"] / KN, "-", color=f"C{i}", label=_t(f"scenario_{s}",
-                                                                          lang))
-        ax.plot(d.index, d["Fs2_max"] / KN, "--", color=f"C{i}")
+        T = _shown(du, d.index, "s")[0]
+        ax.plot(T, _shown(du, d["Fs1_max"], "N")[0], "-", color=f"C{i}",
+                label=_t(f"scenario_{s}", lang))
+        ax.plot(T, _shown(du, d["Fs2_max"], "N")[0], "--", color=f"C{i}")
     ax.legend(fontsize="small")
     out["static"] = f
     return out
 
 
 def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png", "html"),
-                        periods=PERIODS, g=None):
+                        periods=PERIODS, g=None, units=None):
     """Seed 004's sweep of a model with a drive (every scenario, T_c = 4…20 s; the
     strokes from :func:`assur.dynamics.cycles.strokes`) written as
     ``cycles_<scenario>.csv``, ``cycles_ratios.csv``, ``cycles_conclusions.csv``,
@@ -248,19 +265,24 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
              for c in ("F1_max", "F2_max", "Fd1_max", "Fd2_max")]
     tabs.append(Table("pump", {lg: localize(_T["pump_table"], lg) for lg in ("en", "ru")},
                       tuple(cols)))
+    du = unit_system(model.mechanism, units)  # the tables, figures and texts shown in these
+    tabs = [in_units(tab, du) for tab in tabs]
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files = []
     if "csv" in formats:
         for tab in tabs:
-            files.append(write_csv(tab, out / f"cycles_{tab.id}.csv"))
+            files.append(write_csv(tab, out / f"cycles_{tab.id}.csv", lang))
         p = out / "cycles_conclusions.csv"
+        from .tables import CSV_DIALECTS
+        sep, _, encoding = CSV_DIALECTS[lang]  # the tables' dialect: ";" in Russian
         pd.DataFrame([(v.key, v.claim, v.model, v.agrees, v.why) for v in verdicts],
-                     columns=["key", "claim", "model", "agrees", "why"]).to_csv(p, index=False)
+                     columns=["key", "claim", "model", "agrees", "why"]).to_csv(
+            p, index=False, sep=sep, encoding=encoding)
         files.append(p)
     if "xlsx" in formats:
         files.append(write_xlsx(tabs, out / "cycles.xlsx", lang=lang))
-    figs = figures(df, lang) if {"png", "html"} & set(formats) else {}
+    figs = figures(df, lang, du, model.mechanism) if {"png", "html"} & set(formats) else {}
     pngs = {name: to_png_bytes(f) for name, f in figs.items()}
     if "png" in formats:
         for name, data in pngs.items():
@@ -269,13 +291,13 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
             files.append(p)
     if "html" in formats:
         p = out / "cycles.html"
-        p.write_text(_document(model, lang, start, end, verdicts, tabs, figs, pngs),
+        p.write_text(_document(model, lang, start, end, verdicts, tabs, figs, pngs, du),
                      encoding="utf-8")
         files.append(p)
     return df, verdicts, files
 
 
-def _document(model, lang, start, end, verdicts, tabs, figs, pngs):
+def _document(model, lang, start, end, verdicts, tabs, figs, pngs, du):
     """The work-cycle report as a document (:mod:`assur.views.report.document`): the
     model's inputs and drive, the paper's conclusions as verdicts (agrees: ok, does
     not: fail) with the criteria, the drive's rod speeds, the numbered tables and
@@ -285,24 +307,28 @@ def _document(model, lang, start, end, verdicts, tabs, figs, pngs):
     L = {k: localize(v, lang) for k, v in _T.items()}
     source = model.source.name if model.source else None
     coords = model.drive.coordinates
-    stroke_text = "; ".join(f"{c}: {number(a, None, lang)} → {number(b, None, lang)} "
-                            f"{unit('m', lang)}" for c, a, b in zip(coords, start, end))
+    lu = du["length"]
+    stroke_text = "; ".join(f"{c}: {number(float(lu.of(a)), None, lang)} → "
+                            f"{number(float(lu.of(b)), None, lang)} {unit(lu.text, lang)}"
+                            for c, a, b in zip(coords, start, end))
     marks = [{"status": "ok" if v.agrees else "fail", "href": None,
               "text": f"{L['claim']}: {v.claim} {L['model']}: {v.model} — "
                       f"{L['agrees'] if v.agrees else L['disagrees']}: {v.why}"}
              for v in verdicts]
-    drive = [(c, _t(side, lang), number(f, None, lang), number(vc, 3, lang),
-              number(vs, 3, lang)) for c, side, f, vc, vs in drive_speeds(model.drive)]
+    au, vu = du["area"], du["velocity"]
+    drive = [(c, _t(side, lang), number(float(au.of(f)), None, lang),
+              number(float(vu.of(vc)), None, lang), number(float(vu.of(vs)), None, lang))
+             for c, side, f, vc, vs in drive_speeds(model.drive)]
     sections = [{"anchor": "drive-speeds", "title": L["drive"],
-                 "header": ("", "", f"f [{unit('m²', lang)}]",
-                            f"{L['combined']} [{unit('m/s', lang)}]",
-                            f"{L['separate']} [{unit('m/s', lang)}]"),
+                 "header": ("", "", f"f [{unit(au.text, lang)}]",
+                            f"{L['combined']} [{unit(vu.text, lang)}]",
+                            f"{L['separate']} [{unit(vu.text, lang)}]"),
                  "rows": drive, "notes": []}]
     return render_document(
         lang=lang, title=localize(model.mechanism.title, lang), kind=L["report"],
         name=model.name, source=source,
-        inputs=model_rows(model.mechanism, lang, source=source)
-        + [drive_rows(model.drive, lang, mechanism=model.mechanism)],
+        inputs=model_rows(model.mechanism, lang, du, source=source)
+        + [drive_rows(model.drive, lang, du, model.mechanism)],
         verdicts=marks, verdicts_title=L["conclusions"],
         verdicts_notes=[_t("criteria", lang, 100 * ABOUT, 100 * EFFECTIVE, stroke_text)],
         sections=sections, tables=tabs,

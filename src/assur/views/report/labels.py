@@ -362,9 +362,9 @@ TEXT = {
     "sim_en_loads": {"en": "work against the loads", "ru": "работа против нагрузок"},
     "sim_en_oil": {"en": "work of compressing the oil", "ru": "работа сжатия жидкости"},
     "sim_en_residual": {"en": "residual of the balance", "ru": "невязка баланса"},
-    "sim_steady_line": {"en": "steady rod speed Q/A = {0} m/s; {1} evaluations of "
+    "sim_steady_line": {"en": "steady rod speed Q/A = {0} {2}; {1} evaluations of "
                               "the right-hand side",
-                        "ru": "установившаяся скорость штока Q/A = {0} м/с; "
+                        "ru": "установившаяся скорость штока Q/A = {0} {2}; "
                               "{1} вычислений правой части"},
     "renamed": {"en": "{0} is also a coordinate's name: this column is {1}",
                 "ru": "{0} — также имя обобщённой координаты: этот столбец назван {1}"},

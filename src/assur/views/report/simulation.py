@@ -32,7 +32,6 @@ from .numbers import number
 __all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
 
 FIGURES = ("pressure", "pressure_rate", "coordinate", "speed", "acceleration", "reduced_mass")
-MPA = 1e6
 
 
 #: texts of the k-coordinate simulation (the lab-6 ones are in :mod:`.labels`)
@@ -40,11 +39,43 @@ _TEXT = {
     "divider": Text("lost in the flow divider", ru="потери в делителе потока"),
     "pump": Text("pump pressure p_p = max p1", ru="давление насоса p_p = max p1"),
     "mass": Text("Diagonal of the mass matrix M_jj", ru="Диагональ матрицы масс M_jj"),
-    "steady": Text("steady rod speed s·Q/A of {0} = {1} m/s",
-                   ru="установившаяся скорость штока s·Q/A {0} = {1} м/с"),
+    "steady": Text("steady rod speed s·Q/A of {0} = {1} {2}",
+                   ru="установившаяся скорость штока s·Q/A {0} = {1} {2}"),
     "evals": Text("{0} evaluations of the right-hand side",
                   ru="{0} вычислений правой части"),
 }
+
+
+#: without display units: an SI unit → the lab's unit and its factor (lab 6 prints
+#: pressures in MPa, forces in kN, flows in l/min)
+_LAB = {"Pa": ("MPa", 1e-6), "Pa/s": ("MPa/s", 1e-6), "N": ("kN", 1e-3),
+        "m³/s": ("l/min", 6e4)}
+
+
+def _units(units, mechanism):
+    """The display units (:mod:`assur.core.display`) of ``units`` for ``mechanism``, or
+    None for none asked (the lab's units: m, MPa, kN, l/min)."""
+    from ...core.display import unit_system
+    if units is None and mechanism is None:
+        return None
+    return unit_system(mechanism, units)
+
+
+def _in(du, values, text):
+    """``values`` given in ``text`` (SI) shown in the display units ``du``: ``(values,
+    unit)``; a rate of a known kind (``Pa/s``) and a mass per length (``kg/m``) in the
+    system's units of their parts; ``du`` None: in the lab's units (:data:`_LAB`)."""
+    values = np.asarray(values, dtype=float)
+    if du is None:
+        shown, factor = _LAB.get(text, (text, 1.0))
+        return values * factor, shown
+    if text in ("Pa/s", "kg/m"):
+        top, bottom = text.split("/")
+        v, u = du.convert(values, top)
+        d, w = du.convert(1.0, {"s": "s", "m": "m"}[bottom])
+        return np.asarray(v, float) / float(d), f"{u}/{w}"
+    v, u = du.convert(values, text)
+    return np.asarray(v, float), u
 
 
 def _tx(key, lang, *args):
@@ -52,7 +83,7 @@ def _tx(key, lang, *args):
     return formatted(s, lang, *args) if args else s
 
 
-def figures(result, lang="en"):
+def figures(result, lang="en", units=None, mechanism=None):
     """``{name: Figure}`` of :data:`FIGURES` for a simulation result (with k > 1
     coordinates every branch's curve, labelled by its coordinate).
 
@@ -74,70 +105,80 @@ def figures(result, lang="en"):
     0.0704
     """
     check_lang(lang)
+    du = _units(units, mechanism)
     cs = result.coordinates
     k = len(cs)
-    col = result.column
     tag = (lambda j: "") if k == 1 else (lambda j: f" ({cs[j]})")
-    tx = f"{t('sim_time', lang)} [{unit('s', lang)}]"
+    tt, tu = _in(du, result.t, "s")
+    tx = f"{t('sim_time', lang)} [{unit(tu, lang)}]"
+    pu = _in(du, 0.0, "Pa")[1]
     out = {}
+
+    def col(a, j, text):
+        return _in(du, result.column(a, j), text)[0]
 
     def fig(name, title, ylabel):
         f = new_figure()
         out[name] = f
         return titled_axes(f, title, tx, ylabel)
 
-    ax = fig("pressure", t("sim_p", lang), f"p [{unit('MPa', lang)}]")
+    ax = fig("pressure", t("sim_p", lang), f"p [{unit(pu, lang)}]")
     for j in range(k):
-        ax.plot(result.t, col(result.p1, j) / MPA, label="p1" + tag(j))
-        ax.plot(result.t, col(result.p2, j) / MPA, "--", label="p2" + tag(j))
+        ax.plot(tt, col(result.p1, j, "Pa"), label="p1" + tag(j))
+        ax.plot(tt, col(result.p2, j, "Pa"), "--", label="p2" + tag(j))
     if k > 1:
-        ax.plot(result.t, result.pump_pressure / MPA, ":", color="k", lw=0.8,
+        ax.plot(tt, _in(du, result.pump_pressure, "Pa")[0], ":", color="k", lw=0.8,
                 label=_tx("pump", lang))
     ax.legend()
-    ax = fig("pressure_rate", t("sim_dp", lang), f"dp1/dt [{unit('MPa/s', lang)}]")
+    ax = fig("pressure_rate", t("sim_dp", lang),
+             f"dp1/dt [{unit(_in(du, 0.0, 'Pa/s')[1], lang)}]")
     for j in range(k):
-        ax.plot(result.t, col(result.p1dot, j) / MPA, label="dp1/dt" + tag(j))
+        ax.plot(tt, col(result.p1dot, j, "Pa/s"), label="dp1/dt" + tag(j))
     if k > 1:
         ax.legend()
     names = ", ".join(cs)
-    ax = fig("coordinate", t("sim_s", lang, names), f"{names} [{unit('m', lang)}]")
+    lu, vu, au = (_in(du, 0.0, x)[1] for x in ("m", "m/s", "m/s²"))
+    ax = fig("coordinate", t("sim_s", lang, names), f"{names} [{unit(lu, lang)}]")
     for j, c in enumerate(cs):
-        ax.plot(result.t, col(result.q, j), label=c)
+        ax.plot(tt, col(result.q, j, "m"), label=c)
     if k > 1:
         ax.legend()
-    ax = fig("speed", t("sim_v", lang, names), f"d{names}/dt [{unit('m/s', lang)}]")
-    steady = np.atleast_1d(result.steady_speed)
+    ax = fig("speed", t("sim_v", lang, names), f"d{names}/dt [{unit(vu, lang)}]")
+    steady = _in(du, np.atleast_1d(result.steady_speed), "m/s")[0]
     for j, c in enumerate(cs):
-        ax.plot(result.t, col(result.qdot, j), label=f"d{c}/dt")
+        ax.plot(tt, col(result.qdot, j, "m/s"), label=f"d{c}/dt")
         ax.axhline(steady[j], color=f"C{j}", lw=0.8, ls=":", label=t("sim_steady", lang)
                    + tag(j))
     ax.legend()
-    ax = fig("acceleration", t("sim_a", lang, names), f"d²{names}/dt² [{unit('m/s²', lang)}]")
+    ax = fig("acceleration", t("sim_a", lang, names), f"d²{names}/dt² [{unit(au, lang)}]")
     for j, c in enumerate(cs):
-        ax.plot(result.t, col(result.qddot, j), label=f"d²{c}/dt²")
+        ax.plot(tt, col(result.qddot, j, "m/s²"), label=f"d²{c}/dt²")
     if k > 1:
         ax.legend()
     f = new_figure()
     if k == 1:
         c = cs[0]
-        ax = titled_axes(f, t("sim_m", lang, c), f"{c} [{unit('m', lang)}]",
-                         f"m [{unit('kg', lang)}]")
+        mu, du_ = _in(du, 0.0, "kg")[1], _in(du, 0.0, "kg/m")[1]
+        ax = titled_axes(f, t("sim_m", lang, c), f"{c} [{unit(lu, lang)}]",
+                         f"m [{unit(mu, lang)}]")
         order = np.argsort(result.q, kind="stable")
-        ax.plot(result.q[order], result.reduced_mass[order], label="m")
+        q = _in(du, result.q, "m")[0]
+        ax.plot(q[order], _in(du, result.reduced_mass, "kg")[0][order], label="m")
         ax2 = ax.twinx()
-        ax2.plot(result.q[order], result.reduced_mass_derivative[order], "--", color="C1",
-                 label="m'")
-        ax2.set_ylabel(f"m' [{unit('kg/m', lang)}]")
+        ax2.plot(q[order], _in(du, result.reduced_mass_derivative, "kg/m")[0][order], "--",
+                 color="C1", label="m'")
+        ax2.set_ylabel(f"m' [{unit(du_, lang)}]")
     else:
-        ax = titled_axes(f, _tx("mass", lang), tx, f"M_jj [{unit('kg', lang)}]")
+        mu = _in(du, 0.0, "kg")[1]
+        ax = titled_axes(f, _tx("mass", lang), tx, f"M_jj [{unit(mu, lang)}]")
         for j, c in enumerate(cs):
-            ax.plot(result.t, result.reduced_mass[:, j], label=f"M ({c}, {c})")
+            ax.plot(tt, col(result.reduced_mass, j, "kg"), label=f"M ({c}, {c})")
         ax.legend()
     out["reduced_mass"] = f
     return out
 
 
-def time_series(result):
+def time_series(result, units=None, mechanism=None):
     """The time series as a pandas DataFrame with units in the column names (t [s],
     S [m], dS/dt [m/s], d²S/dt² [m/s²], p1, p2 [MPa], dp1/dt [MPa/s], flows [l/min],
     force and load [kN], m [kg], m' [kg/m]); with k > 1 coordinates a branch's
@@ -160,32 +201,43 @@ def time_series(result):
     [0.0, 3.07, 4.64]
     """
     import pandas as pd
+    du = _units(units, mechanism)
     cs = result.coordinates
     k = len(cs)
-    cols = {"t [s]": result.t}
+    cols = {}
+
+    def put(name, values, si):
+        """A column of ``values`` [``si``] in the display units (or the lab's)."""
+        v, u = _in(du, values, si)
+        cols[f"{name} [{'m/s2' if du is None and u == 'm/s²' else u}]"] = v
+
+    put("t", result.t, "s")
     for j, c in enumerate(cs):
         col = (lambda a: result.column(a, j))  # noqa: E731
         b = "" if k == 1 else f" {c}"
-        cols.update({f"{c} [m]": col(result.q), f"d{c}/dt [m/s]": col(result.qdot),
-                     f"d2{c}/dt2 [m/s2]": col(result.qddot),
-                     f"p1{b} [MPa]": col(result.p1) / MPA, f"p2{b} [MPa]": col(result.p2) / MPA,
-                     f"dp1/dt{b} [MPa/s]": col(result.p1dot) / MPA,
-                     f"F{b} [kN]": col(result.force) / 1e3,
-                     f"P_load{b} [kN]": col(result.load) / 1e3,
-                     f"m{b} [kg]": col(result.reduced_mass),
-                     f"m'{b} [kg/m]": col(result.reduced_mass_derivative),
-                     f"phase{b}": col(result.phase)})
-        cols.update({f"Q_{n}{b} [l/min]": col(v) * 60e3 for n, v in result.flows.items()
-                     if n != "pump"})
-    cols["Q_pump [l/min]"] = result.flows["pump"] * 60e3
+        put(c, col(result.q), "m")
+        put(f"d{c}/dt", col(result.qdot), "m/s")
+        put(f"d2{c}/dt2", col(result.qddot), "m/s²")
+        put(f"p1{b}", col(result.p1), "Pa")
+        put(f"p2{b}", col(result.p2), "Pa")
+        put(f"dp1/dt{b}", col(result.p1dot), "Pa/s")
+        put(f"F{b}", col(result.force), "N")
+        put(f"P_load{b}", col(result.load), "N")
+        put(f"m{b}", col(result.reduced_mass), "kg")
+        put(f"m'{b}", col(result.reduced_mass_derivative), "kg/m")
+        cols[f"phase{b}"] = col(result.phase)
+        for n, v in result.flows.items():
+            if n != "pump":
+                put(f"Q_{n}{b}", col(v), "m³/s")
+    put("Q_pump", result.flows["pump"], "m³/s")
     if k > 1:
-        cols["p_pump [MPa]"] = result.pump_pressure / MPA
+        put("p_pump", result.pump_pressure, "Pa")
     # + 0.0: never a -0.0 in a table
     return pd.DataFrame({n: v if n.startswith("phase") else np.asarray(v, float) + 0.0
                          for n, v in cols.items()})
 
 
-def summary(result, lang="en"):
+def summary(result, lang="en", units=None, mechanism=None):
     """Rows ``(label, value, unit)`` of the status, events and energy balance.
 
     Examples
@@ -207,40 +259,51 @@ def summary(result, lang="en"):
     """
     # a run that reached its end says so in the report's language; any other message
     # (a stop, a solver failure) is the engine's own text
+    du = _units(units, mechanism)
     done = result.status == 0 and result.message == "reached t_end"
     rows = [(t("sim_status", lang, t("sim_reached", lang) if done else result.message),
              "", "")]
+    steady, vu = _in(du, np.atleast_1d(result.steady_speed), "m/s")
+    times, tu = _in(du, 1.0, "s")
+    tu = unit(tu, lang)
     if len(result.coordinates) == 1:
-        rows.append((t("sim_steady_line", lang, number(result.steady_speed, None, lang),
-                       result.nfev), "", ""))
-        for name, times in result.events.items():
-            for x in times:
-                rows.append((t(f"sim_ev_{name}", lang), number(x, 4, lang), unit("s", lang)))
+        rows.append((t("sim_steady_line", lang, number(float(steady[0]), None, lang),
+                       result.nfev, unit(vu, lang)), "", ""))
+        for name, ts in result.events.items():
+            for x in ts:
+                rows.append((t(f"sim_ev_{name}", lang), number(x * times, 4, lang), tu))
     else:
-        for c, v in zip(result.coordinates, result.steady_speed):
-            rows.append((_tx("steady", lang, c, number(v, None, lang)), "", ""))
+        for c, v in zip(result.coordinates, steady):
+            rows.append((_tx("steady", lang, c, number(float(v), None, lang), unit(vu, lang)),
+                         "", ""))
         rows.append((_tx("evals", lang, result.nfev), "", ""))
         for x, name, c in result.event_log:
-            rows.append((f"{t(f'sim_ev_{name}', lang)} ({c})", number(x, 4, lang),
-                         unit("s", lang)))
+            rows.append((f"{t(f'sim_ev_{name}', lang)} ({c})", number(x * times, 4, lang), tu))
     keys = ["pump", "relief", "line", "impact", "mechanism_kinetic", "line_kinetic", "loads",
             "oil", "residual"]
     if len(result.coordinates) > 1:
         keys.insert(2, "divider")
     for key in keys:
         label = _tx(key, lang) if key == "divider" else t(f"sim_en_{key}", lang)
-        rows.append((label, number(result.energy[key], None, lang, 6), unit("J", lang)))
+        energy, eu = _in(du, result.energy[key], "J")
+        rows.append((label, number(float(energy), None, lang, 6), unit(eu, lang)))
     return rows
 
 
 def write_simulation_report(result, outdir, title="", lang="en",
                             formats=("csv", "png", "html", "gif"), mechanism=None,
-                            frame_step=0.1, model=None):
+                            frame_step=0.1, model=None, units=None):
     """Write ``simulation.csv``, ``simulation_summary.csv``, the figures
-    (``sim_<name>.png``), ``simulation.html`` (self-contained) and, given the
-    ``mechanism``, its drawing at q(t) every ``frame_step`` seconds played in real
+    (``simulation_<name>.png``), ``simulation.html`` (self-contained, the look of the
+    analysis report: :mod:`assur.views.report.document`) and, given the
+    ``mechanism`` (or the ``model``: its mechanism, title, file and drive among the
+    inputs), its drawing at q(t) every ``frame_step`` seconds played in real
     time: as vector frames in the HTML (:func:`assur.views.report.drawing.player`) and
     as ``simulation.gif`` (:func:`assur.views.report.drawing.render_frames`).
+
+    ``units`` (a system of :data:`assur.core.display.SYSTEMS`) shows every value in
+    those display units; default, given a mechanism: its file's (``[display] units``,
+    else the units the file writes); without one, the lab's (m, MPa, kN, l/min).
 
     Returns
     -------
@@ -277,14 +340,16 @@ def write_simulation_report(result, outdir, title="", lang="en",
         from .tables import CSV_DIALECTS
         sep, mark, encoding = CSV_DIALECTS[lang]
         p = out / "simulation.csv"
-        time_series(result).to_csv(p, index=False, sep=sep, decimal=mark, encoding=encoding)
+        time_series(result, units, mechanism).to_csv(p, index=False, sep=sep, decimal=mark,
+                                                     encoding=encoding)
         files.append(p)
         import pandas as pd
         p = out / "simulation_summary.csv"
-        pd.DataFrame(summary(result, lang), columns=["item", "value", "unit"]).to_csv(
+        pd.DataFrame(summary(result, lang, units, mechanism),
+                     columns=["item", "value", "unit"]).to_csv(
             p, index=False, sep=sep, encoding=encoding)
         files.append(p)
-    figs = figures(result, lang) if ("png" in formats or "html" in formats) else {}
+    figs = figures(result, lang, units, mechanism) if {"png", "html"} & set(formats) else {}
     pngs = {name: to_png_bytes(f) for name, f in figs.items()}
     if "png" in formats:
         for name, data in pngs.items():
@@ -300,7 +365,7 @@ def write_simulation_report(result, outdir, title="", lang="en",
         motion = mechanism.analyze(qf)
     if "gif" in formats and motion is not None:
         from .drawing import render_frames, write_gif
-        frames = render_frames(motion, frames=0, lang=lang)
+        frames = render_frames(motion, frames=0, lang=lang, units=units)
         p = write_gif(frames, out / "simulation.gif", duration=int(round(frame_step * 1e3)),
                       bounce=False)
         files.append(p)
@@ -308,21 +373,21 @@ def write_simulation_report(result, outdir, title="", lang="en",
     if "html" in formats and motion is not None:
         # the mechanism at q(t) every frame_step, played in real time as vector frames
         from .drawing import animation, player
-        anim = animation(motion, frames=0, lang=lang)
-        anim["captions"] = [f"t = {tk:.3g} {unit('s', lang)}; {c}"
+        anim = animation(motion, frames=0, lang=lang, units=units)
+        anim["captions"] = [f"t = {number(tk, None, lang, 3)} {unit('s', lang)}; {c}"
                             for tk, c in zip(ts, anim["captions"])]
         player_html = player(anim, lang, interval=frame_step * 1e3, bounce=False,
                              title=t("sim_motion", lang))
     if "html" in formats:
         p = out / "simulation.html"
         captioned = {name: (data, figs[name].axes[0].get_title()) for name, data in pngs.items()}
-        p.write_text(_document(result, title, lang, captioned, player_html, model, mechanism),
-                     encoding="utf-8")
+        p.write_text(_document(result, title, lang, captioned, player_html, model, mechanism,
+                               units), encoding="utf-8")
         files.append(p)
     return files
 
 
-def _document(result, title, lang, figures, player_html, model, mechanism):
+def _document(result, title, lang, figures, player_html, model, mechanism, units=None):
     """The simulation report as a document (:mod:`assur.views.report.document`): the
     model's inputs and its drive, the run's status as the verdict, the events and the
     energy balance, the numbered figures and the motion."""
@@ -330,10 +395,10 @@ def _document(result, title, lang, figures, player_html, model, mechanism):
     source = model.source.name if model is not None and model.source else None
     inputs = []
     if mechanism is not None:
-        inputs += model_rows(mechanism, lang, source=source)
+        inputs += model_rows(mechanism, lang, units, source=source)
         if model is not None and model.drive is not None:
-            inputs.append(drive_rows(model.drive, lang, mechanism=mechanism))
-    rows = summary(result, lang)
+            inputs.append(drive_rows(model.drive, lang, units, mechanism))
+    rows = summary(result, lang, units, mechanism)
     verdict = {"status": "ok" if result.status == 0 else "fail", "text": rows[0][0],
                "href": "results"}
     sections = [{"anchor": "results", "title": t("sim_results", lang),
