@@ -72,3 +72,25 @@ def test_circular_conditions_are_refused():
     # solvable only together, not one at a time
     with pytest.raises(DesignError, match="cannot be solved one at a time"):
         solve_conditions(m, conds)
+
+
+def test_a_failing_condition_speaks_the_files_units():
+    """A ``[[solve]]`` written in inches and degrees that cannot be met says so in inches
+    and degrees (the bracket, the target, the residual's range), not in m and rad."""
+    from assur import io
+    from assur.io import ModelFileError
+
+    text = io.bundled("hitch_003").read_text(encoding="utf-8")
+    bad = text.replace('bracket = ["0.56 m", "1.05 m"]', 'bracket = ["22 in", "26 in"]') \
+        .replace('equals = "90 deg"', 'equals = "120 deg"')
+    assert bad.count("22 in") == 1 and bad.count("120 deg") == 1
+    with pytest.raises(ModelFileError) as exc:
+        io.loads(bad, name="hitch.toml")
+    msg = str(exc.value)
+    assert "phi6(S = Sp) = 120 deg for L7" in msg
+    assert "no root for L7 in the bracket [22 in, 26 in]" in msg
+    lo, hi = (float(x) for x in
+              __import__("re").search(r"between (\S+) deg and (\S+) deg", msg).groups())
+    # φ6 − 120° stays negative over the bracket: φ6 stays below 120° there
+    assert -90 < lo < hi < 0
+    assert "rad" not in msg and " m]" not in msg

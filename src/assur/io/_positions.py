@@ -65,8 +65,14 @@ class Conditions:
             at = {c: self.resolved[sp + ("at", c)] for c in self.coords}
             line = self.line(sp)
             file = getattr(line, "file", None) or self.file
+            # the unknown in the unit its bracket is written in (else the parameter's)
+            written = [parse(v) for v in s.bracket]
+            given = [p for p in written if not isinstance(p, str) and p.unit is not None]
+            unknown_unit = (display_unit(given[0], self.param_kind.get(s.unknown)) if given
+                            else self.units.get(s.unknown))
             conds.append(Condition(s.unknown, tuple(bracket), at, s.quantity, float(target),
-                                   source=f"{file}:{int(line)}", unit=shown))
+                                   source=f"{file}:{int(line)}", unit=shown,
+                                   unknown_unit=unknown_unit))
         return conds
 
     def bracket_value(self, path, v, unknown):

@@ -71,6 +71,10 @@ class Condition:
     unit : assur.core.quantities.Unit, optional
         The unit to show the target (and the residual) in: the one the file wrote
         ``equals`` in (``"90 deg"``); None: the quantity's default (m, or degrees).
+    unknown_unit : assur.core.quantities.Unit, optional
+        The unit to show the unknown (its bracket, roots) in: the one the file gives
+        the parameter; None: SI. Messages of a condition that fails say so in these
+        units (a bracket in inches, a target in degrees).
 
     Examples
     --------
@@ -91,6 +95,26 @@ class Condition:
     target: float
     source: str | None = None
     unit: object = None
+    unknown_unit: object = None
+
+    def shown(self, value, of="quantity", digits=6) -> str:
+        """``value`` [SI] of the quantity (or ``of="unknown"``) as the messages show it:
+        in :attr:`unit` (:attr:`unknown_unit`) with its symbol, else as it is [SI].
+
+        Examples
+        --------
+        >>> import math
+        >>> from assur.core.quantities import Unit
+        >>> from assur.synthesis.conditions import Condition
+        >>> c = Condition("L7", (0.56, 1.05), {"S": "Sp"}, "phi6", math.pi / 2,
+        ...               unit=Unit("deg", math.pi / 180), unknown_unit=Unit("in", 0.0254))
+        >>> c.shown(math.pi / 2), c.shown(0.6604, "unknown")
+        ('90 deg', '26 in')
+        """
+        u = self.unit if of == "quantity" else self.unknown_unit
+        if u is None:
+            return f"{value:.{digits}g}"
+        return f"{float(u.of(value)):.{digits}g} {u.text}"
 
     def describe(self):
         """The condition in one line, ``quantity(position) = target for unknown (source)``
@@ -106,7 +130,7 @@ class Condition:
         """
         at = ", ".join(f"{k} = {v}" for k, v in self.at.items())
         src = f" ({self.source})" if self.source else ""
-        return f"{self.quantity}({at}) = {self.target:.6g} for {self.unknown}{src}"
+        return f"{self.quantity}({at}) = {self.shown(self.target)} for {self.unknown}{src}"
 
 
 @dataclass
@@ -316,12 +340,13 @@ def _solve_one(mech, c, xtol):
     grid = np.linspace(lo, hi, SCAN_POINTS)
     r, ok = condition_residual(mech, c, grid)
     notes = []
+    bracket = f"[{c.shown(lo, 'unknown')}, {c.shown(hi, 'unknown')}]"
     if not ok.any():
         raise DesignError(f"condition {c.describe()}: the mechanism does not assemble anywhere "
-                          f"in the bracket [{lo:.6g}, {hi:.6g}]")
+                          f"in the bracket {bracket}")
     if not ok.all():
         notes.append(f"the mechanism does not assemble for {c.unknown} in "
-                     f"{_spans(grid, ~ok)}")
+                     f"{_spans(grid, ~ok, c)}")
     roots = []
     exact = np.flatnonzero(ok & (r == 0))
     for i in exact:
@@ -335,13 +360,13 @@ def _solve_one(mech, c, xtol):
     if not roots:
         rr = r[ok]
         raise DesignError(f"condition {c.describe()}: no root for {c.unknown} in the bracket "
-                          f"[{lo:.6g}, {hi:.6g}]: {c.quantity} − target stays between "
-                          f"{rr.min():.4g} and {rr.max():.4g}" + (f"; {notes[0]}" if notes
-                                                                  else ""))
+                          f"{bracket}: {c.quantity} − target stays between "
+                          f"{c.shown(rr.min(), digits=4)} and {c.shown(rr.max(), digits=4)}"
+                          + (f"; {notes[0]}" if notes else ""))
     if len(roots) > 1:
-        where = ", ".join(f"≈{0.5 * (a + b):.6g}" for a, b in roots[:6])
+        where = ", ".join(f"≈{c.shown(0.5 * (a + b), 'unknown')}" for a, b in roots[:6])
         raise DesignError(f"condition {c.describe()}: {len(roots)} roots for {c.unknown} in "
-                          f"the bracket [{lo:.6g}, {hi:.6g}] ({where}); narrow the bracket")
+                          f"the bracket {bracket} ({where}); narrow the bracket")
     a, b = roots[0]
     count = [0]
 
@@ -350,7 +375,7 @@ def _solve_one(mech, c, xtol):
         rv, okv = condition_residual(mech, c, np.array([x]))
         if not okv[0]:
             raise AssemblyError(f"condition {c.describe()}: the mechanism does not assemble at "
-                                f"{c.unknown} = {x:.9g}")
+                                f"{c.unknown} = {c.shown(x, 'unknown', 9)}")
         return float(rv[0])
 
     from scipy.optimize import brentq  # imported here: a cached solve does not need it
@@ -360,7 +385,8 @@ def _solve_one(mech, c, xtol):
     return SolvedCondition(c, float(x), res, count[0] + SCAN_POINTS, notes)
 
 
-def _spans(grid, mask):
+def _spans(grid, mask, c):
     idx = np.flatnonzero(mask)
     runs = np.split(idx, np.flatnonzero(np.diff(idx) != 1) + 1)
-    return ", ".join(f"[{grid[r[0]]:.4g}, {grid[r[-1]]:.4g}]" for r in runs if len(r))
+    return ", ".join(f"[{c.shown(grid[r[0]], 'unknown', 4)}, {c.shown(grid[r[-1]], 'unknown', 4)}]"
+                     for r in runs if len(r))

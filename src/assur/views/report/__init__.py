@@ -181,6 +181,8 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
                 p.write_bytes(png)
                 written["png"].append(p)
             if "svg" in formats:
+                # laid out once for the PNG: the SVG keeps those places (no second layout)
+                fig.set_layout_engine("none")
                 written["svg"].append(_figures.save(fig, out / f"fig_{name}.svg"))
         step("drawing")
         fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design, units=du)
@@ -190,6 +192,7 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
             p.write_bytes(drawing_png)
             written["png"].append(p)
         if "svg" in formats:
+            fig.set_layout_engine("none")  # laid out for the PNG
             written["svg"].append(_figures.save(fig, out / "mechanism.svg"))
     anim = False
     if "gif" in formats and frames <= 0:
