@@ -6,6 +6,8 @@ from __future__ import annotations
 import io
 from pathlib import Path
 
+import numpy as np
+
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
@@ -78,6 +80,15 @@ def to_png_bytes(fig, dpi=110, bbox_inches=None) -> bytes:
     (b'PNG', 320, 200)
     """
     buf = io.BytesIO()
+    if bbox_inches is None and hasattr(fig.canvas, "buffer_rgba"):
+        # one draw on the Agg canvas (its layout included) and Pillow's encoder: the
+        # same pixels as savefig, which draws the figure twice (a pass to lay it out)
+        from PIL import Image
+
+        fig.set_dpi(dpi)
+        fig.canvas.draw()
+        Image.fromarray(np.asarray(fig.canvas.buffer_rgba())).save(buf, format="PNG")
+        return buf.getvalue()
     fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": None},
                 bbox_inches=bbox_inches)
     return buf.getvalue()
