@@ -207,56 +207,62 @@ def write_xlsx(tables, path, lang="en", inputs=None) -> Path:
     (0.42, 129614, '0')
     """
     from openpyxl import Workbook
+    from openpyxl.cell import WriteOnlyCell
     from openpyxl.styles import Font
     from openpyxl.utils import get_column_letter
 
     bold, title_font = Font(bold=True), Font(bold=True, size=12)
     unit_font = Font(italic=True, color="57606A")
-    wb = Workbook()
-    wb.remove(wb.active)
-    taken = []
-    if inputs:
-        ws = wb.create_sheet(t("inputs_sheet", lang))
-        taken.append(ws.title)
-        width = [12, 14, 10]
-        for heading, rows in inputs:
-            ws.append([heading])
-            ws.cell(ws.max_row, 1).font = title_font
-            for row in rows:
-                ws.append([_xlsx_value(v) if not isinstance(v, str) else v for v in row])
-                for j, v in enumerate(row):
-                    if j < len(width):
-                        width[j] = max(width[j], min(60, len(str(v)) + 2))
-            ws.append([])
-        for j, w in enumerate(width, start=1):
-            ws.column_dimensions[get_column_letter(j)].width = w
-    for tab in tables:
-        ws = wb.create_sheet(sheet_name(tab, lang, taken))
-        taken.append(ws.title)
-        ws.append([f"{t('table', lang)} {tab.label} — {tab.title(lang)}"])
-        ws["A1"].font = title_font
-        ws.append([c.symbol for c in tab.columns])
-        ws.append([unit(c.unit, lang) for c in tab.columns])
-        for cell in ws[2]:
-            cell.font = bold
-        for cell in ws[3]:
-            cell.font = unit_font
-        for row in zip(*(c.values for c in tab.columns)):
-            ws.append([_xlsx_value(x) for x in row])
-        for j, c in enumerate(tab.columns, start=1):
-            letter = get_column_letter(j)
-            fmt = number_format(c.values)
-            for (cell,) in ws.iter_rows(min_row=4, min_col=j, max_col=j):
-                cell.number_format = fmt
-            ws.column_dimensions[letter].width = max(10, len(c.symbol) + 3, len(c.unit) + 3)
-        notes = [n.get(lang, n.get("en", "")) for n in tab.notes]
-        if notes:
-            ws.append([])
-            for n in notes:
-                ws.append([n])
-        ws.freeze_panes = "B4"
+    # write-only: each row streamed to the file as it is appended (a crank turn's 361
+    # rows of 30 columns keep no cell object per value), every float written by repr
     path = Path(path)
     with _exact_floats():
+        wb = Workbook(write_only=True)
+        taken = []
+
+        def styled(ws, value, font=None, number_format=None):
+            cell = WriteOnlyCell(ws, value=value)
+            if font is not None:
+                cell.font = font
+            if number_format is not None:
+                cell.number_format = number_format
+            return cell
+
+        if inputs:
+            ws = wb.create_sheet(t("inputs_sheet", lang))
+            taken.append(ws.title)
+            width = [12, 14, 10]
+            for _, rows in inputs:
+                for row in rows:
+                    for j, v in enumerate(row[:len(width)]):
+                        width[j] = max(width[j], min(60, len(str(v)) + 2))
+            for j, w in enumerate(width, start=1):
+                ws.column_dimensions[get_column_letter(j)].width = w
+            for heading, rows in inputs:
+                ws.append([styled(ws, heading, title_font)])
+                for row in rows:
+                    ws.append([_xlsx_value(v) if not isinstance(v, str) else v for v in row])
+                ws.append([])
+        for tab in tables:
+            ws = wb.create_sheet(sheet_name(tab, lang, taken))
+            taken.append(ws.title)
+            ws.freeze_panes = "B4"
+            for j, c in enumerate(tab.columns, start=1):
+                ws.column_dimensions[get_column_letter(j)].width = max(10, len(c.symbol) + 3,
+                                                                       len(c.unit) + 3)
+            ws.append([styled(ws, f"{t('table', lang)} {tab.label} — {tab.title(lang)}",
+                              title_font)])
+            ws.append([styled(ws, c.symbol, bold) for c in tab.columns])
+            ws.append([styled(ws, unit(c.unit, lang), unit_font) for c in tab.columns])
+            formats = [number_format(c.values) for c in tab.columns]
+            for row in zip(*(c.values for c in tab.columns)):
+                ws.append([styled(ws, _xlsx_value(x), number_format=f)
+                           for x, f in zip(row, formats)])
+            notes = [n.get(lang, n.get("en", "")) for n in tab.notes]
+            if notes:
+                ws.append([])
+                for n in notes:
+                    ws.append([n])
         wb.save(path)
     return path
 
@@ -270,7 +276,7 @@ def _xlsx_value(x):
 
 
 class _exact_floats:
-    """While saving, write floats with ``repr`` (the shortest text that reads back as
+    """While writing, floats with ``repr`` (the shortest text that reads back as
     the same double) instead of openpyxl's ``"%.16g"``, which rounds some doubles
     (e.g. 0.47555555555555556 becomes 0.4755555555555556, one ulp off). Patches
     the cell writer's formatter for the duration of the ``with`` block only."""
