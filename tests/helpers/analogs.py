@@ -497,22 +497,28 @@ def fd_steps(case, kern):
 
     ``h_j = H_REL · min(c_j, ρ_j)``: ``c_j`` the coordinate's scale (1 rad for a crank
     angle, its reference value for a length) and ``ρ_j`` the length in q_j over which
-    the first-order analogs change by their own size, ``ρ_j = |J|/|∂J/∂q_j|`` taken
-    over a whole family (lengths or angles) in the coordinates' units. Near an
+    the first-order analogs change by their own size, ``ρ_j = |J|/|∂J/∂q_j|``, the
+    largest |J| and |∂J/∂q_j| of any family (lengths or angles) in the coordinates'
+    units. Near an
     assembly limit the analogs behave like √(q − q*) and ρ ≈ 2|q − q*| shrinks
     even at a fair transmission angle (short links), so a fixed step would not do.
     The kernel's Hessian only *sizes* the step here: a wrong one makes the step
     smaller (more rounding) or the default, never the reference equal to it.
     """
     c = case.scale[:, None, :]  # (M, 1, k)
-    rho = np.full(case.Q.shape, np.inf)
+    s1 = np.zeros(case.Q.shape[:2])  # (M, n): the largest |J| of any family
+    s2 = np.zeros(case.Q.shape)      # (M, n, k): the largest |∂J/∂q_j| of any family
     for _, J, H in kern.values():
-        s1 = (np.abs(J).max(axis=2) * c).max(axis=-1)  # (M, n): |J| in family units
-        s2 = (np.abs(H).max(axis=2) * c[..., None]).max(axis=-2)  # (M, n, k): |∂J/∂q_j|
-        # a Hessian of rounding size (e.g. a denormal drawn angle) sets no step: only
-        # one large enough that |J|/|H| stays a finite number of lengths
-        with_h = s2 > 1e-200 * np.maximum(s1[..., None], 1.0)
-        rho = np.where(with_h, np.minimum(rho, s1[..., None] / np.where(with_h, s2, 1.0)), rho)
+        s1 = np.maximum(s1, (np.abs(J).max(axis=2) * c).max(axis=-1))  # in family units
+        s2 = np.maximum(s2, (np.abs(H).max(axis=2) * c[..., None]).max(axis=-2))
+    # ρ from the largest analogs of any family, not family by family: a link at a
+    # stationary angle (φ' ≈ 0, φ'' ≠ 0) has |J|/|H| ≈ 0 with nothing singular about
+    # it, and a step that small (5e-10 rad) lets rounding (ε·|J|/h ≈ 1e-7) exceed the
+    # tolerance; near an assembly limit the singular family has the largest |H|, and a
+    # ρ even 10× too large keeps the fourth-order truncation (h/ρ)⁴ below 1e-12.
+    # A Hessian of rounding size (a denormal drawn angle) sets no step.
+    with_h = s2 > 1e-200 * np.maximum(s1[..., None], 1.0)
+    rho = np.where(with_h, s1[..., None] / np.where(with_h, s2, 1.0), np.inf)
     return H_REL * np.minimum(c, rho)
 
 
