@@ -59,7 +59,8 @@ def check(file: Path = typer.Argument(..., help="Model file (TOML)."),
     _ok(f"{file} assembles at every position ({time.perf_counter() - t0:.2f} s)")
 
 
-def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, units=""):
+def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, units="",
+                jobs=0):
     from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
     from ...errors import AssemblyError, ModelError, SingularPositionError
@@ -81,7 +82,7 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, un
 
         try:
             files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,
-                                 positions=positions, frames=frames, units=du)
+                                 positions=positions, frames=frames, units=du, jobs=jobs)
         except OSError as e:  # disk full, permissions changed: one message, no traceback
             _fail(f"{output}: cannot write the report: {e.strerror or e}")
         except PdfError as e:  # Chromium failed or timed out printing the report
@@ -108,7 +109,10 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                              "and last."),
             frames: int = typer.Option(30, "--frames", min=0,
                                        help="Frames of the mechanism's animation (GIF, "
-                                            "HTML report), at most; 0: no animation.")):
+                                            "HTML report), at most; 0: no animation."),
+            jobs: int = typer.Option(0, "--jobs", min=0,
+                                     help="Processes rendering the figures; 0: one per "
+                                          "core.")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
     if lang:
         _check_lang(lang)
@@ -122,7 +126,7 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
         except PdfError as e:
             _fail(str(e))
     model = _load(file)
-    _, files = _run_report(model, output, lang, fmts, draw_at, frames, units)
+    _, files = _run_report(model, output, lang, fmts, draw_at, frames, units, jobs)
     _summary(files, output)
 
 

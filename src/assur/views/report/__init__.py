@@ -72,7 +72,7 @@ def report_steps(formats=DEFAULT_FORMATS, frames=30) -> list:
 
 def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=None,
                  design=None,
-                 frames=30, positions=None, units=None) -> dict:
+                 frames=30, positions=None, units=None, jobs=1) -> dict:
     """Write tables, diagrams, the drawing, the animation and the HTML report.
 
     Parameters
@@ -105,6 +105,10 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
         kind of quantity in the unit the model file writes it in), ``"engineering"``,
         ``"si"`` or ``"imperial"`` (:mod:`assur.core.display`); default: the model
         file's ``[display] units``, else ``"file"``.
+    jobs : int
+        Processes that render the figures (forked from this one where the system
+        forks, each rendering some of them; 0: one per core). ``assur analyze``
+        uses every core; 1 (the default here) renders them in this process.
 
     Returns
     -------
@@ -163,27 +167,16 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     pngs, drawing_png = {}, None
     if {"png", "svg", "html", "pdf"} & set(formats):
         step("figures")
-        figs = dict(_figures.figures(analysis, lang, design=design, units=du))
-        if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
-            from . import dynamics as _dynamics
-            figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
-                                          balancing=analysis.balancing, units=du))
-        if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
-            from .lift import lift_test_figure
-            figs["lift_test"] = lift_test_figure(analysis, lang, units=du)
-        for name, fig in figs.items():
-            # a figure of maps (two coordinates) has its title above the panels
-            caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
-            png = _figures.to_png_bytes(fig)
+        figs = _figure_set(analysis, lang, design, du)
+        svg_dir = out if "svg" in formats else None
+        for name, png, caption, svg in _render_figures(figs, svg_dir, jobs):
             pngs[name] = (png, caption)
             if "png" in formats:
                 p = out / f"fig_{name}.png"
                 p.write_bytes(png)
                 written["png"].append(p)
-            if "svg" in formats:
-                # laid out once for the PNG: the SVG keeps those places (no second layout)
-                fig.set_layout_engine("none")
-                written["svg"].append(_figures.save(fig, out / f"fig_{name}.svg"))
+            if svg is not None:
+                written["svg"].append(svg)
         step("drawing")
         fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design, units=du)
         drawing_png = _figures.to_png_bytes(fig)
@@ -224,3 +217,66 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
                                         animation=False, design=design, units=du)
                 written["pdf"] = [write_pdf(page, out / "report.pdf")]
     return written
+
+
+def _figure_set(analysis, lang, design, du) -> dict:
+    """Every diagram of the report, ``{name: Figure}`` in its order: the analysis'
+    (:func:`assur.views.report.figures.figures`), the crank dynamics', the lift test's."""
+    from . import figures as _figures
+    figs = dict(_figures.figures(analysis, lang, design=design, units=du))
+    if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
+        from . import dynamics as _dynamics
+        figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
+                                      balancing=analysis.balancing, units=du))
+    if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
+        from .lift import lift_test_figure
+        figs["lift_test"] = lift_test_figure(analysis, lang, units=du)
+    return figs
+
+
+def _render_one(figs, name, svg_dir):
+    """``(name, PNG bytes, caption, SVG path or None)`` of one figure."""
+    from . import figures as _figures
+    fig = figs[name]
+    # a figure of maps (two coordinates) has its title above the panels
+    caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
+    png = _figures.to_png_bytes(fig)
+    svg = None
+    if svg_dir is not None:
+        fig.set_layout_engine("none")  # laid out for the PNG: the SVG keeps its places
+        svg = _figures.save(fig, Path(svg_dir) / f"fig_{name}.svg")
+    return name, png, caption, svg
+
+
+#: what the forked renderers read: the parent's figures (inherited, not pickled)
+_JOB: dict = {}
+
+
+def _render_part(names):
+    return [_render_one(_JOB["figs"], n, _JOB["svg"]) for n in names]
+
+
+def _render_figures(figs, svg_dir, jobs=1) -> list:
+    """Every figure of ``figs`` rendered (:func:`_render_one`), in order; with ``jobs``
+    > 1 (0: a process per core) by that many processes forked from this one, each
+    rendering a share of them (balanced by their panels), where the system forks."""
+    import multiprocessing as mp
+    import os
+
+    names = list(figs)
+    jobs = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
+    jobs = min(jobs, len(names))
+    if jobs <= 1 or "fork" not in mp.get_all_start_methods():
+        return [_render_one(figs, n, svg_dir) for n in names]
+    parts, load = [[] for _ in range(jobs)], [0] * jobs
+    for n in sorted(names, key=lambda n: -len(figs[n].axes)):
+        k = load.index(min(load))
+        parts[k].append(n)
+        load[k] += len(figs[n].axes) + 1
+    _JOB.update(figs=figs, svg=svg_dir)
+    try:
+        with mp.get_context("fork").Pool(jobs) as pool:
+            done = {r[0]: r for part in pool.map(_render_part, parts) for r in part}
+    finally:
+        _JOB.clear()
+    return [done[n] for n in names]
