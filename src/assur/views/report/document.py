@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from ...core.display import parameter_units, unit_system
+from ...core.display import unit_system
 from ...texts import localize
 from .labels import TEXT, check_lang, t, unit
 from .numbers import number
@@ -35,16 +35,14 @@ def model_rows(mechanism, lang="en", units=None, source=None) -> list:
     >>> [r for r in rows2 if r[0] in ("L3", "m6")]   # as the file gives them
     [('L3', '250', 'mm'), ('m6', '1000', 'kg')]
     """
-    from .html import unit_text, parameter_value
+    from .html import parameter_rows
     check_lang(lang)
     du = unit_system(mechanism, units)
-    shown = parameter_units(mechanism, du)
     model = [(t("title", lang), localize(mechanism.title, lang)), (t("name", lang),
                                                                   mechanism.name)]
     if source:
         model.append((t("model_file", lang), str(source)))
-    params = [(n, parameter_value(v, shown[n], lang), unit_text(shown[n], lang))
-              for n, v in mechanism.params.items()]
+    params = parameter_rows(mechanism, du, lang)
     return [(t("summary", lang), None, model),
             (t("parameters", lang), (t("name", lang), t("value", lang), t("unit", lang)),
              params)]

@@ -49,12 +49,21 @@ def unit_text(u, lang):
     return "°" if u.is_degrees else unit(u.text, lang)
 
 
+def parameter_rows(mech, du, lang) -> list:
+    """``(name, value, unit)`` of every parameter as the reports show it: the value in
+    its display unit (the file's, for the ``file`` system) with the report's number
+    notation, the unit in ``lang`` (the analysis report's and the other documents'
+    inputs)."""
+    units = parameter_units(mech, du)
+    return [(n, parameter_value(v, units[n], lang), unit_text(units[n], lang))
+            for n, v in mech.params.items()]
+
+
 def _summary(analysis, lang, du):
     mech = analysis.mechanism
     kin = analysis.kinematics
+    params = parameter_rows(mech, du, lang)
     units = parameter_units(mech, du)
-    params = [(n, parameter_value(v, units[n], lang), unit_text(units[n], lang))
-              for n, v in mech.params.items()]
     coords = []
     for c in kin.coordinates:
         q = np.asarray(kin.q(c), dtype=float)
