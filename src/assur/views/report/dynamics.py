@@ -43,10 +43,25 @@ def _units(dynamics, units):
 
 
 def _sorted_degrees(q, *ys):
-    """Crank angles wrapped to [0°, 360°) and sorted, with the ys in that order."""
+    """Crank angles wrapped to [0°, 360°) and sorted, with the ys in that order; a
+    position that repeats an earlier one a turn later (a full turn's 360° after its 0°)
+    is drawn once.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.views.report.dynamics import _sorted_degrees
+    >>> x, y = _sorted_degrees(np.radians([0.0, 90.0, 180.0, 270.0, 360.0]), [1, 2, 3, 4, 1])
+    >>> x.tolist(), y.tolist()
+    ([0.0, 90.0, 180.0, 270.0], [1, 2, 3, 4])
+    """
     deg = np.mod(np.degrees(np.ravel(q)), 360.0)
+    deg = np.where(np.isclose(deg, 360.0, rtol=0.0, atol=1e-9), 0.0, deg)
+    _, first = np.unique(np.round(deg, 9), return_index=True)  # sorted, each angle once
+    keep = np.sort(first)
+    deg = deg[keep]
     order = np.argsort(deg, kind="stable")
-    return (deg[order],) + tuple(np.ravel(y)[order] for y in ys)
+    return (deg[order],) + tuple(np.ravel(y)[keep][order] for y in ys)
 
 
 def _turn(du, ax, x):
