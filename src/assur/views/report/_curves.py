@@ -40,6 +40,9 @@ def _math(sym, idx, prime=False):
 _PHI = r"\varphi"
 
 
+#: the most positions whose curves are drawn with a marker at each
+MARKED_POSITIONS = 40
+
 #: line styles and markers of a curve that coincides with one drawn before it
 _SAME_STYLES = (dict(ls="--", marker="x", markersize=7, lw=1.6),
                 dict(ls=":", marker="+", markersize=9, lw=1.6),
@@ -255,7 +258,13 @@ class _Plot:
             kw.update(_SAME_STYLES[(len(same) - 1) % len(_SAME_STYLES)])
             label = f"{label} = {same[0]}"
             kw.setdefault("zorder", 3)
-        kw.setdefault("marker", "o")
+        # a marker at each position where the positions are few (a seed's table of 10),
+        # none on a dense curve (a crank turn's 361) but the marks that tell a curve from
+        # the one it coincides with, then every n/12-th
+        dense = len(self.x) > MARKED_POSITIONS
+        if dense and "marker" in kw:
+            kw.setdefault("markevery", max(1, len(self.x) // 12))
+        kw.setdefault("marker", None if dense else "o")
         kw.setdefault("markersize", 3)
         xs, ys = self.x[self.order], y[self.order]
         breaks = wrap_breaks(ys) if angle and self.v.angles == "wrapped" else []
