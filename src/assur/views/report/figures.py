@@ -319,7 +319,8 @@ def reactions(analysis, lang="en", design=None, units=None):
     v = p.v
     if not v.mech.loads:
         return None
-    fig, ax = p.axes(t("f_reactions", lang), t("y_reaction", lang), "N", width=7.2)
+    fig, ax = p.axes(t("f_reactions", lang) + _static(analysis, lang), t("y_reaction", lang),
+                     "N", width=7.2)
     rs = _reactions(v)
     markers = "osv^Dx+<>pP*h"
     for k, (name, i, j) in enumerate(rs):
@@ -369,7 +370,7 @@ def hodograph(analysis, lang="en", design=None, units=None):
     if best is None:
         return None
     _, name, link, rx, ry = best
-    title = t("f_hodograph", lang, f"{name} (0 → {link})")
+    title = t("f_hodograph", lang, f"{name} (0 → {link})") + _static(analysis, lang)
     fig = new_figure(6.0, 5.0)
     ax = fig.add_subplot()
     ax.set_title(title)
@@ -429,6 +430,13 @@ def stability(analysis, lang="en", design=None, units=None):
     ax.set_ylim(0, top * 1.25 + 1)
     ax.legend(fontsize="small")
     return p.done(fig, ax)
+
+
+def _static(analysis, lang):
+    """`` (without inertia)`` for the figures of the static reactions of a machine whose
+    report also draws them with the inertia loads (crank dynamics), else nothing."""
+    return t("without_inertia", lang) if getattr(analysis, "dynamics", None) is not None \
+        else ""
 
 
 #: name -> function, in the report's order
