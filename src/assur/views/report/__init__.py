@@ -106,9 +106,9 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
         ``"si"`` or ``"imperial"`` (:mod:`assur.core.display`); default: the model
         file's ``[display] units``, else ``"file"``.
     jobs : int
-        Processes that render the figures (forked from this one where the system
-        forks, each rendering some of them; 0: one per core). ``assur analyze``
-        uses every core; 1 (the default here) renders them in this process.
+        Processes that render the figures (on Linux forked from this one, each
+        rendering some of them; 0: one per core; elsewhere this process renders them).
+        ``assur analyze`` uses every core; 1 (the default here) this process alone.
 
     Returns
     -------
@@ -259,14 +259,16 @@ def _render_part(names):
 def _render_figures(figs, svg_dir, jobs=1) -> list:
     """Every figure of ``figs`` rendered (:func:`_render_one`), in order; with ``jobs``
     > 1 (0: a process per core) by that many processes forked from this one, each
-    rendering a share of them (balanced by their panels), where the system forks."""
+    rendering a share of them (balanced by their panels), on Linux (where forking is
+    the processes' own way to start; elsewhere in this process)."""
     import multiprocessing as mp
     import os
+    import sys
 
     names = list(figs)
     jobs = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
     jobs = min(jobs, len(names))
-    if jobs <= 1 or "fork" not in mp.get_all_start_methods():
+    if jobs <= 1 or not sys.platform.startswith("linux"):
         return [_render_one(figs, n, svg_dir) for n in names]
     parts, load = [[] for _ in range(jobs)], [0] * jobs
     for n in sorted(names, key=lambda n: -len(figs[n].axes)):
