@@ -63,8 +63,24 @@ def test_convert_round_trips(x, kind, system):
 
 def test_a_unit_of_no_kind_is_left_as_it_is():
     du = unit_system(None, "imperial")
-    assert du.convert([1.0, 2.0], "MPa/s") == ([1.0, 2.0], "MPa/s")
+    assert du.convert([1.0, 2.0], "furlong") == ([1.0, 2.0], "furlong")
+    assert du.convert([1.0, 2.0], "furlong/s") == ([1.0, 2.0], "furlong/s")
     assert kind_of("furlong") is None and kind_of("kN") == "force" and kind_of("J") == "energy"
+
+
+def test_a_ratio_of_two_kinds_takes_the_systems_units_of_its_parts():
+    """A pressure per time (a simulation's dp/dt) or a mass per length (m'), which have
+    no kind of their own: each part in the system's unit of its kind, with pint's
+    factors."""
+    import pint
+    ureg = pint.UnitRegistry()
+    du = unit_system(None, "imperial")
+    v, u = du.convert(np.array([1.0, 2.0]), "MPa/s")
+    assert u == "psi/s"
+    np.testing.assert_allclose(v, [(1.0 * ureg("MPa/s")).to("psi/s").magnitude,
+                                   (2.0 * ureg("MPa/s")).to("psi/s").magnitude], rtol=1e-12)
+    v, u = unit_system(None, "engineering").convert(3000.0, "kg/m")
+    assert (float(v), u) == (3.0, "kg/mm")
 
 
 def test_file_system_follows_the_model_file():

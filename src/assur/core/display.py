@@ -230,8 +230,9 @@ class DisplayUnits:
 
     def convert(self, values, text: str):
         """Values shown in ``text`` (a table column's unit: ``"m"``, ``"deg"``,
-        ``"kN"``…) converted to this system: ``(values, unit text)``; a unit of no
-        known kind is returned as it is.
+        ``"kN"``…) converted to this system: ``(values, unit text)``; a ratio of two
+        units of known kinds with no kind of its own (``"MPa/s"``, ``"kg/m"``) in the
+        system's units of its parts; any other unit of no known kind as it is.
 
         Examples
         --------
@@ -240,11 +241,22 @@ class DisplayUnits:
         >>> v, u = si.convert(180.0, "deg")            # 180° [rad]
         >>> round(float(v), 6), u
         (3.141593, 'rad')
-        >>> si.convert(2.5, "MPa/s")                   # no kind: as it is
-        (2.5, 'MPa/s')
+        >>> v, u = si.convert(2.5, "MPa/s")            # a pressure per time
+        >>> float(v), u
+        (2500000.0, 'Pa/s')
+        >>> v, u = unit_system(None, "engineering").convert(3000.0, "kg/m")
+        >>> float(v), u                                # [kg/mm]
+        (3.0, 'kg/mm')
+        >>> si.convert(2.5, "furlong")                 # no kind: as it is
+        (2.5, 'furlong')
         """
         kind = kind_of(text)
         if kind is None:
+            top, slash, bottom = text.rpartition("/")
+            if slash and kind_of(top) is not None and kind_of(bottom) is not None:
+                v, u = self.convert(values, top)
+                d, w = self.convert(1.0, bottom)
+                return np.asarray(v, dtype=float) / float(d), f"{u}/{w}"
             return values, text
         target = self.units[kind]
         if target.text == text:

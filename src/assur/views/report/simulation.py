@@ -63,17 +63,13 @@ def _units(units, mechanism):
 
 def _in(du, values, text):
     """``values`` given in ``text`` (SI) shown in the display units ``du``: ``(values,
-    unit)``; a rate of a known kind (``Pa/s``) and a mass per length (``kg/m``) in the
-    system's units of their parts; ``du`` None: in the lab's units (:data:`_LAB`)."""
+    unit)`` (:meth:`~assur.core.display.DisplayUnits.convert`: a rate ``Pa/s`` or a mass
+    per length ``kg/m`` in the system's units of their parts); ``du`` None: in the
+    lab's units (:data:`_LAB`)."""
     values = np.asarray(values, dtype=float)
     if du is None:
         shown, factor = _LAB.get(text, (text, 1.0))
         return values * factor, shown
-    if text in ("Pa/s", "kg/m"):
-        top, bottom = text.split("/")
-        v, u = du.convert(values, top)
-        d, w = du.convert(1.0, {"s": "s", "m": "m"}[bottom])
-        return np.asarray(v, float) / float(d), f"{u}/{w}"
     v, u = du.convert(values, text)
     return np.asarray(v, float), u
 
