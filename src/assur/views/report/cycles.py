@@ -52,7 +52,7 @@ from ._cycles_text import _T, _t, verdict_word
 from ._cycles_verdicts import (ABOUT, EFFECTIVE, PAPER, SEPARATE, Verdict, _by, conclusions,
                                drive_sweep, pump_conclusions)
 from .labels import check_lang, unit
-from .tables import Column, Table, in_units, write_csv, write_xlsx
+from .tables import Column, Table, in_units, write_csv, write_frame_csv, write_xlsx
 
 __all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "Verdict", "conclusions",
            "drive_sweep", "pump_conclusions", "tables",
@@ -274,12 +274,9 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
         for tab in tabs:
             files.append(write_csv(tab, out / f"cycles_{tab.id}.csv", lang))
         p = out / "cycles_conclusions.csv"
-        from .tables import CSV_DIALECTS
-        sep, _, encoding = CSV_DIALECTS[lang]  # the tables' dialect: ";" in Russian
-        pd.DataFrame([(v.key, v.claim, v.model, v.agrees, v.why) for v in verdicts],
-                     columns=["key", "claim", "model", "agrees", "why"]).to_csv(
-            p, index=False, sep=sep, encoding=encoding)
-        files.append(p)
+        files.append(write_frame_csv(pd.DataFrame(
+            [(v.key, v.claim, v.model, v.agrees, v.why) for v in verdicts],
+            columns=["key", "claim", "model", "agrees", "why"]), p, lang))
     if "xlsx" in formats:
         files.append(write_xlsx(tabs, out / "cycles.xlsx", lang=lang))
     figs = figures(df, lang, du, model.mechanism) if {"png", "html"} & set(formats) else {}

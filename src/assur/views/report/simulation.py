@@ -333,18 +333,14 @@ def write_simulation_report(result, outdir, title="", lang="en",
     files = []
     if "csv" in formats:
         # the analysis' CSV dialect: in Russian ";" and the decimal comma (UTF-8, BOM)
-        from .tables import CSV_DIALECTS
-        sep, mark, encoding = CSV_DIALECTS[lang]
-        p = out / "simulation.csv"
-        time_series(result, units, mechanism).to_csv(p, index=False, sep=sep, decimal=mark,
-                                                     encoding=encoding)
-        files.append(p)
         import pandas as pd
-        p = out / "simulation_summary.csv"
-        pd.DataFrame(summary(result, lang, units, mechanism),
-                     columns=["item", "value", "unit"]).to_csv(
-            p, index=False, sep=sep, encoding=encoding)
-        files.append(p)
+
+        from .tables import write_frame_csv
+        files.append(write_frame_csv(time_series(result, units, mechanism),
+                                     out / "simulation.csv", lang))
+        files.append(write_frame_csv(pd.DataFrame(summary(result, lang, units, mechanism),
+                                                  columns=["item", "value", "unit"]),
+                                     out / "simulation_summary.csv", lang))
     figs = figures(result, lang, units, mechanism) if {"png", "html"} & set(formats) else {}
     pngs = {name: to_png_bytes(f) for name, f in figs.items()}
     if "png" in formats:

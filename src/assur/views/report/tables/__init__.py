@@ -92,11 +92,11 @@ from ....core.columns import TABLE_IDS
 from ._assemble import FORMULAS_ID, NUMBERINGS, numbered, seed_tables
 from ._data import Column, Table, grid_of, in_units, wrap_degrees
 from ._files import CSV_DIALECTS, TABLE_CONTENTS, number_format, sheet_name, table_filename, write_csv, \
-    write_xlsx
+    write_frame_csv, write_xlsx
 # the report's figures and drawing read an analysis as the tables do
 from ._forces import _capacity
 from ._view import ANALOG_CONVENTIONS, ANGLE_CONVENTIONS, _View
 
-__all__ = ["Column", "Table", "seed_tables", "numbered", "NUMBERINGS", "write_csv", "write_xlsx", "table_filename", "TABLE_CONTENTS", "CSV_DIALECTS",
+__all__ = ["Column", "Table", "seed_tables", "numbered", "NUMBERINGS", "write_csv", "write_frame_csv", "write_xlsx", "table_filename", "TABLE_CONTENTS", "CSV_DIALECTS",
            "sheet_name", "number_format", "in_units",
            "TABLE_IDS", "grid_of"]

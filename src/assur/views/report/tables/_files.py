@@ -10,10 +10,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..labels import t, unit
+from ..labels import check_lang, t, unit
 
-__all__ = ["TABLE_CONTENTS", "table_filename", "write_csv", "write_xlsx", "sheet_name",
-           "number_format"]
+__all__ = ["TABLE_CONTENTS", "table_filename", "write_csv", "write_frame_csv", "write_xlsx",
+           "sheet_name", "number_format"]
 
 
 #: what each table holds, in a file name (by the table's id)
@@ -60,6 +60,28 @@ def _cell(v, lang="en"):
 #: the CSV dialect of each language: separator, decimal mark, encoding (a Russian
 #: Excel reads ``;`` and the decimal comma as a table, and UTF-8 only after a BOM)
 CSV_DIALECTS = {"en": (",", ".", "utf-8"), "ru": (";", ",", "utf-8-sig")}
+
+
+def write_frame_csv(frame, path, lang="en") -> Path:
+    """Write a pandas DataFrame (a simulation's time series, a list of verdicts) as CSV
+    in ``lang``'s dialect (:data:`CSV_DIALECTS`, as :func:`write_csv`): in Russian
+    ``;``, the decimal comma and a byte-order mark.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> import pandas as pd
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = write_frame_csv(pd.DataFrame({"t [s]": [0.5]}), Path(d) / "t.csv", "ru")
+    ...     text = p.read_text(encoding="utf-8-sig")
+    >>> text.splitlines()
+    ['t [s]', '0,5']
+    """
+    sep, mark, encoding = CSV_DIALECTS[check_lang(lang)]
+    path = Path(path)
+    frame.to_csv(path, index=False, sep=sep, decimal=mark, encoding=encoding)
+    return path
 
 
 def write_csv(table, path, lang="en") -> Path:
