@@ -6,6 +6,10 @@ directional valve 3, lines 4, cylinder 5; the oil of the lines and the cylinder
 lumped in one node, fig. 6.2). Each one
 
 * has ``type_name`` — the model file's ``type`` (``[[drive]]`` entries);
+* has ``title`` — what reports call the type, a :class:`assur.texts.Text` in every
+  language (``Text("gear pump", ru="шестерённый насос")``; default: ``type_name``),
+  and may have ``words`` — ``{word: Text}`` for the words its fields take in the file
+  (a valve's ``position = "raise"``);
 * has ``role`` — its place in the circuit: ``"pump"``, ``"relief"``, ``"valve"``,
   ``"line"``, ``"volume"``, ``"cylinder"`` or ``"divider"``;
 * has ``quantities`` — ``{field: kind}`` of its value fields (the units the file

@@ -8,6 +8,7 @@ from typing import ClassVar
 
 from ...core.cylinders import chamber_area
 from ...errors import ModelError
+from ...texts import Text
 from .base import positive, register
 
 __all__ = ["DriveCylinder"]
@@ -63,6 +64,7 @@ class DriveCylinder:
     name: str | None = None
 
     type_name: ClassVar[str] = "cylinder"
+    title: ClassVar[Text] = Text("cylinder", ru="гидроцилиндр")
     role: ClassVar[str] = "cylinder"
     quantities: ClassVar = {"bore": "length", "rod": "length", "s_min": "length",
                             "s_max": "length", "count": "number"}

@@ -9,6 +9,7 @@ from typing import ClassVar
 import numpy as np
 
 from ...errors import ModelError
+from ...texts import Text
 from .base import register
 
 __all__ = ["FlowDivider"]
@@ -39,6 +40,7 @@ class FlowDivider:
     name: str | None = None
 
     type_name: ClassVar[str] = "flow_divider"
+    title: ClassVar[Text] = Text("flow divider", ru="делитель потока")
     role: ClassVar[str] = "divider"
     quantities: ClassVar = {}
 

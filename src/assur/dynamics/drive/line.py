@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ...texts import Text
 from .base import nonneg, positive, register
 
 __all__ = ["Line", "LineLosses"]
@@ -51,6 +52,7 @@ class LineLosses:
     name: str | None = None
 
     type_name: ClassVar[str] = "line_losses"
+    title: ClassVar[Text] = Text("line losses", ru="потери в магистрали")
     role: ClassVar[str] = "line"
     quantities: ClassVar = {"a1": "inertance", "a2": "resistance", "a3": "turbulent resistance"}
 
@@ -127,6 +129,7 @@ class Line:
     name: str | None = None
 
     type_name: ClassVar[str] = "line"
+    title: ClassVar[Text] = Text("line", ru="трубопровод")
     role: ClassVar[str] = "line"
     quantities: ClassVar = {"length": "length", "diameter": "length", "density": "density",
                             "viscosity": "kinematic viscosity", "roughness": "length",

@@ -6,6 +6,7 @@ import math
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ...texts import Text
 from .base import positive, register
 
 __all__ = ["GearPump"]
@@ -42,6 +43,7 @@ class GearPump:
     name: str | None = None
 
     type_name: ClassVar[str] = "gear_pump"
+    title: ClassVar[Text] = Text("gear pump", ru="шестерённый насос")
     role: ClassVar[str] = "pump"
     quantities: ClassVar = {"displacement": "volume", "speed": "angular velocity",
                             "eta_volumetric": "number"}

@@ -7,6 +7,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from ...texts import Text
 from .base import nonneg, positive, register
 
 __all__ = ["ReliefValve"]
@@ -54,6 +55,7 @@ class ReliefValve:
     name: str | None = None
 
     type_name: ClassVar[str] = "relief_valve"
+    title: ClassVar[Text] = Text("relief valve", ru="предохранительный клапан")
     role: ClassVar[str] = "relief"
     quantities: ClassVar = {"setting": "pressure", "regulation_range": "pressure",
                             "nominal_flow": "flow"}

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ...errors import ModelError
+from ...texts import Text
 from .base import nonneg, positive, register
 
 __all__ = ["DirectionalValve", "POSITIONS"]
@@ -66,6 +67,12 @@ class DirectionalValve:
     name: str | None = None
 
     type_name: ClassVar[str] = "directional_valve"
+    title: ClassVar[Text] = Text("directional valve", ru="распределитель")
+    #: what reports call each word of the file's ``position``
+    words: ClassVar[dict] = {"raise": Text("raise (to the piston side)",
+                                           ru="подъём (в поршневую полость)"),
+                             "lower": Text("lower (to the rod side)",
+                                           ru="опускание (в штоковую полость)")}
     role: ClassVar[str] = "valve"
     quantities: ClassVar = {"dp_nominal": "pressure", "nominal_flow": "flow"}
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ...texts import Text
 from .base import positive, register
 
 __all__ = ["OilVolume", "BULK_MODULUS"]
@@ -54,6 +55,7 @@ class OilVolume:
     name: str | None = None
 
     type_name: ClassVar[str] = "oil_volume"
+    title: ClassVar[Text] = Text("oil volume", ru="объём жидкости")
     role: ClassVar[str] = "volume"
     quantities: ClassVar = {"volume": "volume", "bulk_modulus": "pressure"}
 

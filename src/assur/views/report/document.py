@@ -82,8 +82,7 @@ def drive_rows(circuit, lang="en", units=None, mechanism=None) -> tuple:
                                                                               or "si")
     rows = []
     for comp in circuit.components:
-        who = t(f"drive_{comp.type_name}", lang) if f"drive_{comp.type_name}" in TEXT \
-            else comp.type_name
+        who = localize(getattr(comp, "title", comp.type_name), lang)  # the type's own words
         if comp.name:
             who += f" «{localize(comp.name, lang)}»"
         for f in dataclasses.fields(comp):
@@ -102,9 +101,8 @@ def drive_rows(circuit, lang="en", units=None, mechanism=None) -> tuple:
             elif isinstance(v, tuple):
                 rows.append((who, key, "; ".join(number(float(x), None, lang) for x in v),
                              unit("-", lang)))
-            else:  # a word of the file ("raise"), in the report's language where known
-                word = f"drive_{f.name}_{v}"
-                rows.append((who, key, t(word, lang) if word in TEXT else localize(v, lang),
+            else:  # a word of the file ("raise"), in the component's words where it has them
+                rows.append((who, key, localize(getattr(comp, "words", {}).get(v, v), lang),
                              ""))
     return (t("drive_section", lang), (t("component", lang), t("key", lang), t("value", lang),
                                         t("unit", lang)), rows)
