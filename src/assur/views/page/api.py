@@ -88,11 +88,15 @@ class ExportRequest(_Request):
     """
 
     table: Optional[Annotated[str, StringConstraints(max_length=16)]] = None
+    #: the page's positions (one coordinate: evenly over its range, a crank's whole
+    #: turn); None: the file's own range
+    positions: Optional[int] = Field(None, ge=2, le=MAX_POSITIONS)
 
 
 class DxfRequest(_Request):
     """``POST /api/export/dxf``: the drawing at the coordinate values ``at`` (in the
-    coordinate's unit: m, or degrees for a crank), one layer per link.
+    coordinate's unit: m, or degrees for a crank; one coordinate: a position per
+    value; more: one value per coordinate, one position), one layer per link.
 
     Examples
     --------

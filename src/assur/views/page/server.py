@@ -106,7 +106,25 @@ def _user_error(e) -> JSONResponse:
     return JSONResponse({"ok": False, "error": {"kind": kind, "message": str(e)}})
 
 
-def create_app(model, lang: str = "en") -> FastAPI:
+def _warm(pm):
+    """Compute the page's first answer and the tables' export once in a background
+    thread, so the first request and the first download of the model do not wait
+    for kernels to compile, the tables to be built or the workbook writer to load."""
+    import threading
+
+    def run():
+        try:
+            from .api import AnalyzeRequest
+            positions = AnalyzeRequest().positions
+            pm.compute({}, positions=positions)
+            pm.export_tables({}, "xlsx", positions=positions)
+        except Exception:  # noqa: BLE001 - the page shows the model's error when asked
+            log.debug("warming the model failed", exc_info=True)
+
+    threading.Thread(target=run, name="assur-warm", daemon=True).start()
+
+
+def create_app(model, lang: str = "en", warm: bool = True) -> FastAPI:
     """The application serving one model file.
 
     Parameters
@@ -115,6 +133,9 @@ def create_app(model, lang: str = "en") -> FastAPI:
         The model file (read once; the page edits a copy of its text).
     lang : {"en", "ru"}
         The page's language by default.
+    warm : bool
+        Compute the first answer and the tables' export in the background at once
+        (:func:`_warm`), so the first ones the page asks for are not slow.
 
     Raises
     ------
@@ -143,6 +164,8 @@ def create_app(model, lang: str = "en") -> FastAPI:
     app = FastAPI(title="assur", docs_url=None, redoc_url=None, openapi_url="/api/openapi.json")
     app.add_middleware(_BodyLimit)
     app.state.page_model = pm
+    if warm:
+        _warm(pm)
     _add_error_handlers(app)
     _add_page_routes(app, lang)
     _add_api_routes(app, pm, lang)
@@ -188,7 +211,8 @@ def _add_page_routes(app, lang):
 
     @app.get("/static/{name}")
     def static(name: str):
-        types = {"page.js": "text/javascript", "page.css": "text/css"}
+        types = {"page.js": "text/javascript", "plot.js": "text/javascript",
+                 "page.css": "text/css"}
         if name not in types:
             return JSONResponse({"detail": "not found"}, status_code=404)
         return Response(_static(name), media_type=f"{types[name]}; charset=utf-8")
@@ -252,29 +276,38 @@ def _add_export_routes(app, pm):
                     "message": f"format must be one of: csv, xlsx, toml, dxf; got {fmt!r}"}},
                     status_code=404)
             data, media, name = pm.export_tables(dict(req.params), fmt, req.table, req.lang,
-                                                 req.units)
+                                                 req.units, positions=req.positions)
             return _download(data, media, name)
         except (ModelError, AssemblyError, SingularPositionError) as e:
             return _user_error(e)
 
 def _nearest(model, kin, at):
     """Indices of the positions nearest the coordinate values ``at`` (m, or degrees
-    for a crank); all positions' first and last when ``at`` is empty."""
+    for a crank): one coordinate — a position per value; more — ``at`` holds one
+    value per coordinate and names one position (the nearest, each coordinate
+    measured against its span); all positions' first and last when ``at`` is empty."""
     import numpy as np
     n = kin.shape[-1]
     if not at:
         return sorted({0, n - 1})
-    if kin.k != 1:
-        raise ModelError("at: coordinate values need a model with one coordinate")
-    c = kin.coordinates[0]
-    q = kin.q(c)
-    if model.mechanism.coordinate_kind(c) == "angle":
-        q = np.degrees(q)
-    lo, hi = float(np.min(q)), float(np.max(q))
-    bad = [v for v in at if not lo - 1e-9 <= v <= hi + 1e-9]
-    if bad:
-        raise ModelError(f"at: {bad} outside the range of {c}: {lo:.6g} … {hi:.6g}")
-    return [int(np.abs(q - v).argmin()) for v in at]
+    mech = model.mechanism
+    qs = []
+    for c in kin.coordinates:
+        q = np.ravel(kin.q(c))
+        qs.append(np.degrees(q) if mech.coordinate_kind(c) == "angle" else q)
+    if kin.k != 1 and len(at) != kin.k:
+        raise ModelError(f"at: one value per coordinate {list(kin.coordinates)} names a "
+                         f"position; got {len(at)} values")
+    values = [[v] for v in at] if kin.k != 1 else [list(at)]
+    for c, q, vs in zip(kin.coordinates, qs, values):
+        lo, hi = float(np.min(q)), float(np.max(q))
+        bad = [v for v in vs if not lo - 1e-9 <= v <= hi + 1e-9]
+        if bad:
+            raise ModelError(f"at: {bad} outside the range of {c}: {lo:.6g} … {hi:.6g}")
+    if kin.k == 1:
+        return [int(np.abs(qs[0] - v).argmin()) for v in at]
+    d = sum(((q - v) / max(float(np.ptp(q)), 1e-12)) ** 2 for q, v in zip(qs, at))
+    return [int(np.argmin(d))]
 
 
 class running:

@@ -42,7 +42,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["PageModel", "MAX_POSITIONS", "MAX_PARAMS"]
+__all__ = ["PageModel", "MAX_POSITIONS", "MAX_PARAMS", "default_plots"]
 
 #: most positions a page may ask for (the drawing, the plots and the live table)
 MAX_POSITIONS = 1001
@@ -79,6 +79,36 @@ def _toml_number(raw: str):
             return float(raw)
         except ValueError:
             return None
+
+
+#: kinds of quantity that are never negative (a mass, an inertia, a pressure, an area…)
+_NON_NEGATIVE = {"mass", "inertia", "pressure", "area", "volume", "time", "flow", "stiffness"}
+
+
+def _limits(name, unit, raw) -> dict:
+    """The physical span of a parameter's value, in the unit the file writes it:
+    ``{"min", "max", "integer"}`` (None: unbounded) — a count (a TOML integer without
+    a unit) is whole and not negative, an efficiency (``eta…``, ``η…``) lies in
+    0…1, a mass, an inertia, a pressure, an area, a volume, a time or a flow is
+    not negative; lengths (coordinates of points too), angles and forces may be
+    of either sign.
+
+    Examples
+    --------
+    >>> _limits("n_boom", "-", 2), _limits("eta_v", "-", 0.9)
+    ({'min': 0, 'max': None, 'integer': True}, {'min': 0, 'max': 1, 'integer': False})
+    >>> _limits("m", "kg", "1047 kg"), _limits("X01", "m", "-0.1 m")
+    ({'min': 0, 'max': None, 'integer': False}, {'min': None, 'max': None, 'integer': False})
+    """
+    from ...core.display import kind_of
+    if unit == "-":
+        if isinstance(raw, int) and not isinstance(raw, bool):
+            return {"min": 0, "max": None, "integer": True}
+        if re.match(r"(?i)^(eta|η)", name):
+            return {"min": 0, "max": 1, "integer": False}
+        return {"min": None, "max": None, "integer": False}
+    kind = kind_of(unit)
+    return {"min": 0 if kind in _NON_NEGATIVE else None, "max": None, "integer": False}
 
 
 def _plain(value):
@@ -170,6 +200,8 @@ class PageModel:
         """The ``[params]`` entries in file order, grouped by the comment lines that
         precede them (``# §1.1 frame pivots``)."""
         from tomlkit.items import Comment
+
+        from ..report.labels import unit as unit_text
         params = self.doc.get("params")
         mech = self.model.mechanism
         solved = {s.condition.unknown: s for s in self.model.solved}
@@ -191,6 +223,8 @@ class PageModel:
             value = mech.params.get(name)
             shown = float(np.asarray(value, dtype=float).ravel()[0]) / scale \
                 if value is not None and np.size(value) == 1 else None
+            raw = _plain(item)
+            shown_unit = mech.units[name].text if name in mech.units else (unit or "-")
             out.append({
                 "name": name,
                 "group": group,
@@ -200,6 +234,9 @@ class PageModel:
                 "editable": nu is not None and name not in solved,
                 "solved": name in solved,
                 "comment": str(getattr(item.trivia, "comment", "") or "").lstrip("# ").strip(),
+                # the unit as the tables write it (kg·m² for "kg*m^2"), in each language
+                "unit_text": {lg: unit_text(shown_unit, lg) for lg in ("en", "ru")},
+                **_limits(name, unit or "-", raw),
             })
         return out
 
@@ -360,23 +397,61 @@ class PageModel:
 
     # ---- the page's payload -------------------------------------------------------
     def model_on(self, model, positions: int):
-        """``model`` with its range resampled on ``positions`` evenly spaced values of
-        its coordinate between its first and last (one coordinate); the model as it
-        is for more coordinates.
+        """``model`` with its range resampled on ``positions`` values of its coordinate
+        (one coordinate); the model as it is for more coordinates.
+
+        A crank whose file's angles go round (span a turn, counting the step of the
+        list: 0 … 360°, or 14.7°, −15.3° … −315.3° and a position added) is resampled
+        over one whole turn from the file's first angle in the file's direction,
+        ``positions`` evenly spaced angles with the end (the start again) left out, so
+        a slider over them turns continuously through 360°; any other range evenly
+        between its two ends (the file's first and last when they are its extremes).
 
         Examples
         --------
+        >>> import numpy as np
         >>> from assur.io import bundled
         >>> from assur.views.page.session import PageModel
         >>> pm = PageModel.from_path(bundled("hitch_003"))          # seed 003
         >>> pm.model_on(pm.model, 5).range.tolist()       # S [m]
         [0.42, 0.4825, 0.545, 0.6075, 0.67]
+        >>> pm = PageModel.from_path(bundled("combine_002"))        # 13 angles, one extra
+        >>> q = np.degrees(pm.model_on(pm.model, 4).range)            # j1 [deg]
+        >>> np.round(q, 3).tolist()                        # clockwise from 14.679°
+        [14.679, -75.321, -165.321, -255.321]
         """
         if len(model.mechanism.coordinates) != 1 or positions is None:
             return model
         r = np.asarray(model.range, dtype=float)
-        q = np.linspace(r[0], r[-1], int(positions))
+        n = int(positions)
+        lo, hi = float(np.min(r)), float(np.max(r))
+        if model.mechanism.coordinate_kind(model.mechanism.coordinates[0]) == "angle" \
+                and r.size > 1 and _goes_round(r):
+            way = -1.0 if r[1] < r[0] else 1.0
+            q = r[0] + way * 2.0 * np.pi * np.arange(n) / n
+        elif r[0] in (lo, hi) and r[-1] in (lo, hi):
+            q = np.linspace(r[0], r[-1], n)
+        else:
+            q = np.linspace(lo, hi, n)
         return dataclasses.replace(model, range=q)
+
+    def turns(self, model) -> bool:
+        """True when the page shows ``model`` over a whole turn of its crank
+        (:meth:`model_on`).
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("cleaning_lab3"))      # 0 … 360°
+        >>> hitch = PageModel.from_path(bundled("hitch_003"))       # S = 0.42 … 0.67 m
+        >>> pm.turns(pm.model), hitch.turns(hitch.model)
+        (True, False)
+        """
+        mech = model.mechanism
+        r = np.asarray(model.range, dtype=float)
+        return bool(len(mech.coordinates) == 1 and mech.coordinate_kind(mech.coordinates[0])
+                    == "angle" and r.size > 1 and _goes_round(r))
 
     def compute(self, values: dict, positions: int = 101, lang: str = "en",
                 units: str | None = None) -> dict:
@@ -436,6 +511,7 @@ class PageModel:
         except ModelError as e:
             return _error("model", e, t0)
         mech = model.mechanism
+        tabs = [_table_json(t, lang) for t in tables]
         solved = [{"name": s.condition.unknown,
                    "value": float(s.value) / (mech.units[s.condition.unknown].scale
                                               if s.condition.unknown in mech.units else 1.0),
@@ -446,7 +522,10 @@ class PageModel:
             "coordinates": [{"name": c, "kind": mech.coordinate_kind(c)}
                             for c in mech.coordinates],
             "geometry": geo,
-            "tables": [_table_json(t, lang) for t in tables],
+            "tables": tabs,
+            "turn": self.turns(model),
+            "grid": _grid(tabs, len(mech.coordinates)),
+            "defaults": default_plots(tabs, len(mech.coordinates)),
             "units": {"system": du.system, "length": unit(du["length"].text, lang),
                       "length_scale": du["length"].scale,
                       "angle": unit(du["angle"].text, lang),
@@ -463,10 +542,12 @@ class PageModel:
         return "-"
 
     def export_tables(self, values: dict, fmt: str, table: str | None = None,
-                      lang: str = "en", units: str | None = None) -> tuple[bytes, str, str]:
-        """The tables of the edited model over the file's own range, in the display
-        units ``units`` (default: the model file's) and ``lang`` (Russian CSV: ``;``
-        and the decimal comma).
+                      lang: str = "en", units: str | None = None,
+                      positions: int | None = None) -> tuple[bytes, str, str]:
+        """The tables of the edited model over the file's own range (or, given
+        ``positions``, over the page's: :meth:`model_on`), in the display units
+        ``units`` (default: the model file's) and ``lang`` (Russian CSV: ``;`` and the
+        decimal comma).
 
         Parameters
         ----------
@@ -502,7 +583,7 @@ class PageModel:
         from ..report.tables import seed_tables, table_filename, write_csv, write_xlsx
         from ...core.display import unit_system
         model = self.load(values)
-        analysis = model.analyze()
+        analysis = (model if positions is None else self.model_on(model, positions)).analyze()
         du = unit_system(analysis.mechanism, units)
         tabs = seed_tables(analysis, lang=lang, units=du)
         stem = Path(self.name).stem or "model"
@@ -520,6 +601,90 @@ class PageModel:
                 raise ModelError(f"table {table!r}: this model has tables {ids}")
             p = write_csv(tab, Path(d) / table_filename(tab), lang)
             return p.read_bytes(), "text/csv; charset=utf-8", f"{stem}_{p.name}"
+
+
+def _goes_round(r) -> bool:
+    """True when the angles ``r`` [rad] cover a turn: their span and the largest step
+    between neighbours in order make 360° (to 0.1°)."""
+    u = np.unique(np.asarray(r, dtype=float))
+    step = float(np.max(np.diff(u))) if u.size > 1 else 0.0
+    return bool(float(u[-1] - u[0]) >= 2.0 * np.pi - 1e-6 or
+                (u.size > 2 and float(u[-1] - u[0]) + step >= 2.0 * np.pi - np.radians(0.1)))
+
+
+def _grid(tables, k):
+    """The full grid of a model of two coordinates, as its tables show them:
+    ``{"x": [first coordinate's values], "y": [second's], "i": [per position],
+    "j": [per position]}`` (display units), or None (one coordinate, more than two,
+    or paired paths)."""
+    from ..report.tables import grid_of
+    if k != 2 or not tables or len(tables[0]["columns"]) < 2:
+        return None
+    c1, c2 = tables[0]["columns"][:2]
+    g = grid_of(c1["values"], c2["values"])
+    if g is None:
+        return None
+    u1, u2, i1, i2 = g
+    return {"x": u1.tolist(), "y": u2.tolist(), "i": i1.tolist(), "j": i2.tolist()}
+
+
+def default_plots(tables, k) -> list:
+    """The plots the page shows first, chosen from what the model's tables hold:
+    ``[{"table": id, "symbol": column}]`` — each cylinder's pressure and the
+    capacities (``G…`` forces) of its table, the joint reaction (a magnitude
+    ``R…``) with the largest peak, the centre of mass ``Xc``, ``Yc`` and the speed
+    ``omega`` of a crank's dynamics; the first link angle when none of these is
+    there. Among the reactions, those on the frame (link 0: ``R0…``) come first.
+
+    Examples
+    --------
+    >>> from assur.io import bundled
+    >>> from assur.views.page.session import PageModel, default_plots
+    >>> out = PageModel.from_path(bundled("hitch_003")).compute({}, positions=11)
+    >>> [(p["table"], p["symbol"]) for p in default_plots(out["tables"], 1)]
+    [('4.1', 'Pgc'), ('4.1', 'G56'), ('4.1', 'GS6'), ('5.1', 'R01')]
+    """
+    from ...core.display import kind_of
+    out = []
+
+    def add(t, c):
+        if len(out) < 6 and not any(p["symbol"] == c["symbol"] and p["table"] == t["id"]
+                                    for p in out):
+            out.append({"table": t["id"], "symbol": c["symbol"]})
+
+    for t in tables:
+        cols = t["columns"][k:]
+        pressures = [c for c in cols if kind_of(c["unit"]) == "pressure"]
+        for c in pressures[:2]:
+            add(t, c)
+        if pressures:
+            for c in [c for c in cols if c["symbol"].startswith("G")
+                      and kind_of(c["unit"]) == "force"][:2]:
+                add(t, c)
+    peak = None
+    for t in tables:
+        for c in t["columns"][k:]:
+            s = c["symbol"]
+            if s.startswith("R") and s[-1:] not in ("x", "y") and kind_of(c["unit"]) == "force":
+                vals = [abs(v) for v in c["values"] if v is not None]
+                rank = (s.startswith("R0"), max(vals)) if vals else None  # on the frame first
+                if vals and (peak is None or rank > peak[0]):
+                    peak = (rank, t, c)
+        if peak is not None:
+            break  # the statics' table (without inertia loads), not the kinetostatics'
+    if peak is not None:
+        add(peak[1], peak[2])
+    for t in tables:
+        for c in t["columns"][k:]:
+            if c["symbol"] in ("Xc", "Yc", "omega"):
+                add(t, c)
+    if not out:
+        for t in tables:
+            for c in t["columns"][k:]:
+                if kind_of(c["unit"]) == "angle":
+                    add(t, c)
+                    return out
+    return out
 
 
 def _error(kind, e, t0):

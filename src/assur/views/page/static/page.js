@@ -1,5 +1,6 @@
 // assur page: plain JavaScript, no build step. Talks to the JSON API of
-// assur.app.server; draws the mechanism and the plots in SVG itself.
+// assur.views.page.server; draws the mechanism in SVG itself and the plots with
+// plot.js (window.AssurPlot).
 "use strict";
 
 const SVGNS = "http://www.w3.org/2000/svg";
@@ -19,6 +20,14 @@ const state = {
   table: null,         // id of the table shown
   inflight: false, pending: false, seq: 0, t0: 0,
   timer: null,
+  history: [],         // earlier parameter sets (undo)
+  lastPush: 0,
+  traj: new Set(),     // points whose trajectories are drawn
+  overlay: false,      // several positions drawn at once
+  compare: false,      // the file's design drawn under the edited one
+  original: null,      // payload of the file's design (compare)
+  plotObjs: [],        // the drawn plots (marker updates)
+  url: null,           // what the address restores (parameters, position, plots)
 };
 
 const $ = (id) => document.getElementById(id);
@@ -45,10 +54,52 @@ function fmt(v) {
   if (v === null || v === undefined) return "";
   if (typeof v !== "number") return String(v);
   const a = Math.abs(v);
-  if (a !== 0 && (a >= 1e6 || a < 1e-3)) return v.toExponential(4);
-  if (a >= 1000) return v.toFixed(0);
-  return Number(v.toPrecision(5)).toString();
+  let out;
+  if (a !== 0 && (a >= 1e6 || a < 1e-3)) out = v.toExponential(4);
+  else if (a >= 1000) out = v.toFixed(0);
+  else out = Number(v.toPrecision(5)).toString();
+  if (/^-0(\.0*)?$/.test(out)) out = out.slice(1);      // no "-0"
+  return state.lang === "ru" ? out.replace(".", ",") : out;
 }
+
+// A number as a user types it, in any locale: "17,5" and "17.5" are 17.5; spaces
+// (thousands) are ignored. {value} or {empty: true} or {error: "nan" | "range"}.
+function parseNumber(text) {
+  let s = String(text).trim().replace(/[\s\u00a0\u202f']/g, "");
+  if (s === "") return {empty: true};
+  if (s.includes(",") && !s.includes(".") && (s.match(/,/g) || []).length === 1)
+    s = s.replace(",", ".");
+  if (!/^[-+\u2212]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$/.test(s)) return {error: "nan"};
+  const v = Number(s.replace("\u2212", "-"));
+  if (!Number.isFinite(v) || Math.abs(v) > 1e12) return {error: "range"};
+  return {value: v};
+}
+
+// A value checked against a parameter's physical span: {value} or {error, text}.
+function checkValue(p, text) {
+  const r = parseNumber(text);
+  if (r.empty || r.value === undefined) return r;
+  const lo = p.min, hi = p.max;
+  if ((lo !== null && r.value < lo) || (hi !== null && r.value > hi) ||
+      (p.integer && !Number.isInteger(r.value))) return {error: "range"};
+  return r;
+}
+
+function spanText(p) {
+  const lo = p.min === null ? "−∞" : fmt(p.min), hi = p.max === null ? "∞" : fmt(p.max);
+  const u = unitOf(p) ? " " + unitOf(p) : "";
+  return (p.integer ? T("whole") + " " : "") + `${lo} … ${hi}${u}`;
+}
+
+// a round step (1, 2 or 5 × 10^k) near x
+function niceStep(x) {
+  if (!(x > 0)) return 1;
+  const e = Math.pow(10, Math.floor(Math.log10(x)));
+  const m = x / e;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e;
+}
+
+const roundTo = (v, step) => Number((Math.round(v / step) * step).toPrecision(12));
 
 // ---- texts ----------------------------------------------------------------------
 function applyTexts() {
@@ -59,11 +110,40 @@ function applyTexts() {
 }
 
 // ---- parameters -----------------------------------------------------------------
-function sliderRange(v, unit) {
-  if (unit === "deg") return [v - 45, v + 45, 0.1];
-  if (v === 0) return [-1, 1, 0.005];
-  const lo = Math.min(0.5 * v, 1.5 * v), hi = Math.max(0.5 * v, 1.5 * v);
-  return [lo, hi, Math.abs(v) / 500];
+// The slider's span and step, in the file's unit: ±45° for an angle, half to one and a
+// half times a value otherwise, within the parameter's physical span; a round step.
+function sliderRange(p) {
+  const v = p.value;
+  if (p.integer) return [Math.max(p.min ?? -Infinity, Math.min(0, v - 5)), Math.max(v + 5, 2 * v), 1];
+  let lo, hi;
+  if (p.unit === "deg" || p.unit === "°") { lo = v - 45; hi = v + 45; }
+  else if (p.unit === "rad") { lo = v - 0.8; hi = v + 0.8; }
+  else if (v === 0) { lo = -1; hi = 1; }
+  else { lo = Math.min(0.5 * v, 1.5 * v); hi = Math.max(0.5 * v, 1.5 * v); }
+  if (p.min !== null) lo = Math.max(lo, p.min);
+  if (p.max !== null) hi = Math.min(hi, p.max);
+  const step = niceStep((hi - lo) / 400);
+  lo = Math.floor(lo / step) * step; hi = Math.ceil(hi / step) * step;
+  if (p.min !== null) lo = Math.max(lo, p.min);
+  if (p.max !== null) hi = Math.min(hi, p.max);
+  return [roundTo(lo, step), roundTo(hi, step), step];
+}
+
+function fieldText(v) {
+  const t = String(Number(Number(v).toPrecision(12)));
+  return state.lang === "ru" ? t.replace(".", ",") : t;
+}
+
+function unitOf(p) {
+  const u = p.unit_text ? p.unit_text[state.lang] : p.unit;
+  return u === "-" ? "" : u;
+}
+
+function fieldMessage(name, text) {
+  const m = $("msg-" + name);
+  m.textContent = text || "";
+  m.hidden = !text;
+  $("param-" + name).classList.toggle("invalid", !!text);
 }
 
 function buildParams() {
@@ -75,38 +155,65 @@ function buildParams() {
     if (fs === null || p.group !== group) {
       group = p.group;
       fs = h("fieldset");
-      fs.appendChild(h("legend", {}, group || ""));
+      if (group) fs.appendChild(h("legend", {}, group));
       box.appendChild(fs);
     }
     state.base[p.name] = p.value;
-    state.values[p.name] = p.value;
+    if (!(p.name in state.values)) state.values[p.name] = p.value;
+    const v = state.values[p.name];
     const row = h("div", {class: "param", id: "param-" + p.name, title: p.comment || ""});
     row.appendChild(h("label", {for: "input-" + p.name}, p.name));
-    const [lo, hi, step] = sliderRange(p.value, p.unit);
+    const [lo, hi, step] = sliderRange(p);
     const slider = h("input", {type: "range", id: "slider-" + p.name, min: lo, max: hi,
-                               step: step, value: p.value});
-    const input = h("input", {type: "number", id: "input-" + p.name, step: "any",
-                              value: p.value});
+                               step: step, value: v, "aria-label": p.name});
+    const input = h("input", {type: "text", inputmode: "decimal", id: "input-" + p.name,
+                              value: fieldText(v), autocomplete: "off"});
     row.appendChild(slider);
     row.appendChild(input);
-    row.appendChild(h("span", {class: "unit"}, p.unit === "-" ? "" : p.unit));
+    row.appendChild(h("span", {class: "unit"}, unitOf(p)));
+    const msg = h("div", {class: "field-msg", id: "msg-" + p.name, role: "alert"});
+    msg.hidden = true;
+    row.appendChild(msg);
     slider.addEventListener("input", () => {
-      input.value = slider.value;
-      setParam(p.name, Number(slider.value));
+      const x = roundTo(Number(slider.value), step);
+      input.value = fieldText(x);
+      fieldMessage(p.name, "");
+      setParam(p.name, x);
     });
     input.addEventListener("input", () => {
-      const v = Number(input.value);
-      if (input.value.trim() === "" || !Number.isFinite(v)) return;
-      slider.value = v;
-      setParam(p.name, v);
+      const r = checkValue(p, input.value);
+      if (r.empty) {
+        fieldMessage(p.name, `${T("field_empty")} ${fieldText(state.values[p.name])} ${unitOf(p)}`);
+        return;
+      }
+      if (r.error) {
+        fieldMessage(p.name, `${T(r.error === "nan" ? "field_nan" : "field_range")} ` +
+                             spanText(p));
+        return;
+      }
+      fieldMessage(p.name, "");
+      slider.value = r.value;
+      setParam(p.name, r.value);
     });
+    input.addEventListener("blur", () => {   // the field shows the value in force
+      if (!$("msg-" + p.name).hidden) return;
+      input.value = fieldText(state.values[p.name]);
+    });
+    row.classList.toggle("changed", v !== p.value);
     fs.appendChild(row);
   }
 }
 
 function setParam(name, v) {
+  const now = performance.now();
+  if (now - state.lastPush > 700) {        // a pause starts a new step of undo
+    state.history.push(Object.assign({}, state.values));
+    if (state.history.length > 100) state.history.shift();
+  }
+  state.lastPush = now;
   state.values[name] = v;
   $("param-" + name).classList.toggle("changed", v !== state.base[name]);
+  $("undo").disabled = !state.history.length;
   request();
 }
 
@@ -116,83 +223,165 @@ function changed() {
   return out;
 }
 
-function resetParams() {
-  for (const [k, v] of Object.entries(state.base)) {
-    state.values[k] = v;
-    $("input-" + k).value = v;
+function showValues() {
+  for (const [k, v] of Object.entries(state.values)) {
+    $("input-" + k).value = fieldText(v);
     $("slider-" + k).value = v;
-    $("param-" + k).classList.remove("changed");
+    $("param-" + k).classList.toggle("changed", v !== state.base[k]);
+    fieldMessage(k, "");
   }
+  $("undo").disabled = !state.history.length;
+}
+
+function resetParams() {
+  state.history.push(Object.assign({}, state.values));
+  state.values = Object.assign({}, state.base);
+  showValues();
   request();
 }
 
-// ---- requests -------------------------------------------------------------------
-function body(extra) {
-  return JSON.stringify(Object.assign({params: changed(), lang: state.lang, units: state.units},
-                                      extra || {}));
+function undo() {
+  if (!state.history.length) return;
+  state.values = state.history.pop();
+  state.lastPush = 0;
+  showValues();
+  request();
 }
 
+// ---- the address: parameters, position, language, units and plots survive a reload
+function saveUrl() {
+  const u = new URLSearchParams();
+  u.set("lang", state.lang);
+  u.set("units", state.units);
+  u.set("pos", String(state.pos));
+  for (const [k, v] of Object.entries(changed())) u.set("p." + k, String(v));
+  if (state.plots) u.set("plots", state.plots.map(p => p.table + "~" + p.symbol).join(","));
+  if (state.traj.size) u.set("traj", [...state.traj].join(","));
+  history.replaceState(null, "", location.pathname + "?" + u.toString());
+}
+
+function readUrl() {
+  const u = new URLSearchParams(location.search);
+  const out = {params: {}};
+  for (const [k, v] of u.entries()) {
+    if (k.startsWith("p.")) {
+      const r = parseNumber(v);
+      if (r.value !== undefined) out.params[k.slice(2)] = r.value;
+    }
+  }
+  if (u.has("lang") && ["en", "ru"].includes(u.get("lang"))) out.lang = u.get("lang");
+  if (u.has("units") && ["file", "engineering", "si", "imperial"].includes(u.get("units")))
+    out.units = u.get("units");
+  if (u.has("pos") && /^\d+$/.test(u.get("pos"))) out.pos = Number(u.get("pos"));
+  if (u.has("plots")) out.plots = u.get("plots").split(",").filter(x => x.includes("~"))
+    .map(x => { const i = x.indexOf("~"); return {table: x.slice(0, i), symbol: x.slice(i + 1)}; });
+  if (u.has("traj")) out.traj = u.get("traj").split(",").filter(Boolean);
+  return out;
+}
+
+// ---- requests -------------------------------------------------------------------
 function request() {
   state.t0 = performance.now();
   if (state.inflight) { state.pending = true; return; }
   send();
 }
 
+function positionsOf() {
+  return state.info.coordinates.length > 1 ? {} : {positions: POSITIONS};
+}
+
+// POST a JSON request; the answer's JSON, or {ok: false, error} saying in words what
+// went wrong (the server not answering, an answer that is not JSON)
+async function post(path, extra, params) {
+  let r;
+  try {
+    r = await fetch(path, {method: "POST", headers: {"Content-Type": "application/json"},
+      body: JSON.stringify(Object.assign({params: params || changed(), lang: state.lang,
+                                          units: state.units}, extra || {}))});
+  } catch (e) {
+    return {response: null, out: {ok: false, error: {kind: "network", message: T("server_down")}}};
+  }
+  return {response: r, out: null};
+}
+
 async function send() {
   state.inflight = true;
   state.pending = false;
+  document.body.classList.add("busy");
   const t0 = state.t0;
   const seq = ++state.seq;
   $("status").textContent = T("computing");
-  let out;
-  try {
-    const multi = state.info.coordinates.length > 1;
-    const r = await fetch("/api/analyze", {method: "POST",
-      headers: {"Content-Type": "application/json"},
-      body: body(multi ? {} : {positions: POSITIONS})});
-    out = await r.json();
-  } catch (e) {
-    out = {ok: false, error: {kind: "network", message: String(e)}};
+  let {response, out} = await post("/api/analyze", positionsOf());
+  if (!out) {
+    try { out = await response.json(); }
+    catch (e) { out = {ok: false, error: {kind: "network", message: `${T("bad_answer")} (HTTP ${response.status})`}}; }
   }
   if (seq === state.seq) {
     if (out.ok) showResult(out); else showError(out.error);
     const ms = performance.now() - t0;
-    $("status").textContent = `${T("redrawn")} ${ms.toFixed(0)} ${T("ms")}`;
+    $("status").textContent = out.ok || out.error.kind !== "network"
+      ? `${T("redrawn")} ${ms.toFixed(0)} ${T("ms")}` : T("no_server");
     $("status").dataset.ms = ms.toFixed(1);
     console.log(`assur: redrawn in ${ms.toFixed(1)} ms (server ${out.ms} ms, ` +
                 `${out.ok ? "drawing" : "error: " + out.error.kind})`);
   }
   state.inflight = false;
+  document.body.classList.remove("busy");
   if (state.pending) send();
 }
 
-async function download(kind) {
-  const extra = {};
+async function loadOriginal() {
+  if (state.original && state.original.units.system === state.data.units.system &&
+      state.original.lang === state.lang) return;
+  const {response, out} = await post("/api/analyze", positionsOf(), {});
+  if (out) return;
+  const o = await response.json();
+  if (o.ok) { o.lang = state.lang; state.original = o; renderPose(); renderPlots(); }
+}
+
+// the coordinates of the drawn position, as DXF requests them (m, or degrees)
+function positionAt() {
+  const q = state.data.geometry.q;
+  return state.data.coordinates.map(c => {
+    const v = q[c.name][state.pos];
+    return c.kind === "angle" ? v * 180 / Math.PI : v;
+  });
+}
+
+async function download(kind, button) {
+  const extra = positionsOf();
   if (kind === "csv" && state.table) extra.table = state.table;
-  if (kind === "dxf" && state.data) {
-    const q = state.data.geometry.q;
-    const c = state.data.coordinates[0];
-    if (state.data.coordinates.length === 1) {
-      let v = q[c.name][state.pos];
-      if (c.kind === "angle") v = v * 180 / Math.PI;
-      extra.at = [v];
-      extra.positions = POSITIONS;
+  if (kind === "dxf") {
+    if (!state.data) return;
+    extra.at = positionAt();
+  }
+  if (kind === "toml") delete extra.positions;
+  const label = button.textContent;
+  button.disabled = true;
+  button.classList.add("busy");
+  button.textContent = T("preparing");
+  $("download-msg").textContent = "";
+  try {
+    const {response, out} = await post("/api/export/" + kind, extra);
+    if (out) { $("download-msg").textContent = `${T("download_failed")}: ${out.error.message}`; return; }
+    const type = response.headers.get("content-type") || "";
+    if (!response.ok || type.startsWith("application/json")) {
+      let why = `HTTP ${response.status}`;
+      try { const o = await response.json(); if (o.error) why = o.error.message; } catch (e) { /* not JSON */ }
+      $("download-msg").textContent = `${T("download_failed")}: ${why}`;
+      return;
     }
+    const blob = await response.blob();
+    const m = /filename="([^"]+)"/.exec(response.headers.get("content-disposition") || "");
+    const a = h("a", {href: URL.createObjectURL(blob), download: m ? m[1] : "assur." + kind});
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+  } finally {
+    button.disabled = false;
+    button.classList.remove("busy");
+    button.textContent = label;
   }
-  const r = await fetch("/api/export/" + kind, {method: "POST",
-    headers: {"Content-Type": "application/json"}, body: body(extra)});
-  const type = r.headers.get("content-type") || "";
-  if (type.startsWith("application/json")) {
-    const out = await r.json();
-    showError(out.error || {kind: "error", message: JSON.stringify(out)});
-    return;
-  }
-  const blob = await r.blob();
-  const m = /filename="([^"]+)"/.exec(r.headers.get("content-disposition") || "");
-  const a = h("a", {href: URL.createObjectURL(blob), download: m ? m[1] : "assur." + kind});
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
 }
 
 // ---- results --------------------------------------------------------------------
@@ -206,6 +395,7 @@ function showError(err) {
 }
 
 function showResult(out) {
+  const first = state.data === null;
   state.data = out;
   $("drawing-box").classList.remove("failed");
   $("error-panel").hidden = true;
@@ -213,13 +403,17 @@ function showResult(out) {
   $("plots").classList.remove("pending");
   $("table-box").classList.remove("pending");
   $("title").textContent = out.title;
+  document.title = `${out.title} — assur`;
   const n = out.geometry.n;
-  const s = $("stroke");
-  s.max = n - 1;
   if (state.pos > n - 1) state.pos = n - 1;
-  s.value = state.pos;
+  buildSliders(out);
   prepareDrawing(out.geometry);
-  if (state.plots === null) state.plots = defaultPlots(out.tables);
+  if (state.plots === null) state.plots = out.defaults.slice();
+  if (first && !state.traj.size && out.turn) {
+    // a crank: the coupler curves of the points on one body only (not joints)
+    const joints = new Set(out.geometry.joints);
+    for (const p of Object.keys(out.geometry.points)) if (!joints.has(p)) state.traj.add(p);
+  }
   if (!state.table || !out.tables.some(t => t.id === state.table))
     state.table = out.tables.length ? out.tables[0].id : null;
   buildTableSelect(out.tables);
@@ -229,6 +423,7 @@ function showResult(out) {
   renderTable();
   renderPlots();
   renderPose();
+  if (state.compare) loadOriginal();
 }
 
 function renderSolved(solved) {
@@ -244,6 +439,57 @@ function renderWarnings(ws) {
   ul.textContent = "";
   if (!ws.length) ul.appendChild(h("li", {}, T("no_warnings")));
   for (const w of ws) ul.appendChild(h("li", {}, w));
+}
+
+// ---- position: one slider, or one per coordinate of a grid -----------------------
+function gridIndex(i, j) {
+  const g = state.data.grid;
+  for (let k = 0; k < g.i.length; k++) if (g.i[k] === i && g.j[k] === j) return k;
+  return null;
+}
+
+function setPos(k) {
+  if (k === null || k === undefined) return;
+  state.pos = k;
+  syncSliders();
+  renderPose();
+}
+
+function syncSliders() {
+  const d = state.data;
+  if (d.grid) {
+    $("coord-0").value = d.grid.i[state.pos];
+    $("coord-1").value = d.grid.j[state.pos];
+  } else {
+    $("stroke").value = state.pos;
+  }
+}
+
+function buildSliders(out) {
+  const box = $("coord-sliders");
+  const key = JSON.stringify([out.coordinates.map(c => c.name), !!out.grid, out.geometry.n]);
+  $("stroke-row").hidden = !!out.grid;
+  $("stroke").max = out.geometry.n - 1;
+  if (box.dataset.key !== key) {
+    box.dataset.key = key;
+    box.textContent = "";
+    if (out.grid) {
+      out.coordinates.forEach((c, k) => {
+        const vals = k === 0 ? out.grid.x : out.grid.y;
+        const row = h("div", {class: "coord"});
+        row.appendChild(h("label", {for: "coord-" + k}, c.name));
+        const sl = h("input", {type: "range", id: "coord-" + k, min: 0, max: vals.length - 1,
+                               step: 1, value: 0});
+        sl.addEventListener("input", () => {
+          const i = Number($("coord-0").value), j = Number($("coord-1").value);
+          setPos(gridIndex(i, j));
+        });
+        row.appendChild(sl);
+        box.appendChild(row);
+      });
+    }
+  }
+  syncSliders();
 }
 
 // ---- drawing --------------------------------------------------------------------
@@ -268,7 +514,7 @@ function hull(pts) {
 function prepareDrawing(g) {
   const [x0, y0, x1, y1] = g.bounds;
   const span = Math.max(x1 - x0, y1 - y0, 1e-6);
-  const m = 0.12 * span;
+  const m = 0.08 * span;
   const cyl = {};
   for (const b of g.bodies) {
     if (!b.variable || b.points.length < 2) continue;
@@ -286,26 +532,52 @@ function prepareDrawing(g) {
   for (const v of Object.values(g.points)) for (const p of v) { cx += p[0]; cy += p[1]; k++; }
   geo = {g, span, cyl, centre: [cx / k, cy / k]};
   const svg = $("drawing");
-  // y up: the SVG's y is −y of the model
-  svg.setAttribute("viewBox", `${x0 - m} ${-(y1 + m)} ${x1 - x0 + 2 * m} ${y1 - y0 + 2.6 * m}`);
+  // y up: the SVG's y is −y of the model; the box fits every position (and the weights'
+  // arrows below), scaled to the drawing box whatever the machine's proportions
+  const wy = g.weights.length ? 0.14 * span : 0;
+  const vw = x1 - x0 + 2 * m, vh = y1 - y0 + 2 * m + wy;
+  svg.setAttribute("viewBox", `${x0 - m} ${-(y1 + m)} ${vw} ${vh}`);
+  // the box takes the machine's proportions (a tall crane gets a tall box)
+  const box = $("drawing-box");
+  const w = box.clientWidth || 600;
+  box.style.height = `${Math.round(Math.min(Math.max(w * vh / vw, 320), 720))}px`;
   svg.setAttribute("preserveAspectRatio", "xMidYMid meet");
 }
 
-function renderPose() {
-  if (!geo) return;
-  const {g, span, cyl, centre} = geo;
-  const i = state.pos;
-  const svg = $("drawing");
-  svg.textContent = "";
-  const fs = 0.028 * span, hh = 0.035 * span;
+// labels placed where they overlap no label placed before (8 directions tried, then
+// farther out), boxes estimated from the font size
+function placer(fs) {
+  const boxes = [];
+  const hit = (b) => boxes.some(o => b[0] < o[2] && o[0] < b[2] && b[1] < o[3] && o[1] < b[3]);
+  return (x, y, text, prefer) => {
+    const w = 0.62 * fs * text.length, hh = fs;
+    const dirs = [prefer];
+    for (let a = 0; a < 8; a++) dirs.push([Math.cos(a * Math.PI / 4), Math.sin(a * Math.PI / 4)]);
+    for (const r of [1.3, 2.2, 3.2]) {
+      for (const d of dirs) {
+        const cx = x + d[0] * r * fs, cy = y + d[1] * r * fs;
+        const b = [cx - w / 2, cy - hh / 2, cx + w / 2, cy + hh / 2];
+        if (!hit(b)) { boxes.push(b); return [cx, cy]; }
+      }
+    }
+    const b = [x - w / 2, y + fs, x + w / 2, y + 2 * fs];
+    boxes.push(b);
+    return [x, y + 1.5 * fs];
+  };
+}
+
+function drawBodies(svg, g, i, ghost) {
+  const {cyl} = geo;
   const xy = {};
   for (const [p, v] of Object.entries(g.points)) xy[p] = [v[i][0], -v[i][1]];
+  const mids = [];
   let k = 0;
   for (const b of g.bodies) {
     if (b.name === "0") continue;
     const pts = b.points.filter(p => p in xy).map(p => xy[p]);
-    const col = COLORS[k++ % COLORS.length];
-    const grp = el("g", {id: "link-" + b.name, "data-link": b.name});
+    const col = ghost ? "#9aa4ae" : COLORS[k % COLORS.length];
+    k++;
+    const grp = el("g", ghost ? {class: "ghost"} : {id: "link-" + b.name, "data-link": b.name});
     let mid;
     if (b.name in cyl && pts.length >= 2) {
       const [a, c] = pts;
@@ -314,30 +586,79 @@ function renderPose() {
       const [barrel, rod] = cyl[b.name];
       const e1 = [a[0] + u[0] * Math.min(barrel, L), a[1] + u[1] * Math.min(barrel, L)];
       const e2 = [c[0] - u[0] * Math.min(rod, L), c[1] - u[1] * Math.min(rod, L)];
-      grp.appendChild(el("line", {x1: a[0], y1: a[1], x2: e1[0], y2: e1[1], stroke: "#4a7ab8",
-        "stroke-width": 9, "vector-effect": "non-scaling-stroke"}));
-      grp.appendChild(el("line", {x1: e2[0], y1: e2[1], x2: c[0], y2: c[1], stroke: "#222",
-        "stroke-width": 3, "vector-effect": "non-scaling-stroke"}));
+      grp.appendChild(el("line", {x1: a[0], y1: a[1], x2: e1[0], y2: e1[1],
+        stroke: ghost ? col : "#4a7ab8", "stroke-width": ghost ? 4 : 9,
+        "vector-effect": "non-scaling-stroke"}));
+      grp.appendChild(el("line", {x1: e2[0], y1: e2[1], x2: c[0], y2: c[1],
+        stroke: ghost ? col : "#222", "stroke-width": ghost ? 1.5 : 3,
+        "vector-effect": "non-scaling-stroke"}));
       mid = [a[0] + u[0] * 0.5 * Math.min(barrel, L), a[1] + u[1] * 0.5 * Math.min(barrel, L)];
     } else {
       const hl = hull(pts);
       if (hl.length >= 3) {
         grp.appendChild(el("polygon", {points: hl.map(p => p.join(",")).join(" "),
-          fill: col, "fill-opacity": 0.12, stroke: col, "stroke-width": 2.5,
+          fill: ghost ? "none" : col, "fill-opacity": 0.12, stroke: col,
+          "stroke-width": ghost ? 1.2 : 2.5, "stroke-dasharray": ghost ? "4,3" : "none",
           "vector-effect": "non-scaling-stroke", "stroke-linejoin": "round"}));
       } else if (hl.length === 2) {
         grp.appendChild(el("line", {x1: hl[0][0], y1: hl[0][1], x2: hl[1][0], y2: hl[1][1],
-          stroke: col, "stroke-width": 3, "stroke-linecap": "round",
-          "vector-effect": "non-scaling-stroke"}));
+          stroke: col, "stroke-width": ghost ? 1.2 : 3, "stroke-linecap": "round",
+          "stroke-dasharray": ghost ? "4,3" : "none", "vector-effect": "non-scaling-stroke"}));
       }
       mid = hl.length ? [hl.reduce((s, p) => s + p[0], 0) / hl.length,
                          hl.reduce((s, p) => s + p[1], 0) / hl.length] : pts[0];
     }
-    if (mid) grp.appendChild(el("text", {x: mid[0] + 0.3 * fs, y: mid[1] - 0.3 * fs,
-      "font-size": fs * 1.1, fill: b.name in cyl ? "#4a7ab8" : col, "font-style": "italic",
-      "font-weight": "bold", class: "link-label"}, b.name));
     svg.appendChild(grp);
+    if (mid && !ghost) mids.push([b.name, mid, b.name in cyl ? "#4a7ab8" : col, grp]);
   }
+  return {xy, mids};
+}
+
+function drawWheels(svg, g, i, ghost) {
+  for (const w of g.wheels || []) {
+    if (!(w.point in g.points)) continue;
+    const [x, y] = g.points[w.point][i];
+    const a = w.heading[i];
+    const u = [Math.cos(a), Math.sin(a)], n = [-u[1], u[0]];
+    const L = w.length / 2, W = w.width / 2;
+    const pts = [[L, W], [-L, W], [-L, -W], [L, -W]]
+      .map(([p, q]) => [x + u[0] * p + n[0] * q, -(y + u[1] * p + n[1] * q)]);
+    svg.appendChild(el("polygon", {class: ghost ? "ghost wheel" : "wheel",
+      "data-wheel": typeof w.name === "string" ? w.name : (w.name[state.lang] || w.name.en),
+      points: pts.map(p => p.join(",")).join(" "), fill: ghost ? "none" : "#444",
+      "fill-opacity": 0.55, stroke: ghost ? "#9aa4ae" : "#111", "stroke-width": 1.5,
+      "vector-effect": "non-scaling-stroke"}));
+  }
+}
+
+function renderPose() {
+  if (!geo) return;
+  const {g, span, centre} = geo;
+  const i = state.pos;
+  const svg = $("drawing");
+  svg.textContent = "";
+  const fs = 0.026 * span, hh = 0.03 * span;
+  // the file's design under the edited one, several positions at once, trajectories
+  if (state.compare && state.original && state.original.geometry.n === g.n) {
+    drawBodies(svg, state.original.geometry, i, true);
+    drawWheels(svg, state.original.geometry, i, true);
+  }
+  if (state.overlay) {
+    for (let k = 0; k < 6; k++) {
+      const j = Math.round(k * (g.n - 1) / 5);
+      if (j !== i) drawBodies(svg, g, j, true);
+    }
+  }
+  for (const p of state.traj) {
+    if (!(p in g.points)) continue;
+    const d = g.points[p].map((q, k) => `${k ? "L" : "M"}${q[0]},${-q[1]}`).join(" ") +
+      (state.data.turn ? " Z" : "");
+    svg.appendChild(el("path", {class: "trajectory", "data-point": p, d, fill: "none",
+      stroke: "#b3541e", "stroke-width": 1, "stroke-dasharray": "5,3",
+      "vector-effect": "non-scaling-stroke"}));
+  }
+  drawWheels(svg, g, i, false);
+  const {xy, mids} = drawBodies(svg, g, i, false);
   for (const p of g.frame) {
     const [x, y] = xy[p];
     svg.appendChild(el("polygon", {points: `${x},${y} ${x - 0.55 * hh},${y + hh} ` +
@@ -346,19 +667,34 @@ function renderPose() {
     svg.appendChild(el("line", {x1: x - 0.8 * hh, y1: y + hh, x2: x + 0.8 * hh, y2: y + hh,
       stroke: "#000", "stroke-width": 1.2, "vector-effect": "non-scaling-stroke"}));
   }
+  const place = placer(fs);
   const joints = new Set(g.joints);
+  const labels = [];
   for (const [p, [x, y]] of Object.entries(xy)) {
     const j = joints.has(p);
-    svg.appendChild(el("circle", {id: "pt-" + p, cx: x, cy: y, r: (j ? 0.011 : 0.007) * span,
-      fill: j ? "#fff" : "#000", stroke: "#000", "stroke-width": 1.3,
+    const c = el("circle", {id: "pt-" + p, cx: x, cy: y, r: (j ? 0.011 : 0.007) * span,
+      fill: j ? "#fff" : "#000", stroke: "#000", "stroke-width": 1.3, class: "point",
       "vector-effect": "non-scaling-stroke", "data-x": g.points[p][i][0],
-      "data-y": g.points[p][i][1]}));
+      "data-y": g.points[p][i][1]});
+    c.appendChild(el("title", {}, `${p}: ${T("click_trajectory")}`));
+    c.addEventListener("click", () => {
+      if (state.traj.has(p)) state.traj.delete(p); else state.traj.add(p);
+      renderPose();
+    });
+    svg.appendChild(c);
     const d = [x - centre[0], y + centre[1]];
     const n = Math.hypot(d[0], d[1]) || 1;
-    svg.appendChild(el("text", {x: x + d[0] / n * 1.4 * fs, y: y + d[1] / n * 1.4 * fs,
-      "font-size": fs, "text-anchor": "middle", "dominant-baseline": "middle",
-      class: "point-label"}, p));
+    const [lx, ly] = place(x, y, p, [d[0] / n, d[1] / n]);
+    labels.push(el("text", {x: lx, y: ly, "font-size": fs, "text-anchor": "middle",
+      "dominant-baseline": "middle", class: "point-label"}, p));
   }
+  for (const [name, mid, col, grp] of mids) {
+    const [lx, ly] = place(mid[0], mid[1], name, [0.7, -0.7]);
+    grp.appendChild(el("text", {x: lx, y: ly, "font-size": fs * 1.1, fill: col,
+      "font-style": "italic", "font-weight": "bold", "text-anchor": "middle",
+      "dominant-baseline": "middle", class: "link-label"}, name));
+  }
+  for (const t of labels) svg.appendChild(t);
   for (const w of g.weights) {
     if (!(w.point in xy)) continue;
     const [x, y] = xy[w.point];
@@ -367,32 +703,39 @@ function renderPose() {
       "stroke-width": 1.5, "vector-effect": "non-scaling-stroke"}));
     svg.appendChild(el("polygon", {points: `${x},${y + L} ${x - 0.15 * L},${y + 0.75 * L} ` +
       `${x + 0.15 * L},${y + 0.75 * L}`, fill: "#d62728"}));
-    svg.appendChild(el("text", {x: x + 0.2 * L, y: y + L, "font-size": fs, fill: "#d62728"},
-      w.name));
+    const [lx, ly] = place(x, y + L, w.name, [1, 0]);
+    svg.appendChild(el("text", {x: lx, y: ly, "font-size": fs, fill: "#d62728",
+      "text-anchor": "middle", "dominant-baseline": "middle"}, w.name));
   }
   $("position-text").textContent = positionText(i);
   renderCurrent();
   markPlots();
   markTable();
+  saveUrl();
+}
+
+function coordText(c, i) {
+  const v = state.data.geometry.q[c.name][i];   // [m or rad], shown in the page's units
+  const u = state.data.units;
+  const shown = c.kind === "angle" ? v / u.angle_scale : v / u.length_scale;
+  const unit = c.kind === "angle" ? u.angle : u.length;
+  return unit === "°" || unit === "deg" ? `${c.name} = ${fmt(shown)}°`
+                                        : `${c.name} = ${fmt(shown)} ${unit}`;
 }
 
 function positionText(i) {
   if (!state.data) return "";
-  const parts = [];
-  for (const c of state.data.coordinates) {
-    const v = state.data.geometry.q[c.name][i];   // [m or rad], shown in the page's units
-    const u = state.data.units;
-    const shown = c.kind === "angle" ? v / u.angle_scale : v / u.length_scale;
-    const unit = c.kind === "angle" ? u.angle : u.length;
-    parts.push(unit === "°" || unit === "deg" ? `${c.name} = ${fmt(shown)}°`
-                                             : `${c.name} = ${fmt(shown)} ${unit}`);
-  }
+  const parts = state.data.coordinates.map(c => coordText(c, i));
   return parts.join(", ") + ` (${T("position")} ${i + 1}/${state.data.geometry.n})`;
 }
 
 // ---- tables ---------------------------------------------------------------------
 function currentTable() {
   return state.data ? state.data.tables.find(t => t.id === state.table) : null;
+}
+
+function perPosition(t) {
+  return t.columns.length && t.columns[0].values.length === state.data.geometry.n;
 }
 
 function buildTableSelect(tables) {
@@ -406,7 +749,8 @@ function renderCurrent() {
   const t = currentTable();
   const box = $("current-values");
   box.textContent = "";
-  if (!t) return;
+  $("current-box").hidden = !t || !perPosition(t);
+  if (!t || !perPosition(t)) return;
   for (const c of t.columns) {
     const tr = h("tr", {"data-symbol": c.symbol});
     tr.appendChild(h("td", {title: c.label}, c.symbol));
@@ -426,12 +770,13 @@ function renderTable() {
   for (const n of t.notes) if (n) $("table-notes").appendChild(h("p", {}, n));
   const head = h("tr");
   for (const c of t.columns)
-    head.appendChild(h("th", {title: c.label}, `${c.symbol} [${c.unit}]`));
+    head.appendChild(h("th", {title: c.label}, c.unit === "-" ? c.symbol : `${c.symbol} [${c.unit}]`));
   tab.appendChild(head);
   const n = t.columns.length ? t.columns[0].values.length : 0;
   for (let i = 0; i < n; i++) {
     const tr = h("tr", {"data-row": i});
     for (const c of t.columns) tr.appendChild(h("td", {}, fmt(c.values[i])));
+    if (perPosition(t)) tr.addEventListener("click", () => setPos(i));
     tab.appendChild(tr);
   }
   markTable();
@@ -439,6 +784,8 @@ function renderTable() {
 
 function markTable() {
   for (const tr of document.querySelectorAll("#table tr.current")) tr.classList.remove("current");
+  const t = currentTable();
+  if (!t || !perPosition(t)) return;
   const tr = document.querySelector(`#table tr[data-row="${state.pos}"]`);
   if (tr) tr.classList.add("current");
 }
@@ -449,101 +796,123 @@ function findColumn(tables, table, symbol) {
   return t ? t.columns.find(c => c.symbol === symbol) : null;
 }
 
-function defaultPlots(tables) {
-  // transmission numbers, force, pressure, capacity, a reaction, the steered axle's share
-  const out = [];
-  const pick = (id, test, max) => {
-    const t = tables.find(x => x.id === id);
-    if (!t) return;
-    let k = 0;
-    for (const c of t.columns.slice(state.data.coordinates.length))
-      if (test(c.symbol) && k < max) { out.push({table: id, symbol: c.symbol}); k++; }
-  };
-  pick("3.1", s => /^I/.test(s), 2);
-  pick("4.1", s => /^(F|p|P|G)/.test(s), 4);
-  pick("5.1", s => /^R.*[^xy]$/.test(s), 1);
-  pick("6.1", s => /^dR/.test(s), 1);
-  return out;
-}
-
 function buildPlotSelect(tables) {
   const s = $("add-plot");
   s.textContent = "";
   s.appendChild(h("option", {value: ""}, "+ " + T("add_plot")));
   const nc = state.data.coordinates.length;
   for (const t of tables) {
+    if (!perPosition(t)) continue;
     const og = h("optgroup", {label: `${t.label} — ${t.title}`});
-    for (const c of t.columns.slice(nc))
-      og.appendChild(h("option", {value: `${t.id}\u0000${c.symbol}`}, `${c.symbol} [${c.unit}]`));
+    for (const c of t.columns.slice(nc)) {
+      const u = c.unit === "-" ? "" : ` [${c.unit}]`;
+      og.appendChild(h("option", {value: `${t.id}\u0000${c.symbol}`},
+        c.label ? `${c.symbol}${u} — ${c.label}` : `${c.symbol}${u}`));
+    }
     s.appendChild(og);
   }
 }
 
+const ANGLE_UNITS = {"°": 360, "deg": 360, "rad": 2 * Math.PI};
+
+// the abscissa of one-coordinate plots: the coordinate itself, unwrapped (a crank's
+// angle runs on through the turn), in the page's units; of a path of several
+// coordinates the first that moves monotonically along it; else the position number
+function abscissa(d) {
+  const u = d.units;
+  for (const c of d.coordinates) {
+    const q = d.geometry.q[c.name];
+    let up = true, down = true;
+    for (let i = 1; i < q.length; i++) { up = up && q[i] > q[i - 1]; down = down && q[i] < q[i - 1]; }
+    if (up || down) {
+      const angle = c.kind === "angle";
+      const x = q.map(v => v / (angle ? u.angle_scale : u.length_scale));
+      return {x, label: `${c.name} [${angle ? u.angle : u.length}]`};
+    }
+  }
+  return {x: d.geometry.q[d.coordinates[0].name].map((_, i) => i + 1), label: T("position")};
+}
+
+function plotFormat(v) { return fmt(v); }
+
 function renderPlots() {
   const box = $("plots");
   box.textContent = "";
+  for (const o of state.plotObjs) if (o.destroy) o.destroy();
+  state.plotObjs = [];
   const d = state.data;
+  if (!d) return;
   const nc = d.coordinates.length;
+  const orig = state.compare && state.original ? state.original : null;
   state.plots.forEach((p, k) => {
     const c = findColumn(d.tables, p.table, p.symbol);
     if (!c) return;
     const t = d.tables.find(x => x.id === p.table);
-    const xs = nc === 1 ? t.columns[0].values : c.values.map((_, i) => i);
     const div = h("div", {class: "plot", id: `plot-${p.table}-${p.symbol}`});
-    div.appendChild(h("div", {class: "title"}, `${p.symbol} [${c.unit}] — ${p.table}`));
-    const rm = h("button", {type: "button"}, "×");
+    const u = c.unit === "-" ? "" : ` [${c.unit}]`;
+    div.appendChild(h("div", {class: "title"}, `${p.symbol}${u} — ${c.label || t.title}`));
+    const rm = h("button", {type: "button", class: "remove", "aria-label": T("remove")}, "×");
     rm.title = T("remove");
-    rm.addEventListener("click", () => { state.plots.splice(k, 1); renderPlots(); });
+    rm.addEventListener("click", () => { state.plots.splice(k, 1); renderPlots(); saveUrl(); });
     div.appendChild(rm);
-    div.appendChild(plotSvg(xs, c.values, COLORS[k % COLORS.length]));
+    const ylabel = `${p.symbol}${u}`;
+    const period = ANGLE_UNITS[c.unit];
+    if (d.grid) {
+      // a map over the two coordinates (a click picks the position) and the curve over
+      // the first with the second held where it is
+      const g = d.grid;
+      const z = g.y.map(() => g.x.map(() => null));
+      c.values.forEach((v, i) => { z[g.j[i]][g.i[i]] = v; });
+      const cx = d.tables[0].columns[0], cy = d.tables[0].columns[1];
+      const map = AssurPlot.map({x: g.x, y: g.y, z, xlabel: `${cx.symbol} [${cx.unit}]`,
+        ylabel: `${cy.symbol} [${cy.unit}]`, zlabel: ylabel, format: plotFormat,
+        onpick: (i, j) => setPos(gridIndex(i, j))});
+      map.el.classList.add("map");
+      div.appendChild(map.el);
+      const held = () => g.j[state.pos];
+      const curve = {el: h("div", {class: "held"}), draw: null};
+      const drawCurve = () => {
+        const j = held();
+        const ys = g.x.map((_, i) => z[j][i]);
+        curve.el.textContent = "";
+        const lp = AssurPlot.line({series: [{x: g.x, y: ys,
+            label: `${ylabel}, ${coordText(d.coordinates[1], state.pos)}`}],
+          xlabel: `${cx.symbol} [${cx.unit}]`, ylabel, period, format: plotFormat,
+          onpick: (i) => setPos(gridIndex(i, held()))});
+        curve.el.appendChild(lp.el);
+        curve.plot = lp;
+        curve.j = j;
+      };
+      drawCurve();
+      div.appendChild(curve.el);
+      state.plotObjs.push({marker: () => {
+        map.marker(g.i[state.pos], g.j[state.pos]);
+        if (curve.j !== held()) drawCurve();
+        curve.plot.marker(g.i[state.pos]);
+      }, destroy: () => { map.destroy && map.destroy(); curve.plot.destroy && curve.plot.destroy(); }});
+    } else {
+      const ax = abscissa(d);
+      const series = [{x: ax.x, y: c.values, label: ""}];
+      if (orig) {
+        const oc = findColumn(orig.tables, p.table, p.symbol);
+        if (oc) {
+          series[0].label = T("edited");
+          series.push({x: abscissa(orig).x, y: oc.values, label: T("original"),
+                       color: "#8a8a8a", dash: true});
+        }
+      }
+      const lp = AssurPlot.line({series, xlabel: ax.label, ylabel, period, format: plotFormat,
+                                 onpick: (i) => setPos(i)});
+      div.appendChild(lp.el);
+      state.plotObjs.push({marker: () => lp.marker(state.pos), destroy: lp.destroy});
+    }
     box.appendChild(div);
   });
   markPlots();
 }
 
-function plotSvg(xs, ys, color) {
-  const W = 300, H = 150, L = 46, R = 8, Tp = 8, B = 20;
-  const svg = el("svg", {viewBox: `0 0 ${W} ${H}`, preserveAspectRatio: "none"});
-  const fin = ys.map((y, i) => [xs[i], y]).filter(p => p[1] !== null && Number.isFinite(p[1]));
-  if (!fin.length) return svg;
-  let x0 = Math.min(...xs), x1 = Math.max(...xs);
-  let y0 = Math.min(...fin.map(p => p[1])), y1 = Math.max(...fin.map(p => p[1]));
-  if (x1 === x0) x1 = x0 + 1;
-  if (y1 === y0) { y0 -= Math.abs(y0) * 0.05 + 1e-9; y1 += Math.abs(y1) * 0.05 + 1e-9; }
-  const X = x => L + (x - x0) / (x1 - x0) * (W - L - R);
-  const Y = y => Tp + (y1 - y) / (y1 - y0) * (H - Tp - B);
-  svg.appendChild(el("rect", {x: L, y: Tp, width: W - L - R, height: H - Tp - B,
-    fill: "none", stroke: "#ccc"}));
-  for (const [v, y] of [[y1, Tp + 4], [y0, H - B]])
-    svg.appendChild(el("text", {x: L - 3, y: y, "font-size": 9, "text-anchor": "end"}, fmt(v)));
-  svg.appendChild(el("text", {x: L, y: H - 6, "font-size": 9}, fmt(x0)));
-  svg.appendChild(el("text", {x: W - R, y: H - 6, "font-size": 9, "text-anchor": "end"},
-    fmt(x1)));
-  let dpath = "", pen = false;
-  ys.forEach((y, i) => {
-    if (y === null || !Number.isFinite(y)) { pen = false; return; }
-    dpath += `${pen ? "L" : "M"}${X(xs[i]).toFixed(2)},${Y(y).toFixed(2)} `;
-    pen = true;
-  });
-  svg.appendChild(el("path", {d: dpath, fill: "none", stroke: color, "stroke-width": 1.8}));
-  svg.appendChild(el("line", {class: "marker", x1: 0, x2: 0, y1: Tp, y2: H - B,
-    stroke: "#b3541e", "stroke-dasharray": "3,2"}));
-  svg.appendChild(el("circle", {class: "marker-dot", r: 3, fill: "#b3541e", cx: -10, cy: -10}));
-  svg.dataset.x0 = x0; svg.dataset.x1 = x1; svg.dataset.y0 = y0; svg.dataset.y1 = y1;
-  svg._xs = xs; svg._ys = ys; svg._X = X; svg._Y = Y;
-  return svg;
-}
-
 function markPlots() {
-  for (const svg of document.querySelectorAll("#plots svg")) {
-    if (!svg._xs) continue;
-    const x = svg._X(svg._xs[state.pos]);
-    const line = svg.querySelector(".marker");
-    line.setAttribute("x1", x); line.setAttribute("x2", x);
-    const y = svg._ys[state.pos];
-    const dot = svg.querySelector(".marker-dot");
-    if (y !== null && Number.isFinite(y)) { dot.setAttribute("cx", x); dot.setAttribute("cy", svg._Y(y)); }
-  }
+  for (const o of state.plotObjs) o.marker();
 }
 
 // ---- animation ------------------------------------------------------------------
@@ -553,35 +922,72 @@ function togglePlay() {
   state.timer = setInterval(() => {
     if (!state.data) return;
     const n = state.data.geometry.n;
-    if (state.pos + dir > n - 1 || state.pos + dir < 0) dir = -dir;
-    state.pos += dir;
-    $("stroke").value = state.pos;
+    if (state.data.turn) {
+      state.pos = (state.pos + 1) % n;        // a crank turns on through 360°
+    } else {
+      if (state.pos + dir > n - 1 || state.pos + dir < 0) dir = -dir;
+      state.pos += dir;
+    }
+    syncSliders();
     renderPose();
   }, 60);
 }
 
 // ---- start ----------------------------------------------------------------------
 async function start() {
-  const r = await fetch("/api/model");
-  state.info = await r.json();
-  if (!document.body.dataset.lang) state.lang = state.info.lang;
-  state.units = state.info.units;
+  let r;
+  try {
+    r = await fetch("/api/model");
+    state.info = await r.json();
+  } catch (e) {
+    $("status").textContent = document.body.dataset.lang === "ru"
+      ? "сервер не отвечает — запущен ли ещё `assur serve`?"
+      : "the server is not answering — is `assur serve` still running?";
+    return;
+  }
+  const saved = readUrl();
+  state.lang = saved.lang || (document.body.dataset.lang || state.info.lang);
+  state.units = saved.units || state.info.units;
+  for (const p of state.info.parameters) {
+    if (p.editable && p.name in saved.params) {
+      const c = checkValue(p, String(saved.params[p.name]));
+      if (c.value !== undefined) state.values[p.name] = c.value;
+    }
+  }
+  if (saved.pos !== undefined) state.pos = saved.pos;
+  if (saved.plots) state.plots = saved.plots;
+  if (saved.traj) for (const p of saved.traj) state.traj.add(p);
   $("units").value = state.units;
   applyTexts();
   buildParams();
-  $("stroke").addEventListener("input", () => {
-    state.pos = Number($("stroke").value);
-    renderPose();
-  });
+  // restored from the address: undo leads back to the file's values
+  if (Object.keys(changed()).length) state.history.push(Object.assign({}, state.base));
+  $("undo").disabled = !state.history.length;
+  $("stroke").addEventListener("input", () => setPos(Number($("stroke").value)));
   $("play").addEventListener("click", togglePlay);
   $("reset").addEventListener("click", resetParams);
+  $("undo").addEventListener("click", undo);
+  document.addEventListener("keydown", (e) => {
+    if ((e.ctrlKey || e.metaKey) && e.key === "z" && !(e.target instanceof HTMLInputElement)) {
+      e.preventDefault();
+      undo();
+    }
+  });
+  $("overlay").addEventListener("change", () => { state.overlay = $("overlay").checked; renderPose(); });
+  $("compare").addEventListener("change", () => {
+    state.compare = $("compare").checked;
+    if (state.compare) loadOriginal(); else { renderPose(); renderPlots(); }
+  });
   $("units").addEventListener("change", () => {
     state.units = $("units").value;
+    saveUrl();
     request();
   });
   $("lang-toggle").addEventListener("click", () => {
     state.lang = state.lang === "en" ? "ru" : "en";
     applyTexts();
+    buildParams();
+    saveUrl();
     request();
   });
   $("table-select").addEventListener("change", () => {
@@ -596,9 +1002,10 @@ async function start() {
     state.plots.push({table, symbol});
     $("add-plot").value = "";
     renderPlots();
+    saveUrl();
   });
   for (const b of document.querySelectorAll("[data-export]"))
-    b.addEventListener("click", () => download(b.dataset.export));
+    b.addEventListener("click", () => download(b.dataset.export, b));
   request();
 }
 
