@@ -157,12 +157,16 @@ class Model:
         """
         return self.mechanism.name
 
-    def analyze(self):
+    def analyze(self, balancing: bool = True):
         """Everything the file asks for, as ``assur analyze`` computes it: the
         :class:`~assur.analysis.Analysis` over :attr:`range` with the solved conditions
         and the file's warnings, the crank dynamics of ``[motion]``/``[dynamics]``
         (:func:`assur.analysis.add_dynamics`) and the lift test of ``[lift_test]``
         (:func:`assur.analysis.add_lift_test`).
+
+        ``balancing=False`` leaves out the counter-masses' search of ``[dynamics]`` (an
+        optimization of a second or more, whose results no table holds: the page and
+        the tables' exports do without it).
 
         Raises
         ------
@@ -178,10 +182,18 @@ class Model:
         ['L4', 'Sp', 'L7']
         >>> round(float(a.lift_test.hitch_force[0]))      # [lift_test] at the lowest height [N]
         29825
+        >>> crank = io.load(io.bundled("cleaning_lab3"))     # [dynamics] counter-masses
+        >>> crank.analyze(balancing=False).balancing is None
+        True
         """
+        import dataclasses
+
         from ..analysis import add_dynamics, add_lift_test
         analysis = self.mechanism.analyze(self.range)
-        add_dynamics(analysis, self.dynamics)
+        spec = self.dynamics
+        if not balancing and spec is not None and spec.counter_masses:
+            spec = dataclasses.replace(spec, counter_masses=())
+        add_dynamics(analysis, spec)
         add_lift_test(analysis, self.lift_test)
         analysis.solved = tuple(self.solved)
         analysis.model_warnings = tuple(self.warnings)  # shown among the report's warnings

@@ -500,7 +500,7 @@ class PageModel:
         try:
             from ...core.display import unit_system
             model = self.load(values)
-            analysis = self.model_on(model, positions).analyze()
+            analysis = self.model_on(model, positions).analyze(balancing=False)
             du = unit_system(analysis.mechanism, units)
             tables = seed_tables(analysis, lang=lang, units=du)
             geo = geometry(analysis.kinematics)
@@ -583,7 +583,8 @@ class PageModel:
         from ..report.tables import seed_tables, table_filename, write_csv, write_xlsx
         from ...core.display import unit_system
         model = self.load(values)
-        analysis = (model if positions is None else self.model_on(model, positions)).analyze()
+        analysis = (model if positions is None else
+                    self.model_on(model, positions)).analyze(balancing=False)
         du = unit_system(analysis.mechanism, units)
         tabs = seed_tables(analysis, lang=lang, units=du)
         stem = Path(self.name).stem or "model"
