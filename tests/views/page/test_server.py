@@ -34,3 +34,23 @@ def test_running_serves_on_loopback_until_stopped():
         assert info["file"] == "hitch_003.toml"
     with pytest.raises(OSError):
         urllib.request.urlopen(url + "/api/model", timeout=2)
+
+
+def test_the_dxf_of_two_coordinates_is_the_position_asked_for():
+    import io
+
+    import ezdxf
+    from fastapi.testclient import TestClient
+
+    from assur.io import bundled
+    from assur.views.page.server import create_app
+    client = TestClient(create_app(bundled("loader_lab1"), warm=False))
+    r = client.post("/api/export/dxf", json={"at": [1.2165, 0.851429]})   # S, S1 [m]
+    assert r.status_code == 200, r.text
+    doc = ezdxf.read(io.StringIO(r.content.decode("utf-8")))
+    [name] = [g for g, _ in doc.groups]
+    assert "S=1.21651" in name and "S1=0.851429" in name
+    r = client.post("/api/export/dxf", json={"at": [1.2165]})
+    assert "one value per coordinate" in r.json()["error"]["message"]
+    r = client.post("/api/export/dxf", json={"at": [9.0, 0.85]})
+    assert "outside the range of S" in r.json()["error"]["message"]

@@ -43,3 +43,82 @@ def test_the_bounds_of_a_request():
         pm.check_params({f"p{i}": 1.0 for i in range(MAX_PARAMS + 1)})
     with pytest.raises(ValueError, match=f"positions must be in 2…{MAX_POSITIONS}"):
         pm.compute({}, positions=MAX_POSITIONS + 1)
+
+
+# ---- issue 24: the page for every kind of machine -----------------------------------
+
+@pytest.mark.parametrize("name, way", [("cleaning_lab3", 1.0), ("combine_002", -1.0),
+                                       ("combine_002_turn", -1.0)])
+def test_a_crank_is_shown_over_one_whole_turn_in_the_files_direction(name, way):
+    import numpy as np
+    pm = PageModel.from_path(bundled(name))
+    r = np.asarray(pm.model.range, dtype=float)
+    q = np.asarray(pm.model_on(pm.model, 90).range)
+    assert pm.turns(pm.model)
+    assert q[0] == r[0]
+    assert np.allclose(np.diff(q), way * 2 * np.pi / 90)     # evenly, the end left out
+
+
+def test_a_partial_swing_is_resampled_between_its_extremes():
+    import dataclasses
+
+    import numpy as np
+    pm = PageModel.from_path(bundled("combine_002"))
+    rocker = dataclasses.replace(pm.model, range=np.radians([30.0, 90.0, 60.0]))  # unordered
+    assert not pm.turns(rocker)
+    q = np.degrees(pm.model_on(rocker, 5).range)
+    assert np.allclose(q, [30, 45, 60, 75, 90])
+
+
+def test_physical_spans_of_parameters():
+    pm = PageModel.from_path(bundled("loader_lab1"))
+    p = {q["name"]: q for q in pm.parameters()}
+    assert (p["eta"]["min"], p["eta"]["max"]) == (0, 1)                  # an efficiency
+    assert p["p_relief"]["min"] == 0 and p["p_relief"]["max"] is None   # a pressure
+    assert p["X01"]["min"] is None                                      # a coordinate
+    crane = {q["name"]: q for q in PageModel.from_path(bundled("crane_lv185")).parameters()}
+    assert crane["n_boom"]["integer"] and crane["n_boom"]["min"] == 0    # a count
+    assert crane["Jpk"]["unit_text"] == {"en": "kg·m²", "ru": "кг·м²"}  # as tables write it
+
+
+def test_a_cranks_speed_is_an_input_in_rpm_written_back_into_motion():
+    import numpy as np
+    pm = PageModel.from_path(bundled("cleaning_lab3"))       # j1: speed = "30 rad/s"
+    p = {q["name"]: q for q in pm.parameters()}["speed-j1"]
+    assert p["unit"] == "rpm" and p["value"] == pytest.approx(30 * 60 / (2 * np.pi))
+    text = pm.edited_text({"speed-j1": 300})
+    assert 'j1 = { direction = "cw", speed = "300 rpm" }' in text
+    motion = pm.load({"speed-j1": 300}).mechanism.motion("j1")
+    assert motion.speed == pytest.approx(300 * 2 * np.pi / 60)   # [rad/s]
+    assert motion.direction == -1                                 # still clockwise
+    assert not any(q["name"].startswith("speed-")
+                   for q in PageModel.from_path(bundled("hitch_003")).parameters())
+
+
+def test_two_coordinates_come_with_their_grid_and_default_plots_from_the_content():
+    pm = PageModel.from_path(bundled("loader_lab1"))
+    out = pm.compute({})
+    g = out["grid"]
+    assert (len(g["x"]), len(g["y"])) == (13, 8)
+    t = out["tables"][0]
+    for k in (0, 40, 103):                    # every position at its grid indices
+        assert t["columns"][0]["values"][k] == g["x"][g["i"][k]]
+        assert t["columns"][1]["values"][k] == g["y"][g["j"][k]]
+    plots = [(p["table"], p["symbol"]) for p in out["defaults"]]
+    assert ("4.1", "p_S") in plots and ("4.1", "p_S1") in plots      # the cylinders' pressures
+    assert any(s.startswith("G") for _, s in plots)                  # a capacity
+    assert any(s.startswith("R0") for _, s in plots)                 # a reaction on the frame
+    crank = PageModel.from_path(bundled("cleaning_lab3")).compute({})
+    assert {"Xc", "Yc"} <= {p["symbol"] for p in crank["defaults"]}  # the centre of mass
+    assert crank["grid"] is None and crank["turn"]
+
+
+def test_exports_are_made_at_the_pages_positions():
+    import csv
+    import io
+    pm = PageModel.from_path(bundled("hitch_003"))
+    data, _, _ = pm.export_tables({}, "csv", table="2.1", positions=101)
+    rows = list(csv.reader(io.StringIO(data.decode("utf-8-sig"))))
+    assert len(rows) == 1 + 101
+    data, _, _ = pm.export_tables({}, "csv", table="2.1")      # the file's own 10
+    assert len(data.decode("utf-8-sig").splitlines()) == 1 + 10

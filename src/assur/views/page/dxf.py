@@ -8,6 +8,8 @@
   linetype is ``DASHED``;
 * every joint and point as a POINT on the layer ``pivots`` (frame pivots also on
   ``frame_pivots``) with its name as TEXT on ``labels``;
+* every wheel (:attr:`assur.Mechanism.wheels`) as a closed LWPOLYLINE through the
+  corners of :func:`assur.views.geometry.wheel_outline` on the layer ``wheels``;
 * each position as a DXF GROUP named after its coordinate values (``S=0.42 m``).
 
 Coordinates are the model's x, y [m] times 1000 [mm].
@@ -30,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..geometry import convex_hull, geometry, pose
+from ..geometry import convex_hull, geometry, pose, wheel_outline
 
 __all__ = ["write_dxf", "dxf_bytes"]
 
@@ -73,10 +75,15 @@ def _document(kin, positions, design=None):
                 layer.dxf.linetype = "DASHED"
     for name, color in (("pivots", 7), ("frame_pivots", 7), ("labels", 8)):
         doc.layers.add(name, color=color)
+    if geo["wheels"]:
+        doc.layers.add("wheels", color=8)
     mech = kin.mechanism
     for i in positions:
         xy = {p: (x * 1e3, y * 1e3) for p, (x, y) in pose(geo, i).items()}
         ents = []
+        for w in geo["wheels"]:
+            corners = [(x * 1e3, y * 1e3) for x, y in wheel_outline(geo, w, i)]
+            ents.append(msp.add_lwpolyline(corners, close=True, dxfattribs={"layer": "wheels"}))
         for b in geo["bodies"]:
             pts = [xy[p] for p in b["points"] if p in xy]
             layer = f"link_{b['name']}"

@@ -164,6 +164,7 @@ class PageModel:
         self.doc = tomlkit.parse(self.text)
         self._params = self._read_params()
         self._spans = self._value_spans()
+        self._read_speeds()
         for p in self._params:  # a value the text does not show plainly is not edited
             p["editable"] = p["editable"] and p["name"] in self._spans
         self.editable = {p["name"]: p for p in self._params if p["editable"]}
@@ -239,6 +240,44 @@ class PageModel:
                 **_limits(name, unit or "-", raw),
             })
         return out
+
+    def _read_speeds(self):
+        """A crank's speed of ``[motion]`` (``j1 = { direction = "cw", speed = "30 rad/s" }``)
+        as one more editable value, in rpm, named ``speed-<coordinate>`` (a name no
+        parameter has: a parameter's is a TOML bare key without a hyphen… or with one,
+        then the speed is not offered); written back into the file as ``"<n> rpm"``.
+        A speed given by a parameter's name is edited as that parameter."""
+        header = re.search(r"(?m)^\[motion\][ \t]*(#.*)?$", self.text)
+        if header is None:
+            return
+        end = re.search(r"(?m)^[ \t]*\[", self.text[header.end():])
+        stop = header.end() + end.start() if end else len(self.text)
+        mech = self.model.mechanism
+        names = {p["name"] for p in self._params}
+        for c in mech.coordinates:
+            if mech.coordinate_kind(c) != "angle":
+                continue
+            try:
+                speed = mech.motion(c).speed
+            except Exception:  # noqa: BLE001 - no motion of this coordinate
+                continue
+            key = re.escape(c)
+            pat = re.compile(rf'(?m)^[ \t]*(?:{key}|"{key}")[ \t]*=[ \t]*\{{[^\n}}]*?'
+                             rf'speed[ \t]*=[ \t]*("[^"\n]*")')
+            hits = list(pat.finditer(self.text, header.end(), stop))
+            name = f"speed-{c}"
+            if len(hits) != 1 or speed is None or name in names:
+                continue
+            nu = _number_and_unit(hits[0].group(1)[1:-1])
+            if nu is None or not nu[1]:
+                continue  # a parameter's name: edited as the parameter
+            rpm = abs(float(speed)) * 60.0 / (2.0 * np.pi)
+            self._spans[name] = hits[0].span(1)
+            self._params.append({
+                "name": name, "group": "[motion]", "unit": "rpm", "value": rpm,
+                "file_value": nu[0], "editable": True, "solved": False,
+                "comment": f"{c}: the crank's speed", "unit_text": {"en": "rpm", "ru": "об/мин"},
+                "min": 0, "max": None, "integer": False})
 
     def _value_spans(self) -> dict:
         """``{name: (start, end)}``: where the value of each number-valued parameter of

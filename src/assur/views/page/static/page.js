@@ -429,6 +429,7 @@ function showResult(out) {
 function renderSolved(solved) {
   const ul = $("solved");
   ul.textContent = "";
+  $("solved-head").hidden = ul.hidden = !solved.length;     // no empty headings
   for (const s of solved)
     ul.appendChild(h("li", {id: "solved-" + s.name},
       `${s.name} = ${fmt(s.value)} ${s.unit === "-" ? "" : s.unit} (${T("solved_value")})`));
