@@ -271,7 +271,7 @@ class PageModel:
             nu = _number_and_unit(hits[0].group(1)[1:-1])
             if nu is None or not nu[1]:
                 continue  # a parameter's name: edited as the parameter
-            rpm = abs(float(speed)) * 60.0 / (2.0 * np.pi)
+            rpm = round(abs(float(speed)) * 60.0 / (2.0 * np.pi), 4)
             self._spans[name] = hits[0].span(1)
             self._params.append({
                 "name": name, "group": "[motion]", "unit": "rpm", "value": rpm,
