@@ -188,6 +188,16 @@ def test_a_steering_drive_draws_its_wheels(open_page, tmp_path):
     page.fill("#stroke", "100")                     # the whole stroke: the wheels turn
     after = page.locator("#drawing polygon.wheel").nth(0).get_attribute("points")
     assert before != after
+    # β over α: a plot over another column of its table, kept in the address
+    page.select_option("#add-plot", "F\u0000beta")
+    page.select_option("#plot-F-beta select.over", "alpha")
+    page.wait_for_function("location.search.includes('F%7Ebeta%7Ealpha')")
+    alpha = page.evaluate("state.data.tables.find(t => t.id === 'F').columns"
+                          ".find(c => c.symbol === 'alpha').values")
+    ticks = [float(t.replace("−", "-")) for t in page.eval_on_selector_all(
+        "#plot-F-beta text.xtick", "ts => ts.map(t => t.textContent)")]
+    assert min(ticks) <= min(alpha) and max(ticks) >= max(alpha)   # the axis is α's [°]
+    assert max(ticks) < 90
     _shoot(page, tmp_path, "steering_lab4")
     assert not errors, errors
 

@@ -58,6 +58,7 @@ PAGE_TEXT = {
     "edited": {"en": "edited", "ru": "изменённый"},
     "original": {"en": "the file's design", "ru": "проект из файла"},
     "undo": {"en": "undo", "ru": "отменить"},
+    "plot_over": {"en": "over", "ru": "по оси абсцисс"},
     "overlay": {"en": "several positions", "ru": "несколько положений"},
     "compare": {"en": "compare with the file's design", "ru": "сравнить с проектом из файла"},
 }

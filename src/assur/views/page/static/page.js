@@ -255,7 +255,8 @@ function saveUrl() {
   u.set("units", state.units);
   u.set("pos", String(state.pos));
   for (const [k, v] of Object.entries(changed())) u.set("p." + k, String(v));
-  if (state.plots) u.set("plots", state.plots.map(p => p.table + "~" + p.symbol).join(","));
+  if (state.plots) u.set("plots", state.plots.map(p => [p.table, p.symbol, p.x || "",
+                                                       (p.with || []).join("+")].join("~")).join(","));
   if (state.traj.size) u.set("traj", [...state.traj].join(","));
   history.replaceState(null, "", location.pathname + "?" + u.toString());
 }
@@ -274,7 +275,10 @@ function readUrl() {
     out.units = u.get("units");
   if (u.has("pos") && /^\d+$/.test(u.get("pos"))) out.pos = Number(u.get("pos"));
   if (u.has("plots")) out.plots = u.get("plots").split(",").filter(x => x.includes("~"))
-    .map(x => { const i = x.indexOf("~"); return {table: x.slice(0, i), symbol: x.slice(i + 1)}; });
+    .map(x => {
+      const [table, symbol, over, w] = x.split("~");
+      return {table, symbol, x: over || undefined, with: w ? w.split("+") : []};
+    });
   if (u.has("traj")) out.traj = u.get("traj").split(",").filter(Boolean);
   return out;
 }
@@ -893,16 +897,34 @@ function renderPlots() {
       }, destroy: () => { map.destroy && map.destroy(); curve.plot.destroy && curve.plot.destroy(); }});
     } else {
       const ax = abscissa(d);
-      const series = [{x: ax.x, y: c.values, label: ""}];
+      // over the coordinate, or over another column of the table (β over α)
+      const xc = p.x ? t.columns.find(q => q.symbol === p.x) : null;
+      const xs = xc ? xc.values : ax.x;
+      const xlabel = xc ? (xc.unit === "-" ? xc.symbol : `${xc.symbol} [${xc.unit}]`) : ax.label;
+      const series = [{x: xs, y: c.values, label: (p.with || []).length ? c.label || p.symbol : ""}];
+      for (const w of p.with || []) {
+        const wc = t.columns.find(q => q.symbol === w);
+        if (wc) series.push({x: xs, y: wc.values, label: wc.label || w, dash: true});
+      }
       if (orig) {
-        const oc = findColumn(orig.tables, p.table, p.symbol);
+        const ot = orig.tables.find(q => q.id === p.table);
+        const oc = ot && ot.columns.find(q => q.symbol === p.symbol);
+        const ox = ot && xc ? ot.columns.find(q => q.symbol === p.x) : null;
         if (oc) {
-          series[0].label = T("edited");
-          series.push({x: abscissa(orig).x, y: oc.values, label: T("original"),
-                       color: "#8a8a8a", dash: true});
+          series[0].label = `${T("edited")}: ${series[0].label || p.symbol}`;
+          series.push({x: ox ? ox.values : abscissa(orig).x, y: oc.values,
+                       label: `${T("original")}: ${p.symbol}`, color: "#8a8a8a", dash: true});
         }
       }
-      const lp = AssurPlot.line({series, xlabel: ax.label, ylabel, period, format: plotFormat,
+      const over = h("select", {class: "over", "aria-label": T("plot_over")});
+      over.appendChild(h("option", {value: ""}, `${T("plot_over")}: ${ax.label}`));
+      for (const q of t.columns.slice(nc))
+        if (q.symbol !== p.symbol)
+          over.appendChild(h("option", {value: q.symbol}, `${T("plot_over")}: ${q.symbol}`));
+      over.value = p.x || "";
+      over.addEventListener("change", () => { p.x = over.value || undefined; renderPlots(); saveUrl(); });
+      div.appendChild(over);
+      const lp = AssurPlot.line({series, xlabel, ylabel, period, format: plotFormat,
                                  onpick: (i) => setPos(i)});
       div.appendChild(lp.el);
       state.plotObjs.push({marker: () => lp.marker(state.pos), destroy: lp.destroy});
