@@ -14,6 +14,7 @@ from ..texts import text
 from . import _schema as S
 from ._entries import CYLINDER_VALUES, fields, group_inputs, group_links, group_outputs, \
     group_values, load_links, load_points, load_values, unreadable
+from ._links import derived_links
 from ._units import ANGLE, UnitError, parse, to_si
 
 
@@ -130,7 +131,10 @@ class Assembly:
         return kw
 
     def add_links(self, mech, points):
-        """``[links]`` and ``[distances]``: ends among ``points``, names unique."""
+        """``[links]`` and ``[distances]``: ends among ``points``, names unique. A file
+        without ``[links]`` gets the links of its named bodies
+        (:func:`~assur.io._links.derived_links`), listed in ``tables["derived_links"]``
+        for the reports to say so."""
         sp = self.spec
         for section, add in (("links", "link"), ("distances", "distance")):
             for name, ends in getattr(sp, section).items():
@@ -145,6 +149,13 @@ class Assembly:
                     raise self.error((section, name, "angle"),
                                      f'the name "{ends[2]}" is already a link or a distance')
                 mech = self.guarded((section, name), lambda: getattr(mech, add)(name, *ends))
+        if "links" not in self.data:  # no [links]: one per named body (io/_links.py)
+            derived = derived_links(mech)
+            for link in derived:
+                mech = self.guarded(("groups",), lambda: mech.link(link.name, link.tail,
+                                                                   link.head))
+            if derived:
+                mech = mech.with_tables(derived_links=tuple(l.name for l in derived))
         return mech
 
     def add_loads(self, mech, points, bodies):

@@ -158,6 +158,7 @@ TEXT = {
     "c_crank": {"en": "crank angle", "ru": "угол кривошипа"},
     "c_slider": {"en": "slider displacement", "ru": "перемещение ползуна"},
     "c_phi": {"en": "angle of link {0}", "ru": "угол звена {0}"},
+    "c_phi_dir": {"en": "angle of link {0} ({1} → {2})", "ru": "угол звена {0} ({1} → {2})"},
     "c_x": {"en": "x of point {0}", "ru": "X точки {0}"},
     "c_y": {"en": "y of point {0}", "ru": "Y точки {0}"},
     "c_closure": {"en": "largest closure residual", "ru": "наибольшая невязка замыкания"},
@@ -384,6 +385,15 @@ TEXT = {
                      "eq. 14)",
                "ru": "грузоподъёмность учитывает постоянные нагрузки звеньев {0} (источник "
                      "001, лаб. 1, формула 14)"},
+    "derived_links": {"en": "the model file has no [links]: each link's angle is the "
+                            "direction from its first point to its second as the groups "
+                            "define them (written with the angle); the analogs dφ do not "
+                            "depend on which two points of a link are taken, the angle only "
+                            "by a constant",
+                      "ru": "в файле модели нет раздела [links]: угол каждого звена — "
+                            "направление от его первой точки ко второй в порядке задания "
+                            "группами (указано при угле); аналоги dφ не зависят от выбора "
+                            "двух точек звена, угол — лишь на постоянную"},
     "paired": {"en": "the coordinates move together, position by position", "ru":
                "обобщённые координаты изменяются совместно, положение за положением"},
     "tG": {"en": "Lift capacity maps G({0}, {1}) (seed 001 lab 1 eq. 14)",

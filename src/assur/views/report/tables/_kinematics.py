@@ -9,14 +9,26 @@ from ._data import Column, Table, _both, grid_of
 from ._view import _singular_note
 
 
+def _derived(v):
+    """{link: (tail, head)} of the tabulated links a model file without ``[links]``
+    got from its groups (:func:`assur.io._links.derived_links`)."""
+    names = set(v.mech.tables.get("derived_links", ())) & set(v.kin.links)
+    return {l.name: (l.tail, l.head) for l in v.mech.links if l.name in names}
+
+
 def _table_2_1(v):
     cols = v.coord_columns()
+    derived = _derived(v)
     for link in v.kin.links:
-        cols.append(Column(f"phi{link}", "deg", v.phi_values(link), _both("c_phi", link)))
+        label = (_both("c_phi_dir", link, *derived[link]) if link in derived
+                 else _both("c_phi", link))
+        cols.append(Column(f"phi{link}", "deg", v.phi_values(link), label))
     for dist in v.mech.distances:  # named distances (their angles are links above)
         cols.append(Column(dist.name, "m", v.pick(v.kin.length(dist.name)),
                            _both("c_dist", dist.name, dist.a, dist.b)))
     notes = v.convention_notes()
+    if derived:
+        notes.append(_both("derived_links"))
     if v.k > 1 and (v.k > 2 or grid_of(*(v.coord_values(c) for c in v.coords)) is None):
         notes.append(_both("paired"))  # not a full grid: the coordinates move together
     return Table("2.1", _both("t2.1"), tuple(cols), tuple(notes))
@@ -72,6 +84,8 @@ def _table_3_1(v):
         note = v.absent_note(c, *still[c])
         if note:
             notes.append(note)
+    if _derived(v):
+        notes.append(_both("derived_links"))
     notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
 
