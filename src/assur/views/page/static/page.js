@@ -542,10 +542,15 @@ function prepareDrawing(g) {
   const wy = g.weights.length ? 0.14 * span : 0;
   const vw = x1 - x0 + 2 * m, vh = y1 - y0 + 2 * m + wy;
   svg.setAttribute("viewBox", `${x0 - m} ${-(y1 + m)} ${vw} ${vh}`);
-  // the box takes the machine's proportions (a tall crane gets a tall box)
+  // the box takes the machine's proportions (a tall crane gets a tall box); its width
+  // read (a layout of the page) only when the proportions change, not on every answer
   const box = $("drawing-box");
-  const w = box.clientWidth || 600;
-  box.style.height = `${Math.round(Math.min(Math.max(w * vh / vw, 320), 720))}px`;
+  const aspect = (vh / vw).toFixed(2);
+  if (box.dataset.aspect !== aspect) {
+    box.dataset.aspect = aspect;
+    const w = box.clientWidth || 600;
+    box.style.height = `${Math.round(Math.min(Math.max(w * vh / vw, 320), 720))}px`;
+  }
   svg.setAttribute("preserveAspectRatio", "xMidYMid meet");
 }
 
