@@ -198,3 +198,39 @@ def test_no_map_table_for_paired_paths(paired):
     assert "G" not in [t.id for t in seed_tables(a)]
 
 
+
+
+def test_a_cranks_velocities_and_accelerations_are_the_time_derivatives_at_its_speed():
+    """Table V (issue 24): ω, ε of each link and |v|, |a| of each point at the crank's
+    speed of [motion] (cleaning_lab3: 30 rad/s clockwise), against central differences
+    of the positions in time (q = q0 + q̇·t)."""
+    import numpy as np
+
+    from assur import io
+    from assur.views.report.tables import seed_tables
+    model = io.load(io.bundled("cleaning_lab3"))
+    a = model.mechanism.analyze(np.radians([10.0, 100.0, 250.0]))
+    from assur.analysis import add_dynamics
+    import dataclasses
+    add_dynamics(a, dataclasses.replace(model.dynamics, counter_masses=(), delta=None,
+                                        flywheel=None))  # three positions: no flywheel
+    t = {tab.id: tab for tab in seed_tables(a)}["V"]
+    qd = float(np.ravel(a.dynamics.qdot)[0])
+    assert qd == pytest.approx(-30.0)                      # [rad/s], clockwise
+    assert np.allclose(np.ravel(a.dynamics.qddot), 0.0)    # a steady turn
+    dt = 1e-5                                              # [s]
+    q = np.radians([10.0, 100.0, 250.0])
+    k = [model.mechanism.solve(q + s * qd * dt) for s in (-1, 0, 1)]
+    for link in k[1].links:
+        phi = [np.unwrap(np.array([np.ravel(r.phi(link)) for r in k]), axis=0)[i] for i in range(3)]
+        w = (phi[2] - phi[0]) / (2 * dt)
+        e = (phi[2] - 2 * phi[1] + phi[0]) / dt ** 2
+        assert np.allclose(t[f"omega{link}"], w, rtol=1e-6, atol=1e-6)
+        assert np.allclose(t[f"eps{link}"], e, rtol=1e-3, atol=1e-1)
+    for p in ("A", "S6", "C6"):
+        xy = [np.stack([np.ravel(r.x(p)), np.ravel(r.y(p))]) for r in k]
+        v = np.hypot(*((xy[2] - xy[0]) / (2 * dt)))
+        acc = np.hypot(*((xy[2] - 2 * xy[1] + xy[0]) / dt ** 2))
+        assert np.allclose(t[f"v{p}"], v, rtol=1e-6)
+        assert np.allclose(t[f"a{p}"], acc, rtol=1e-3)
+    assert t["vA"] == pytest.approx(30.0 * 0.040)          # ω·L1, L1 = 40 mm [m/s]

@@ -131,6 +131,19 @@ TEXT = {
            "ru": "Динамика кривошипного механизма: приведённый момент инерции, приведённые "
                  "моменты, движущий момент, общий центр масс"},
     "c_omega": {"en": "angular velocity of the crank {0}", "ru": "угловая скорость кривошипа {0}"},
+    "tV": {"en": "Velocities and accelerations at the crank's speed",
+           "ru": "Скорости и ускорения при заданной скорости кривошипа"},
+    "c_omega_link": {"en": "angular velocity of link {0}", "ru": "угловая скорость звена {0}"},
+    "c_eps_link": {"en": "angular acceleration of link {0}",
+                   "ru": "угловое ускорение звена {0}"},
+    "c_v_point": {"en": "speed of point {0} (magnitude of its velocity)",
+                  "ru": "скорость точки {0} (модуль)"},
+    "c_a_point": {"en": "acceleration of point {0} (magnitude)",
+                  "ru": "ускорение точки {0} (модуль)"},
+    "n_rates": {"en": "at the crank's speed and acceleration of [motion] (table D: ω, ε); "
+                      "ω_i = φ_i′·ω, ε_i = φ_i′·ε + φ_i″·ω², v = J·ω, a = J·ε + H·ω²",
+                "ru": "при скорости и ускорении кривошипа из [motion] (таблица D: ω, ε); "
+                      "ω_i = φ_i′·ω, ε_i = φ_i′·ε + φ_i″·ω², v = J·ω, a = J·ε + H·ω²"},
     "c_eps": {"en": "angular acceleration of the crank {0}",
               "ru": "угловое ускорение кривошипа {0}"},
     "c_Jred": {"en": "reduced moment of inertia J_red", "ru": "приведённый момент инерции J_пр"},

@@ -9,7 +9,7 @@ from ..labels import TEXT, check_lang
 from ._data import Column, Table, _both, _same, in_units
 from ._forces import _table_4_1, _table_5_1, _table_5_2, _table_g
 from ._kinematics import _table_2_1, _table_2_2, _table_3_1, _table_ic
-from ._machines import _table_6_1, _table_d, _table_l
+from ._machines import _table_6_1, _table_d, _table_l, _table_v
 from ._view import _View
 
 __all__ = ["seed_tables", "numbered", "NUMBERINGS"]
@@ -19,7 +19,7 @@ FORMULAS_ID = "F"
 
 
 _BUILDERS = (_table_2_1, _table_2_2, _table_3_1, _table_4_1, _table_g, _table_5_1, _table_5_2,
-             _table_d, _table_6_1, _table_ic, _table_l)
+             _table_d, _table_v, _table_6_1, _table_ic, _table_l)
 
 
 def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None,

@@ -1,5 +1,6 @@
-"""The tables of the machine: D (crank dynamics), 6.1 (stability) and L (the
-standard lift test) (:mod:`assur.views.report.tables`)."""
+"""The tables of the machine: D (crank dynamics), V (velocities and accelerations at
+the crank's speed), 6.1 (stability) and L (the standard lift test)
+(:mod:`assur.views.report.tables`)."""
 
 from __future__ import annotations
 
@@ -41,6 +42,39 @@ def _table_d(v):
               "ru": "M_red — приведённый к кривошипу момент всех сил (с силами инерции) по "
                     "принципу возможных перемещений; M_d = −M_red — момент привода"}]
     return Table("D", _both("tD"), tuple(cols), tuple(notes))
+
+
+def _table_v(v):
+    """Velocities and accelerations at the crank's speed of ``[motion]`` (the rates the
+    crank dynamics and its inertia loads use): ω, ε of every link (ω = φ'·q̇,
+    ε = φ'·q̈ + φ''·q̇², :meth:`~assur.core.transfer.Transfer.angular_velocity`) and the
+    magnitudes of the velocity and acceleration of every moving point (v = J·q̇,
+    a = J·q̈ + q̇ᵀ·H·q̇)."""
+    dyn = getattr(v.a, "dynamics", None)
+    if dyn is None or v.design is not None and np.ndim(dyn.qdot) > 1:
+        return None
+    kin = v.kin
+    qd, qdd = dyn.qdot, dyn.qddot
+    cols = v.coord_columns()
+    for link in kin.links:
+        cols.append(Column(f"omega{link}", "rad/s", v.pick(kin.angular_velocity(link, qd)),
+                           _both("c_omega_link", link)))
+    for link in kin.links:
+        cols.append(Column(f"eps{link}", "rad/s²",
+                           v.pick(kin.angular_acceleration(link, qd, qdd)),
+                           _both("c_eps_link", link)))
+    frame = set(v.mech.frame_points)
+    for p in kin.points:
+        if p in frame:
+            continue
+        cols.append(Column(f"v{p}", "m/s", v.pick(np.hypot(*np.moveaxis(
+            kin.velocity(p, qd), -1, 0))), _both("c_v_point", p)))
+    for p in kin.points:
+        if p in frame:
+            continue
+        cols.append(Column(f"a{p}", "m/s²", v.pick(np.hypot(*np.moveaxis(
+            kin.acceleration(p, qd, qdd), -1, 0))), _both("c_a_point", p)))
+    return Table("V", _both("tV"), tuple(cols), (_both("n_rates"),))
 
 
 def _table_6_1(v):
