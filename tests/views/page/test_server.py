@@ -54,3 +54,20 @@ def test_the_dxf_of_two_coordinates_is_the_position_asked_for():
     assert "one value per coordinate" in r.json()["error"]["message"]
     r = client.post("/api/export/dxf", json={"at": [9.0, 0.85]})
     assert "outside the range of S" in r.json()["error"]["message"]
+
+
+def test_a_position_asked_twice_is_drawn_once():
+    """Issue 27: ``{"at": [0.5, 0.5]}`` was the page's only HTTP 500 (a DXF group named
+    twice)."""
+    import io
+
+    import ezdxf
+    from fastapi.testclient import TestClient
+
+    from assur.io import bundled
+    from assur.views.page.server import create_app
+    client = TestClient(create_app(bundled("hitch_003"), warm=False))
+    r = client.post("/api/export/dxf", json={"at": [0.5, 0.5, 0.6]})   # S [m]
+    assert r.status_code == 200, r.text
+    doc = ezdxf.read(io.StringIO(r.content.decode("utf-8")))
+    assert len([g for g, _ in doc.groups]) == 2

@@ -304,8 +304,8 @@ def _nearest(model, kin, at):
         bad = [v for v in vs if not lo - 1e-9 <= v <= hi + 1e-9]
         if bad:
             raise ModelError(f"at: {bad} outside the range of {c}: {lo:.6g} … {hi:.6g}")
-    if kin.k == 1:
-        return [int(np.abs(qs[0] - v).argmin()) for v in at]
+    if kin.k == 1:  # a value asked twice is one position (one DXF group)
+        return list(dict.fromkeys(int(np.abs(qs[0] - v).argmin()) for v in at))
     d = sum(((q - v) / max(float(np.ptp(q)), 1e-12)) ** 2 for q, v in zip(qs, at))
     return [int(np.argmin(d))]
 
