@@ -229,6 +229,18 @@ def test_numbers_are_read_as_users_type_them(open_page):
         assert len(sent) == n                       # nothing sent
         assert page.evaluate("state.values.p_relief") == 17.5
 
+    # the fields in the page's units: L3 = 0.55 m shown as 21.6535 in, 20 in sent as m
+    page.select_option("#units", "imperial")
+    page.wait_for_function("document.getElementById('input-L3').value === '21.6535'")
+    assert page.text_content("#param-L3 .unit") == "in"
+    page.fill("#input-L3", "20")
+    page.wait_for_function("Math.abs(state.values.L3 - 0.508) < 1e-12")
+    page.wait_for_timeout(300)
+    assert sent[-1]["params"]["L3"] == pytest.approx(0.508, abs=1e-12)   # [m], the file's
+    assert sent[-1]["units"] == "imperial"
+    page.select_option("#units", "file")
+    page.wait_for_function("document.getElementById('input-L3').value === '0.508'")
+
     # a count is whole, an efficiency lies in 0 … 1; slider steps are round numbers
     eta = page.evaluate("state.info.parameters.find(p => p.name === 'eta')")
     assert (eta["min"], eta["max"]) == (0, 1)
@@ -255,7 +267,8 @@ def test_a_reload_restores_parameters_position_language_and_units(open_page):
     page.reload()
     page.wait_for_selector("#drawing circle.point")
     page.wait_for_function("document.getElementById('title').textContent.includes('навески')")
-    assert page.input_value("#input-L5") == "0,5"     # Russian: the decimal comma
+    assert page.input_value("#input-L5") == "500"       # the page's units: mm
+    assert page.text_content("#param-L5 .unit") == "мм"
     assert page.input_value("#units") == "engineering"
     assert page.input_value("#stroke") == "30"
     assert page.text_content("#position-text") == pos_text
@@ -267,7 +280,7 @@ def test_a_reload_restores_parameters_position_language_and_units(open_page):
     page.fill("#input-L5", "0,5")
     page.wait_for_function("document.getElementById('param-L5').classList.contains('changed')")
     page.check("#compare")
-    page.wait_for_selector("#drawing g.ghost")
+    page.wait_for_selector("#drawing g.ghost", state="attached")
     page.wait_for_selector(".plot path.curve[data-series='1']")
     assert not errors, errors
 

@@ -569,10 +569,46 @@ class PageModel:
                       "length_scale": du["length"].scale,
                       "angle": unit(du["angle"].text, lang),
                       "angle_scale": du["angle"].scale},
+            "fields": self.fields(du, lang),
             "solved": solved,
             "warnings": [str(w) for w in model.warnings],
             "ms": round(1e3 * (time.perf_counter() - t0), 2),
         }
+
+    def fields(self, du, lang="en") -> dict:
+        """How the page shows each editable parameter in the display units ``du`` (a
+        :class:`~assur.core.display.DisplayUnits`): ``{name: {"unit", "factor"}}``, the
+        shown value being the file's value × ``factor`` (the page sends the file's
+        value back: shown / factor). In the ``file`` system, and for a parameter of no
+        known kind, the file's own unit (factor 1).
+
+        Examples
+        --------
+        >>> from assur.io import bundled
+        >>> from assur.core.display import unit_system
+        >>> from assur.views.page.session import PageModel
+        >>> pm = PageModel.from_path(bundled("hitch_003"))          # L5 = "0.480 m"
+        >>> pm.fields(unit_system(pm.model.mechanism, "engineering"))["L5"]
+        {'unit': 'mm', 'factor': 1000.0}
+        >>> pm.fields(unit_system(pm.model.mechanism, "imperial"), "ru")["P6"]["unit"]
+        'фунт-сила'
+        >>> pm.fields(unit_system(pm.model.mechanism, None))["L5"]
+        {'unit': 'm', 'factor': 1.0}
+        """
+        from ...core.display import KINDS, kind_of
+        from ..report.labels import unit
+        mech = self.model.mechanism
+        out = {}
+        for name, p in self.editable.items():
+            mu = mech.units.get(name)
+            kind = kind_of(mu.text) if mu is not None else None
+            if mu is None or du.system == "file" or kind not in KINDS:
+                out[name] = {"unit": p["unit_text"][lang], "factor": 1.0}
+                continue
+            shown = du[kind]
+            out[name] = {"unit": unit(shown.text, lang),
+                         "factor": float(mu.scale / shown.scale)}
+        return out
 
     def _unit_of(self, name):
         for p in self._params:

@@ -28,6 +28,8 @@ const state = {
   original: null,      // payload of the file's design (compare)
   plotObjs: [],        // the drawn plots (marker updates)
   url: null,           // what the address restores (parameters, position, plots)
+  fields: {},          // parameter -> {unit, factor}: shown in the page's units (value × factor)
+  fieldsKey: "",
 };
 
 const $ = (id) => document.getElementById(id);
@@ -86,7 +88,8 @@ function checkValue(p, text) {
 }
 
 function spanText(p) {
-  const lo = p.min === null ? "−∞" : fmt(p.min), hi = p.max === null ? "∞" : fmt(p.max);
+  const q = shownParam(p);
+  const lo = q.min === null ? "−∞" : fmt(q.min), hi = q.max === null ? "∞" : fmt(q.max);
   const u = unitOf(p) ? " " + unitOf(p) : "";
   return (p.integer ? T("whole") + " " : "") + `${lo} … ${hi}${u}`;
 }
@@ -129,14 +132,28 @@ function sliderRange(p) {
   return [roundTo(lo, step), roundTo(hi, step), step];
 }
 
-function fieldText(v) {
-  const t = String(Number(Number(v).toPrecision(12)));
+function fieldText(v, p) {
+  const f = p ? fieldOf(p).factor : 1;
+  const t = String(Number(Number(v * f).toPrecision(f === 1 ? 12 : 6)));
   return state.lang === "ru" ? t.replace(".", ",") : t;
 }
 
+// how a parameter is shown: in the page's units (the file's value × factor)
+function fieldOf(p) {
+  return state.fields[p.name] || {unit: p.unit_text ? p.unit_text[state.lang] : p.unit,
+                                   factor: 1};
+}
+
 function unitOf(p) {
-  const u = p.unit_text ? p.unit_text[state.lang] : p.unit;
+  const u = fieldOf(p).unit;
   return u === "-" ? "" : u;
+}
+
+// the parameter as the field shows it: value, span and unit in the page's units
+function shownParam(p) {
+  const f = fieldOf(p).factor;
+  return {value: p.value * f, unit: fieldOf(p).unit, integer: p.integer,
+          min: p.min === null ? null : p.min * f, max: p.max === null ? null : p.max * f};
 }
 
 function fieldMessage(name, text) {
@@ -163,11 +180,12 @@ function buildParams() {
     const v = state.values[p.name];
     const row = h("div", {class: "param", id: "param-" + p.name, title: p.comment || ""});
     row.appendChild(h("label", {for: "input-" + p.name}, p.name));
-    const [lo, hi, step] = sliderRange(p);
+    const factor = fieldOf(p).factor;
+    const [lo, hi, step] = sliderRange(shownParam(p));
     const slider = h("input", {type: "range", id: "slider-" + p.name, min: lo, max: hi,
-                               step: step, value: v, "aria-label": p.name});
+                               step: step, value: v * factor, "aria-label": p.name});
     const input = h("input", {type: "text", inputmode: "decimal", id: "input-" + p.name,
-                              value: fieldText(v), autocomplete: "off"});
+                              value: fieldText(v, p), autocomplete: "off"});
     row.appendChild(slider);
     row.appendChild(input);
     row.appendChild(h("span", {class: "unit"}, unitOf(p)));
@@ -175,15 +193,15 @@ function buildParams() {
     msg.hidden = true;
     row.appendChild(msg);
     slider.addEventListener("input", () => {
-      const x = roundTo(Number(slider.value), step);
-      input.value = fieldText(x);
+      const x = roundTo(Number(slider.value), step) / factor;   // the file's unit
+      input.value = fieldText(x, p);
       fieldMessage(p.name, "");
       setParam(p.name, x);
     });
     input.addEventListener("input", () => {
-      const r = checkValue(p, input.value);
+      const r = checkValue(shownParam(p), input.value);
       if (r.empty) {
-        fieldMessage(p.name, `${T("field_empty")} ${fieldText(state.values[p.name])} ${unitOf(p)}`);
+        fieldMessage(p.name, `${T("field_empty")} ${fieldText(state.values[p.name], p)} ${unitOf(p)}`);
         return;
       }
       if (r.error) {
@@ -193,11 +211,11 @@ function buildParams() {
       }
       fieldMessage(p.name, "");
       slider.value = r.value;
-      setParam(p.name, r.value);
+      setParam(p.name, r.value / factor);
     });
     input.addEventListener("blur", () => {   // the field shows the value in force
       if (!$("msg-" + p.name).hidden) return;
-      input.value = fieldText(state.values[p.name]);
+      input.value = fieldText(state.values[p.name], p);
     });
     row.classList.toggle("changed", v !== p.value);
     fs.appendChild(row);
@@ -224,9 +242,10 @@ function changed() {
 }
 
 function showValues() {
+  const params = Object.fromEntries(state.info.parameters.map(p => [p.name, p]));
   for (const [k, v] of Object.entries(state.values)) {
-    $("input-" + k).value = fieldText(v);
-    $("slider-" + k).value = v;
+    $("input-" + k).value = fieldText(v, params[k]);
+    $("slider-" + k).value = v * fieldOf(params[k]).factor;
     $("param-" + k).classList.toggle("changed", v !== state.base[k]);
     fieldMessage(k, "");
   }
@@ -408,6 +427,12 @@ function showResult(out) {
   $("table-box").classList.remove("pending");
   $("title").textContent = out.title;
   document.title = `${out.title} — assur`;
+  const key = JSON.stringify(out.fields || {});
+  if (key !== state.fieldsKey) {          // the units or the language changed: the fields too
+    state.fieldsKey = key;
+    state.fields = out.fields || {};
+    buildParams();
+  }
   const n = out.geometry.n;
   if (state.pos > n - 1) state.pos = n - 1;
   buildSliders(out);
