@@ -107,9 +107,10 @@ def _user_error(e) -> JSONResponse:
 
 
 def _warm(pm):
-    """Compute the page's first answer and the tables' export once in a background
-    thread, so the first request and the first download of the model do not wait
-    for kernels to compile, the tables to be built or the workbook writer to load."""
+    """Compute the page's first answer, a first change and the tables' export once in a
+    background thread, so the first request, the first edit and the first download of
+    the model do not wait for kernels to compile or load, the conditions' solver to be
+    imported or the workbook writer to load."""
     import threading
 
     def run():
@@ -117,6 +118,10 @@ def _warm(pm):
             from .api import AnalyzeRequest
             positions = AnalyzeRequest().positions
             pm.compute({}, positions=positions)
+            # a first change: the design conditions solved again (their solver and
+            # kernels loaded), as after the user's first edit
+            for name, p in list(pm.editable.items())[:1]:
+                pm.compute({name: p["value"] * (1 + 1e-7) + 1e-12}, positions=positions)
             pm.export_tables({}, "xlsx", positions=positions)
         except Exception:  # noqa: BLE001 - the page shows the model's error when asked
             log.debug("warming the model failed", exc_info=True)
