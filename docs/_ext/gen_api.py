@@ -27,6 +27,7 @@ SECTIONS = [
         ("assur.core.loads", "load types behind one contract and registry; masses, dead loads"),
         ("assur.core.memo", "what is kept with a mechanism: the memo's keys and owners"),
         ("assur.core.cylinders", "hydraulic cylinders: the one home of their quantities"),
+        ("assur.core.wheels", "wheels drawn on a link: a steered wheel, a tractor's wheel"),
         ("assur.core.gravity", "the mechanism's gravity"),
         ("assur.core.reactions", "the reverse pass's context (the groups' statics contract)"),
         ("assur.core.statics", "virtual work and joint reactions by Assur groups: the result, solve"),

@@ -16,6 +16,7 @@ from ..groups import Distance, Frame, Link, registry
 from . import loads as _loads
 from .cylinders import Cylinder
 from .motion import Motion
+from .wheels import Wheel
 
 def add(self, *groups):
     """Return a mechanism with ``groups`` appended (solved after the existing ones).
@@ -272,6 +273,48 @@ def with_cylinders(self, cylinders=()):
     -1.333333
     """
     return self._with(cylinders=tuple(cylinders))
+
+
+def wheel(self, name, at, diameter, width, link=None, heading=0.0):
+    """Add a wheel drawn centred on point ``at``, heading along ``link`` turned by
+    ``heading`` [rad] (:class:`assur.core.wheels.Wheel`; ``[[wheels]]`` of a model
+    file); ``diameter`` and ``width`` [m] are numbers or parameter names. It is drawing
+    data: the solve and the forces do not change.
+
+    Examples
+    --------
+    The seed-003 hitch's tractor: a rear wheel of 1.1 m under the frame pivot 01,
+    rolling along +x:
+
+    >>> import numpy as np
+    >>> from assur import examples
+    >>> from assur.views.geometry import geometry
+    >>> m = examples.hitch_003().wheel("rear wheel", at="01", diameter=1.1, width=0.3)
+    >>> [str(w.name) for w in m.wheels]
+    ['rear wheel']
+    >>> geometry(m.solve([0.42]))["wheels"][0]["length"]                # [m]
+    1.1
+    >>> examples.hitch_003().wheel("w", at="99", diameter=1.1, width=0.3)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': wheel 'w' is at unknown point '99' (known: ['01', '03', '05', '07', '23', '34', '45', '56', '67', 'F610', 'S6'])
+    """
+    return self._with(wheels=self.wheels + (Wheel(name, at, diameter, width, link=link,
+                                                  heading=heading),))
+
+
+def with_wheels(self, wheels=()):
+    """The same mechanism with ``wheels`` (:class:`assur.core.wheels.Wheel`; none by
+    default) in place of its own.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> m = examples.steering_lab4()
+    >>> len(m.wheels), len(m.with_wheels(m.wheels[:1]).wheels), len(m.with_wheels().wheels)
+    (2, 1, 0)
+    """
+    return self._with(wheels=tuple(wheels))
 
 
 def with_machine(self, machine, point, weight, refs=None):

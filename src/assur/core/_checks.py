@@ -7,7 +7,7 @@ refuses on construction (and what a copy re-checks, ``Mechanism._with``), each a
   distances, then the topology and the parts that refer to it (:func:`check_parts`);
 * :func:`check_parts` — the loads (the names their declared point, link and value
   fields hold, and each load's own ``check``), the machine, the cylinders and their
-  supply lines;
+  supply lines, the wheels;
 * :func:`check_params`, :func:`check_gravity`, :func:`check_motions`.
 """
 
@@ -24,6 +24,7 @@ from .cylinders import Cylinder
 from .loads import Weight, names_in
 from .motion import Motion
 from .topology import build_topology
+from .wheels import Wheel
 
 
 def validate(mech, check_params=True):
@@ -184,8 +185,8 @@ class _Refs:
 
 
 def check_parts(mech, known):
-    """The loads, the machine and the cylinders of ``mech`` against its points
-    ``known``, its links and its parameters.
+    """The loads, the machine, the cylinders and the wheels of ``mech`` against its
+    points ``known``, its links and its parameters.
 
     Examples
     --------
@@ -204,6 +205,40 @@ def check_parts(mech, known):
             refs.value("the machine's data", t)
         refs.value("the machine's implement weight", mech.machine.weight)
     check_cylinders(mech, refs)
+    check_wheels(mech, refs)
+
+
+def check_wheels(mech, refs):
+    """Each wheel (:class:`assur.core.wheels.Wheel`) at a known point, heading along a
+    link with a direction (a named link, or a moving link of the groups), its values
+    finite or parameters, a given diameter and width positive.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> examples.hitch_003().wheel("w", at="01", link="9", diameter=1.1, width=0.3)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: mechanism 'hitch_003': wheel 'w' heads along unknown link '9' (links with a direction: ['2', '3', '34', '4', '5', '6', '7'])
+    """
+    where = refs.where
+    named = [ln.name for ln in mech.links]
+    topo = mech.topology
+    turning = named + [b for b in topo.bodies if b != "0" and b not in named
+                       and topo.angle_points(b) is not None]
+    for w in mech.wheels:
+        if not isinstance(w, Wheel):
+            raise ModelError(f"{where}: wheels must be assur.core.wheels.Wheel, got {w!r}")
+        what = f"wheel {w.name!r}"
+        refs.point(what, w.at)
+        if w.link is not None and w.link not in turning:
+            raise ModelError(f"{where}: {what} heads along unknown link {w.link!r} (links "
+                             f"with a direction: {sorted(turning)})")
+        for f in w.quantities:
+            ref = getattr(w, f)
+            refs.value(f"{what}: {f}", ref)
+            if f in w.flags and is_number(ref) and not float(ref) > 0:
+                raise ModelError(f"{where}: {what}: {f} must be positive, got {ref!r}")
 
 
 def check_load(mech, ld, refs):

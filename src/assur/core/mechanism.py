@@ -55,6 +55,9 @@ class Mechanism:
         system: ``"file"``, ``"engineering"``, ``"si"``, ``"imperial"``), ``lang``
         (``"en"``, ``"ru"`` or None) and ``given`` (the :class:`Unit` of each value a
         model file writes with a unit, which the ``"file"`` system follows).
+    wheels : sequence of Wheel, optional
+        Wheels drawn on the mechanism (:class:`assur.core.wheels.Wheel`; a model
+        file's ``[[wheels]]``): drawing data only, see :meth:`wheel`.
 
     Examples
     --------
@@ -75,7 +78,8 @@ class Mechanism:
                  notes: Iterable[str] = (), loads: Iterable = (), cylinders: Iterable = (),
                  machine=None, gravity: float | None = None, units: Mapping | None = None,
                  motions: Iterable = (), gravity_direction: float | None = None,
-                 display: Mapping | None = None, _params_checked: bool = False):
+                 display: Mapping | None = None, wheels: Iterable = (),
+                 _params_checked: bool = False):
         self.name = name
         self.title = title or name
         self.coordinates = tuple(coordinates)
@@ -99,6 +103,9 @@ class Mechanism:
         self.loads = tuple(loads)
         #: hydraulic cylinders (:class:`assur.core.cylinders.Cylinder`)
         self.cylinders = tuple(cylinders)
+        #: wheels drawn on the mechanism (:class:`assur.core.wheels.Wheel`): drawing data,
+        #: no part of the kinematics or the forces
+        self.wheels = tuple(wheels)
         #: machine data for stability (:class:`assur.machines.stability.Machine`) or None
         self.machine = machine
         #: acceleration of gravity for the masses' weights [m/s²] as given (None: the
@@ -150,7 +157,7 @@ class Mechanism:
                  loads=self.loads, cylinders=self.cylinders, machine=self.machine,
                  gravity=self.gravity, units=self.units, motions=self.motions,
                  gravity_direction=self.gravity_direction, display=self.display,
-                 _params_checked="params" not in kw)
+                 wheels=self.wheels, _params_checked="params" not in kw)
         d.update(kw)
         return Mechanism(**d)
 
@@ -164,6 +171,8 @@ class Mechanism:
     distance = _building.distance
     cylinder = _building.cylinder
     with_cylinders = _building.with_cylinders
+    wheel = _building.wheel
+    with_wheels = _building.with_wheels
     with_machine = _building.with_machine
     with_loads = _building.with_loads
     with_params = _building.with_params

@@ -13,7 +13,9 @@ Four passes over the file's tables (:class:`Builder`):
 3. *Mechanism.* Frame, groups in order, links, distances, loads, cylinders,
    machine and tables are added one at a time to a :class:`~assur.Mechanism`, each
    point and link name checked against those defined before it; anything the
-   mechanism itself refuses is reported at the entry being added.
+   mechanism itself refuses is reported at the entry being added; then the wheels
+   drawn on it (``[[wheels]]``, :mod:`assur.io._wheels`, whose values' uses join
+   pass 1).
 4. *Solve and range.* The ``[[solve]]`` conditions become
    :class:`~assur.synthesis.conditions.Condition` objects solved by
    :func:`~assur.synthesis.conditions.solve_conditions`; a failure is reported at its
@@ -299,8 +301,10 @@ class Builder(Uses, Assembly, Conditions):
     def build(self):
         self.validate()
         self.uses()
+        from ._wheels import build_wheels, use_wheels
+        use_wheels(self)  # [[wheels]]: io/_wheels.py
         self.parameters()
-        mech = self.mechanism()
+        mech = build_wheels(self, self.mechanism())
         from ._dynamics import build_dynamics
         self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
         from ._lift_test import build_lift_test

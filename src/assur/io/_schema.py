@@ -156,6 +156,20 @@ class CylinderSpec(_Table):
     side: typing.Literal["piston", "rod", "auto"] = "piston"
 
 
+class WheelSpec(_Table):
+    """``[[wheels]]``: a wheel drawn on a link (:class:`assur.core.wheels.Wheel`)."""
+    #: a string, or { en = "…", ru = "…" }
+    name: ShownName
+    #: a link of [links] whose direction φ the heading follows (none: a fixed heading)
+    link: Optional[Name] = None
+    #: the point it is centred on
+    at: Name
+    #: rolling direction relative to the link's direction (from +x without a link)
+    heading: Value = 0.0
+    diameter: Value
+    width: Value
+
+
 # ---- [machine] ----------------------------------------------------------------------
 class WeightItem(_Table):
     name: ShownName
@@ -245,6 +259,8 @@ class FileSpec(_Table):
     distances: dict[str, Annotated[Any, AfterValidator(_distance)]] = {}
     loads: list[dict[str, Any]] = []
     cylinders: list[CylinderSpec] = []
+    #: [[wheels]]: checked by :mod:`assur.io._wheels` (wheels drawn on links)
+    wheels: list[WheelSpec] = []
     machine: Optional[MachineSpec] = None
     tables: Optional[TablesSpec] = None
     display: Optional[DisplaySpec] = None

@@ -12,7 +12,15 @@ returns JSON-ready lists:
 * ``frame``: the frame pivots; ``joints``: points shared by two bodies or on the
   frame (drawn as open circles; other points, a centre of mass, as dots);
 * ``weights``: ``[{"point", "name"}]``;
-* ``bounds``: ``[xmin, ymin, xmax, ymax]`` over every position [m];
+* ``wheels``: ``[{"name", "point", "heading", "length", "width"}]`` — the wheels of the
+  mechanism (:attr:`assur.Mechanism.wheels`, ``[[wheels]]`` of a model file; empty
+  without them): ``name`` a string or ``{"en": …, "ru": …}``, ``point`` the point it
+  is centred on, ``heading`` its rolling direction at every position [rad, model
+  frame: from +x, counter-clockwise] — the angle φ of its link plus the declared
+  offset —, ``length`` its diameter and ``width`` its width [m]; drawn as the
+  rectangle :func:`wheel_outline`;
+* ``bounds``: ``[xmin, ymin, xmax, ymax]`` over every position [m] (the wheels'
+  outlines included);
 * ``q``: ``{coordinate: [values]}`` [m or rad].
 
 Examples
@@ -30,7 +38,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["geometry", "pose", "convex_hull"]
+__all__ = ["geometry", "pose", "convex_hull", "wheel_outline"]
 
 
 def convex_hull(points) -> list:
@@ -76,6 +84,66 @@ def _loads_weights(mech):
             name = ld.name or (ld.P if isinstance(ld.P, str) else "P")
             out.append({"point": ld.point, "name": str(name)})
     return out
+
+
+def _name(name):
+    """A name as JSON: a plain string, or ``{"en": …, "ru": …}`` for a
+    :class:`assur.texts.Text` with translations."""
+    tr = getattr(name, "translations", None)
+    return {"en": str(name), **tr} if tr else str(name)
+
+
+def _wheels(kin, pick, design) -> list:
+    """The ``wheels`` entries of :func:`geometry` (``pick``: one design's values over
+    the positions; ``design``: the design of a batch, or None)."""
+    from ..groups.base import ref_value
+    mech = kin.mechanism
+
+    def value(ref):  # one design's value of a parameter (an array over designs) [SI]
+        v = np.asarray(ref_value(mech.params, ref), dtype=float)
+        if v.ndim and design is not None and v.size > 1:
+            v = v[design]
+        return float(np.ravel(v)[0])
+
+    out = []
+    for w in mech.wheels:
+        heading = value(w.heading) + (pick(kin.phi(w.link)) if w.link is not None
+                                      else np.zeros(kin.shape[-1]))
+        out.append({"name": _name(w.name), "point": w.at, "heading": heading.tolist(),
+                    "length": value(w.diameter), "width": value(w.width)})
+    return out
+
+
+def wheel_outline(geo: dict, wheel: dict, i: int) -> list:
+    """The corners of a wheel at position ``i``: a rectangle of the wheel's ``length``
+    along its heading and ``width`` across it, centred on its point, counter-clockwise
+    from the rear right corner, ``[[x, y], …]`` [m] — the shape the page, the SVG, the
+    DXF and the report's drawing give a wheel.
+
+    Parameters
+    ----------
+    geo : dict
+        :func:`geometry`'s data (its ``points``).
+    wheel : dict
+        One of its ``wheels``.
+    i : int
+        The position.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.views.geometry import geometry, wheel_outline
+    >>> m = examples.hitch_003().wheel("rear", at="01", diameter=1.1, width=0.3)   # [m]
+    >>> g = geometry(m.solve([0.42]))                     # S [m]; 01 at (0.415, 0.563)
+    >>> [[round(c, 3) for c in p] for p in wheel_outline(g, g["wheels"][0], 0)]
+    [[-0.135, 0.413], [0.965, 0.413], [0.965, 0.713], [-0.135, 0.713]]
+    """
+    x, y = geo["points"][wheel["point"]][i]
+    h = wheel["heading"][i]
+    u = np.array([np.cos(h), np.sin(h)]) * (0.5 * wheel["length"])
+    v = np.array([-np.sin(h), np.cos(h)]) * (0.5 * wheel["width"])
+    c = np.array([x, y], dtype=float)
+    return [(c + a * u + b * v).tolist() for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
 
 
 def geometry(kin, design=None) -> dict:
@@ -133,7 +201,11 @@ def geometry(kin, design=None) -> dict:
             used.setdefault(p, []).append(b["name"])
     frame = list(mech.frame_points)
     joints = sorted(p for p, bs in used.items() if len(bs) > 1 or p in frame)
+    wheels = _wheels(kin, pick, design)
     allxy = np.concatenate(list(xy.values())) if xy else np.zeros((1, 2))
+    if wheels:  # the view holds the wheels' outlines too
+        allxy = np.concatenate([allxy] + [np.array(wheel_outline({"points": xy}, w, i))
+                                          for w in wheels for i in range(n)])
     lo, hi = allxy.min(axis=0), allxy.max(axis=0)
     return {
         "points": {p: v.tolist() for p, v in xy.items()},
@@ -141,6 +213,7 @@ def geometry(kin, design=None) -> dict:
         "frame": frame,
         "joints": joints,
         "weights": _loads_weights(mech),
+        "wheels": wheels,
         "bounds": [float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])],
         "q": {c: pick(kin.q(c)).tolist() for c in kin.coordinates},
         "n": int(n),

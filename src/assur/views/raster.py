@@ -2,8 +2,8 @@
 the picture of :mod:`assur.views.svg` — links in colours (a rigid link of three or more
 points as its lightly filled outline), cylinders as a barrel and a rod, frame pivots
 as triangles, joints as open circles, other points as dots, points and links
-labelled, weights as arrows down — with a caption per frame, for the GIF of
-``assur analyze`` and of ``assur simulate``
+labelled, weights as arrows down, wheels as grey rectangles — with a caption per
+frame, for the GIF of ``assur analyze`` and of ``assur simulate``
 (:func:`assur.views.report.drawing.render_frames`).
 
 Each frame is drawn at twice its size and reduced (anti-aliased lines and text), a few
@@ -26,7 +26,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .geometry import convex_hull
+from .geometry import convex_hull, wheel_outline
 from .svg import COLORS, cylinder_parts, view_span
 
 __all__ = ["images"]
@@ -142,6 +142,10 @@ def _pose(d, geo, i, cyl, span, px, s, font, labels):
     lw = max(int(round(1.5 * _SS)), 1)
     allp = np.array(list(xy.values()))
     centre = allp.mean(axis=0)
+    for w in geo.get("wheels", ()):  # under the links
+        if w["point"] in xy:
+            d.polygon([px(c) for c in wheel_outline(geo, w, i)],
+                      fill=_faint((85, 85, 85), 0.18), outline=(51, 51, 51), width=lw)
     k = 0
     for b in geo["bodies"]:
         if b["name"] == "0":

@@ -3,7 +3,9 @@
 The same picture the page draws (:mod:`assur.views.geometry`): links in colours
 (a rigid link of three or more points as its lightly filled outline), cylinders as
 a barrel and a rod, frame pivots as triangles, joints as open circles, other points
-as dots, every point and link labelled, weights as arrows down. :func:`svg` draws
+as dots, every point and link labelled, weights as arrows down, wheels as grey
+rectangles under the links (``<polygon class="wheel">``,
+:func:`assur.views.geometry.wheel_outline`). :func:`svg` draws
 some positions (the notebooks' ``_repr_html_``, :mod:`assur.views.notebook`);
 :func:`frames` draws every position as one frame of an animation (the HTML report's
 player, :func:`assur.views.report.drawing.animation`).
@@ -24,7 +26,7 @@ from html import escape
 
 import numpy as np
 
-from .geometry import convex_hull
+from .geometry import convex_hull, wheel_outline
 
 __all__ = ["svg", "frames"]
 
@@ -59,6 +61,11 @@ def _pose(geo, i, cyl, span, ghost, labels, ids=True):
     out, k = [f"<g{op}>"], 0
     allp = np.array(list(xy.values()))
     centre = allp.mean(axis=0)
+    for w in geo.get("wheels", ()):  # under the links
+        if w["point"] in xy:
+            ps = " ".join(f"{_f(x)},{_f(-y)}" for x, y in wheel_outline(geo, w, i))
+            out.append(f'<polygon class="wheel" points="{ps}" fill="#555" fill-opacity="0.18" '
+                       f'stroke="#333" stroke-width="1.5" vector-effect="non-scaling-stroke"/>')
     for b in geo["bodies"]:
         if b["name"] == "0":
             continue

@@ -10,7 +10,10 @@ The drawing is made from the model's rigid bodies (:attr:`assur.Mechanism.bodies
   fixed lengths, so the rod slides out of the barrel over the stroke;
 * frame pivots are hatched triangles; joints are open circles, other points
   (a centre of mass) dots; a weight is an arrow down labelled with its name;
-* every point is labelled with its name, every link with its name in its colour.
+* every point is labelled with its name, every link with its name in its colour;
+* a wheel (:attr:`assur.Mechanism.wheels`) is a grey rectangle under the links, turned
+  by its heading (:func:`assur.views.geometry.wheel_outline`; the patch's gid is
+  ``"wheel"``).
 
 :func:`draw` returns a figure with the mechanism at one or several positions
 (the first drawn in colour with labels, the others as light outlines).
@@ -74,8 +77,17 @@ class _Geometry:
         self.joints = {p for p, bs in used.items() if len(bs) > 1 or p in mech.frame_points}
         self.weights = [(ld.point, ld.name or (ld.P if isinstance(ld.P, str) else "P"))
                         for ld in mech.loads if isinstance(ld, Weight)]
+        # the wheels' corners at every position, (n, 4, 2) each (the shape of
+        # assur.views.geometry.wheel_outline, in the view's unit of length)
+        self.wheels = []
+        if mech.wheels:
+            from ..geometry import geometry, wheel_outline
+            g = geometry(kin, design=design)
+            self.wheels = [np.array([wheel_outline(g, w, i) for i in range(n)]) * per_m
+                           for w in g["wheels"]]
         allxy = np.concatenate([v for v in self.xy.values()]) if self.xy else np.zeros((1, 2))
-        lo, hi = allxy.min(axis=0), allxy.max(axis=0)
+        ends = np.concatenate([allxy] + [w.reshape(-1, 2) for w in self.wheels])
+        lo, hi = ends.min(axis=0), ends.max(axis=0)
         self.span = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
         self.lo, self.hi = lo, hi
         self.centre = allxy.mean(axis=0)
@@ -108,6 +120,9 @@ def _pose(ax, geo, i, ghost=False, labels=True, colors=None):
     alpha = 0.25 if ghost else 1.0
     h = 0.035 * geo.span
     colors = colors or {}
+    for ring in geo.wheels:  # under the links
+        ax.add_patch(Polygon(ring[i], closed=True, facecolor=(0.33, 0.33, 0.33, 0.18 * alpha),
+                             edgecolor=(0.2, 0.2, 0.2, alpha), lw=1.2, zorder=0.5, gid="wheel"))
     k = 0
     for b, v in geo.bodies.items():
         if b == "0":
