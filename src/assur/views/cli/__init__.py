@@ -5,7 +5,12 @@
 Every failure a user can cause (a malformed file, a design that cannot assemble,
 a condition without a root, an input that is not a regular file, an output
 directory that cannot be written) prints one clear message and exits with status
-1 (2 for usage errors, as typer does) — never a traceback.
+1 (2 for usage errors, as typer does) — never a traceback. Every numeric option is
+range-checked by its type (``_types``: counts ≥ 1, also written ``2e7``; seeds
+0 … 2**32 − 1; durations finite and > 0), a value beyond its range a usage error.
+Anything else a command raises is a defect: the last-resort handler (``_guard``)
+prints one line with the log file that holds the traceback and exits with 1
+(Ctrl+C: 130).
 
 User text (names, titles, paths, option values, messages quoting them) is printed
 literally: the consoles interpret no markup and no emoji codes, and styles are
@@ -21,6 +26,7 @@ the order ``assur --help`` lists them.
 from __future__ import annotations
 
 from ._common import app
+from ._guard import guarded
 from ._dynamics import cycles, simulate
 from ._page import dxf, serve
 from ._report import analyze, check, demo, tables
@@ -32,7 +38,7 @@ __all__ = ["app", "main"]
 
 for _command in (check, analyze, tables, fit, demo, simulate, cycles, sweep, optimize,
                  tolerance, serve, dxf):
-    app.command()(_command)
+    app.command()(guarded(_command))  # no traceback: the last-resort handler (_guard)
 del _command
 
 

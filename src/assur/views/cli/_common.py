@@ -4,6 +4,7 @@ and exit status 1 (:mod:`assur.views.cli`)."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import typer
@@ -12,8 +13,29 @@ from rich.text import Text
 
 __all__ = ["app", "console", "err"]
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
-                  help="Hydraulic-cylinder driven planar linkages solved by Assur groups.")
+class _App(typer.Typer):
+    """The app, whose run ends every unexpected exception in one line (:mod:`._guard`):
+    the commands are guarded themselves; this catches what escapes typer's parsing."""
+
+    def __call__(self, *args, **kwargs):
+        try:
+            return super().__call__(*args, **kwargs)
+        except BaseException as e:
+            if isinstance(e, (typer.Exit, typer.Abort, typer.TyperException)):
+                raise
+            from ._guard import handle
+            argv = kwargs.get("args")
+            argv = list(sys.argv[1:] if argv is None else argv)
+            known = {c.name or c.callback.__name__ for c in self.registered_commands}
+            command = next((a for a in argv if a in known), "")
+            code = handle(command, e, {"argv": argv})
+            if code is None:
+                raise
+            sys.exit(code)
+
+
+app = _App(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
+           help="Hydraulic-cylinder driven planar linkages solved by Assur groups.")
 # markup=False, emoji=False: "[/x]" in a title or ":100:" in a message stay as written
 console = Console(stderr=False, markup=False, emoji=False, highlight=False)
 err = Console(stderr=True, markup=False, emoji=False, highlight=False)
@@ -113,12 +135,12 @@ def _formats(value: str):
     return fmts
 
 
-def _positions(analysis, draw_at, du=None):
+def _positions(analysis, draw_at, du=None, option="--draw-at"):
     """Indices of the positions nearest to the coordinate values ``draw_at`` (one
-    coordinate), written in the display units ``du`` (default: the model file's; e.g.
-    "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a crank). A crank angle
-    matches its positions modulo one turn (188.229° finds the position written
-    −171.771°)."""
+    coordinate; floats, or their text), written in the display units ``du`` (default:
+    the model file's; e.g. "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a
+    crank), each position once. A crank angle matches its positions modulo one turn
+    (188.229° finds the position written −171.771°)."""
     if not draw_at:
         return None
     from ...core.display import unit_system
@@ -127,19 +149,22 @@ def _positions(analysis, draw_at, du=None):
 
     kin = analysis.kinematics
     if kin.k != 1 or len(kin.shape) != 1:
-        _fail("--draw-at needs a model with one coordinate and one design")
+        _fail(f"{option} needs a model with one coordinate and one design")
     import numpy as np
     du = du if du is not None else unit_system(analysis.mechanism)
     angle = analysis.mechanism.coordinate_kind(kin.coordinates[0]) == "angle"
     u = du["angle" if angle else "length"]
     shown = "°" if u.is_degrees else unit_label(u.text, "en")
-    try:
-        values = [float(v.strip().removesuffix("°").removesuffix("deg").strip() if angle
-                        else v) for v in draw_at.split(",") if v.strip()]
-    except ValueError:
-        _fail(f"--draw-at must be comma-separated numbers ({shown}), got {draw_at!r}")
-    if not values:
-        _fail(f"--draw-at must name at least one position, got {draw_at!r}")
+    if isinstance(draw_at, str):  # a caller's text; the option gives floats (_types.Numbers)
+        from ._types import Numbers
+        try:
+            draw_at = Numbers()(draw_at)
+        except typer.BadParameter as e:
+            _fail(f"{option}: {e} ({shown})", 2)
+    values = [float(v) for v in draw_at]
+    if not values or not np.isfinite(values).all():
+        _fail(f"{option} must name at least one position by finite numbers ({shown}), "
+              f"got {draw_at!r}", 2)
     si = np.asarray(values) * u.scale  # [m or rad]
     q = kin.q()
     lo, hi = float(q.min()), float(q.max())
@@ -151,8 +176,8 @@ def _positions(analysis, draw_at, du=None):
     if not angle:
         bad = [v for v, s in zip(values, si) if not lo - 1e-12 <= s <= hi + 1e-12]
         if bad:
-            _fail(f"--draw-at {bad} is outside the range {span()}")
-        return [int(abs(q - s).argmin()) for s in si]
+            _fail(f"{option} {bad} is outside the range {span()}")
+        return _unique([int(abs(q - s).argmin()) for s in si])
     # crank angles: the nearest position on the circle; a value farther from every
     # position than the largest step between neighbouring positions is not in the range
     step = float(np.max(np.abs(np.diff(q)))) if q.size > 1 else 0.0
@@ -164,9 +189,15 @@ def _positions(analysis, draw_at, du=None):
             bad.append(v)
         out.append(i)
     if bad:
-        _fail(f"--draw-at {bad} [{shown}] is outside the positions of "
+        _fail(f"{option} {bad} [{shown}] is outside the positions of "
               f"{kin.coordinates[0]}: {span()} ({q.size} positions)")
-    return out
+    return _unique(out)
+
+
+def _unique(indices):
+    """``indices`` without repeats, in their order: two values nearest to one position
+    draw it once (a DXF group, a figure's curve, each named once)."""
+    return list(dict.fromkeys(indices))
 
 
 #: the options every command that writes documents shares

@@ -10,6 +10,7 @@ from rich.text import Text
 
 from ._common import LANG_HELP, UNITS_HELP, _fail, _lang, _load, _ok, _output_dir, \
     _summary, _units, console
+from ._types import DURATION
 
 
 def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[drive]] and "
@@ -18,9 +19,10 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
                                         help="Output directory."),
              lang: str = typer.Option("", "--lang", help=LANG_HELP),
              units: str = typer.Option("", "--units", help=UNITS_HELP),
-             duration: float = typer.Option(0.0, "--duration",
-                                            help="Simulated time in s (default: the "
-                                                 "file's [simulation] duration).")):
+             duration: float = typer.Option(None, "--duration", parser=DURATION,
+                                            help="Simulated time in s, a finite number > 0 "
+                                                 "(default: the file's [simulation] "
+                                                 "duration).")):
     """Simulate the hydraulic drive and the mechanism in time (seed 001 lab 6; seed
     004's crane, two cylinders through a flow divider): time series (CSV), figures
     (PNG), the mechanism's motion (GIF) and an HTML report."""
@@ -32,7 +34,7 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
     model = _load(file)
     lang, du = _lang(model, lang), _units(model, units)
     out = _output_dir(output)
-    options = {"t_end": duration} if duration > 0 else {}
+    options = {"t_end": duration} if duration is not None else {}
     try:
         result = simulate_model(model, **options)
     except (ModelError, AssemblyError, ValueError) as e:

@@ -8,11 +8,14 @@ from pathlib import Path
 import typer
 from rich.text import Text
 
-from ._common import _assemble, _check_lang, _fail, _load, _ok, _positions, console, err
+from ._common import (_assemble, _check_lang, _fail, _load, _ok, _positions, _unique, console,
+                      err)
+from ._types import Count, Numbers
 
 
 def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
-          port: int = typer.Option(8000, "--port", help="TCP port (0: any free port)."),
+          port: int = typer.Option(8000, "--port", parser=Count(0, 65535),
+                                   help="TCP port, 0 … 65535 (0: any free port)."),
           host: str = typer.Option("127.0.0.1", "--host",
                                    help="Address to bind (default: loopback only)."),
           no_browser: bool = typer.Option(False, "--no-browser",
@@ -21,8 +24,6 @@ def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
     """Serve an interactive page for a model: parameters as sliders, the mechanism's
     drawing moved by a stroke slider, live plots and tables (docs/page.md)."""
     _check_lang(lang)
-    if not 0 <= port <= 65535:
-        _fail(f"--port must be in 0…65535, got {port}", 2)
     _load(file)  # one message for a bad file, before the server starts
     from ..page.server import create_app
     from ...errors import ModelError
@@ -57,7 +58,8 @@ def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
 
 
 def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
-        at: str = typer.Option("", "--at", help="Coordinate values to draw: cylinder "
+        at: str = typer.Option("", "--at", parser=Numbers(),
+                               help="Coordinate values to draw, finite numbers: cylinder "
                                "lengths in m (0.42,0.67), crank angles in degrees; "
                                "default: first and last."),
         output: str = typer.Option("", "-o", "--output",
@@ -77,15 +79,12 @@ def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
     kin, idx = None, None
     if at and len(mech.coordinates) == 1 and mech.coordinate_kind(mech.coordinates[0]) != \
             "angle":
-        try:
-            values = [float(v) for v in at.split(",") if v.strip()]
-        except ValueError:
-            _fail(f"--at must be comma-separated numbers (m), got {at!r}")
+        values = list(dict.fromkeys(float(v) for v in at))  # each position once
         r = np.asarray(model.range, dtype=float)
         lo, hi = float(r.min()), float(r.max())
         bad = [v for v in values if not lo <= v <= hi]
         if bad or not values:
-            _fail(f"--at {bad or at!r}: give values in the range {lo:.6g} … {hi:.6g} m")
+            _fail(f"--at {bad or list(at)}: give values in the range {lo:.6g} … {hi:.6g} m")
         # a fine grid through the values keeps the assembly mode continuous between them
         q = np.unique(np.concatenate([np.linspace(r[0], r[-1], 201), values]))
         q = q if r[-1] >= r[0] else q[::-1]
@@ -93,11 +92,11 @@ def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
             kin = mech.solve(q)
         except (AssemblyError, ModelError, SingularPositionError) as e:
             _fail(f"{file}: {e}")
-        idx = [int(np.abs(q - v).argmin()) for v in values]
+        idx = _unique([int(np.abs(q - v).argmin()) for v in values])
     else:
         analysis = _assemble(model)
         kin = analysis.kinematics
-        idx = _positions(analysis, at) or sorted({0, kin.shape[-1] - 1})
+        idx = _positions(analysis, at, option="--at") or sorted({0, kin.shape[-1] - 1})
     try:
         write_dxf(kin, out, positions=idx)
     except OSError as e:

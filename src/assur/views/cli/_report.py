@@ -12,6 +12,7 @@ from rich.table import Table
 from ._common import (DEFAULT_FORMATS, LANG_HELP, UNITS_HELP, _assemble, _check_lang, _fail,
                       _formats, _lang, _load, _ok, _output_dir, _positions, _shape_text,
                       _summary, _units, console)
+from ._types import COUNT, Count, Numbers
 
 
 def check(file: Path = typer.Argument(..., help="Model file (TOML)."),
@@ -101,18 +102,19 @@ def analyze(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                        help="Comma-separated: csv,xlsx,html,png,svg,gif,pdf "
                                             "(pdf: the HTML report printed on A4 by "
                                             "Chromium, which must be installed)."),
-            draw_at: str = typer.Option("", "--draw-at",
+            draw_at: str = typer.Option("", "--draw-at", parser=Numbers(),
                                         help="Coordinate values to draw the mechanism at, "
                                              "in the units shown (--units): cylinder "
                                              "lengths (0.42,0.55 in m), crank angles "
                                              "(14.679,188.229 in degrees); default: first "
                                              "and last."),
-            frames: int = typer.Option(30, "--frames", min=0,
+            frames: int = typer.Option(30, "--frames", parser=Count(0),
                                        help="Frames of the mechanism's animation (GIF, "
-                                            "HTML report), at most; 0: no animation."),
-            jobs: int = typer.Option(0, "--jobs", min=0,
+                                            "HTML report), at most; 0: no animation. "
+                                            "A whole number ≥ 0."),
+            jobs: int = typer.Option(0, "--jobs", parser=Count(0),
                                      help="Processes rendering the figures; 0: one per "
-                                          "core.")):
+                                          "core. A whole number ≥ 0.")):
     """Analyze a model over its range and write tables, figures and the HTML report."""
     if lang:
         _check_lang(lang)
@@ -134,7 +136,8 @@ def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
            table: str = typer.Option("", "--table", help="Only these tables, e.g. 2.1,4.1."),
            lang: str = typer.Option("", "--lang", help=LANG_HELP),
            units: str = typer.Option("", "--units", help=UNITS_HELP),
-           columns: int = typer.Option(6, "--columns", help="Columns per printed block.")):
+           columns: int = typer.Option(6, "--columns", parser=COUNT,
+                                       help="Columns per printed block (≥ 1).")):
     """Print the seed-like tables of a model in the terminal."""
     import numpy as np
 
@@ -158,7 +161,7 @@ def tables(file: Path = typer.Argument(..., help="Model file (TOML)."),
         if wanted and t.id not in wanted:
             continue
         first, rest = t.columns[0], t.columns[1:]
-        for k in range(0, max(len(rest), 1), max(columns, 1)):
+        for k in range(0, max(len(rest), 1), columns):
             part = [first] + list(rest[k:k + columns])
             rt = Table(title=f"{t.label} — {t.title(lang)}" if k == 0 else None,
                        header_style="bold", title_justify="left")

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import time
 from pathlib import Path
 
@@ -11,6 +12,10 @@ from rich.table import Table
 from rich.text import Text
 
 from ._common import (_check_lang, _fail, _load, _ok, _output_dir, _summary, console, err)
+from ._types import COUNT, SEED, Address, Count, Positive
+
+#: seconds to wait for a Dask scheduler's port before saying it cannot be reached
+CONNECT_TIMEOUT = 10.0
 
 
 def fit(file: Path = typer.Argument(..., help="Model file (TOML)."),
@@ -18,10 +23,13 @@ def fit(file: Path = typer.Argument(..., help="Model file (TOML)."),
                                                "then columns 'expression [unit]'."),
         param: list[str] = typer.Option(..., "--fit", help="A parameter to fit and its "
                                         "bounds in SI: NAME=LOW:HIGH (repeat)."),
-        screen: int = typer.Option(4096, "--screen", help="Designs screened."),
-        starts: int = typer.Option(8, "--starts", help="Least-squares refinements."),
-        outlier: float = typer.Option(20.0, "--outlier", help="Residual [tolerances] "
-                                      "beyond which a value is an outlier.")):
+        screen: int = typer.Option(4096, "--screen", parser=COUNT,
+                                   help="Designs screened (≥ 1; 2e4 accepted)."),
+        starts: int = typer.Option(8, "--starts", parser=COUNT,
+                                   help="Least-squares refinements (≥ 1)."),
+        outlier: float = typer.Option(20.0, "--outlier", parser=Positive(),
+                                      help="Residual [tolerances] beyond which a value is "
+                                           "an outlier (a finite number > 0).")):
     """Fit parameters of a model to a printed table (assur.synthesis.fitting): robust least
     squares at the precision each value is printed with; outliers are listed."""
     from ...errors import ModelError
@@ -77,21 +85,80 @@ def _design_problem(file: Path, var, positions):
 
 
 def _executor(scheduler, workers, chunk, progress):
+    """The executor of ``--scheduler``/``--workers``/``--chunk``: the scheduler's port
+    must answer within :data:`CONNECT_TIMEOUT` (else one message, exit 1); workers
+    default to 2 without a scheduler and to none with one."""
     from ...synthesis.search.scale import Executor
     from ...errors import ModelError
+    if scheduler is not None:
+        if workers:
+            _fail(f"give either --scheduler or --workers, not both (--scheduler {scheduler} "
+                  f"--workers {workers})", 2)
+        workers = 0
+        _reachable(scheduler)
+    elif workers is None:
+        workers = 2
     try:
         return Executor(scheduler=scheduler, workers=workers, chunk=chunk, progress=progress)
     except ModelError as e:
         _fail(str(e), 2)
 
 
+@contextlib.contextmanager
+def _running(ex, scheduler):
+    """``with ex`` whose connection to a ``scheduler`` fails in one message (exit 1)
+    naming the address, within :data:`CONNECT_TIMEOUT` seconds — also when what
+    answers there is not a Dask scheduler."""
+    if scheduler is None:
+        with ex:
+            yield ex
+        return
+    import dask
+
+    try:
+        with dask.config.set({"distributed.comm.timeouts.connect": f"{CONNECT_TIMEOUT:g}s"}):
+            ex.__enter__()
+    except Exception as e:  # refused, timed out, garbage for a handshake
+        why = " ".join(str(e).split())[:200]
+        _fail(f"cannot connect to the Dask scheduler at {scheduler}: "
+              f"{type(e).__name__}{': ' + why if why else ''} (is a Dask scheduler listening "
+              f"there?)")
+    with contextlib.ExitStack() as stack:
+        stack.push(ex)
+        yield ex
+
+
+def _reachable(address: str):
+    """Fail with one message unless something accepts a connection at the scheduler's
+    ``address`` within :data:`CONNECT_TIMEOUT` seconds (TCP-based schemes)."""
+    import socket
+
+    scheme, host, port = Address().split(address)
+    if scheme == "ucx":  # not a TCP port: the client says whether it connects
+        return
+    try:
+        socket.create_connection((host, port), timeout=CONNECT_TIMEOUT).close()
+    except socket.timeout:
+        _fail(f"cannot reach the Dask scheduler at {address}: no answer within "
+              f"{CONNECT_TIMEOUT:g} s")
+    except OSError as e:  # refused, unknown host, no route
+        _fail(f"cannot reach the Dask scheduler at {address}: {e.strerror or e}")
+
+
 _VAR = typer.Option([], "--var", help='A design variable: NAME=LOW:HIGH or NAME=±DELTA, units '
                                       'as in files (e.g. "L4=0.6 m:0.72 m", "X01=±30 mm"); '
                                       'repeat. Adds to (or replaces) the file\'s [design].')
-_WORKERS = typer.Option(2, "--workers", help="Worker processes of a Dask LocalCluster "
-                                             "(0: in this process).")
-_SCHED = typer.Option(None, "--scheduler", help="An existing Dask scheduler, "
-                                                "e.g. tcp://host:8786 (instead of --workers).")
+_WORKERS = typer.Option(None, "--workers", parser=Count(0),
+                        help="Worker processes of a Dask LocalCluster, a whole number ≥ 0 "
+                             "(0: in this process); default 2, none with --scheduler.")
+_SCHED = typer.Option(None, "--scheduler", parser=Address(),
+                      help="An existing Dask scheduler, [tcp://]host:port, e.g. "
+                           "tcp://host:8786 (instead of --workers); it must answer within "
+                           "10 s.")
+_CHUNK = typer.Option(16384, "--chunk", parser=COUNT, help="Designs per task (≥ 1).")
+_POSITIONS_HELP = ("Positions over the range, a whole number ≥ 2 (default: [design] "
+                   "positions, else the range).")
+_SEED_HELP = "Seed of the random generator, 0 … 2**32 − 1."
 
 
 def _bar():
@@ -102,14 +169,15 @@ def _bar():
 
 
 def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
-          samples: int = typer.Option(10000, "--samples", help="Designs drawn uniformly "
-                                      "within the bounds."),
-          seed: int = typer.Option(0, "--seed"),
+          samples: int = typer.Option(10000, "--samples", parser=COUNT,
+                                      help="Designs drawn uniformly within the bounds "
+                                           "(≥ 1; 2e7 accepted)."),
+          seed: int = typer.Option(0, "--seed", parser=SEED, help=_SEED_HELP),
           var: list[str] = _VAR,
-          positions: int = typer.Option(None, "--positions", help="Positions over the range "
-                                        "(default: [design] positions, else the range)."),
+          positions: int = typer.Option(None, "--positions", parser=Count(2),
+                                        help=_POSITIONS_HELP),
           workers: int = _WORKERS, scheduler: str = _SCHED,
-          chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
+          chunk: int = _CHUNK,
           output: str = typer.Option("assur-sweep.parquet", "-o", "--output",
                                      help="The results table (Parquet).")):
     """Evaluate many designs (on Dask) and write every design's criteria, feasibility
@@ -117,8 +185,6 @@ def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design]
     from ...synthesis.search.scale import sweep as run_sweep, write_parquet
     from ...errors import AssemblyError, ModelError
 
-    if samples < 1:
-        _fail(f"--samples must be ≥ 1, got {samples}", 2)
     pb = _design_problem(file, var, positions)
     t0 = time.perf_counter()
     with _bar() as bar:
@@ -126,7 +192,7 @@ def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design]
         ex = _executor(scheduler, workers, chunk,
                        lambda done, total: bar.update(task, completed=done))
         try:
-            with ex:
+            with _running(ex, scheduler):
                 batch = run_sweep(pb, samples=samples, seed=seed, executor=ex)
         except (ModelError, AssemblyError, OSError) as e:
             _fail(str(e))
@@ -153,14 +219,17 @@ def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design]
 
 def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
              var: list[str] = _VAR,
-             positions: int = typer.Option(None, "--positions"),
-             popsize: int = typer.Option(15, "--popsize", help="Population per variable "
-                                         "(differential evolution)."),
-             maxiter: int = typer.Option(150, "--maxiter", help="Generations at most."),
-             seed: int = typer.Option(0, "--seed"),
+             positions: int = typer.Option(None, "--positions", parser=Count(2),
+                                           help=_POSITIONS_HELP),
+             popsize: int = typer.Option(15, "--popsize", parser=COUNT,
+                                         help="Population per variable (differential "
+                                              "evolution), ≥ 1."),
+             maxiter: int = typer.Option(150, "--maxiter", parser=COUNT,
+                                         help="Generations at most, ≥ 1."),
+             seed: int = typer.Option(0, "--seed", parser=SEED, help=_SEED_HELP),
              workers: int = _WORKERS,
              scheduler: str = _SCHED,
-             chunk: int = typer.Option(16384, "--chunk", help="Designs per task."),
+             chunk: int = _CHUNK,
              output: str = typer.Option("assur-optimize", "-o", "--output",
                                         help="Output directory."),
              polish: bool = typer.Option(
@@ -205,7 +274,7 @@ def _search(pb, popsize, maxiter, seed, workers, scheduler, chunk, polish):
         task = bar.add_task("generations", total=maxiter)
         ex = _executor(scheduler, workers, chunk, None)
         try:
-            with ex:
+            with _running(ex, scheduler):
                 def run(X):
                     return ex.evaluate(pb, X)
                 if len(pb.objectives) > 1:
@@ -218,6 +287,8 @@ def _search(pb, popsize, maxiter, seed, workers, scheduler, chunk, polish):
                                  polish=polish)
         except (ModelError, AssemblyError) as e:
             _fail(str(e))
+        except OSError as e:  # the scheduler went away, or did not speak Dask
+            _fail(f"{scheduler or ex.describe()}: {e}")
     return res, ex, time.perf_counter() - t0
 
 
@@ -275,8 +346,10 @@ def _show_best(pb, res):
 def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tolerances]."),
               output: str = typer.Option("assur-tolerance", "-o", "--output",
                                          help="Output directory."),
-              samples: int = typer.Option(2000, "--samples", help="Machines drawn."),
-              seed: int = typer.Option(0, "--seed", help="Seed of the random generator."),
+              samples: int = typer.Option(2000, "--samples", parser=Count(2),
+                                          help="Machines drawn, a whole number ≥ 2 (2e4 "
+                                               "accepted)."),
+              seed: int = typer.Option(0, "--seed", parser=SEED, help=_SEED_HELP),
               lang: str = typer.Option("en", "--lang", help="Labels: ru or en.")):
     """Monte Carlo over the model's manufacturing tolerances: distributions of pressure
     and capacity (P1…P99), machines that do not assemble, and the first-order stack-up
@@ -288,8 +361,6 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
     from ...synthesis.tolerance import monte_carlo, worst_kind
 
     _check_lang(lang)
-    if samples < 2:
-        _fail(f"--samples must be at least 2; got {samples}", 2)
     model = _load(file)
     if not model.tolerances:
         _fail(f"{file}: no [tolerances] section (docs/tolerance.md)")
