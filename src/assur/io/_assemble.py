@@ -27,6 +27,8 @@ class Assembly:
         shown = sp.display
         display = {"units": (shown.units if shown is not None else None) or "file",
                    "lang": shown.lang if shown is not None else None,
+                   "plots": tuple({"y": tuple(p.y), "x": p.x}
+                                  for p in ((shown.plots if shown is not None else None) or ())),
                    "given": tuple(self.literal_units)}
         mech = self.guarded(("model",), lambda: Mechanism(
             sp.model.name, coordinates=self.coords, params=self.params, units=self.units,

@@ -232,6 +232,14 @@ class TablesSpec(_Table):
     numbering: typing.Literal["report", "seed"] = None
 
 
+class PlotSpec(_Table):
+    """One plot the page shows first: ``y`` (one or more columns of one table, the first
+    solid, the others dashed) over ``x`` (a column of the same table; default: the
+    coordinate)."""
+    y: Annotated[list[Name], Field(min_length=1, max_length=8)]
+    x: Name = None
+
+
 class DisplaySpec(_Table):
     """``[display]``: how the model's results are shown (:mod:`assur.core.display`)."""
     #: the unit system: "file" (each kind in the unit the file writes it in),
@@ -239,6 +247,8 @@ class DisplaySpec(_Table):
     units: typing.Literal["file", "engineering", "si", "imperial"] = None
     #: the language of reports and pages: "en" or "ru"
     lang: typing.Literal["en", "ru"] = None
+    #: the plots the page shows first (before those it chooses from the tables' content)
+    plots: Annotated[list[PlotSpec], Field(max_length=16)] = None
 
 
 class SolveSpec(_Table):

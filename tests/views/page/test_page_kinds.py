@@ -188,10 +188,11 @@ def test_a_steering_drive_draws_its_wheels(open_page, tmp_path):
     page.fill("#stroke", "100")                     # the whole stroke: the wheels turn
     after = page.locator("#drawing polygon.wheel").nth(0).get_attribute("points")
     assert before != after
-    # β over α: a plot over another column of its table, kept in the address
-    page.select_option("#add-plot", "F\u0000beta")
-    page.select_option("#plot-F-beta select.over", "alpha")
-    page.wait_for_function("location.search.includes('F%7Ebeta%7Ealpha')")
+    # β over α beside the Ackermann ideal, the plot the file declares ([display] plots):
+    # over another column of its table, kept in the address
+    assert page.input_value("#plot-F-beta select.over") == "alpha"
+    assert page.locator("#plot-F-beta path.curve").count() == 2     # β and β_ideal
+    page.wait_for_function("location.search.includes('F%7Ebeta%7Ealpha%7Ebeta_ideal')")
     alpha = page.evaluate("state.data.tables.find(t => t.id === 'F').columns"
                           ".find(c => c.symbol === 'alpha').values")
     ticks = [float(t.replace("−", "-")) for t in page.eval_on_selector_all(

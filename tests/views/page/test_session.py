@@ -122,3 +122,24 @@ def test_exports_are_made_at_the_pages_positions():
     assert len(rows) == 1 + 101
     data, _, _ = pm.export_tables({}, "csv", table="2.1")      # the file's own 10
     assert len(data.decode("utf-8-sig").splitlines()) == 1 + 10
+
+
+def test_the_plots_a_file_declares_come_first():
+    pm = PageModel.from_path(bundled("steering_lab4"))     # [display] plots: β over α
+    out = pm.compute({})
+    assert out["defaults"][0] == {"table": "F", "symbol": "beta", "x": "alpha",
+                                  "with": ["beta_ideal"]}
+    assert not out["warnings"]
+    text = pm.text.replace('y = ["beta", "beta_ideal"]', 'y = ["beta", "gamma"]')
+    out = PageModel(text, name="steer.toml", source=bundled("steering_lab4")).compute({})
+    assert out["defaults"][0]["symbol"] != "beta"
+    assert "[display] plots: no table holds the columns ['beta', 'gamma', 'alpha']" in \
+        " ".join(out["warnings"])
+
+
+def test_a_declared_plot_is_checked_with_its_key_and_line():
+    from assur.errors import ModelError
+    text = bundled("steering_lab4").read_text(encoding="utf-8").replace(
+        'plots = [{ x = "alpha", y = ["beta", "beta_ideal"] }]', 'plots = [{ x = "alpha", y = [] }]')
+    with pytest.raises(ModelError, match=r"steer\.toml:\d+: display\.plots\[0\]\.y"):
+        PageModel(text, name="steer.toml", source=bundled("steering_lab4"))

@@ -551,6 +551,7 @@ class PageModel:
             return _error("model", e, t0)
         mech = model.mechanism
         tabs = [_table_json(t, lang) for t in tables]
+        page_warnings = []
         solved = [{"name": s.condition.unknown,
                    "value": float(s.value) / (mech.units[s.condition.unknown].scale
                                               if s.condition.unknown in mech.units else 1.0),
@@ -564,14 +565,16 @@ class PageModel:
             "tables": tabs,
             "turn": self.turns(model),
             "grid": _grid(tabs, len(mech.coordinates)),
-            "defaults": default_plots(tabs, len(mech.coordinates)),
+            "defaults": default_plots(tabs, len(mech.coordinates),
+                                      declared=mech.display.get("plots", ()),
+                                      warnings=page_warnings),
             "units": {"system": du.system, "length": unit(du["length"].text, lang),
                       "length_scale": du["length"].scale,
                       "angle": unit(du["angle"].text, lang),
                       "angle_scale": du["angle"].scale},
             "fields": self.fields(du, lang),
             "solved": solved,
-            "warnings": [str(w) for w in model.warnings],
+            "warnings": [str(w) for w in model.warnings] + page_warnings,
             "ms": round(1e3 * (time.perf_counter() - t0), 2),
         }
 
@@ -704,9 +707,12 @@ def _grid(tables, k):
     return {"x": u1.tolist(), "y": u2.tolist(), "i": i1.tolist(), "j": i2.tolist()}
 
 
-def default_plots(tables, k) -> list:
-    """The plots the page shows first, chosen from what the model's tables hold:
-    ``[{"table": id, "symbol": column}]`` — each cylinder's pressure and the
+def default_plots(tables, k, declared=(), warnings=None) -> list:
+    """The plots the page shows first: those the model file declares (``[display]
+    plots``: ``[{"y": (columns…), "x": column or None}]``, each found in the one table
+    that holds its columns: ``{"table", "symbol", "x", "with"}``; one whose columns no
+    table holds is named in ``warnings``), then those chosen from what the model's
+    tables hold: ``[{"table": id, "symbol": column}]`` — each cylinder's pressure and the
     capacities (``G…`` forces) of its table, the joint reaction (a magnitude
     ``R…``) with the largest peak, the centre of mass ``Xc``, ``Yc`` and the speed
     ``omega`` of a crank's dynamics; the first link angle when none of these is
@@ -722,6 +728,15 @@ def default_plots(tables, k) -> list:
     """
     from ...core.display import kind_of
     out = []
+    for spec in declared:
+        want = [*spec["y"], *([spec["x"]] if spec.get("x") else [])]
+        t = next((t for t in tables if {c["symbol"] for c in t["columns"]} >= set(want)), None)
+        if t is None:
+            if warnings is not None:
+                warnings.append(f"[display] plots: no table holds the columns {want} together")
+            continue
+        out.append({"table": t["id"], "symbol": spec["y"][0], "x": spec.get("x"),
+                    "with": list(spec["y"][1:])})
 
     def add(t, c):
         if len(out) < 6 and not any(p["symbol"] == c["symbol"] and p["table"] == t["id"]
