@@ -305,17 +305,7 @@
       const {i} = pointed(ev);
       if (i >= 0 && typeof opts.onpick === "function") opts.onpick(i);
     }
-    svg.addEventListener("mousemove", onMove);
-    svg.addEventListener("mouseleave", onLeave);
-    svg.addEventListener("click", onClick);
-
-    function destroy() {
-      svg.removeEventListener("mousemove", onMove);
-      svg.removeEventListener("mouseleave", onLeave);
-      svg.removeEventListener("click", onClick);
-      el.remove();
-    }
-    return {el, marker, destroy};
+    return {el, marker, destroy: listen(svg, el, onMove, onLeave, onClick)};
   }
 
   // ---- heat maps -----------------------------------------------------------------------
@@ -439,17 +429,21 @@
       const c = cellOf(ev);
       if (c && typeof opts.onpick === "function") opts.onpick(c.i, c.j);
     }
+    return {el, marker, destroy: listen(svg, el, onMove, onLeave, onClick)};
+  }
+
+  // the plot's mouse handlers on its SVG; returns its destroy(): the handlers removed,
+  // the element taken out of the page
+  function listen(svg, el, onMove, onLeave, onClick) {
     svg.addEventListener("mousemove", onMove);
     svg.addEventListener("mouseleave", onLeave);
     svg.addEventListener("click", onClick);
-
-    function destroy() {
+    return function destroy() {
       svg.removeEventListener("mousemove", onMove);
       svg.removeEventListener("mouseleave", onLeave);
       svg.removeEventListener("click", onClick);
       el.remove();
-    }
-    return {el, marker, destroy};
+    };
   }
 
   window.AssurPlot = {line, map};
