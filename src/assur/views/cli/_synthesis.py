@@ -114,6 +114,7 @@ def _running(ex, scheduler):
             yield ex
         return
     import dask
+    import distributed  # noqa: F401 - its config defaults first: set() then restores them
 
     try:
         with dask.config.set({"distributed.comm.timeouts.connect": f"{CONNECT_TIMEOUT:g}s"}):
