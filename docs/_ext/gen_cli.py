@@ -66,8 +66,8 @@ def render() -> str:
              "negative values are refused, never replaced by the file's duration) |",
              "| `--outlier` (fit) | a finite number > 0 |",
              "| `--port` (serve) | 0 … 65535 |",
-             "| `--at` (dxf), `--draw-at` (analyze) | comma-separated finite numbers, each "
-             "position drawn once; outside the model's range: exit status 1 |",
+             "| `--at` (dxf), `--draw-at` (analyze) | comma-separated finite numbers (dxf draws each "
+             "position once); outside the model's range: exit status 1 |",
              "| `--scheduler` | `[tcp://]host:port` (or `tls://`, `ws://`, `wss://`, "
              "`ucx://`); it must answer within 10 s, else one message naming the address; "
              "not together with `--workers` |",

@@ -50,7 +50,7 @@ def test_markup_in_user_text_printed_literally(tmp_path):
     r = runner.invoke(app, ["analyze", str(p), "-o", str(tmp_path / "[/o]"), "--lang", "[/l]"])
     assert r.exit_code == 1 and "[/l]" in r.output
     r = runner.invoke(app, ["analyze", str(p), "-o", str(tmp_path / "o"), "--draw-at", "[/d]"])
-    assert r.exit_code == 1 and "[/d]" in r.output
+    assert r.exit_code == 2 and "[/d]" in r.output  # a usage error (issue 27)
     assert text  # the 100-line file below
     deep = HITCH.replace("[range]", "\n" * 40 + "[range]").replace(
         'Smax = "0.670 m"', 'Smax = "0.670 m"\nbad = "1 foo"')

@@ -139,7 +139,7 @@ def _positions(analysis, draw_at, du=None, option="--draw-at"):
     """Indices of the positions nearest to the coordinate values ``draw_at`` (one
     coordinate; floats, or their text), written in the display units ``du`` (default:
     the model file's; e.g. "0.42,0.67" [m] for a cylinder, "14.679,188.229" [°] for a
-    crank), each position once. A crank angle matches its positions modulo one turn
+    crank). A crank angle matches its positions modulo one turn
     (188.229° finds the position written −171.771°)."""
     if not draw_at:
         return None
@@ -177,7 +177,7 @@ def _positions(analysis, draw_at, du=None, option="--draw-at"):
         bad = [v for v, s in zip(values, si) if not lo - 1e-12 <= s <= hi + 1e-12]
         if bad:
             _fail(f"{option} {bad} is outside the range {span()}")
-        return _unique([int(abs(q - s).argmin()) for s in si])
+        return [int(abs(q - s).argmin()) for s in si]
     # crank angles: the nearest position on the circle; a value farther from every
     # position than the largest step between neighbouring positions is not in the range
     step = float(np.max(np.abs(np.diff(q)))) if q.size > 1 else 0.0
@@ -191,7 +191,7 @@ def _positions(analysis, draw_at, du=None, option="--draw-at"):
     if bad:
         _fail(f"{option} {bad} [{shown}] is outside the positions of "
               f"{kin.coordinates[0]}: {span()} ({q.size} positions)")
-    return _unique(out)
+    return out
 
 
 def _unique(indices):

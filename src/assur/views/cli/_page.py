@@ -96,7 +96,7 @@ def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
     else:
         analysis = _assemble(model)
         kin = analysis.kinematics
-        idx = _positions(analysis, at, option="--at") or sorted({0, kin.shape[-1] - 1})
+        idx = _unique(_positions(analysis, at, option="--at") or [0, kin.shape[-1] - 1])
     try:
         write_dxf(kin, out, positions=idx)
     except OSError as e:
