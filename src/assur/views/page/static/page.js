@@ -339,13 +339,15 @@ async function send() {
     try { out = await response.json(); }
     catch (e) { out = {ok: false, error: {kind: "network", message: `${T("bad_answer")} (HTTP ${response.status})`}}; }
   }
+  const answered = performance.now();
   if (seq === state.seq) {
     if (out.ok) showResult(out); else showError(out.error);
     const ms = performance.now() - t0;
+    const parts = `answer ${(answered - t0).toFixed(1)} ms, drawing ${(performance.now() - answered).toFixed(1)} ms`;
     $("status").textContent = out.ok || out.error.kind !== "network"
       ? `${T("redrawn")} ${ms.toFixed(0)} ${T("ms")}` : T("no_server");
     $("status").dataset.ms = ms.toFixed(1);
-    console.log(`assur: redrawn in ${ms.toFixed(1)} ms (server ${out.ms} ms, ` +
+    console.log(`assur: redrawn in ${ms.toFixed(1)} ms (server ${out.ms} ms, ${parts}, ` +
                 `${out.ok ? "drawing" : "error: " + out.error.kind})`);
   }
   state.inflight = false;
