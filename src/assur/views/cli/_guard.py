@@ -23,6 +23,7 @@ import traceback
 from pathlib import Path
 
 import typer
+from rich.console import Console
 from rich.text import Text
 
 __all__ = ["guarded", "handle", "log_dir", "MEMORY_HINTS"]
@@ -115,7 +116,7 @@ def _prune(d: Path):
 
 def _say(line: str, prefix: str = ""):
     """One line on stderr (``prefix`` in bold red before it)."""
-    from ._common import err
+    err = Console(stderr=True, markup=False, emoji=False, highlight=False)  # = _common.err
     err.print(Text.assemble((prefix, "bold red"), " " if prefix else "", line),
               soft_wrap=True)
 
