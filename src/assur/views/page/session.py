@@ -784,8 +784,12 @@ def _error(kind, e, t0):
 
 
 def _finite(values):
-    a = np.asarray(values, dtype=float)
-    return [None if not math.isfinite(x) else float(x) for x in a.ravel()]
+    """The values as a JSON list, None where a value is not finite (undefined)."""
+    a = np.asarray(values, dtype=float).ravel()
+    out = a.tolist()  # one C loop; then None where needed
+    for i in np.flatnonzero(~np.isfinite(a)).tolist():
+        out[i] = None
+    return out
 
 
 def _table_json(t, lang):
