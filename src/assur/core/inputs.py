@@ -161,18 +161,26 @@ def bytes_per_position(mech) -> int:
 _PER_POSITION: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
-def check_memory(positions: float, per_position: float, what: str) -> None:
+def check_memory(positions: float, per_position: float, what: str, *,
+                 unit: str = "positions", reduce: str | None = None) -> None:
     """Refuse a request of ``positions`` elements of ``per_position`` bytes each when
     it exceeds :func:`max_memory`; nothing is allocated here.
 
     Parameters
     ----------
     positions : float
-        Number of positions × designs (may be huge: it is never allocated).
+        Number of elements: positions × designs, designs, machines, output times,
+        frames … (may be huge: it is never allocated).
     per_position : float
-        Bytes one element takes (:func:`bytes_per_position`).
+        Bytes one element takes (:func:`bytes_per_position` for a position).
     what : str
         What the request is, for the message (e.g. ``"range.S (count = 1e9)"``).
+    unit : str
+        What one element is, in the plural (``"positions"``, ``"designs"``,
+        ``"machines"``, ``"frames"`` …).
+    reduce : str, optional
+        What the user should make smaller: an option or a file key, e.g.
+        ``"--samples"`` or ``"[simulation] outputs"`` (default: "use fewer ``unit``").
 
     Raises
     ------
@@ -191,13 +199,20 @@ def check_memory(positions: float, per_position: float, what: str) -> None:
     Traceback (most recent call last):
     ...
     assur.errors.ModelError: range.S (count = 1e9): 1e+09 positions would need about 2.26 TiB of memory (limit 2 GiB; set ASSUR_MAX_MEMORY to change it, or use fewer positions)
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "2 GiB"}):
+    ...     check_memory(1e9, 800, "sweep: samples = 1e+09", unit="designs",
+    ...                  reduce="the samples (--samples)")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: sweep: samples = 1e+09: 1e+09 designs would need about 745 GiB of memory (limit 2 GiB; set ASSUR_MAX_MEMORY to change it, or reduce the samples (--samples))
     """
     need = float(positions) * float(per_position)
     limit = max_memory()
     if not need <= limit:
-        raise ModelError(f"{what}: {float(positions):.4g} positions would need about "
+        hint = f"use fewer {unit}" if reduce is None else f"reduce {reduce}"
+        raise ModelError(f"{what}: {float(positions):.4g} {unit} would need about "
                          f"{fmt_bytes(need)} of memory (limit {fmt_bytes(limit)}; set "
-                         f"{MAX_MEMORY_ENV} to change it, or use fewer positions)")
+                         f"{MAX_MEMORY_ENV} to change it, or {hint})")
 
 
 # ---- coordinates ---------------------------------------------------------------------

@@ -162,6 +162,7 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
             raise ValueError(f"s0 = {q0[j]} m of {c!r} must lie between the stops "
                              f"{mach.lo[j]} m and {mach.hi[j]} m")
     t_eval = _output_times(t_eval, t_end)
+    check_outputs_memory(k, t_eval.size)
     pinit = _pressures(p0, mach, q0, coords)
     max_step = t_end / 200 if max_step is None else max_step
     stroke = mach.hi - mach.lo
@@ -173,6 +174,35 @@ def simulate(mechanism, circuit, t_end, *, p0=0.0, s0=None, t_eval=None, nodes=8
     run = _Run(mach, coords, stroke, y, free)
     run.integrate(t_end, t_eval, dict(method=method, rtol=rtol, atol=atol, max_step=max_step))
     return _result(mach, circuit, run, t_eval, (Tm0, Tl0, U0))
+
+
+def check_outputs_memory(k, outputs) -> None:
+    """Refuse a simulation of ``k`` coordinates whose ``outputs`` output times would
+    need more than :func:`assur.core.inputs.max_memory`: at every output time the
+    states, the rates, pressures, flows and forces of every coordinate and the mass
+    matrix with its derivative, held twice (the phases' parts and the result).
+
+    Raises
+    ------
+    ModelError
+        Naming ``[simulation] outputs`` (or ``t_eval``), the estimate and the limit.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> from assur.dynamics.simulate import check_outputs_memory
+    >>> check_outputs_memory(1, 2001)  # fine
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "1 MiB"}):
+    ...     check_outputs_memory(2, 10**6)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: simulation: 1e+06 output times would need about 1.27 GiB of memory (limit 1 MiB; set ASSUR_MAX_MEMORY to change it, or reduce [simulation] outputs (or t_eval))
+    """
+    from ..core.inputs import check_memory
+    per = 16 * (24 * k + 3 * k * k + k ** 3 + len(ENERGY_STATES) + 8) + 24 * k
+    check_memory(float(outputs), per, "simulation", unit="output times",
+                 reduce="[simulation] outputs (or t_eval)")
 
 
 def _checked(mechanism, circuit, t_end, method):

@@ -43,7 +43,8 @@ from . import _schema as S
 from ._units import (ANGLE, FORCE, LENGTH, MOMENT, NUMBER, PRESSURE, KINDS, Raw, UnitError,
                      display_unit, parse, to_si)
 
-__all__ = ["DesignSection", "DesignSpec", "build_design", "parse_var", "write_design_file"]
+__all__ = ["DesignSection", "DesignSpec", "build_design", "parse_var", "write_design_file",
+           "check_positions"]
 
 
 class _Within(BaseModel):
@@ -191,8 +192,38 @@ def build_design(builder, mech, path_prefix=("design",)):
             except (ValueError, ModelError) as e:
                 raise err(p, str(e)) from None
     positions = spec.positions
+    if positions is not None:  # one design over the positions must fit in memory
+        try:
+            check_positions(mech, positions, "[design] positions")
+        except ModelError as e:
+            raise err(path_prefix + ("positions",), str(e)) from None
     return DesignSpec(variables, [c for k, c in crits if k == "constraints"],
                       [c for k, c in crits if k == "objectives"], positions, spec.polish)
+
+
+def check_positions(mech, count, key):
+    """Refuse ``count`` positions of a design problem that one design alone could not
+    be evaluated over within :func:`assur.core.inputs.max_memory` (the positions, the
+    coordinates and the status of one kernel call); ``key`` names the option or file
+    key that gave them.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> from assur import examples
+    >>> from assur.io._design import check_positions
+    >>> check_positions(examples.hitch_003(), 50, "--positions")  # fine
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "1 MiB"}):
+    ...     check_positions(examples.hitch_003(), 10**6, "--positions")
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: design problem 'hitch_003': --positions 1000000: 1e+06 positions would need about 30.5 MiB of memory (limit 1 MiB; set ASSUR_MAX_MEMORY to change it, or reduce --positions)
+    """
+    from ..core.inputs import check_memory
+    check_memory(float(count), 8 * (len(mech.coordinates) + 3),
+                 f"design problem {mech.name!r}: {key}{' = ' if key.startswith('[') else ' '}"
+                 f"{count}", reduce=key)
 
 
 def _article(kind):

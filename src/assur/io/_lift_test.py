@@ -23,7 +23,7 @@ from typing import Optional
 from pydantic import BaseModel, ConfigDict, Field, StrictInt
 
 from ..errors import ModelError
-from ..machines.hitch_lift import LiftTest
+from ..machines.hitch_lift import LiftTest, check_lift_memory
 from . import _schema as S
 from ._units import NUMBER
 
@@ -63,6 +63,10 @@ def build_lift_test(builder, mech):
                             f'found "{spec.cylinder}"{S.did_you_mean(spec.cylinder, names)}')
     if not names:
         raise builder.error(("lift_test",), "the lift test needs a cylinder ([[cylinders]])")
+    try:  # the positions' analysis must fit in memory (before anything is allocated)
+        check_lift_memory(mech, 6 if spec.positions is None else spec.positions)
+    except ModelError as e:
+        raise builder.error(("lift_test", "positions"), str(e)) from None
     share = builder.value(("lift_test", "pressure_share"), spec.pressure_share, NUMBER)
     share = float(mech.params[share]) if isinstance(share, str) else float(share)
     try:

@@ -94,7 +94,7 @@ def load_problem(path, variables=(), positions=None, chunk=None):
 @functools.lru_cache(maxsize=8)
 def _load(path, variables, positions, chunk):
     from .. import io
-    from ._design import parse_var
+    from ._design import check_positions, parse_var
     from ..synthesis.search.problem import CHUNK, Problem
     model = io.load(path)
     spec = model.design
@@ -105,6 +105,8 @@ def _load(path, variables, positions, chunk):
         raise ModelError(f"{path}: no design variables: give a [design.variables] table or "
                          f"--var NAME=LOW:HIGH")
     count = positions if positions is not None else (spec.positions if spec else None)
+    if positions is not None:  # [design] positions were checked when the file loaded
+        check_positions(model.mechanism, positions, "--positions")
     polish = spec.polish if spec is not None and spec.polish is not None else True
     return Problem(model.mechanism, positions_of(model, count), vars_,
                    spec.constraints if spec else (), spec.objectives if spec else (),

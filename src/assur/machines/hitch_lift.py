@@ -35,7 +35,7 @@ import numpy as np
 from ..core import cylinders as C
 from ..errors import ModelError
 
-__all__ = ["LiftTest", "LiftTestResult", "lift_test"]
+__all__ = ["LiftTest", "LiftTestResult", "lift_test", "check_lift_memory"]
 
 
 @dataclass(frozen=True)
@@ -190,6 +190,35 @@ def _cylinder(mech, name):
     return cyls[name]
 
 
+def check_lift_memory(mech, positions) -> None:
+    """Refuse a lift test of ``positions`` positions whose analysis (kinematics,
+    statics and the cylinder's forces at every position) would exceed
+    :func:`assur.core.inputs.max_memory`, before anything is allocated.
+
+    Raises
+    ------
+    ModelError
+        Naming ``[lift_test] positions``, the estimate and the limit.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> from assur import examples
+    >>> from assur.machines.hitch_lift import check_lift_memory
+    >>> check_lift_memory(examples.hitch_003(), 6)  # fine
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "1 MiB"}):
+    ...     check_lift_memory(examples.hitch_003(), 10**6)
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: lift test of 'hitch_003': positions = 1000000: 1e+06 positions would need about 2.31 GiB of memory (limit 1 MiB; set ASSUR_MAX_MEMORY to change it, or reduce [lift_test] positions)
+    """
+    from ..core.inputs import bytes_per_position, check_memory
+    check_memory(float(positions), bytes_per_position(mech),
+                 f"lift test of {mech.name!r}: positions = {positions}",
+                 reduce="[lift_test] positions")
+
+
 def lift_test(mech, test: LiftTest, s_range, iterations=50) -> LiftTestResult:
     """Run the standard lift test on one design of ``mech`` over ``s_range``.
 
@@ -247,6 +276,7 @@ def lift_test(mech, test: LiftTest, s_range, iterations=50) -> LiftTestResult:
         raise ModelError(f"lift test of {mech.name!r}: the hitch point {test.hitch!r} does not "
                          f"rise monotonically with {c} over {lo:.6g} … {hi:.6g} m (dY/d{c} "
                          f"changes sign near {c} = {float(np.ravel(scan.q())[k]):.6g} m)")
+    check_lift_memory(mech, test.positions)
     heights = np.linspace(y.min(), y.max(), int(test.positions))
     s = np.interp(heights, y, np.ravel(scan.q())) if dy[0] > 0 else \
         np.interp(heights, y[::-1], np.ravel(scan.q())[::-1])

@@ -39,6 +39,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..core.columns import Formula, FormulaError
+from ..core.inputs import bytes_per_position, check_memory
 from ..errors import AssemblyError, ModelError
 
 __all__ = ["Target", "FitResult", "fit_parameters", "FAIL_RESIDUAL"]
@@ -348,6 +349,11 @@ def fit_parameters(mech, bounds, targets, *, screen=4096, starts=8, seed=0, outl
     q = np.unique(np.concatenate([np.asarray(t.positions) for t in targets]))
     from scipy.stats import qmc
 
+    # the screening solves every candidate at every tabulated position at once
+    cols = sum(len(t.values) for t in targets)
+    check_memory(screen, q.size * bytes_per_position(mech) + 24 * (len(names) + cols) + 64,
+                 f"fit_parameters: screen = {screen} designs × {q.size} positions",
+                 unit="designs", reduce="the screened designs (--screen)")
     sob = qmc.Sobol(len(names), scramble=True, seed=seed).random(screen)
     cand = lo + sob * (hi - lo)
     r0, ok = _residuals(mech, names, cand, targets, q)

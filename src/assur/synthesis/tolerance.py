@@ -45,6 +45,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AssemblyError, ModelError
+from ..core.inputs import check_memory
 
 __all__ = ["Tolerance", "ToleranceResult", "monte_carlo", "first_order", "default_outputs",
            "worst_kind",
@@ -529,6 +530,12 @@ def monte_carlo(mech, q, tolerances, outputs=None, samples=1000, seed=None, g=No
     if samples < 2:
         raise ModelError(f"monte_carlo: samples must be at least 2, got {samples}")
     outputs = tuple(default_outputs(mech) if outputs is None else outputs)
+    # every machine's values at every position are held (the kernel's coordinates and
+    # outputs, then their stack and the masked copy) besides its deviations
+    n, no = q.size, len(outputs)
+    check_memory(samples, 8 * n * (len(mech.coordinates) + 2 + 4 * no) + 24 * len(tolerances)
+                 + 64, f"monte_carlo: samples = {samples} over {n} positions",
+                 unit="machines", reduce="the samples (--samples)")
     nominal = mech.evaluate(q, outputs=outputs, g=g)  # raises if the nominal fails
     rng = np.random.default_rng(seed)
     dev = np.stack([t.draw(rng, samples) for t in tolerances], axis=-1)

@@ -437,6 +437,7 @@ class Problem:
             raise ModelError(f"design {i} has a value that is not finite: {X[i]!r}")
         needs_ref = any(isinstance(c.limit.value, str) and c.limit.value == "original"
                         for c in self.constraints)
+        self._check_call(min(len(X), self.chunk))  # before the kernel allocates
         ref = self.reference() if needs_ref else {}
         parts = [_evaluate_chunk(self, X[i:i + self.chunk], ref)
                  for i in range(0, len(X), self.chunk)]
@@ -480,6 +481,94 @@ class Problem:
             return np.broadcast_to(self.mechanism.value_of(ref, {**self.mechanism.params,
                                                                  **params}), (m,))
         return value
+
+    # ---- memory ------------------------------------------------------------------------
+    @property
+    def bytes_per_design(self) -> int:
+        """Estimated memory one design takes in a :class:`Batch` [bytes]: its variables,
+        its status and reason fields, its criteria's values, margins and scales, the
+        reductions of every output (twice: the chunks' parts and their concatenation).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> pb.bytes_per_design  # [bytes]
+        1088
+        """
+        nv, nc, no = len(self.variables), len(self.constraints), len(self.objectives)
+        return 16 * (2 * nv + 3 * nc + no + 8 * len(self.outputs) + 10)
+
+    @property
+    def bytes_per_position(self) -> int:
+        """Memory one position of one design takes in a kernel call [bytes]: the
+        coordinates and the status (:meth:`assur.Mechanism.evaluate` with ``reduce=True``).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> pb.bytes_per_position  # one coordinate [bytes]
+        24
+        """
+        return 8 * (len(self.mechanism.coordinates) + 2)
+
+    def check_memory(self, designs, what, reduce, *, chunk=None, per_design=0):
+        """Refuse ``designs`` designs before anything is allocated when they, or one
+        kernel call over them (at most ``chunk`` designs, and :attr:`chunk`, × the
+        positions), would exceed :func:`assur.core.inputs.max_memory`.
+
+        Parameters
+        ----------
+        designs : float
+            Designs held at once (a sweep's samples, a population).
+        what : str
+            The request, for the message (e.g. ``"sweep: samples = 1e+09"``).
+        reduce : str
+            What to make smaller (e.g. ``"the samples (--samples)"``).
+        chunk : int, optional
+            Designs per task of the executor (default: :attr:`chunk`).
+        per_design : int
+            Bytes a design takes besides its :class:`Batch` row (e.g. the search's
+            own copies of a population).
+
+        Raises
+        ------
+        ModelError
+            With the estimate and the limit.
+
+        Examples
+        --------
+        >>> import os
+        >>> from unittest import mock
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "1 MiB"}):
+        ...     pb.check_memory(1e6, "sweep: samples = 1e+06", "the samples (--samples)")
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: sweep: samples = 1e+06: 1e+06 designs would need about 1.01 GiB of memory (limit 1 MiB; set ASSUR_MAX_MEMORY to change it, or reduce the samples (--samples))
+        """
+        from ...core.inputs import check_memory
+        designs = float(designs)
+        check_memory(designs, self.bytes_per_design + per_design, what, unit="designs",
+                     reduce=reduce)
+        self._check_call(min(designs, self.chunk, chunk or self.chunk))
+
+    def _check_call(self, designs):
+        """Refuse one kernel call of ``designs`` designs × the positions that would
+        exceed the memory limit (a sweep holds one call at a time: the per-call size
+        counts, not the total)."""
+        from ...core.inputs import check_memory
+        n = self.n_positions
+        check_memory(designs * n, self.bytes_per_position,
+                     f"design problem {self.name!r}: {designs:.4g} designs × {n} positions "
+                     f"in one kernel call", unit="positions",
+                     reduce="the positions ([design] positions or --positions) or the "
+                            "designs per task (--chunk)")
 
     @property
     def n_positions(self) -> int:

@@ -246,9 +246,12 @@ def sweep(problem, X=None, *, samples=None, seed=None, executor=None):
     """
     if (X is None) == (samples is None):
         raise ModelError("sweep: give the designs X or a number of samples")
-    if X is None:
-        X = problem.sample(samples, seed)
     ex = executor or Executor()
+    if X is None:  # the designs, and one task over them, must fit before they are drawn
+        problem.check_memory(samples, f"sweep: samples = {float(samples):.4g}",
+                             "the samples (--samples)", chunk=ex.chunk,
+                             per_design=8 * len(problem.variables))
+        X = problem.sample(samples, seed)
     return ex.evaluate(problem, X)
 
 

@@ -252,6 +252,11 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
 
     if not problem.objectives:
         raise ModelError(f"design problem {problem.name!r}: no objective to optimise")
+    # the population (popsize × variables designs: scipy's copies, the memo, a batch)
+    nv = len(problem.variables)
+    problem.check_memory(float(popsize) * nv, f"optimize: popsize = {popsize} "
+                         f"(a population of {float(popsize) * nv:.4g} designs)",
+                         "the population (--popsize)", per_design=48 * nv + 300)
     cache = _Cached(problem, evaluate or problem.evaluate)
     gen = [0]
 
@@ -388,6 +393,9 @@ def pareto(problem, *, pop_size=40, generations=40, seed=None, callback=None,
     if len(problem.objectives) < 2:
         raise ModelError(f"design problem {problem.name!r}: a Pareto front needs two or more "
                          f"objectives, it has {len(problem.objectives)}")
+    # pymoo keeps every individual as an object (about 2 kB) besides the batch
+    problem.check_memory(pop_size, f"pareto: pop_size = {pop_size}",
+                         "the population (--popsize)", per_design=2048 + 48 * len(problem.variables))
     count = [0]
     run = evaluate or problem.evaluate
     lo, hi = problem.bounds.T

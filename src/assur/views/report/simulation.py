@@ -20,6 +20,7 @@ figure the pump's pressure too, and ``reduced_mass`` shows the diagonal of M(q(t
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -29,7 +30,8 @@ from ._canvas import new_figure, titled_axes, to_png_bytes
 from .labels import check_lang, formatted, t, unit
 from .numbers import number
 
-__all__ = ["figures", "time_series", "summary", "write_simulation_report", "FIGURES"]
+__all__ = ["figures", "time_series", "summary", "write_simulation_report", "check_frames",
+           "FIGURES"]
 
 FIGURES = ("pressure", "pressure_rate", "coordinate", "speed", "acceleration", "reduced_mass")
 
@@ -286,6 +288,48 @@ def summary(result, lang="en", units=None, mechanism=None):
     return rows
 
 
+#: memory one animation frame takes [bytes]: the GIF's RGB and palette images
+#: (6.4 × 5.0 in at 80 dpi), the HTML player's vector frame, the frame's time,
+#: coordinates and caption
+FRAME_BYTES = 512 * 400 * 4 + 16384
+
+
+def check_frames(duration, frame_step=0.1, mechanism=None,
+                 formats=("csv", "png", "html", "gif")) -> None:
+    """Refuse an animation of a simulation of ``duration`` seconds, one frame every
+    ``frame_step`` seconds, that would need more than
+    :func:`assur.core.inputs.max_memory` (every frame is held until the GIF and the
+    HTML player are written), before anything is allocated or written; nothing to
+    check without a mechanism or without ``gif`` and ``html`` among the ``formats``.
+
+    Raises
+    ------
+    ModelError
+        Naming ``[simulation] duration`` (``--duration``), the estimate and the limit.
+
+    Examples
+    --------
+    >>> import os
+    >>> from unittest import mock
+    >>> from assur import io
+    >>> from assur.views.report.simulation import check_frames
+    >>> model = io.load(io.bundled("adapter_lab6"))  # seed 001 lab 6
+    >>> check_frames(4.5, mechanism=model.mechanism)  # 46 frames: fine
+    >>> with mock.patch.dict(os.environ, {"ASSUR_MAX_MEMORY": "2 GiB"}):
+    ...     check_frames(365.25 * 86400, mechanism=model.mechanism)  # a year [s]
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: the animation of 3.156e+07 s, a frame every 0.1 s: 3.156e+08 frames would need about 240 TiB of memory (limit 2 GiB; set ASSUR_MAX_MEMORY to change it, or reduce [simulation] duration (or --duration))
+    """
+    from ...core.inputs import bytes_per_position, check_memory
+    if mechanism is None or not {"gif", "html"} & set(formats):
+        return
+    frames = math.floor(float(duration) / frame_step + 1e-9) + 1
+    check_memory(frames, FRAME_BYTES + bytes_per_position(mechanism),
+                 f"the animation of {float(duration):.4g} s, a frame every {frame_step:g} s",
+                 unit="frames", reduce="[simulation] duration (or --duration)")
+
+
 def write_simulation_report(result, outdir, title="", lang="en",
                             formats=("csv", "png", "html", "gif"), mechanism=None,
                             frame_step=0.1, model=None, units=None):
@@ -328,6 +372,8 @@ def write_simulation_report(result, outdir, title="", lang="en",
     if model is not None:
         mechanism = model.mechanism if mechanism is None else mechanism
         title = title or localize(model.mechanism.title, lang)
+    if len(result.t):  # the frames must fit in memory: refused before anything is written
+        check_frames(float(result.t[-1]), frame_step, mechanism, formats)
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files = []
