@@ -311,3 +311,17 @@ def test_plots_fit_their_box_and_never_print_undefined_or_nan(page):
 def _dot_at(page, i):
     page.evaluate(f"() => plot.marker({i})")
     return _dot(page, 0)[:2]
+
+
+def test_a_long_legend_label_is_cut_to_the_plot_and_kept_whole_as_its_tooltip(page):
+    long = "angle of the outer wheel by Ackermann β* = arcctg(ctg α + A/L) " * 3
+    _make(page, "line", "{series: [{x: [0, 1, 2], y: [0, 1, 4], label: 'β'}, "
+                        f"{{x: [0, 1, 2], y: [0, 1, 3], label: {long!r}, dash: true}}]}}")
+    texts = page.evaluate("""() => [...document.querySelectorAll('#box .legend text')]
+        .map(t => [t.firstChild.nodeValue, t.querySelector('title') ? t.querySelector('title').textContent : null,
+                   t.getBBox().x + t.getBBox().width])""")
+    width = page.evaluate("document.querySelector('#box svg').viewBox.baseVal.width")
+    assert texts[0][:2] == ["β", None]                     # a short label as it is
+    cut, whole, right = texts[1]
+    assert cut.endswith("…") and whole == long and long.startswith(cut[:-1])
+    assert right <= width                                   # inside the plot's box

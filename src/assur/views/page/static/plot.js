@@ -207,10 +207,13 @@
     if (!series.length || (series.length === 1 && !series[0].label)) return {items: [], rows: 0};
     const items = [];
     let x = 8, row = 0;
+    const room = Math.max(4, Math.floor((W - 8 - 24 - 12) / CHAR));   // characters in a row
     series.forEach((s, k) => {
-      const w = 24 + s.label.length * CHAR + 12;
+      // a label longer than a row is cut with "…" (the whole label is its tooltip)
+      const text = s.label.length > room ? s.label.slice(0, room - 1) + "…" : s.label;
+      const w = 24 + text.length * CHAR + 12;
       if (x > 8 && x + w > W - 4) { row += 1; x = 8; }
-      items.push({k, x, row});
+      items.push({k, x, row, text});
       x += w;
     });
     return {items, rows: row + 1};
@@ -222,7 +225,9 @@
       const s = series[it.k], y = top + it.row * LEGEND_ROW + LEGEND_ROW / 2;
       g.appendChild(svgEl("line", {class: "swatch", x1: it.x, x2: it.x + 18, y1: y, y2: y,
         stroke: s.color, "stroke-width": 2.5, "stroke-dasharray": s.dash ? "4,2" : "none"}));
-      g.appendChild(svgEl("text", {x: it.x + 22, y: y + 3.5}, s.label));
+      const label = svgEl("text", {x: it.x + 22, y: y + 3.5}, it.text);
+      if (it.text !== s.label) label.appendChild(svgEl("title", {}, s.label));
+      g.appendChild(label);
     }
     svg.appendChild(g);
   }
