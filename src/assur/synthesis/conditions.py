@@ -229,7 +229,10 @@ def condition_residual(mech, cond, values):
     ([134.518, -0.037, -84.89], [True, True, True])
     """
     params = {cond.unknown: np.asarray(values, float)}
-    m = mech.with_params(**params)
+    # the unknown's values go to the solve as a batch of parameters; a mechanism with
+    # them set is built only when a position of `at` is written with the unknown
+    by_unknown = any(isinstance(v, str) and cond.unknown in v for v in cond.at.values())
+    m = mech.with_params(**params) if by_unknown else mech
     q = []
     for c in mech.coordinates:
         if c not in cond.at:
@@ -239,7 +242,8 @@ def condition_residual(mech, cond, values):
         q.append(np.broadcast_to(np.asarray(m.value_of(v), float), (len(values),)))
     q = np.stack(q, axis=-1)  # (m, k)
     qq = q[:, None, 0] if len(mech.coordinates) == 1 else q[:, None, :]
-    res = m.solve(qq, on_failure="report", check_continuity=False)
+    res = m.solve(qq, params=None if by_unknown else params, on_failure="report",
+                  check_continuity=False)
     kind, obj = _quantity(mech, cond.quantity)
     if kind == "phi":
         val = res.phi(obj)
