@@ -54,6 +54,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from ..errors import ModelError  # too few positions: the user's to change (a ValueError)
+
 __all__ = ["Flywheel", "flywheel", "turn_grid", "periodic_integral", "periodic_derivative",
            "speed_of"]
 
@@ -97,7 +99,7 @@ def turn_grid(q):
     """
     q = np.asarray(q, dtype=float)
     if q.ndim != 1 or q.size < 9:
-        raise ValueError(f"the flywheel needs the crank angles of one turn, at least 9 "
+        raise ModelError(f"the flywheel needs the crank angles of one turn, at least 9 "
                          f"positions, as a 1-D array; got shape {q.shape}")
     steps = np.diff(q)
     h = float(np.mean(steps))
@@ -120,7 +122,7 @@ def _spectrum(f, what):
     top = np.abs(F[np.abs(k) >= n / 4]).max(initial=0.0)
     scale = np.abs(F).max()
     if scale > 0 and top > RESOLUTION * scale:
-        raise ValueError(f"{what} is not resolved by {n} positions per turn (its upper "
+        raise ModelError(f"{what} is not resolved by {n} positions per turn (its upper "
                          f"spectrum is {top / scale:.2g} of its largest mode > {RESOLUTION:g}): "
                          f"use more positions")
     return F, k

@@ -143,3 +143,10 @@ def test_a_declared_plot_is_checked_with_its_key_and_line():
         'plots = [{ x = "alpha", y = ["beta", "beta_ideal"] }]', 'plots = [{ x = "alpha", y = [] }]')
     with pytest.raises(ModelError, match=r"steer\.toml:\d+: display\.plots\[0\]\.y"):
         PageModel(text, name="steer.toml", source=bundled("steering_lab4"))
+
+
+def test_too_few_positions_for_a_cranks_flywheel_is_a_message_not_a_crash():
+    pm = PageModel.from_path(bundled("cleaning_lab3"))        # [dynamics]: a flywheel
+    out = pm.compute({}, positions=11)
+    assert not out["ok"] and out["error"]["kind"] == "model"
+    assert "use more positions" in out["error"]["message"]
