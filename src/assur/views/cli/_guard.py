@@ -77,10 +77,7 @@ def _one_line(text: str, limit: int = 300) -> str:
 def _write_log(command: str, exc: BaseException, options: dict):
     """The traceback of ``exc`` and the command's ``options`` written to a new log
     file: its path, or the reason it could not be written (a str)."""
-    try:
-        from ... import __version__
-    except Exception:  # pragma: no cover - a broken install still gets its log
-        __version__ = "?"
+    from ... import __version__
     try:
         d = log_dir()
         d.mkdir(parents=True, exist_ok=True)

@@ -257,10 +257,8 @@ class PageModel:
         for c in mech.coordinates:
             if mech.coordinate_kind(c) != "angle":
                 continue
-            try:
-                speed = mech.motion(c).speed
-            except Exception:  # noqa: BLE001 - no motion of this coordinate
-                continue
+            motion = mech.motion(c)  # None: the file gives this coordinate no motion
+            speed = motion.speed if motion is not None else None
             key = re.escape(c)
             pat = re.compile(rf'(?m)^[ \t]*(?:{key}|"{key}")[ \t]*=[ \t]*\{{[^\n}}]*?'
                              rf'speed[ \t]*=[ \t]*("[^"\n]*")')
