@@ -71,3 +71,15 @@ def test_a_position_asked_twice_is_drawn_once():
     assert r.status_code == 200, r.text
     doc = ezdxf.read(io.StringIO(r.content.decode("utf-8")))
     assert len([g for g, _ in doc.groups]) == 2
+
+
+def test_the_page_says_in_its_language_when_the_api_does_not_answer():
+    from fastapi.testclient import TestClient
+
+    from assur.io import bundled
+    from assur.views.page.server import create_app
+    from assur.views.page.texts import page_texts
+    client = TestClient(create_app(bundled("hitch_003"), warm=False))
+    for lang in ("en", "ru"):
+        html = client.get("/", params={"lang": lang}).text
+        assert f'data-server-down="{page_texts()["server_down"][lang]}"' in html

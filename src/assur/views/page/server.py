@@ -123,8 +123,10 @@ def _warm(pm):
             for name, p in list(pm.editable.items())[:1]:
                 pm.compute({name: p["value"] * (1 + 1e-7) + 1e-12}, positions=positions)
             pm.export_tables({}, "xlsx", positions=positions)
-        except Exception:  # noqa: BLE001 - the page shows the model's error when asked
-            log.debug("warming the model failed", exc_info=True)
+        except (ModelError, AssemblyError, SingularPositionError):
+            pass  # the design's own error: the page shows it when it asks
+        except Exception:  # noqa: BLE001 - a thread's last resort: logged, never silent
+            log.exception("warming the model failed")
 
     threading.Thread(target=run, name="assur-warm", daemon=True).start()
 
@@ -207,8 +209,12 @@ def _add_page_routes(app, lang):
 
     @app.get("/", response_class=HTMLResponse)
     def index(lang: str = lang):
+        import html as markup
         html = _static("index.html").decode("utf-8")
-        return HTMLResponse(html.replace("{{LANG}}", lang if lang in ("en", "ru") else "en"))
+        lg = lang if lang in ("en", "ru") else "en"
+        # what the page says when the API does not answer (its texts come from the API)
+        down = markup.escape(page_texts()["server_down"][lg], quote=True)
+        return HTMLResponse(html.replace("{{LANG}}", lg).replace("{{SERVER_DOWN}}", down))
 
     @app.get("/favicon.ico")
     def favicon():

@@ -995,9 +995,7 @@ async function start() {
     r = await fetch("/api/model");
     state.info = await r.json();
   } catch (e) {
-    $("status").textContent = document.body.dataset.lang === "ru"
-      ? "сервер не отвечает — запущен ли ещё `assur serve`?"
-      : "the server is not answering — is `assur serve` still running?";
+    $("status").textContent = document.body.dataset.serverDown;   // from the page's texts
     return;
   }
   const saved = readUrl();
