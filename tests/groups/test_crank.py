@@ -152,13 +152,13 @@ def test_angle_figure_sorted_no_line_across_a_wrap_and_equal_links_visible():
     a = m.analyze(examples.combine_002_range())
     fig = F.angles(a)
     lines = {ln.get_label(): ln for ln in _lines(fig)}
-    x = np.asarray(lines[r"$\varphi_{\mathrm{3}}$"].get_xdata())
+    x = np.asarray(lines["φ₃"].get_xdata())
     assert np.all(np.diff(x) > 0)                       # sorted by the crank angle
     assert x.min() == pytest.approx(14.679) and x.max() == pytest.approx(344.679)
     # φ4 = φ3: drawn, dashed, labelled as equal
-    l4 = next(ln for lab, ln in lines.items() if lab.startswith(r"$\varphi_{\mathrm{4}}$"))
+    l4 = next(ln for lab, ln in lines.items() if lab.startswith("φ₄"))
     assert "=" in l4.get_label() and l4.get_linestyle() == "--"
-    l3 = lines[r"$\varphi_{\mathrm{3}}$"]
+    l3 = lines["φ₃"]
     assert l3.get_linestyle() == "-" and l4.get_marker() != l3.get_marker()
     # the named distances l7, l9 have a figure of their own, sorted the same way
     figs = F.figures(a)
@@ -173,7 +173,7 @@ def test_angle_figure_sorted_no_line_across_a_wrap_and_equal_links_visible():
         y = np.ma.masked_invalid(np.ma.asarray(ln.get_ydata()))
         for seg in np.ma.clump_unmasked(y):
             assert np.all(np.abs(np.diff(y[seg])) < 180.0), ln.get_label()
-    l9 = next(ln for ln in _lines(fig) if ln.get_label() == r"$\varphi_{\mathrm{9}}$")
+    l9 = next(ln for ln in _lines(fig) if ln.get_label() == "φ₉")
     assert np.ma.count_masked(np.ma.asarray(l9.get_ydata())) >= 1
 
 

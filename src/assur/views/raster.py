@@ -132,7 +132,9 @@ def images(geo: dict, positions, width: int, height: int, captions=None, title=N
                    anchor="ma")
             y += int(0.055 * H)
         _pose(d, geo, i, cyl, span, px, s, small, labels)
-        out.append(img.resize((width, height), Image.LANCZOS))
+        # each output pixel the mean of its _SS × _SS drawn pixels (a box filter: the
+        # antialiasing of a supersampled drawing; a Lanczos resize cost 13 ms a frame)
+        out.append(img.reduce(_SS))
     return out
 
 

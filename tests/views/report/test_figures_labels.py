@@ -8,7 +8,7 @@ import pytest
 
 from assur import io
 from assur.core.display import SYSTEMS, unit_system
-from assur.views.report._curves import _math
+from assur.views.report.labels import symbol
 from assur.views.report.figures import figures
 from tests.helpers.documents import allowed_units, axis_units
 from tests.helpers.reports import label_problems
@@ -45,6 +45,6 @@ def test_the_diagrams_of_each_machine_are_its_own():
 
 
 def test_a_symbol_of_a_name_with_letters_is_not_raw_tex():
-    assert _math(r"\varphi", "w3") == r"$\varphi$ w3"
-    assert _math(r"\varphi", "3") == r"$\varphi_{\mathrm{3}}$"
-    assert _math(r"\varphi", "a$b", prime=True) == r"$\varphi'$ a\$b"
+    assert symbol("φ", "w3") == "φ w3"
+    assert symbol("φ", "3") == "φ₃"
+    assert symbol("φ", "a$b", prime=True) == "φ′ a$b"  # printed as written (no TeX)

@@ -160,45 +160,54 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     if "csv" in formats:
         step("csv")
         written["csv"] = [write_csv(tab, out / table_filename(tab), lang) for tab in tables]
-    if "xlsx" in formats:
-        step("xlsx")
-        written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx", lang=lang,
-                                      inputs=_html.model_inputs(analysis, lang, du))]
-    pngs, drawing_png = {}, None
-    if {"png", "svg", "html", "pdf"} & set(formats):
-        step("figures")
-        figs = _figure_set(analysis, lang, design, du)
-        svg_dir = out if "svg" in formats else None
-        for name, png, caption, svg in _render_figures(figs, svg_dir, jobs):
-            pngs[name] = (png, caption)
+    pngs, drawing_png, anim = {}, None, False
+    if "gif" in formats and frames <= 0:
+        raise ValueError(f"frames = {frames}: the GIF animation needs at least one frame")
+    figured = bool({"png", "svg", "html", "pdf"} & set(formats))
+    gif = "gif" in formats
+    jobs_ = []  # what the renderers make: the figures, the drawing, the GIF's frames
+    figs = _figure_set(analysis, lang, design, du) if figured else {}
+    if figured:
+        figs[_DRAWING] = _drawing.draw(analysis, positions=positions, lang=lang,
+                                       design=design, units=du)
+        jobs_ += [("figure", n) for n in figs]
+    if gif:
+        jobs_.append(("gif", None))
+    render = _Renderers(jobs_, figs, out, formats, dict(
+        analysis=analysis, frames=frames, lang=lang, design=design, units=du), jobs)
+    with render:
+        if "xlsx" in formats:  # while the renderers draw
+            step("xlsx")
+            written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx", lang=lang,
+                                          inputs=_html.model_inputs(analysis, lang, du))]
+        if figured:
+            step("figures")
+            for name in figs:
+                if name is _DRAWING:
+                    continue
+                png, caption, svg = render.result(("figure", name))
+                pngs[name] = (png, caption)
+                if "png" in formats:
+                    p = out / f"fig_{name}.png"
+                    p.write_bytes(png)
+                    written["png"].append(p)
+                if svg is not None:
+                    written["svg"].append(svg)
+            step("drawing")
+            drawing_png, _, svg = render.result(("figure", _DRAWING))
             if "png" in formats:
-                p = out / f"fig_{name}.png"
-                p.write_bytes(png)
+                p = out / "mechanism.png"
+                p.write_bytes(drawing_png)
                 written["png"].append(p)
             if svg is not None:
                 written["svg"].append(svg)
-        step("drawing")
-        fig = _drawing.draw(analysis, positions=positions, lang=lang, design=design, units=du)
-        drawing_png = _figures.to_png_bytes(fig)
-        if "png" in formats:
-            p = out / "mechanism.png"
-            p.write_bytes(drawing_png)
-            written["png"].append(p)
-        if "svg" in formats:
-            fig.set_layout_engine("none")  # laid out for the PNG
-            written["svg"].append(_figures.save(fig, out / "mechanism.svg"))
-    anim = False
-    if "gif" in formats and frames <= 0:
-        raise ValueError(f"frames = {frames}: the GIF animation needs at least one frame")
-    if {"gif", "html"} & set(formats) and frames > 0:
-        step("animation")
-        if "gif" in formats:  # raster frames only for the GIF; the HTML plays vectors
-            imgs = _drawing.render_frames(analysis, frames=frames, lang=lang, design=design,
+        if {"gif", "html"} & set(formats) and frames > 0:
+            step("animation")
+            if gif:  # raster frames only for the GIF; the HTML plays vectors
+                written["gif"] = [render.result(("gif", None))]
+            if "html" in formats:
+                anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design,
                                           units=du)
-            written["gif"] = [_drawing.write_gif(imgs, out / "mechanism.gif")]
-        if "html" in formats:
-            anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design,
-                                      units=du)
     if "html" in formats:
         step("html")
         written["html"] = [_html.write_html(analysis, out / "report.html", lang=lang,
@@ -234,51 +243,92 @@ def _figure_set(analysis, lang, design, du) -> dict:
     return figs
 
 
-def _render_one(figs, name, svg_dir):
-    """``(name, PNG bytes, caption, SVG path or None)`` of one figure."""
+def _render(job, figs, out, formats, anim):
+    """What one renderer makes of ``job``: a figure's ``(PNG bytes, caption, SVG path or
+    None)``; the GIF's path."""
     from . import figures as _figures
+    kind, name = job
+    if kind == "gif":
+        from . import drawing as _drawing
+        imgs = _drawing.render_frames(**anim)
+        return _drawing.write_gif(imgs, out / "mechanism.gif")
     fig = figs[name]
     # a figure of maps (two coordinates) has its title above the panels
     caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
     png = _figures.to_png_bytes(fig)
     svg = None
-    if svg_dir is not None:
+    if "svg" in formats:
         fig.set_layout_engine("none")  # laid out for the PNG: the SVG keeps its places
-        svg = _figures.save(fig, Path(svg_dir) / f"fig_{name}.svg")
-    return name, png, caption, svg
+        svg = _figures.save(fig, out / ("mechanism.svg" if name is _DRAWING
+                                        else f"fig_{name}.svg"))
+    return png, caption, svg
 
+
+class _Drawing:
+    """The key of the mechanism's drawing among the figures (no diagram's name)."""
+
+    def __repr__(self):
+        return "drawing"
+
+
+_DRAWING = _Drawing()
 
 #: what the forked renderers read: the parent's figures (inherited, not pickled)
 _JOB: dict = {}
 
 
-def _render_part(names):
-    return [_render_one(_JOB["figs"], n, _JOB["svg"]) for n in names]
+def _render_forked(i):
+    """Job ``i`` of the renderers' list (an index is sent, not the job: the drawing's key
+    is this process's object)."""
+    args = dict(_JOB)
+    return i, _render(args.pop("jobs")[i], **args)
 
 
-def _render_figures(figs, svg_dir, jobs=1) -> list:
-    """Every figure of ``figs`` rendered (:func:`_render_one`), in order; with ``jobs``
-    > 1 (0: a process per core) by that many processes forked from this one, each
-    rendering a share of them (balanced by their panels), on Linux (where forking is
-    the processes' own way to start; elsewhere in this process)."""
-    import multiprocessing as mp
-    import os
-    import sys
+def _cost(job, figs) -> int:
+    """A rough cost of a job, to start the long ones first: a figure's panels; the GIF
+    as many."""
+    return 12 if job[0] == "gif" else len(figs[job[1]].axes) + 1
 
-    names = list(figs)
-    jobs = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
-    jobs = min(jobs, len(names))
-    if jobs <= 1 or not sys.platform.startswith("linux"):
-        return [_render_one(figs, n, svg_dir) for n in names]
-    parts, load = [[] for _ in range(jobs)], [0] * jobs
-    for n in sorted(names, key=lambda n: -len(figs[n].axes)):
-        k = load.index(min(load))
-        parts[k].append(n)
-        load[k] += len(figs[n].axes) + 1
-    _JOB.update(figs=figs, svg=svg_dir)
-    try:
-        with mp.get_context("fork").Pool(jobs) as pool:
-            done = {r[0]: r for part in pool.map(_render_part, parts) for r in part}
-    finally:
-        _JOB.clear()
-    return [done[n] for n in names]
+
+class _Renderers:
+    """The figures, the drawing and the GIF rendered while the report's other steps
+    run: with ``jobs`` > 1 (0: a process per core) by that many processes forked from
+    this one on Linux (where forking is the processes' own way to start; each job
+    inherits the figures, nothing is pickled but the files' bytes), the longest jobs
+    first, each taken by the first renderer free; else here, as each is asked for."""
+
+    def __init__(self, jobs_, figs, out, formats, anim, jobs=1):
+        import os
+        import sys
+        self.jobs_, self.done, self.pool, self.pending = list(jobs_), {}, None, None
+        self.args = dict(figs=figs, out=out, formats=formats, anim=anim)
+        n = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
+        self.n = min(n, len(self.jobs_)) if sys.platform.startswith("linux") else 1
+
+    def __enter__(self):
+        if self.n > 1:
+            import multiprocessing as mp
+            _JOB.update(self.args, jobs=self.jobs_)
+            self.pool = mp.get_context("fork").Pool(self.n)
+            order = sorted(range(len(self.jobs_)),
+                           key=lambda i: -_cost(self.jobs_[i], self.args["figs"]))
+            self.pending = self.pool.imap_unordered(_render_forked, order)
+        return self
+
+    def result(self, job):
+        """What ``job`` made (waiting for it)."""
+        if self.pool is None:
+            if job not in self.done:
+                self.done[job] = _render(job, **self.args)
+            return self.done[job]
+        while job not in self.done:
+            i, value = next(self.pending)
+            self.done[self.jobs_[i]] = value
+        return self.done[job]
+
+    def __exit__(self, *exc):
+        if self.pool is not None:
+            self.pool.terminate() if exc[0] is not None else self.pool.close()
+            self.pool.join()
+            _JOB.clear()
+        return False

@@ -6,38 +6,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._canvas import new_figure
+from ._canvas import figure_legend, new_figure
 from .labels import check_lang, t, unit
 from .tables import _View, grid_of
 
 
-_SPECIAL = set("_^$\\{}%#&~")
-
-
-def _math(sym, idx, prime=False):
-    """The symbol ``sym`` (mathtext, e.g. ``\\varphi``) of the link or point ``idx``:
-    ``φ_{34}`` with a numeric subscript; a name with letters or TeX specials after the
-    symbol as plain text (``φ′ w3``: letters in small mathtext subscripts are hard to
-    read, "S6" looks like "56"), printed as the model names it.
-
-    Examples
-    --------
-    >>> from assur.views.report._curves import _math
-    >>> _math(r"\\varphi", "34"), _math(r"\\varphi", "w3", prime=True)
-    ('$\\\\varphi_{\\\\mathrm{34}}$', "$\\\\varphi'$ w3")
-    >>> _math("y", "a_1")   # a plain symbol, a name with an underscore
-    'y a_1'
-    """
-    p = chr(39) if prime else ""
-    idx = str(idx)
-    if any(ch in _SPECIAL for ch in idx) or any(ch.isalpha() for ch in idx):
-        if sym.startswith("\\"):  # a dollar in the name is not the start of math
-            return f"${sym}{p}$ " + idx.replace("$", "\\$")
-        return f"{sym}{p} {idx}"
-    return f"${sym}{p}_{{\\mathrm{{{idx}}}}}$"
-
-
-_PHI = r"\varphi"
 
 
 #: the most positions whose curves are drawn with a marker at each
@@ -276,6 +249,6 @@ class _Plot:
         if isinstance(ax, _MapAxes):
             return
         if n > 5:
-            fig.legend(loc="outside right upper", fontsize="small")
+            figure_legend(fig, "right", fontsize="small")
         elif n > 0:
             ax.legend(fontsize="small")

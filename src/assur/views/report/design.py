@@ -275,7 +275,7 @@ def pareto_figure(problem, result, path):
     >>> p.name, png[1:4]
     ('front.png', b'PNG')
     """
-    from ._canvas import new_figure
+    from ._canvas import new_figure, plain_texts
     a, b = problem.objectives[:2]
     fig = new_figure(5.5, 4)
     ax = fig.add_subplot()
@@ -289,5 +289,6 @@ def pareto_figure(problem, result, path):
     ax.set_ylabel(f"{b.sense} {b.name} [{b.unit.text}]")
     ax.grid(alpha=0.3)
     ax.legend()
+    plain_texts(fig)  # the objectives' names as the user wrote them
     fig.savefig(path, bbox_inches="tight")
     return path

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._canvas import new_figure, titled_axes
+from ._canvas import figure_legend, new_figure, titled_axes
 from .labels import check_lang, t, unit
 from .numbers import number, quantity
 
@@ -197,10 +197,10 @@ def reduced_moment(dynamics, lang="en", units=None):
         dynamics.reduced_moment, dynamics.reduced_moment_without_inertia,
         dynamics.driving_moment_from_reactions)))
     x = _turn(du, ax, x)
-    ax.plot(x, a, label=r"$M_{red}$: " + _t("m_all", lang))
-    ax.plot(x, b, label=r"$M_{red}$: " + _t("m_static", lang))
-    ax.plot(x, c, "--", label=r"$M_{d}$: " + _t("m_drive", lang))
-    fig.legend(loc="outside lower center", ncols=2, fontsize="small")
+    ax.plot(x, a, label="M red: " + _t("m_all", lang))
+    ax.plot(x, b, label="M red: " + _t("m_static", lang))
+    ax.plot(x, c, "--", label="M d: " + _t("m_drive", lang))
+    figure_legend(fig, "bottom", ncols=2, fontsize="small")
     return fig
 
 
@@ -227,16 +227,16 @@ def reduced_inertia(dynamics, lang="en", units=None):
     du = _units(dynamics, units)
     fig = new_figure()
     ax = titled_axes(fig, _t("f_jred", lang), _xlabel(lang, du, dynamics.coordinate),
-                     f"$J_{{red}}$ {_axis(du, 'inertia', lang)}")
+                     f"J red {_axis(du, 'inertia', lang)}")
     x, J, dJ = _sorted_degrees(dynamics.q, du.value(dynamics.reduced_inertia, "inertia"),
                                du.value(dynamics.reduced_inertia_derivative,
                                         "inertia_per_angle"))
     x = _turn(du, ax, x)
-    ax.plot(x, J, color="C0", label="$J_{red}$")
+    ax.plot(x, J, color="C0", label="J red")
     ax2 = ax.twinx()
-    ax2.plot(x, dJ, color="C1", ls="--", label=r"$dJ_{red}/d\varphi$")
-    ax2.set_ylabel(rf"$dJ_{{red}}/d\varphi$ {_axis(du, 'inertia_per_angle', lang)}")
-    fig.legend(loc="outside lower center", ncols=2, fontsize="small")
+    ax2.plot(x, dJ, color="C1", ls="--", label="dJ red/dφ")
+    ax2.set_ylabel(f"dJ red/dφ {_axis(du, 'inertia_per_angle', lang)}")
+    figure_legend(fig, "bottom", ncols=2, fontsize="small")
     return fig
 
 
@@ -267,7 +267,7 @@ def energy_mass(flywheel, lang="en", units=None):
     ax, ax2 = fig.subplots(1, 2)
     J = du.value(np.ravel(flywheel.reduced_inertia), "inertia")
     E = du.value(np.ravel(flywheel.energy), "energy")
-    ax.plot(J, E, lw=1.4, label="ΔE(J_red)")
+    ax.plot(J, E, lw=1.4, label="ΔE(J red)")
     # the tangents meet far away at (−J_f, −T0): drawn across the curve's own box
     x0, y0 = -du.value(flywheel.J_flywheel, "inertia"), -du.value(flywheel.T0, "energy")
     # the slope ω²/2 [J per kg·m²] in the units shown
@@ -282,7 +282,7 @@ def energy_mass(flywheel, lang="en", units=None):
     ax.plot([], [], " ", label=_t("fw", lang, quantity(flywheel.J_flywheel, "inertia", du, lang),
                                   number(flywheel.delta, None, lang)))
     ax.set_title(_t("f_wit", lang))
-    ax.set_xlabel(f"$J_{{red}}$ {_axis(du, 'inertia', lang)}")
+    ax.set_xlabel(f"J red {_axis(du, 'inertia', lang)}")
     ax.set_ylabel(f"{_t('energy', lang)} {_axis(du, 'energy', lang)}")
     ax.grid(True, alpha=0.35)
     ax.legend(fontsize="small", loc="lower right")

@@ -38,12 +38,12 @@ from __future__ import annotations
 import numpy as np
 
 from ._canvas import new_figure, save, to_png_bytes
-from ._curves import _PHI, _math, _Plot
+from ._curves import _Plot
 # the canvas and the curves' helpers, importable from here as before the split
 from ._canvas import titled_axes
 from ._curves import broken, path_abscissa, plot_order, wrap_breaks
 from ...texts import localize
-from .labels import check_lang, t, unit
+from .labels import check_lang, symbol, t, unit
 
 __all__ = ["figures", "save", "to_png_bytes", "FIGURES", "angles", "distances", "analogs",
            "transmission",
@@ -70,7 +70,7 @@ def angles(analysis, lang="en", design=None, units=None):
     kin = p.v.kin
     fig, ax = p.axes(t("f_angles", lang), t("y_angle", lang), "deg")
     for link in kin.links:
-        p.line(ax, p.v.phi_values(link), _math(_PHI, link), angle=True)
+        p.line(ax, p.v.phi_values(link), symbol("φ", link), angle=True)
     p.legend(fig, ax, len(kin.links))
     return p.done(fig, ax)
 
@@ -137,7 +137,7 @@ def analogs(analysis, lang="en", design=None, units=None):
         for link in kin.links:  # along the crank's rotation where the tables say so
             if not v.moves_link(c, link):  # 0 along a coordinate that does not turn it
                 continue
-            lab = _math(_PHI, link, prime=True) + (f" ({c})" if sfx else "")
+            lab = symbol("φ", link, prime=True) + (f" ({c})" if sfx else "")
             p.line(ax, v.rate_sign(c) * v.pick(kin.dphi(link, w)), lab)
             n += 1
     p.legend(fig, ax, n)
@@ -172,7 +172,7 @@ def transmission(analysis, lang="en", design=None, units=None):
             if not v.moves_point(c, pt):  # 0 along a coordinate that does not move it
                 continue
             p.line(ax, v.rate_sign(c) * v.pick(kin.transmission(pt, wrt=w)),
-                   _math("I", pt) + (f" ({c})" if sfx else ""))
+                   symbol("I", pt) + (f" ({c})" if sfx else ""))
             n += 1
     p.legend(fig, ax, n)
     return p.done(fig, ax)
@@ -208,7 +208,7 @@ def capacity(analysis, lang="en", design=None, units=None):
             if not v.moves_point(res.cylinder.coordinate, pt):  # undefined: not its chain
                 continue
             g, _ = _capacity(v, res, pt)
-            p.line(ax, g, _math("G", pt) + (f" ({localize(name, lang)})" if several else ""))
+            p.line(ax, g, symbol("G", pt) + (f" ({localize(name, lang)})" if several else ""))
             n += 1
             if pt in loads_drawn:
                 continue
@@ -232,7 +232,7 @@ def force(analysis, lang="en", design=None, units=None):
     >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
     >>> ax = force(a).axes[0]
     >>> ax.get_ylabel(), ax.lines[1].get_label()  # F_max: the cylinder's available force
-    ('force F [kN]', 'available $F_{max}$ = 147.8 kN')
+    ('force F [kN]', 'available Fₘₐₓ = 147.8 kN')
     >>> round(float(ax.lines[0].get_ydata()[0]), 1)  # Fgc at S = 0.420 m [kN], table 4.1: 129.614
     129.6
     """
@@ -243,7 +243,7 @@ def force(analysis, lang="en", design=None, units=None):
     fig, ax = p.axes(t("f_force", lang), t("y_force", lang), "N")
     n = 0
     for name, res in v.a.cylinders.items():
-        p.line(ax, v.pick(res.force), f"$F_{{{res.cylinder.length}}}$ ({localize(name, lang)})")
+        p.line(ax, v.pick(res.force), f"{symbol('F', res.cylinder.length)} ({localize(name, lang)})")
         fm = v.pick(res.force_max)  # over positions for a double-rod cylinder (side auto)
         fmax = float(fm[0])
         if np.ptp(fm) > 0:
@@ -267,7 +267,7 @@ def pressure(analysis, lang="en", design=None, units=None):
     >>> a = examples.hitch_003().analyze(examples.hitch_003_range())
     >>> ax = pressure(a).axes[0]
     >>> ax.get_ylabel(), ax.lines[1].get_label()
-    ('pressure p [MPa]', '$p_{max}$ = 17.5 MPa')
+    ('pressure p [MPa]', 'pₘₐₓ = 17.5 MPa')
     >>> round(float(max(ax.lines[0].get_ydata())), 2)  # largest Pgc [MPa], table 4.1: 16.064
     16.06
     """
@@ -279,7 +279,7 @@ def pressure(analysis, lang="en", design=None, units=None):
     n = 0
     for name, res in v.a.cylinders.items():
         p.line(ax, v.pick(res.pressure),
-               f"$p_{{{res.cylinder.length}}}$ ({localize(name, lang)})")
+               f"{symbol('p', res.cylinder.length)} ({localize(name, lang)})")
         pmax = v.scalar(res.p_max)
         if pmax > 0:
             ax.axhline(p.y(ax, pmax), ls="--", lw=1, color="C3",
@@ -326,7 +326,7 @@ def reactions(analysis, lang="en", design=None, units=None):
     for k, (name, i, j) in enumerate(rs):
         # reactions equal in magnitude (a two-force link) overlap: distinct markers show it
         p.line(ax, v.pick(v.a.statics.reaction_magnitude(i, j)),
-               _math("R", name[1:] if name.startswith("R") else name),
+               symbol("R", name[1:] if name.startswith("R") else name),
                marker=markers[k % len(markers)], markersize=4, markerfacecolor="none")
     p.legend(fig, ax, len(rs))
     return p.done(fig, ax)
@@ -375,8 +375,8 @@ def hodograph(analysis, lang="en", design=None, units=None):
     ax = fig.add_subplot()
     ax.set_title(title)
     fu = unit(v.units["force"].text, lang)
-    ax.set_xlabel(f"$R_x$ [{fu}]")
-    ax.set_ylabel(f"$R_y$ [{fu}]")
+    ax.set_xlabel(f"Rx [{fu}]")
+    ax.set_ylabel(f"Ry [{fu}]")
     ax.grid(True, alpha=0.35)
     # over a grid of two coordinates the reaction sweeps an area: points, not a path
     ax.plot(rx, ry, "o" if p.is_map else "-o", ms=3, color="C0", zorder=2)

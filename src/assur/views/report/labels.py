@@ -227,9 +227,9 @@ TEXT = {
     "y_reaction": {"en": "reaction |R|", "ru": "реакция |R|"},
     "y_share": {"en": "share of the total weight", "ru": "доля от общего веса"},
     "load": {"en": "load {0} = {1}", "ru": "нагрузка {0} = {1}"},
-    "force_max": {"en": "available $F_{{max}}$ = {0}",
-                  "ru": "максимальная $F_{{max}}$ = {0}"},
-    "p_max": {"en": "$p_{{max}}$ = {0}", "ru": "$p_{{max}}$ = {0}"},
+    "force_max": {"en": "available Fₘₐₓ = {0}",
+                  "ru": "максимальная Fₘₐₓ = {0}"},
+    "p_max": {"en": "pₘₐₓ = {0}", "ru": "pₘₐₓ = {0}"},
     "min_share": {"en": "limit {0:g} %", "ru": "предел {0:g} %"},
     "steered_axle": {"en": "steered axle {0}", "ru": "управляемая ось {0}"},
     "other_axle": {"en": "axle {0}", "ru": "ось {0}"},
@@ -483,6 +483,36 @@ _ATOMS_RU = {"m": "м", "mm": "мм", "cm": "см", "dm": "дм", "km": "км", 
              "J": "Дж", "kJ": "кДж", "kgf": "кгс", "tf": "тс", "Hz": "Гц", "percent": "%",
              "in": "дюйм", "inch": "дюйм", "ft": "фут", "lbf": "фунт-сила", "lb": "фунт",
              "psi": "фунт/дюйм²", "gal": "галлон", "hp": "л. с.", "mrad": "мрад"}
+
+
+#: characters with a subscript form in Unicode (and in DejaVu Sans, the figures' font)
+_SUBSCRIPT = str.maketrans("0123456789+-=()aehijklmnoprstuvx",
+                           "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
+
+
+def symbol(base: str, sub="", prime: bool = False) -> str:
+    """A symbol with its index as a figure writes it, in plain Unicode text: ``φ₃₄``,
+    ``pₘₐₓ``. An index with a character that has no subscript form (``S6``, ``w3``,
+    ``red``: and letters in small subscripts are hard to read, ``S6`` looks like ``56``)
+    follows the symbol after a space. No TeX: matplotlib's mathtext parser cost a
+    report about a second, and a name with ``_`` or ``$`` is printed as the model names it.
+
+    Examples
+    --------
+    >>> from assur.views.report.labels import symbol
+    >>> symbol("φ", "34"), symbol("φ", "3", prime=True), symbol("p", "max")
+    ('φ₃₄', 'φ′₃', 'pₘₐₓ')
+    >>> symbol("φ", "w3"), symbol("J", "red"), symbol("F", "S_1"), symbol("R")
+    ('φ w3', 'J red', 'F S_1', 'R')
+    """
+    sub = str(sub)
+    head = base + ("′" if prime else "")
+    if not sub:
+        return head
+    low = sub.translate(_SUBSCRIPT)
+    if (sub.isdigit() or sub.isalpha()) and all(ord(c) > 127 for c in low):
+        return head + low
+    return head + " " + sub
 
 
 def unit(u: str, lang: str) -> str:
