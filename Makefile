@@ -58,6 +58,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/sensitivity.py
 	$(PY) benchmarks/page.py
 	$(PY) benchmarks/report.py
+	$(PY) benchmarks/latency.py
 
 # the interactive page for the seed-003 hitch (docs/page.md)
 serve: $(CORE_STAMP)

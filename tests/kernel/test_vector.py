@@ -35,7 +35,7 @@ KEYS = ("pv", "pd", "pdd", "sv", "sd", "sdd")
 def _execute(mech, q, n, vector, monkeypatch, check=True, params=None):
     """Run ``mech``'s program over ``q`` (k, E), E = m·n, by the numpy evaluation
     (``vector``) or the compiled kernel."""
-    monkeypatch.setattr(KV, "wanted", lambda elements: vector)
+    monkeypatch.setattr(KV, "wanted", lambda elements, ready=None: vector)
     prog = P.compile_program(mech)
     ptab = np.ascontiguousarray(prog.param_table(dict(mech.params, **(params or {}))))
     m = q.shape[1] // n

@@ -15,6 +15,7 @@ design), the groups' pre-passes (``prepare``, e.g. a point fixed at a pose), and
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
@@ -430,6 +431,33 @@ def _unwrap_angles(sv, ang, n):
         KR.unwrap_rows(sv, rows_a, n)
 
 
+_RKEYS: dict = {}
+
+
+def _ready_key(kargs) -> str:
+    """The ready mark's key of the compiled kernel of ``kargs`` (:func:`_kernel_for`'s
+    arguments), made once per process."""
+    key = _RKEYS.get(kargs)
+    if key is None:
+        key = _RKEYS[kargs] = KV.ready_key("kinematics", *kargs)
+    return key
+
+
+def _compile_later(kargs, cont, args, rkey):
+    """What compiles the kernel of ``kargs`` in the background (:func:`assur.kernel.vector.rent`):
+    it is loaded, run on copies of one call's arrays ``args`` (its signature compiled)
+    and marked ready."""
+    def compile_():
+        ptab, trig, qarr, n, check, out, amount, status = (
+            a.copy() if isinstance(a, np.ndarray) else a for a in args)
+        kern = _kernel_for(*kargs, False)
+        gout = amount if checks_continuity(kern) else np.empty(
+            (2 * len(cont), qarr.shape[1] if check else 1))
+        KR.run(kern, ptab, trig, qarr, n, check, out, gout, status)
+        KV.mark_ready(rkey)
+    return compile_
+
+
 def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, out_sca=(),
             depth=0, trig=None, out_buffer=None):
     """Run the kernel; returns the raw output arrays and the status per element.
@@ -457,16 +485,20 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     [0.2, 1.0432]
     """
     k, E = qarr.shape
-    # the first small calls of a process: numpy evaluates the same code (no numba start-up)
-    vector = KV.wanted(E)
     if rows is None:
         names_p = prog.out_pts if out_pts is None else tuple(out_pts)
         names_s = prog.out_sca if out_pts is None else tuple(out_sca)
-        kern = (prog.kernel(vector=vector) if out_pts is None
-                else prog.kernel(names_p, names_s, vector=vector))
+        kargs = (prog.rows, prog.measures, prog.k, tuple(prog.slot[p] for p in names_p),
+                 tuple(prog.scal[s] for s in names_s))
     else:
         names_p, names_s = tuple(out_pts), tuple(out_sca)
-        kern = _kernel_for(rows, (), k, tuple(prog.slot[p] for p in names_p), (), vector)
+        kargs = (rows, (), k, tuple(prog.slot[p] for p in names_p), ())
+    # numpy evaluates the same code while the compiled kernel is not ready (a new
+    # structure: never compiled on the calling thread for a few positions) and for the
+    # first small calls of a process (no numba start-up): assur.kernel.vector
+    rkey = _ready_key(kargs)
+    vector = KV.wanted(E, ready=lambda: KV.is_ready(rkey))
+    kern = _kernel_for(*kargs, vector)
     npo, nso = len(names_p), len(names_s)
     blocks, ang, pidx, sidx = prog.layout(names_p, names_s)
     out = _output_array(out_buffer, blocks[-1][1], E)
@@ -482,8 +514,15 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     # stages the squared heights and slopes in ``gout`` for the separate pass
     fused = checks_continuity(kern)
     gout = amount if fused else np.empty((2 * len(cont), E if check else 1))
-    nfail = KR.run(kern, ptab, trig_table(prog, ptab) if trig is None else trig, qarr, n, check,
-                   out, gout, status)
+    trig = trig_table(prog, ptab) if trig is None else trig
+    t0 = time.perf_counter()
+    nfail = KR.run(kern, ptab, trig, qarr, n, check, out, gout, status)
+    if not vector:
+        if not KV.is_ready(rkey):
+            KV.mark_ready(rkey)  # it ran: numba's cache holds it
+    elif not KV.is_ready(rkey):
+        KV.rent(time.perf_counter() - t0, rkey, _compile_later(
+            kargs, cont, (ptab, trig, qarr, n, check, out, amount, status), rkey))
     if check and cont:
         if not fused:
             codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],

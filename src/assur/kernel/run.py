@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import math
 import os
+import sys
 from concurrent.futures import ThreadPoolExecutor
 
 from .emit import CONTINUITY_TOL
 from .source import CHUNK
-from .vector import SMALL, is_vector
+from .vector import LARGE, SMALL, is_vector
 
 __all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "unwrap_rows",
            "pool", "MIN_ELEMENTS_PER_THREAD"]
@@ -240,7 +241,9 @@ def unwrap_rows(sv, rows, n):
     >>> [round(float(v), 3) for v in sv[1]]        # not an angle row: unchanged
     [0.1, 0.2, 0.3, 0.4]
     """
-    if sv.shape[1] <= SMALL:  # numpy: the same additions in the same order
+    if sv.shape[1] <= SMALL or ("numba" not in sys.modules and sv.shape[1] <= LARGE):
+        # numpy (the same additions in the same order): a few elements, or a call
+        # evaluated by numpy where numba is not started (assur.kernel.vector.LARGE)
         _unwrap_small(sv, rows, n)
         return
     fn = _compiled.get("unwrap")

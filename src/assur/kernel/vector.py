@@ -7,15 +7,26 @@ can be loaded. A command that solves a few positions (``assur check``: the desig
 conditions, then the model's range) or a page's first slider move would spend
 nearly all its time there.
 
-So the first calls of a process with at most :data:`SMALL` elements run the *same*
-emitted code — each group type's :meth:`~assur.groups.base.Group.emit` lines,
-conditional expressions as selects — as numpy expressions over all elements at once
-(``np.where`` for the selects, ``np.minimum``/``np.maximum`` for ``min``/``max``).
-It is a straight-line evaluation of arrays, no loop over positions. After
-:data:`CALLS` such calls (a simulation, a sweep of single positions: the process
-evaluates the mechanism often) or as soon as numba is in the process (a compiled
-kernel was loaded, or anything else imported it), the compiled kernels take over: the numpy evaluation never costs more than about the
-start-up it saves (the rent-or-buy rule), and a long run pays it once.
+So the calls of a process run the *same* emitted code — each group type's
+:meth:`~assur.groups.base.Group.emit` lines, conditional expressions as selects — as
+numpy expressions over all elements at once (``np.where`` for the selects,
+``np.minimum``/``np.maximum`` for ``min``/``max``), a straight-line evaluation of
+arrays with no loop over positions, when (:func:`wanted`):
+
+* the structure's compiled kernel is not *ready* — never compiled on this machine
+  (a new structure, a new group, a new point) — and the call has at most
+  :data:`LARGE` elements: a check, a report's positions, a page's answers never wait
+  for the compiler. A process that keeps evaluating such kernels (a simulation, an
+  optimization: :data:`RENT` seconds of numpy evaluation) compiles each in a
+  background thread (:func:`rent`) and uses it once it is ready;
+* or, for a ready kernel, while numba is not in the process and the call is one of
+  its first :data:`CALLS` small ones (at most :data:`SMALL` elements): numba's
+  start-up (about half a second) would cost more than the calls.
+
+A call of more than :data:`LARGE` elements pays for a compilation: it is compiled
+(on the calling thread, if it is not ready). A compiled kernel is *ready* once it
+ran here or has a mark on disk (:func:`is_ready`, :func:`mark_ready`): numba's own disk cache
+then loads it without compiling.
 
 The results are those of the compiled kernel to rounding: the same operations in the
 same order (``tests/kernel/test_vector.py`` compares the two on random mechanisms
@@ -37,12 +48,14 @@ import builtins
 import os
 import re
 import sys
+import threading
 
 from .emit import CODES_PER_OP, CONTINUITY_TOL, FAIL_CONTINUITY
 from .select import branchless
 from .source import CHUNK, FORMAT, emit_program, quantities
 
-__all__ = ["SMALL", "CALLS", "BACKENDS", "ELEMENTS_START", "backend", "set_backend", "wanted", "is_vector",
+__all__ = ["SMALL", "LARGE", "RENT", "CALLS", "ready_key", "is_ready", "mark_ready", "rent",
+           "compiling", "BACKENDS", "ELEMENTS_START", "backend", "set_backend", "wanted", "is_vector",
            "vector_lines", "reduce_chunks", "generate_vector", "load_vector", "calls_left",
            "set_calls"]
 
@@ -56,7 +69,20 @@ SMALL = 256
 #: before it runs compiled
 CALLS = 50
 
+#: elements of a call that the numpy evaluation takes while the structure's compiled
+#: kernel is not ready: about 10–40 ms for a ten-group structure (a crank turn of 361
+#: positions, a grid of 13 × 8), where its compilation costs 5–30 s
+LARGE = 4096
+
+#: seconds of numpy evaluation of a not-yet-compiled kernel, in a process, after which
+#: it is compiled in a background thread (the rent-or-buy rule): a process that keeps
+#: evaluating (a simulation, an optimization) then runs compiled, a short one (a
+#: check, a report) never starts the compiler
+RENT = 1.0
+
 _state = {"calls": 0, "limit": None, "backend": None}
+_READY: set = set()
+_RENT = {"spent": {}, "started": set(), "threads": []}
 _VECTORS: dict = {}
 
 #: how a kernel call is evaluated: ``"auto"`` (the rule above: the first small calls
@@ -148,7 +174,8 @@ def calls_left() -> int:
     Examples
     --------
     >>> import sys
-    >>> from assur.kernel.vector import CALLS, calls_left, set_calls, wanted
+    >>> from assur.kernel.vector import CALLS, calls_left, set_backend, set_calls, wanted
+    >>> set_backend("auto")                   # the rule (whatever $ASSUR_KERNELS says)
     >>> set_calls(None)
     >>> bool(calls_left() == (0 if "numba" in sys.modules else CALLS))   # 50 without numba
     True
@@ -157,6 +184,7 @@ def calls_left() -> int:
     >>> bool(calls_left() == (0 if "numba" in sys.modules else 1))
     True
     >>> set_calls(None)
+    >>> set_backend(None)
     """
     if "numba" in sys.modules:  # its import is paid: the compiled kernels are cheap now
         return 0
@@ -164,17 +192,20 @@ def calls_left() -> int:
     return builtins.max(0, limit - _state["calls"])  # the module's max is numpy's
 
 
-def wanted(elements: int) -> bool:
+def wanted(elements: int, ready=None) -> bool:
     """True if a call over ``elements`` elements is to be evaluated by numpy (and
-    counts it).
+    counts it). ``ready``: a callable telling whether the call's compiled kernel is
+    ready (:func:`is_ready`); without it, the kernel is taken as ready.
 
     Examples
     --------
     >>> import sys
-    >>> from assur.kernel.vector import SMALL, set_backend, set_calls, wanted
+    >>> from assur.kernel.vector import LARGE, SMALL, set_backend, set_calls, wanted
     >>> set_backend("auto")                   # the rule (whatever $ASSUR_KERNELS says)
-    >>> wanted(SMALL + 1)                     # 257 elements: always compiled
+    >>> wanted(SMALL + 1)                     # 257 elements of a ready kernel: compiled
     False
+    >>> wanted(LARGE, ready=lambda: False), wanted(LARGE + 1, ready=lambda: False)
+    (True, False)
     >>> set_calls(1)
     >>> wanted(10) == ("numba" not in sys.modules), wanted(10)   # the one call left, then none
     (True, False)
@@ -187,10 +218,160 @@ def wanted(elements: int) -> bool:
     name = backend()
     if name != "auto":
         return name == "numpy"
+    if elements > LARGE:
+        return False  # a call that pays for a compilation
+    if ready is not None and not ready():
+        return True   # not compiled on this machine: never wait for the compiler
     if elements > SMALL or calls_left() <= 0:
         return False
     _state["calls"] += 1
     return True
+
+
+def ready_key(*parts) -> str:
+    """The key of a compiled kernel among the ready marks: a hash of ``parts`` (what its
+    source is made of), of the code that emits it and of numba's version (a new
+    version compiles again).
+
+    Examples
+    --------
+    >>> from assur.kernel.vector import ready_key
+    >>> k = ready_key("fused", (1, 2), 3)
+    >>> len(k), k == ready_key("fused", (1, 2), 3), k == ready_key("fused", (1, 2), 4)
+    (20, True, False)
+    """
+    import hashlib
+    from importlib.metadata import PackageNotFoundError, version
+
+    from . import compose
+    from .cache import helpers_tag
+    try:
+        numba = version("numba")
+    except PackageNotFoundError:  # pragma: no cover - numba is a dependency
+        numba = "none"
+    what = f"{FORMAT} {_code_version()} {helpers_tag()} {compose.THRESHOLD} {numba} {parts!r}"
+    return hashlib.sha1(what.encode()).hexdigest()[:20]
+
+
+def _mark(key):
+    from .cache import cache_dir
+    return cache_dir() / f"c_{key}.ready"
+
+
+def is_ready(key: str) -> bool:
+    """True if the compiled kernel ``key`` (:func:`ready_key`) ran in this process or
+    has run on this machine (its mark on disk: numba's disk cache holds it, so it is
+    loaded, not compiled).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur.kernel import set_cache_dir
+    >>> from assur.kernel.vector import is_ready, mark_ready, ready_key
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     set_cache_dir(tmp)
+    ...     try:
+    ...         k = ready_key("doc example", 1)
+    ...         before = is_ready(k)
+    ...         mark_ready(k)
+    ...         after = is_ready(k)
+    ...     finally:
+    ...         set_cache_dir(None)
+    >>> before, after
+    (False, True)
+    """
+    if key in _READY:
+        return True
+    if _mark(key).exists():
+        _READY.add(key)
+        return True
+    return False
+
+
+def mark_ready(key: str) -> None:
+    """Mark the compiled kernel ``key`` ready, in this process and on disk (after it
+    ran: numba has written it to its cache).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur.kernel import cache_dir, set_cache_dir
+    >>> from assur.kernel.vector import mark_ready, ready_key
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     set_cache_dir(tmp)
+    ...     try:
+    ...         mark_ready(ready_key("doc example", 2))
+    ...         marks = [p.suffix for p in cache_dir().iterdir()]
+    ...     finally:
+    ...         set_cache_dir(None)
+    >>> marks                                  # c_<key>.ready, an empty file
+    ['.ready']
+    """
+    _READY.add(key)
+    path = _mark(key)
+    if not path.exists():
+        tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp")
+        tmp.write_bytes(b"")
+        os.replace(tmp, path)
+
+
+def rent(seconds: float, key: str, compile_) -> None:
+    """Count ``seconds`` of numpy evaluation of the not-yet-compiled kernel ``key``;
+    once the process has spent :data:`RENT` seconds on it, run ``compile_()`` (which
+    compiles the kernel, runs it and marks it ready) in a background thread, once per
+    kernel: the calls go on by numpy meanwhile and take the compiled kernel when it is
+    ready. A failure of the background compilation is logged, never raised: the
+    numpy evaluation stays.
+
+    Examples
+    --------
+    >>> from assur.kernel.vector import RENT, compiling, rent, set_backend
+    >>> set_backend("auto")
+    >>> made = []
+    >>> rent(RENT / 2, "doc-example", lambda: made.append(1))   # not yet
+    >>> rent(RENT, "doc-example", lambda: made.append(1))       # past the rent: compiled
+    >>> rent(RENT, "doc-example", lambda: made.append(1))       # once per kernel
+    >>> compiling(wait=True), made
+    (False, [1])
+    >>> set_backend(None)
+    """
+    if backend() != "auto" or key in _RENT["started"]:
+        return
+    spent = _RENT["spent"][key] = _RENT["spent"].get(key, 0.0) + float(seconds)
+    if spent < RENT:
+        return
+    _RENT["started"].add(key)
+    t = threading.Thread(target=_background, args=(key, compile_), daemon=True,
+                         name=f"assur-compile-{key[:8]}")
+    _RENT["threads"].append(t)
+    t.start()
+
+
+def _background(key, compile_):
+    try:
+        compile_()
+    except Exception:  # noqa: BLE001 — the numpy evaluation stays; say why
+        import logging
+        logging.getLogger("assur.kernel").exception(
+            "compiling a kernel in the background failed (its numpy evaluation stays)")
+
+
+def compiling(wait: bool = False) -> bool:
+    """True while a kernel is being compiled in the background (:func:`rent`); with
+    ``wait``, wait for them all first (a process that wants its compiled kernels).
+
+    Examples
+    --------
+    >>> from assur.kernel.vector import compiling
+    >>> compiling(wait=True)                  # none left (none started here)
+    False
+    """
+    threads = _RENT["threads"]
+    if wait:
+        for t in list(threads):
+            t.join()
+    threads[:] = [t for t in threads if t.is_alive()]
+    return bool(threads)
 
 
 def is_vector(kernel) -> bool:

@@ -6,6 +6,8 @@ over chunks), the reductions over positions, the static reactions of a solved ra
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
 from ...errors import ModelError
@@ -136,6 +138,15 @@ class _Kernels:
     def __init__(self, mech, prog, specs, reduce, g):
         self._args = (mech, prog, specs, reduce, g)
         self._made: dict = {}
+        self._key = None
+
+    @property
+    def ready_key(self) -> str:
+        """The compiled kernel's key among the ready marks (:func:`assur.kernel.vector.ready_key`)."""
+        if self._key is None:
+            from ._kernel import kernel_key
+            self._key = KV.ready_key("outputs", repr(kernel_key(*self._args[:4])))
+        return self._key
 
     def get(self, vector):
         k = self._made.get(vector)
@@ -269,20 +280,40 @@ def _run(mech, plan, qarr, m, n, nspecs, reduce=False):
     out = np.empty((0 if reduce else nspecs, E))
     red = np.empty((4 * nspecs if reduce else 0, nchunks))
     status = np.empty(E, dtype=np.int64)
-    vector = KV.wanted(E)
+    rkey = kernels.ready_key
+    # numpy while the compiled kernel is not ready (never compiled on the calling
+    # thread for a few positions), and for a process's first small calls
+    vector = KV.wanted(E, ready=lambda: KV.is_ready(rkey))
     kern = kernels.get(vector)
-    nthreads = 1 if vector else KR.threads_for(E, nchunks)
-    if nthreads <= 1:
-        kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
-    else:
-        per = (nchunks + nthreads - 1) // nthreads
-        futs = [KR.pool().submit(kern, ptab, trig, qarr, n, out, red, status, i * per,
-                                 min(nchunks, (i + 1) * per)) for i in range(nthreads)]
-        for f in futs:
-            f.result()
+    t0 = time.perf_counter()
+    _call(kern, ptab, trig, qarr, n, out, red, status, nchunks, 1 if vector else
+          KR.threads_for(E, nchunks))
+    if not vector:
+        if not KV.is_ready(rkey):
+            KV.mark_ready(rkey)  # it ran: numba's cache holds it
+    elif not KV.is_ready(rkey):
+        args = tuple(a.copy() for a in (ptab, trig, qarr, out, red, status))
+
+        def compile_():
+            p_, t_, q_, o_, r_, s_ = args
+            _call(kernels.get(False), p_, t_, q_, n, o_, r_, s_, nchunks, 1)
+            KV.mark_ready(rkey)
+        KV.rent(time.perf_counter() - t0, rkey, compile_)
     if pose_failures and not (status >= 0).any():
         raise pose_failures[0]
     return out, red, status, ptab
+
+
+def _call(kern, ptab, trig, qarr, n, out, red, status, nchunks, nthreads):
+    """A fused outputs kernel over every work item, split over ``nthreads`` threads."""
+    if nthreads <= 1:
+        kern(ptab, trig, qarr, n, out, red, status, 0, nchunks)
+        return
+    per = (nchunks + nthreads - 1) // nthreads
+    futs = [KR.pool().submit(kern, ptab, trig, qarr, n, out, red, status, i * per,
+                             min(nchunks, (i + 1) * per)) for i in range(nthreads)]
+    for f in futs:
+        f.result()
 
 
 def statics_outputs(kin, g):

@@ -280,12 +280,18 @@ def kernel(params, trig, q, npd, out, red, status, c_start, c_end):
 """
 
 
+def kernel_key(mech, prog, specs, reduce) -> tuple:
+    """What the fused outputs kernel of a structure, its loads and outputs is made of
+    (its cache key; the values of the loads are rows of the parameter table)."""
+    return (prog.rows, tuple(prog.slot.items()), _load_signature(mech), mech.links,
+            mech.distances, dead_load_links(mech), specs, bool(reduce), prog.param_names,
+            prog.literals)
+
+
 def _kernel(mech, prog, specs, reduce, g, vector=False):
     """The fused kernel of a structure, its loads and outputs (cached): compiled, or
     with ``vector`` evaluated by numpy."""
-    key = (prog.rows, tuple(prog.slot.items()), _load_signature(mech), mech.links,
-           mech.distances, dead_load_links(mech), specs, bool(reduce), prog.param_names,
-           prog.literals, bool(vector))
+    key = kernel_key(mech, prog, specs, reduce) + (bool(vector),)
     try:
         hit = _KERNELS.get(key)
     except TypeError:  # an unhashable value in a load: trace every time
