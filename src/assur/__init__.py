@@ -11,15 +11,19 @@
 __version__ = "0.1.0"
 
 from . import _moved
-from . import groups
-from .core import kinematics
 from .errors import AssemblyError, ModelError, SingularPositionError
-from .groups import (Crank, CylinderLever, DoubleSliderDyad, Dyad, Frame, PosePoint, RigidPoint,
-                     SleeveDyad, SliderDyad, SliderInput)
-from .core.kinematics import Kinematics
-from .core.mechanism import Mechanism
-from .core.topology import Topology
-from . import examples
+
+#: the package's names, made when first used (``import assur`` loads no numpy: a script's
+#: or the CLI's start-up pays only for what it uses), name → module
+_LAZY = {
+    **{n: "assur.groups" for n in ("Crank", "CylinderLever", "DoubleSliderDyad", "Dyad",
+                                   "Frame", "PosePoint", "RigidPoint", "SleeveDyad",
+                                   "SliderDyad", "SliderInput")},
+    "Kinematics": "assur.core.kinematics", "Mechanism": "assur.core.mechanism",
+    "Topology": "assur.core.topology",
+}
+_SUBMODULES = {"groups": "assur.groups", "kinematics": "assur.core.kinematics",
+               "examples": "assur.examples"}
 
 __all__ = ["Mechanism", "Kinematics", "Topology", "AssemblyError", "ModelError",
            "SingularPositionError", "Frame", "CylinderLever", "Dyad", "Crank", "SliderInput",
@@ -30,9 +34,21 @@ _moved.install()
 
 
 def __getattr__(name):
-    """An old module name of the package (``assur.hydraulics``…): its new module, with
-    a :class:`DeprecationWarning` (:mod:`assur._moved`)."""
+    """A name of the package, imported on first use (:data:`_LAZY`); an old module name
+    (``assur.hydraulics``…): its new module, with a :class:`DeprecationWarning`
+    (:mod:`assur._moved`)."""
     import importlib
-    if _moved.new_name(f"{__name__}.{name}") is None:
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+    elif name in _SUBMODULES:
+        value = importlib.import_module(_SUBMODULES[name])
+    elif _moved.new_name(f"{__name__}.{name}") is not None:
+        return importlib.import_module(f"{__name__}.{name}")
+    else:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    return importlib.import_module(f"{__name__}.{name}")
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -7,7 +7,8 @@ engineer can act on it without a debugger.
 
 from __future__ import annotations
 
-__all__ = ["ModelError", "AssemblyError", "SingularPositionError", "ModelWarning"]
+__all__ = ["ModelError", "AssemblyError", "SingularPositionError", "ModelWarning",
+           "MissingExtraError"]
 
 
 class ModelError(ValueError):
@@ -113,3 +114,30 @@ class ModelWarning(UserWarning):
     >>> issubclass(ModelWarning, UserWarning), caught[0].category.__name__
     (True, 'ModelWarning')
     """
+
+
+class MissingExtraError(ImportError):
+    """A feature needs packages of an optional extra that are not installed (the page:
+    ``assur[page]``; the Pareto search: ``assur[pareto]``; both: ``assur[all]``).
+
+    Attributes
+    ----------
+    extra : str
+        The extra that installs them.
+    missing : tuple of str
+        The modules not found.
+
+    Examples
+    --------
+    >>> from assur.errors import MissingExtraError
+    >>> e = MissingExtraError("page", ("fastapi", "uvicorn"), "the interactive page")
+    >>> print(e)
+    the interactive page needs fastapi, uvicorn (not installed): pip install 'assur[page]'
+    >>> isinstance(e, ImportError), e.extra
+    (True, 'page')
+    """
+
+    def __init__(self, extra: str, missing, what: str):
+        self.extra, self.missing = extra, tuple(missing)
+        super().__init__(f"{what} needs {', '.join(self.missing)} (not installed): "
+                         f"pip install 'assur[{extra}]'")

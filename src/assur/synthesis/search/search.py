@@ -385,6 +385,8 @@ def pareto(problem, *, pop_size=40, generations=40, seed=None, callback=None,
     ...
     assur.errors.ModelError: design problem 'hitch_003': a Pareto front needs two or more objectives, it has 1
     """
+    from ..._extras import require
+    require("pareto", "the Pareto front (NSGA-II)")
     from pymoo.algorithms.moo.nsga2 import NSGA2
     from pymoo.core.callback import Callback
     from pymoo.core.problem import Problem as PymooProblem

@@ -153,9 +153,9 @@ def handle(command: str, exc: BaseException, options=None):
                else f"the traceback could not be written: {where}")
         _say(f"{prog}: out of memory ({detail}): reduce {what} — {log}")
         return 1
-    from ...errors import AssemblyError, ModelError, SingularPositionError
+    from ...errors import AssemblyError, MissingExtraError, ModelError, SingularPositionError
 
-    if isinstance(exc, (ModelError, AssemblyError, SingularPositionError)):
+    if isinstance(exc, (ModelError, AssemblyError, SingularPositionError, MissingExtraError)):
         _say(str(exc), "error:")  # a typed error no command caught: its message
         return 1
     where = _write_log(name, exc, options)

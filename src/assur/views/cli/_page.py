@@ -25,6 +25,8 @@ def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
     drawing moved by a stroke slider, live plots and tables (docs/page.md)."""
     _check_lang(lang)
     _load(file)  # one message for a bad file, before the server starts
+    from ..._extras import require
+    require("page", "assur serve")  # FastAPI, uvicorn: else which extra to install
     from ..page.server import create_app
     from ...errors import ModelError
 

@@ -31,7 +31,11 @@ import json
 import logging
 from importlib import resources
 
-from fastapi import FastAPI
+from ..._extras import require
+
+require("page", "the interactive page (assur serve)")
+
+from fastapi import FastAPI  # noqa: E402 — after the check that says what to install
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 

@@ -149,6 +149,8 @@ class PageModel:
     """
 
     def __init__(self, text: str, name: str = "<model>", source: Path | None = None):
+        from ..._extras import require
+        require("page", "the interactive page (assur serve)")
         import tomlkit
 
         from ...io import loads

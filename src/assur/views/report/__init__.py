@@ -134,10 +134,7 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     ...
     ValueError: formats must be among: ['csv', 'xlsx', 'html', 'png', 'svg', 'gif', 'pdf']; got ['doc']
     """
-    from . import drawing as _drawing
-    from . import figures as _figures
-    from . import html as _html
-
+    from . import html as _html  # no matplotlib: the tables' inputs and the page
     from ...core.display import unit_system
 
     mech = analysis.mechanism
@@ -165,6 +162,8 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
         raise ValueError(f"frames = {frames}: the GIF animation needs at least one frame")
     figured = bool({"png", "svg", "html", "pdf"} & set(formats))
     gif = "gif" in formats
+    if figured or gif or "html" in formats:  # matplotlib only for figures (not CSV, XLSX)
+        from . import drawing as _drawing
     jobs_ = []  # what the renderers make: the figures, the drawing, the GIF's frames
     figs = _figure_set(analysis, lang, design, du) if figured else {}
     if figured:
