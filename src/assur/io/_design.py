@@ -108,10 +108,18 @@ class DesignSpec:
 
 
 def _kind_of_output(text, mech):
-    """The quantity of an output's limits (None for a formula: its value's own unit)."""
+    """The quantity of an output's limits (None for a formula: its value's own unit);
+    a point the mechanism does not have is refused here, at the criterion's line (it
+    was told later as "the original design does not assemble")."""
     from ..core.outputs import output_unit, resolve_output
-    if resolve_output(mech, text)[0] == "formula":
+    fn, args = resolve_output(mech, text)
+    if fn == "formula":
         return None
+    points = mech.points
+    if fn in ("X", "Y", "dX", "dY", "I") and args and args[0] not in points:
+        raise ValueError(f"{text}: unknown point {args[0]!r}"
+                         f"{S.did_you_mean(args[0], list(points))} (points: "
+                         f"{', '.join(points)})")
     return {"m": LENGTH, "N": FORCE, "N·m": MOMENT, "Pa": PRESSURE, "rad": ANGLE,
             "%": NUMBER}.get(output_unit(mech, text))
 
@@ -126,18 +134,39 @@ def _param_kind(mech, name):
     return KINDS.get(q) if q else None
 
 
+class _KeyProblem(ValueError):
+    """A problem of one key of a criterion (told at that key's line, not the entry's)."""
+
+    def __init__(self, key, message):
+        super().__init__(message)
+        self.key = key
+
+
+def _at(key, fn, *args):
+    """``fn(*args)``, its ValueError told at ``key``."""
+    try:
+        return fn(*args)
+    except _KeyProblem:
+        raise
+    except ValueError as e:
+        raise _KeyProblem(key, str(e)) from None
+
+
 def _si(text, kind, problem):
     """``(SI value, Unit)`` of a value string, or raise ValueError(problem)."""
     try:
         raw = parse(text)
     except UnitError as e:
-        raise ValueError(f"{problem}: {e}" if str(e) else problem) from None
+        raise ValueError(f"{problem}: {e}" if str(e) else f"{problem}, found {text!r}") \
+            from None
     if not isinstance(raw, Raw):
         raise ValueError(f"{problem}, found the name {raw!r}")
     try:
         return float(to_si(raw, kind)), display_unit(raw, kind)
     except UnitError as e:
-        raise ValueError(f"{problem}: {e}") from None
+        said = str(e)
+        raise ValueError(f"{problem}, found {text!r}" if said in problem
+                         else f"{problem}: {said}") from None
 
 
 def build_design(builder, mech, path_prefix=("design",)):
@@ -189,6 +218,8 @@ def build_design(builder, mech, path_prefix=("design",)):
             p = path_prefix + (key, i)
             try:
                 crits.append((key, _criterion(c, key, mech, criterion, Limit)))
+            except _KeyProblem as e:
+                raise err(p + (e.key,), str(e)) from None
             except (ValueError, ModelError) as e:
                 raise err(p, str(e)) from None
     positions = spec.positions
@@ -247,7 +278,7 @@ def _criterion(c, key, mech, criterion, Limit):
         sense = "maximize" if c.maximize is not None else "minimize"
         if c.type == "bound":
             args["quantity"] = c.maximize or c.minimize
-        kind = _kind_of_output(args["quantity"], mech) if c.type == "bound" else \
+        kind = _at(sense, _kind_of_output, args["quantity"], mech) if c.type == "bound" else \
             _CRITERION_KIND[c.type]
         unit = _output_unit(args.get("quantity"), mech) or _default_unit(kind)
         return criterion(c.type, args, mech, sense=sense, unit=unit)
@@ -255,7 +286,8 @@ def _criterion(c, key, mech, criterion, Limit):
         raise ValueError("give at_least or at_most, not both")
     sense = "at_least" if c.at_least is not None else "at_most" if c.at_most is not None \
         else None
-    kind = _kind_of_output(c.quantity, mech) if c.type == "bound" else _CRITERION_KIND[c.type]
+    kind = _at("quantity", _kind_of_output, c.quantity, mech) if c.type == "bound" else \
+        _CRITERION_KIND[c.type]
     if sense is None:
         if c.type == "pressure":  # the relief setting, shown in the unit the file gave it
             from ..core.quantities import display_units
@@ -272,13 +304,16 @@ def _criterion(c, key, mech, criterion, Limit):
     if isinstance(text, str) and text.strip() == "original":
         return criterion(c.type, args, mech, limit=Limit("original", sense),
                          unit=_output_unit(c.quantity, mech) or _default_unit(kind))
-    raw = parse(text) if not isinstance(text, str) or text.strip() else None
+    try:
+        raw = parse(text) if not isinstance(text, str) or text.strip() else None
+    except UnitError:  # not a number with a unit ("nan m"): _si below says what is wrong
+        raw = None
     if isinstance(raw, str):  # a parameter name
         if raw not in mech.params:
-            raise ValueError(f'{sense}: "{raw}" is not a parameter'
+            raise _KeyProblem(sense, f'{sense}: "{raw}" is not a parameter'
                              f"{S.did_you_mean(raw, list(mech.params))}")
         return criterion(c.type, args, mech, limit=Limit(raw, sense), unit=_default_unit(kind))
-    v, unit = _si(text, kind, f"{sense}: expected {_article(kind)}")
+    v, unit = _at(sense, _si, text, kind, f"expected {_article(kind)}")  # at the key's line
     return criterion(c.type, args, mech, limit=Limit(v, sense), unit=unit)
 
 

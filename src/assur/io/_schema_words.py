@@ -38,6 +38,12 @@ def allowed_keys(cls, loc) -> list[str]:
     t = cls
     for part in loc:
         t = _unwrap(t)
+        if typing.get_origin(t) is typing.Union:  # a member named by pydantic's tag
+            t = next((a for a in typing.get_args(t) if getattr(a, "__name__", None) == part),
+                     None)
+            if t is None:
+                return []
+            continue
         if isinstance(t, type) and issubclass(t, BaseModel):
             f = _field(t, part)
             if f is None:
@@ -139,9 +145,72 @@ def describe(err, cls) -> tuple[tuple, str]:
     return loc, f"{text}, found {show(inp)}"
 
 
+def _union_tags(data, loc, typ="") -> list:
+    """``(index, input)`` of each segment of ``loc`` that is not a key of ``data`` but the
+    tag of a union's member (pydantic names each alternative it tried: ``_Within``,
+    ``list[…]``), with the input the alternatives were tried on."""
+    node, tags = data, []
+    # the last segment is a key (missing, or not allowed) or a member's tag
+    last = len(loc) - (1 if typ in ("missing", "extra_forbidden") else 0)
+    for i, seg in enumerate(loc[:last]):
+        if isinstance(node, dict) and seg in node:
+            node = node[seg]
+        elif isinstance(node, (list, tuple)) and isinstance(seg, int) and 0 <= seg < len(node):
+            node = node[seg]
+        elif isinstance(seg, str):
+            tags.append((i, node))
+        else:
+            break
+    return tags
+
+
+def _fits(tag: str, value) -> bool:
+    """True if the union member tagged ``tag`` takes a value of ``value``'s shape (a
+    table for a model, an array for a list or tuple, else a plain value)."""
+    if tag.startswith(("list[", "tuple[", "set[")):
+        return isinstance(value, (list, tuple))
+    if "[" not in tag and tag[:1].isupper() or tag.startswith("_"):
+        return isinstance(value, dict)
+    return not isinstance(value, (dict, list, tuple))
+
+
 def validate(cls, data, prefix=()):
-    """Validate ``data`` with ``cls``: ``(instance or None, [(path, message), …])``."""
+    """Validate ``data`` with ``cls``: ``(instance or None, [(path, message), …])``.
+
+    Of the alternatives of a union, only the errors of those that take the value's shape
+    are told (a table given where a table or an array is allowed: what is wrong with the
+    table), and the path holds the file's keys only, never pydantic's names of the
+    alternatives.
+
+    Examples
+    --------
+    A ``[design]`` variable is ``{ within = … }`` or ``[low, high]``; given a table with
+    other keys, the table's keys are told (not "expected an array"):
+
+    >>> from assur.io._design import DesignSection
+    >>> from assur.io._schema_words import validate
+    >>> for path, message in validate(DesignSection, {"variables": {"X01": {"low": "0.5 m"}}},
+    ...                               ("design",))[1]:
+    ...     print(".".join(path) + ":", message)
+    design.variables.X01.within: missing required key "within"
+    design.variables.X01.low: unknown key "low" (allowed: within)
+    """
     try:
         return cls.model_validate(data), []
     except ValidationError as e:
-        return None, [(prefix + p, m) for p, m in (describe(x, cls) for x in e.errors())]
+        errors = list(e.errors())
+    out = []
+    for fitting in (True, False):  # no alternative of the value's shape: say them all
+        for x in errors:
+            loc = tuple(x["loc"])
+            tags = _union_tags(data, loc, x["type"])
+            if fitting and not all(_fits(str(loc[i]), v) for i, v in tags):
+                continue
+            p, m = describe(x, cls)
+            drop = {i for i, _ in tags}
+            path = prefix + tuple(seg for i, seg in enumerate(p) if i not in drop)
+            if (path, m) not in out:
+                out.append((path, m))
+        if out:
+            break
+    return None, out

@@ -160,9 +160,9 @@ def _with_design(tmp_path, section):
     ('[design.variables]\nX01 = { within = "30 kN" }\n', r"design\.variables\.X01: within"),
     ('[design]\nspeed = 1\n', r"unknown key"),
     ('[design.variables]\nX01 = { within = "30 mm" }\n[[design.constraints]]\n'
-     'quantity = "Q(56)"\nat_most = "1 m"\n', r"d\.toml:5: design\.constraints\[0\]: unknown output"),
+     'quantity = "Q(56)"\nat_most = "1 m"\n', r"d\.toml:6: design\.constraints\[0\]\.quantity: unknown output"),
     ('[design.variables]\nX01 = { within = "30 mm" }\n[[design.constraints]]\n'
-     'quantity = "Y(56)"\nat_most = "1 MPa"\n', r"design\.constraints\[0\]: at_most"),
+     'quantity = "Y(56)"\nat_most = "1 MPa"\n', r"d\.toml:7: design\.constraints\[0\]\.at_most: expected a length .*, found '1 MPa'"),
     ('[design.variables]\nX01 = { within = "30 mm" }\n[[design.objectives]]\n'
      'quantity = "Y(56)"\n', r"maximize = … or minimize"),
 ])

@@ -1,0 +1,52 @@
+"""Errors of the ``[design]`` section at the key that is wrong (issue 27's one-offs):
+a constraint on a point the mechanism lacks is refused when the file loads, at its
+``quantity`` line, naming the points (it was told at optimization as "the original
+design does not assemble"); a limit that is not a number (``"nan m"``) at its own
+line with what was expected and found (the message was empty); a variable given as
+a table with other keys than ``within`` names those keys, not pydantic's name of the
+array alternative."""
+
+from __future__ import annotations
+
+import pytest
+
+from assur import io
+from assur.io import ModelFileError
+
+BASE = io.bundled("hitch_003_design").as_posix()
+
+
+def _load(tmp_path, body):
+    path = tmp_path / "design.toml"
+    path.write_text(f'extends = "{BASE}"\n' + body, encoding="utf-8")
+    with pytest.raises(ModelFileError) as e:
+        io.load(path)
+    return " ".join(str(e.value).split())
+
+
+def test_an_unknown_point_is_told_at_the_quantity(tmp_path):
+    msg = _load(tmp_path, '\n[[design.constraints]]\nquantity = "Y(99)"\nof = "min"\n'
+                          'at_most = "1 m"\n')
+    assert "design.toml:4: design.constraints[3].quantity: Y(99): unknown point '99'" in msg
+    assert "points: 01, 03" in msg and "does not assemble" not in msg
+
+
+@pytest.mark.parametrize("limit", ["nan m", "inf m", "a lot"])
+def test_a_limit_that_is_no_number_is_told_at_its_key(tmp_path, limit):
+    msg = _load(tmp_path, '\n[[design.constraints]]\nquantity = "Y(56)"\nof = "min"\n'
+                          f'at_most = "{limit}"\n')
+    assert "design.toml:6: design.constraints[3].at_most: " in msg, msg
+    assert "expected a length" in msg
+
+
+def test_a_variable_table_with_other_keys_names_them(tmp_path):
+    path = tmp_path / "design.toml"
+    path.write_text(io.bundled("hitch_003_design").read_text(encoding="utf-8").replace(
+        'X01 = { within = "30 mm" }', 'X01 = { low = "0.5 m", high = "0.6 m" }')
+        .replace('extends = "hitch_003.toml"', f'extends = "{io.bundled("hitch_003").as_posix()}"'),
+        encoding="utf-8")
+    with pytest.raises(ModelFileError) as e:
+        io.load(path)
+    msg = str(e.value)
+    assert 'design.variables.X01' in msg and "list[" not in msg and "function-after" not in msg
+    assert 'unknown key "low" (allowed: within)' in msg or 'missing required key "within"' in msg
