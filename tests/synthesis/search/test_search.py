@@ -341,3 +341,19 @@ def test_chunks_and_order_do_not_change_results(problem):
     np.testing.assert_array_equal(c.objectives, b.objectives[perm])
     np.testing.assert_array_equal(c.margins, b.margins[perm])
     assert c.reasons == [b.reasons[i] for i in perm]
+
+
+def test_bounds_that_exclude_the_file_value_seed_the_nearest_design(tmp_path):
+    """Issue 27: a variable's [low, high] not containing the file's value made scipy
+    refuse the seed ("x0 lay outside the specified bounds", a traceback); the
+    population is seeded with the box's design nearest to the file's."""
+    text = io.bundled("hitch_003_design").read_text(encoding="utf-8").replace(
+        'X07 = { within = "30 mm" }', 'X07 = ["0.50 m", "0.52 m"]').replace(
+        'extends = "hitch_003.toml"', f'extends = "{io.bundled("hitch_003").as_posix()}"')
+    path = tmp_path / "d.toml"
+    path.write_text(text, encoding="utf-8")
+    pb = load_problem(path)
+    lo, hi = pb.bounds[pb.names.index("X07")]
+    assert not lo <= pb.x0[pb.names.index("X07")] <= hi
+    res = optimize(pb, popsize=4, maxiter=2, seed=0, polish=False)
+    assert lo <= res.x[pb.names.index("X07")] <= hi

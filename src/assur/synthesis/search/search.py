@@ -203,7 +203,8 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
     callback : callable, optional
         ``callback(generation, best_value)`` after every generation (progress).
     x0 : bool
-        Seed the population with the original design.
+        Seed the population with the original design (with the design of the box
+        nearest to it where the variables' bounds exclude the file's values).
     evaluate : callable, optional
         ``evaluate(X) → Batch`` for a population (default: :meth:`Problem.evaluate`;
         ``lambda X: executor.evaluate(problem, X)`` sends it to a Dask cluster,
@@ -271,7 +272,7 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
                                  maxiter=maxiter, seed=seed, tol=tol, init=init,
                                  vectorized=True, updating="deferred", polish=False,
                                  constraints=cons, callback=cb,
-                                 x0=problem.x0 if x0 else None)
+                                 x0=_seed(problem) if x0 else None)
     x = np.asarray(res.x)
     best = problem.evaluate(x[None])
     polished = None
@@ -283,6 +284,13 @@ def optimize(problem, *, popsize=15, maxiter=100, seed=None, tol=1e-6, init="lat
     return OptimizeResult(x, best, problem.evaluate(problem.x0[None]),
                           cache.evaluations, cache.calls, int(res.nit), str(res.message),
                           problem.verify(x) if best.feasible[0] else "", polished)
+
+
+def _seed(problem):
+    """The original design, clipped into the variables' bounds (a box that excludes the
+    file's value: scipy refuses a seed outside it)."""
+    lo, hi = (np.array(b, dtype=float) for b in zip(*problem.bounds))
+    return np.clip(problem.x0, lo, hi)
 
 
 @dataclass
