@@ -517,12 +517,8 @@ def execute(prog: Program, ptab, qarr, n, check=False, rows=None, out_pts=None, 
     trig = trig_table(prog, ptab) if trig is None else trig
     t0 = time.perf_counter()
     nfail = KR.run(kern, ptab, trig, qarr, n, check, out, gout, status)
-    if not vector:
-        if not KV.is_ready(rkey):
-            KV.mark_ready(rkey)  # it ran: numba's cache holds it
-    elif not KV.is_ready(rkey):
-        KV.rent(time.perf_counter() - t0, rkey, _compile_later(
-            kargs, cont, (ptab, trig, qarr, n, check, out, amount, status), rkey))
+    KV.settle(rkey, vector, time.perf_counter() - t0, _compile_later(
+        kargs, cont, (ptab, trig, qarr, n, check, out, amount, status), rkey))
     if check and cont:
         if not fused:
             codes = np.array([i * KE.CODES_PER_OP + KE.FAIL_CONTINUITY for i in cont],

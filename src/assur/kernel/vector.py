@@ -55,6 +55,7 @@ from .select import branchless
 from .source import CHUNK, FORMAT, emit_program, quantities
 
 __all__ = ["SMALL", "LARGE", "RENT", "CALLS", "ready_key", "is_ready", "mark_ready", "rent",
+           "settle",
            "compiling", "BACKENDS", "ELEMENTS_START", "backend", "set_backend", "wanted", "is_vector",
            "vector_lines", "reduce_chunks", "generate_vector", "load_vector", "calls_left",
            "set_calls"]
@@ -345,6 +346,37 @@ def rent(seconds: float, key: str, compile_) -> None:
                          name=f"assur-compile-{key[:8]}")
     _RENT["threads"].append(t)
     t.start()
+
+
+def settle(key: str, vector: bool, seconds: float, compile_) -> None:
+    """After a call of the kernel ``key``: a compiled run marks it ready
+    (:func:`mark_ready`); a numpy run of a kernel not ready pays its ``seconds`` of rent
+    (:func:`rent`; ``compile_`` is called only if the rent makes it compile, so it
+    copies what it needs then, not at every call).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from assur.kernel import set_cache_dir
+    >>> from assur.kernel.vector import is_ready, ready_key, settle
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     set_cache_dir(tmp)
+    ...     try:
+    ...         k = ready_key("doc example", 3)
+    ...         settle(k, True, 0.0, None)     # by numpy, no rent yet: not ready
+    ...         before = is_ready(k)
+    ...         settle(k, False, 0.0, None)    # it ran compiled: ready
+    ...         after = is_ready(k)
+    ...     finally:
+    ...         set_cache_dir(None)
+    >>> before, after
+    (False, True)
+    """
+    if not vector:
+        if not is_ready(key):
+            mark_ready(key)  # it ran: numba's cache holds it
+    elif not is_ready(key):
+        rent(seconds, key, compile_)
 
 
 def _background(key, compile_):

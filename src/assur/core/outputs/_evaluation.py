@@ -288,17 +288,11 @@ def _run(mech, plan, qarr, m, n, nspecs, reduce=False):
     t0 = time.perf_counter()
     _call(kern, ptab, trig, qarr, n, out, red, status, nchunks, 1 if vector else
           KR.threads_for(E, nchunks))
-    if not vector:
-        if not KV.is_ready(rkey):
-            KV.mark_ready(rkey)  # it ran: numba's cache holds it
-    elif not KV.is_ready(rkey):
-        args = tuple(a.copy() for a in (ptab, trig, qarr, out, red, status))
-
-        def compile_():
-            p_, t_, q_, o_, r_, s_ = args
-            _call(kernels.get(False), p_, t_, q_, n, o_, r_, s_, nchunks, 1)
-            KV.mark_ready(rkey)
-        KV.rent(time.perf_counter() - t0, rkey, compile_)
+    def compile_():  # run by the background compilation, on copies of this call's arrays
+        p_, t_, q_, o_, r_, s_ = (a.copy() for a in (ptab, trig, qarr, out, red, status))
+        _call(kernels.get(False), p_, t_, q_, n, o_, r_, s_, nchunks, 1)
+        KV.mark_ready(rkey)
+    KV.settle(rkey, vector, time.perf_counter() - t0, compile_)
     if pose_failures and not (status >= 0).any():
         raise pose_failures[0]
     return out, red, status, ptab
