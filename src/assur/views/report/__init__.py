@@ -327,7 +327,10 @@ class _Renderers:
 
     def __exit__(self, *exc):
         if self.pool is not None:
-            self.pool.terminate() if exc[0] is not None else self.pool.close()
+            if exc[0] is not None:  # a job failed (its error is raised): stop the others
+                self.pool.terminate()
+            else:
+                self.pool.close()
             self.pool.join()
             _JOB.clear()
         return False
