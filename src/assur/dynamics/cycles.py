@@ -26,6 +26,14 @@ scenario               speeds                                                eq.
 
 With constant speeds every dynamic term scales as 1/T_c² (h is quadratic in q̇),
 so F_d·T_c² and any ratio of dynamic parts do not depend on T_c (BRIEF.md).
+
+A cylinder is fed on one side: the chamber the valve feeds for the stroke's
+direction (extending: the piston side; retracting: the rod side). The force *in the
+fed direction* (:func:`fed_force`) is the part of F that this chamber must
+produce; a force against it (a push on a retracting rod, e.g. the braking of the
+stick at t = 0) is held by the drained side, which the paper's model does not feed
+(seed 004: "усилие в штоковой полости гидроцилиндра привода рукояти", the stick's
+force in its rod-side chamber, after eq. 68).
 """
 
 from __future__ import annotations
@@ -37,7 +45,7 @@ import numpy as np
 from .eom import equations_of_motion
 
 __all__ = ["SCENARIOS", "PERIODS", "Cycle", "cycle", "cycle_forces", "sweep", "strokes",
-           "drive_cycles"]
+           "drive_cycles", "fed_sense", "fed_force"]
 
 SCENARIOS = ("combined_equal", "combined_ideal", "separate_second", "separate_first")
 #: seed 004's cycle times: 4 to 20 s by 1 s [s]
@@ -262,13 +270,89 @@ def cycle_forces(mechanism, cycles, g=None):
     return out
 
 
+def fed_sense(c):
+    """The fed direction σ_j = ±1 of each cylinder in a cycle: the sign of its stroke
+    velocity (seed 004: every scenario of eqs. 60–62 and 65–68 moves each rod one
+    way, so σ_j is one sign per cylinder per scenario; +1 extending, the piston side
+    fed; −1 retracting, the rod side fed).
+
+    Parameters
+    ----------
+    c : Cycle
+
+    Returns
+    -------
+    ndarray, shape (k,)
+
+    Raises
+    ------
+    ValueError
+        A cylinder that does not move in the cycle, or moves both ways (no one fed
+        side).
+
+    Examples
+    --------
+    >>> from assur.dynamics.cycles import cycle, fed_sense
+    >>> c = cycle((1.0, 2.0), (1.6, 1.2), 8.0, "separate_second", samples=3)  # [m], [s]
+    >>> fed_sense(c).tolist()      # the first rod extends, the second retracts
+    [1.0, -1.0]
+    """
+    v = np.asarray(c.qdot, dtype=float)
+    up, down = (v > 0).any(axis=0), (v < 0).any(axis=0)
+    bad = np.flatnonzero(up == down)
+    if bad.size:
+        j = int(bad[0])
+        raise ValueError(f"cycle {c.scenario!r}: coordinate {j} "
+                         + ("moves both ways" if up[j] else "does not move")
+                         + ": no one fed side of its cylinder")
+    return np.where(up, 1.0, -1.0)
+
+
+def fed_force(c, F):
+    """The largest force in the fed direction over a cycle, max_t σ_j·F_j(t) [N]
+    (σ_j = :func:`fed_sense`): the force the fed chamber must produce (seed 004,
+    after eq. 68: the stick's force in its rod-side chamber). Every sample counts,
+    the held phases of separate motion too (the closed valve keeps that chamber
+    loaded). A negative value: the fed chamber never pushes (the load drives the
+    stroke, the drained side holds it).
+
+    Parameters
+    ----------
+    c : Cycle
+    F : array_like, shape (n, k)
+        Forces along ``c`` [N] (F = h − Q, or a part of it), positive extending.
+
+    Returns
+    -------
+    ndarray, shape (k,)
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.dynamics.cycles import cycle, cycle_forces, fed_force, strokes
+    >>> crane = io.load(io.bundled("crane_lv184a"))                    # seed 004
+    >>> c = cycle(*strokes(crane.drive), 6.0, "combined_ideal")        # T_c [s]
+    >>> (F, _), = cycle_forces(crane.mechanism, [c], g=9.81)           # g [m/s²]
+    >>> (fed_force(c, F) / 1e3).round(1).tolist()   # boom (extends), stick (retracts) [kN]
+    [148.8, 54.7]
+    >>> (abs(F).max(axis=0) / 1e3).round(1).tolist()   # max |F|: the stick's push at t = 0
+    [148.8, 80.4]
+    """
+    F = np.asarray(F, dtype=float)
+    if F.shape != c.qdot.shape:
+        raise ValueError(f"cycle {c.scenario!r}: forces of shape {F.shape}, the cycle has "
+                         f"{c.qdot.shape}")
+    return (fed_sense(c) * F).max(axis=0)
+
+
 def sweep(mechanism, start, end, periods=PERIODS, scenarios=SCENARIOS, g=None,
           samples=41):
     """Largest |F_j|, |F_s,j| and |F_d,j| of every scenario and cycle time (seed 004:
     T_c from 4 to 20 s by 1 s), a pandas DataFrame with columns ``scenario``, ``T``
     [s], ``F1_max``, ``F2_max`` (the force), ``Fs1_max``, ``Fs2_max`` (its static part
-    −Q), ``Fd1_max``, ``Fd2_max`` (its dynamic part h) [N] and ``duration`` [s] (when
-    the last rod arrives).
+    −Q), ``Fd1_max``, ``Fd2_max`` (its dynamic part h) [N], ``duration`` [s] (when
+    the last rod arrives), and ``F1_fed``, ``F2_fed``, ``Fs1_fed``, ``Fs2_fed`` [N]:
+    the largest force and static part in the fed direction (:func:`fed_force`).
 
     Examples
     --------
@@ -279,16 +363,21 @@ def sweep(mechanism, start, end, periods=PERIODS, scenarios=SCENARIOS, g=None,
     >>> (d["F1_max"] / 1e3).round(1).tolist()     # the boom's largest force [kN], T_c = 6 s
     [156.4, 148.8, 280.6, 194.1]
     >>> ratio = d.loc["separate_second", "F1_max"] / d.loc["combined_equal", "F1_max"]
-    >>> round(float(ratio), 2)      # [-] separate needs ≈ 80 % more (paper: ≈ 90 %)
+    >>> round(float(ratio), 2)      # [-] max |F|, against V1 = V2 (eq. 60)
     1.79
+    >>> ratio = d.loc["separate_second", "F2_fed"] / d.loc["combined_ideal", "F2_fed"]
+    >>> round(float(ratio), 2)      # [-] the stick, fed direction, eq. 61 (paper: ≈ 30 %)
+    1.25
     """
     import pandas as pd
     cycles = [cycle(start, end, float(T), s, samples) for s in scenarios for T in periods]
     rows = []
     for c, (F, Fs) in zip(cycles, cycle_forces(mechanism, cycles, g)):
         Fd = F - Fs
+        fed, fed_s = fed_force(c, F), fed_force(c, Fs)
         rows.append(dict(scenario=c.scenario, T=c.period, F1_max=np.abs(F[:, 0]).max(),
                          F2_max=np.abs(F[:, 1]).max(), Fs1_max=np.abs(Fs[:, 0]).max(),
                          Fs2_max=np.abs(Fs[:, 1]).max(), Fd1_max=np.abs(Fd[:, 0]).max(),
-                         Fd2_max=np.abs(Fd[:, 1]).max(), duration=c.t[-1]))
+                         Fd2_max=np.abs(Fd[:, 1]).max(), duration=c.t[-1], F1_fed=fed[0],
+                         F2_fed=fed[1], Fs1_fed=fed_s[0], Fs2_fed=fed_s[1]))
     return pd.DataFrame(rows)
