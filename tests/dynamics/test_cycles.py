@@ -162,3 +162,52 @@ def test_cli_cycles_without_a_drive_fails_with_one_message(tmp_path):
     assert "no hydraulic drive" in r.output and "Traceback" not in r.output
 
 
+
+
+# ---- the force in the fed direction (issue 25)
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_the_fed_direction_is_the_sign_of_the_stroke(scenario):
+    """σ_j is the sign of cylinder j's stroke velocity in every scenario (each rod
+    moves one way), the held phases of separate motion included in the max."""
+    from assur.dynamics.cycles import fed_force, fed_sense
+    c = cycle((1.0, 2.0), (1.6, 1.2), 8.0, scenario, samples=5)
+    assert fed_sense(c).tolist() == [1.0, -1.0]
+    F = np.zeros_like(c.qdot)
+    F[:, 0] = np.linspace(-3.0, 2.0, len(c.t))  # extending: the piston side pushes +F
+    F[:, 1] = np.linspace(5.0, -4.0, len(c.t))  # retracting: the rod side pulls −F
+    np.testing.assert_allclose(fed_force(c, F), [2.0, 4.0])
+    np.testing.assert_allclose(fed_force(c, -F), [3.0, 5.0])
+    # a load that drives the stroke all along: the fed chamber never pushes (< 0)
+    np.testing.assert_allclose(fed_force(c, np.full_like(F, -7.0))[0], -7.0)
+
+
+def test_the_fed_direction_of_a_cylinder_that_does_not_move_or_turns_fails():
+    from assur.dynamics.cycles import fed_force, fed_sense
+    c = cycle((1.0, 2.0), (1.6, 1.2), 8.0, "combined_ideal", samples=3)
+    still = Cycle("still", 8.0, c.t, c.q, c.qdot * [1.0, 0.0], c.segment)
+    with pytest.raises(ValueError, match="'still': coordinate 1 does not move"):
+        fed_sense(still)
+    both = Cycle("both", 8.0, c.t, c.q, c.qdot * [[1.0, 1.0], [1.0, 1.0], [-1.0, 1.0]],
+                 c.segment)
+    with pytest.raises(ValueError, match="'both': coordinate 0 moves both ways"):
+        fed_sense(both)
+    with pytest.raises(ValueError, match=r"forces of shape \(3, 1\)"):
+        fed_force(c, np.zeros((3, 1)))
+
+
+def test_the_sweep_reports_the_fed_force_beside_max_abs(crane):
+    """The sweep's F_fed columns are fed_force of each cycle's forces; the boom
+    extends (max +F1 = max |F1| on these cranes), the stick retracts (max −F2, less
+    than max |F2|: the push against its motion at the start is held by the drained
+    side)."""
+    from assur.dynamics.cycles import strokes as drive_strokes
+    a, b = drive_strokes(crane.drive)
+    d = sweep(crane.mechanism, a, b, periods=[6.0]).set_index("scenario")
+    for s in SCENARIOS:
+        (F, Fs), = cycle_forces(crane.mechanism, [cycle(a, b, 6.0, s)])
+        assert d.loc[s, "F1_fed"] == pytest.approx(F[:, 0].max(), rel=1e-12)
+        assert d.loc[s, "F2_fed"] == pytest.approx((-F[:, 1]).max(), rel=1e-12)
+        assert d.loc[s, "Fs2_fed"] == pytest.approx((-Fs[:, 1]).max(), rel=1e-12)
+        assert d.loc[s, "F2_fed"] < d.loc[s, "F2_max"]

@@ -37,7 +37,17 @@ _T = {
                       "(штриховые)"),
     "table": Text("Max cylinder forces over the cycle: {0}",
                   ru="Максимальные усилия гидроцилиндров за цикл: {0}"),
-    "ratios": Text("Separate ÷ combined (V1 = V2)", ru="Раздельное ÷ совмещённое (V1 = V2)"),
+    "ratios": Text("Separate ÷ combined: max |F| against V1 = V2 (eq. 60); in the fed "
+                   "direction against ideal combined motion (eq. 61)",
+                   ru="Раздельное ÷ совмещённое: max |F| к V1 = V2 (ур. 60); в направлении "
+                      "питаемой полости к идеальному совмещению (ур. 61)"),
+    "basis_combined_ideal": Text("eq. 61, ideal combined motion, force in the fed direction",
+                                 ru="ур. 61, идеальное совмещение, усилие в направлении "
+                                    "питаемой полости"),
+    "basis_combined_equal": Text("eq. 60, combined motion with V1 = V2, force in the fed "
+                                 "direction",
+                                 ru="ур. 60, совмещение при V1 = V2, усилие в направлении "
+                                    "питаемой полости"),
     "pump_table": Text("At the drive's speeds: through the divider; separate (a), (b)",
                        ru="При скоростях привода: через делитель; раздельно (а), (б)"),
     "drive": Text("Rod speeds of the drive (eqs. 63–68)",
@@ -50,13 +60,28 @@ _T = {
     "why": Text("why", ru="почему"),
     "agrees": Text("agrees", ru="согласуется"),
     "disagrees": Text("does not agree", ru="не согласуется"),
-    "criteria": Text("Criteria: “about x %” holds within ±{0:.0f} % of x; “3–8 times” when "
+    "criteria": Text("Basis: the forces in the fed direction (the cylinder's force that the "
+                     "chamber fed for the stroke must produce — the piston side extending, the "
+                     "rod side retracting; a push against the motion is held by the drained "
+                     "side) against ideal combined motion (eq. 61: both rods start and end "
+                     "together, the cycle lasts T_c); max |F| and combined motion with V1 = V2 "
+                     "(eq. 60: the longer stroke ends later, so its cycle lasts longer than "
+                     "T_c) are shown beside. "
+                     "Criteria: “about x %” holds within ±{0:.0f} % of x; “3–8 times” when "
                      "every ratio of the dynamic maxima (both cylinders, every T_c) rounds into "
                      "[3, 8]; combined motion is “effective” while separate motion needs at "
                      "least {1:.0f} % more force. The paper does not say in which order its "
                      "separate motion runs: both are computed, and a claim agrees when one "
                      "does. Strokes: {2}.",
-                     ru="Критерии: «около x %» — в пределах ±{0:.0f} % от x; «в 3–8 раз» — "
+                     ru="Основа сравнения: усилия в направлении питаемой полости (усилие "
+                        "гидроцилиндра, которое должна создать полость, питаемая для данного "
+                        "хода, — поршневая при выдвижении, штоковая при втягивании; усилие "
+                        "против движения воспринимает сливная полость) при идеальном "
+                        "совмещении (ур. 61: штоки начинают и заканчивают движение "
+                        "одновременно, цикл длится T_ц); max |F| и совмещение при V1 = V2 "
+                        "(ур. 60: больший ход заканчивается позже, цикл длится дольше T_ц) "
+                        "приведены рядом. "
+                        "Критерии: «около x %» — в пределах ±{0:.0f} % от x; «в 3–8 раз» — "
                         "если каждое отношение динамических максимумов (оба цилиндра, все "
                         "T_ц) после округления лежит в [3, 8]; совмещение «эффективно», пока "
                         "при раздельном движении усилие больше не менее чем на {1:.0f} %. "
@@ -72,9 +97,26 @@ _T = {
                         "больше примерно на {2:.0f} %, чем при совмещении движений."),
     "boom": Text("boom's cylinder", ru="гидроцилиндра подъёма стрелы"),
     "stick": Text("stick's cylinder", ru="гидроцилиндра привода рукояти"),
-    "c1_model": Text("{0:+.0f} % with the stick first (a), {1:+.0f} % with the boom first (b)",
-                     ru="{0:+.0f} % при движении сначала рукояти (а), {1:+.0f} % — сначала "
-                        "стрелы (б)"),
+    "c1_model": Text("{0}: {1:+.0f} % with the stick first (a), {2:+.0f} % with the boom "
+                     "first (b); max |F|: {3:+.0f} % (a), {4:+.0f} % (b). Against V1 = V2 "
+                     "(eq. 60; its cycle at T_c = {5:g} s lasts {6:.1f} s): {7:+.0f} % (a), "
+                     "{8:+.0f} % (b) in the fed direction; max |F|: {9:+.0f} % (a), "
+                     "{10:+.0f} % (b)",
+                     ru="{0}: {1:+.0f} % при движении сначала рукояти (а), {2:+.0f} % — "
+                        "сначала стрелы (б); max |F|: {3:+.0f} % (а), {4:+.0f} % (б). При "
+                        "V1 = V2 (ур. 60; цикл при T_ц = {5:g} с длится {6:.1f} с): "
+                        "{7:+.0f} % (а), {8:+.0f} % (б) в направлении питаемой полости; "
+                        "max |F|: {9:+.0f} % (а), {10:+.0f} % (б)"),
+    "c1_old_yes": Text("; max |F| against V1 = V2 (eq. 60, whose cycle at T_c = {0:g} s "
+                       "lasts {1:.1f} s) would agree",
+                       ru="; max |F| при V1 = V2 (ур. 60, цикл при T_ц = {0:g} с длится "
+                          "{1:.1f} с) согласовался бы"),
+    "c1_old_no": Text("; max |F| against V1 = V2 (eq. 60, whose cycle at T_c = {0:g} s "
+                      "lasts {1:.1f} s) would not agree: the push against the motion that it "
+                      "compares is held by the drained side",
+                      ru="; max |F| при V1 = V2 (ур. 60, цикл при T_ц = {0:g} с длится "
+                         "{1:.1f} с) не согласовался бы: сравниваемое им усилие против "
+                         "движения воспринимает сливная полость"),
     "c1_yes": Text("order {0} is within ±{1:.0f} % of the paper's {2:.0f} %",
                    ru="порядок {0} в пределах ±{1:.0f} % от {2:.0f} % статьи"),
     "c1_no": Text("neither order comes within ±{0:.0f} % of the paper's {1:.0f} %: the excess "
@@ -90,10 +132,17 @@ _T = {
                      "depending on the cycle time.",
                      ru="При совмещении движений динамические составляющие уменьшаются в "
                         "{0:g}–{1:g} раз в зависимости от времени цикла."),
-    "c2_model": Text("(a) {0:.1f}–{1:.1f}×, (b) {2:.1f}–{3:.1f}× (boom and stick, every T_c); "
-                     "the ratios vary with T_c by at most {4:.1e}",
-                     ru="(а) {0:.1f}–{1:.1f}×, (б) {2:.1f}–{3:.1f}× (стрела и рукоять, все "
-                        "T_ц); с T_ц отношения меняются не более чем на {4:.1e}"),
+    "c2_model": Text("against {0}: (a) {1:.1f}–{2:.1f}×, (b) {3:.1f}–{4:.1f}×; against V1 = "
+                     "V2 (eq. 60): (a) {5:.1f}–{6:.1f}×, (b) {7:.1f}–{8:.1f}× (max |F_d|, "
+                     "boom and stick, every T_c); the ratios vary with T_c by at most {9:.1e}",
+                     ru="к режиму «{0}»: (а) {1:.1f}–{2:.1f}×, (б) {3:.1f}–{4:.1f}×; к V1 = V2 "
+                        "(ур. 60): (а) {5:.1f}–{6:.1f}×, (б) {7:.1f}–{8:.1f}× (max |F_d|, "
+                        "стрела и рукоять, все T_ц); с T_ц отношения меняются не более чем на "
+                        "{9:.1e}"),
+    "c2_old_yes": Text("; against V1 = V2 (eq. 60) an order would fall within the range",
+                       ru="; при V1 = V2 (ур. 60) один из порядков попал бы в диапазон"),
+    "c2_old_no": Text("; against V1 = V2 (eq. 60) no order would fall within the range",
+                      ru="; при V1 = V2 (ур. 60) ни один порядок не попал бы в диапазон"),
     "c2_yes": Text("order {0} falls within {1:g}–{2:g}×; but the ratio does not depend on T_c: "
                    "at constant rod speeds every dynamic term scales as 1/T_c²",
                    ru="порядок {0} попадает в {1:g}–{2:g}×; но отношение не зависит от T_ц: "
@@ -106,12 +155,21 @@ _T = {
                      "пропорциональна 1/T_ц², и отношение не может зависеть от T_ц"),
     "c3_claim": Text("Combined motion is most effective for cycles under {0:g} s.",
                      ru="Совмещение операций особенно эффективно при T_ц < {0:g} с."),
-    "c3_model": Text("separate motion needs ≥ {0:.0f} % more force up to T_c = {1} (the "
-                     "gain of combined motion: {2}; at long cycles it tends to the static "
-                     "parts' {3:+.0f} %, the paths differ)",
-                     ru="при раздельном движении усилие больше на ≥ {0:.0f} % до T_ц = {1} "
-                        "(выигрыш совмещения: {2}; при длинных циклах он стремится к {3:+.0f} % "
-                        "статических составляющих — траектории различны)"),
+    "c3_model": Text("{0}: separate motion needs ≥ {1:.0f} % more force up to T_c = {2} "
+                     "(the gain of combined motion: {3}; at long cycles it tends to the static "
+                     "parts' {4:+.0f} %, the paths differ); max |F| against V1 = V2 (eq. 60): "
+                     "up to T_c = {5}",
+                     ru="{0}: при раздельном движении усилие больше на ≥ {1:.0f} % до "
+                        "T_ц = {2} (выигрыш совмещения: {3}; при длинных циклах он стремится к "
+                        "{4:+.0f} % статических составляющих — траектории различны); max |F| "
+                        "при V1 = V2 (ур. 60): до T_ц = {5}"),
+    "c3_never": Text("the gain stays ≥ {0:.0f} % up to the longest cycle, {1:g} s: separate "
+                     "motion's static forces in the fed direction are {2:+.0f} % higher (its "
+                     "paths hold one link while the other moves), which no cycle time removes",
+                     ru="выигрыш остаётся ≥ {0:.0f} % до самого длинного цикла, {1:g} с: "
+                        "статические усилия в направлении питаемой полости при раздельном "
+                        "движении больше на {2:+.0f} % (одно звено удерживается, пока "
+                        "движется другое), и никакое время цикла этого не устраняет"),
     "gain_at": Text("{0:+.0f} % at {1:g} s", ru="{0:+.0f} % при {1:g} с"),
     "none": Text("no cycle time", ru="ни при каком времени цикла"),
     "c3_yes": Text("the gain falls below {0:.0f} % within 1 s of {1:g} s: the dynamic part "
@@ -131,12 +189,22 @@ _T = {
                         "(для различных манипуляторов)."),
     "c5_claim": Text("… and the dynamic components of the forces fall {0:g} times.",
                      ru="… а динамические составляющие усилий снижаются в {0:g} раза."),
-    "c4_model": Text("separate (the whole flow, V = Q/f) ÷ divider (V = Q/(2f)): (a) {0:.2f} "
-                     "(boom), {1:.2f} (stick); (b) {2:.2f}, {3:.2f}; the cycle takes {4:.2f} s "
-                     "with the divider, {5:.2f} s separate",
-                     ru="раздельное (весь поток, V = Q/f) ÷ с делителем (V = Q/(2f)): (а) "
-                        "{0:.2f} (стрела), {1:.2f} (рукоять); (б) {2:.2f}, {3:.2f}; цикл длится "
-                        "{4:.2f} с с делителем, {5:.2f} с раздельно"),
+    "c4_model": Text("separate (the whole flow, V = Q/f) ÷ divider (V = Q/(2f)), force in the "
+                     "fed direction: (a) {0:.2f} (boom), {1:.2f} (stick); (b) {2:.2f}, {3:.2f}; "
+                     "max |F|: (a) {4:.2f}, {5:.2f}; (b) {6:.2f}, {7:.2f}; the cycle takes "
+                     "{8:.2f} s with the divider, {9:.2f} s separate",
+                     ru="раздельное (весь поток, V = Q/f) ÷ с делителем (V = Q/(2f)), усилие в "
+                        "направлении питаемой полости: (а) {0:.2f} (стрела), {1:.2f} (рукоять); "
+                        "(б) {2:.2f}, {3:.2f}; max |F|: (а) {4:.2f}, {5:.2f}; (б) {6:.2f}, "
+                        "{7:.2f}; цикл длится {8:.2f} с с делителем, {9:.2f} с раздельно"),
+    "c4_old_yes": Text("; max |F| would agree", ru="; по max |F| согласовалось бы"),
+    "c4_old_no": Text("; max |F| would not agree", ru="; по max |F| не согласовалось бы"),
+    "c5_model": Text("separate (the whole flow, V = Q/f) ÷ divider (V = Q/(2f)), max |F_d|: "
+                     "(a) {0:.2f} (boom), {1:.2f} (stick); (b) {2:.2f}, {3:.2f}; the cycle "
+                     "takes {4:.2f} s with the divider, {5:.2f} s separate",
+                     ru="раздельное (весь поток, V = Q/f) ÷ с делителем (V = Q/(2f)), "
+                        "max |F_d|: (а) {0:.2f} (стрела), {1:.2f} (рукоять); (б) {2:.2f}, "
+                        "{3:.2f}; цикл длится {4:.2f} с с делителем, {5:.2f} с раздельно"),
     "c4_yes": Text("order {0}: both ratios within {1:g}–{2:g}", ru="порядок {0}: оба отношения "
                    "в пределах {1:g}–{2:g}"),
     "c4_no": Text("no order keeps both ratios within {0:g}–{1:g}: the gain depends on the "

@@ -24,8 +24,16 @@ speeds (:func:`assur.dynamics.cycles.drive_cycles`: through the divider against
 the whole flow to one cylinder at a time) — the forces' ratios of both cylinders
 must round into [1.16, 2.00], the dynamic parts' be about 4. The paper does not say in which
 order its separate motion runs: both orders are computed and a claim agrees when
-one of them does, which the verdict names. "Combined" is ``combined_equal``
-(eq. 60, V1 = V2); ``combined_ideal`` is tabulated and drawn beside it.
+one of them does, which the verdict names.
+
+The basis (:data:`BASIS`, stated in the report and in every verdict's text): the
+forces in the fed direction (:func:`assur.dynamics.cycles.fed_force`: the force the
+chamber fed for the stroke must produce; a push against the motion — the stick's
+braking at t = 0 — is held by the drained side, which the model does not feed)
+against ideal combined motion (``combined_ideal``, eq. 61: its cycle lasts T_c).
+Max |F| and combined motion with V1 = V2 (``combined_equal``, eq. 60: at "T_c = 6 s"
+its cycle lasts 7.8 s on ЛВ-184А) are reported beside, and a verdict that they would
+turn says so.
 
 ==================  ==============================================================
 figure              what
@@ -49,12 +57,12 @@ from ...dynamics.cycles import PERIODS, SCENARIOS, strokes, sweep
 from ...texts import localize
 from ._canvas import new_figure, titled_axes, to_png_bytes
 from ._cycles_text import _T, _t, verdict_word
-from ._cycles_verdicts import (ABOUT, EFFECTIVE, PAPER, SEPARATE, Verdict, _by, conclusions,
-                               drive_sweep, pump_conclusions)
+from ._cycles_verdicts import (ABOUT, BASIS, EFFECTIVE, EQUAL, PAPER, SEPARATE, Verdict, _by,
+                               conclusions, drive_sweep, pump_conclusions)
 from .labels import check_lang, unit
 from .tables import Column, Table, in_units, write_csv, write_frame_csv, write_xlsx
 
-__all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "Verdict", "conclusions",
+__all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "BASIS", "EQUAL", "Verdict", "conclusions",
            "drive_sweep", "pump_conclusions", "tables",
            "figures", "drive_speeds", "verdict_word", "write_cycles_report"]
 
@@ -64,8 +72,10 @@ KN = 1e3
 
 def tables(df, lang="en"):
     """The sweep as :class:`assur.views.report.tables.Table` objects: one per scenario
-    (T_c [s]; max |F|, |F_s|, |F_d| of both cylinders [N]; the duration [s]) and the
-    ratios separate ÷ combined (V1 = V2) of both orders.
+    (T_c [s]; max |F|, |F_s|, |F_d| and the max force in the fed direction of both
+    cylinders [N]; the duration [s]) and the ratios separate ÷ combined of both
+    orders: max |F| and |F_d| against V1 = V2 (eq. 60), the forces in the fed
+    direction and |F_d| against ideal combined motion (eq. 61, :data:`BASIS`).
 
     Examples
     --------
@@ -81,6 +91,8 @@ def tables(df, lang="en"):
     ('Max cylinder forces over the cycle: combined, V1 = V2 (eq. 60)', 17)
     >>> round(float(tabs[-1]["F1_max_a/comb"][2]), 3)  # at T_c = 6 s: +79 % [-]
     1.794
+    >>> round(float(tabs[-1]["F2_fed_a/ideal"][2]), 3)  # the stick, fed, eq. 61 [-]
+    1.251
     """
     check_lang(lang)
     out = []
@@ -90,7 +102,9 @@ def tables(df, lang="en"):
         lab[f"F{j}_max"] = (f"max |F{j}|", f"max |F{j}|")
         lab[f"Fs{j}_max"] = (f"max |F_s{j}|, static part", f"max |F_s{j}|, статическая")
         lab[f"Fd{j}_max"] = (f"max |F_d{j}|, dynamic part", f"max |F_d{j}|, динамическая")
-    cols = ("F1_max", "Fs1_max", "Fd1_max", "F2_max", "Fs2_max", "Fd2_max")
+        lab[f"F{j}_fed"] = (f"max F{j} in the fed direction",
+                            f"max F{j} в направлении питаемой полости")
+    cols = ("F1_max", "Fs1_max", "Fd1_max", "F1_fed", "F2_max", "Fs2_max", "Fd2_max", "F2_fed")
     for s in SCENARIOS:
         d = _by(df, s)
         columns = [Column("T", "s", d.index.to_numpy(dtype=float), dict(zip(("en", "ru"),
@@ -102,16 +116,22 @@ def tables(df, lang="en"):
         titles = {lg: localize(_T["table"], lg).format(localize(_T[f"scenario_{s}"], lg))
                   for lg in ("en", "ru")}
         out.append(Table(s, titles, tuple(columns)))
-    comb = _by(df, "combined_equal")
+    comb, ideal = _by(df, EQUAL), _by(df, BASIS)
     columns = [Column("T", "s", comb.index.to_numpy(dtype=float), dict(zip(("en", "ru"),
                                                                         lab["T"])))]
-    for s, tag in zip(SEPARATE, ("a", "b")):
-        d = _by(df, s)
-        for c in ("F1_max", "F2_max", "Fd1_max", "Fd2_max"):
-            columns.append(Column(f"{c}_{tag}/comb", "-", (d[c] / comb[c]).to_numpy(float),
-                                  {"en": f"{c} separate ({tag}) ÷ combined",
-                                   "ru": f"{c} раздельное ({'а' if tag == 'a' else 'б'}) ÷ "
-                                         f"совмещённое"}))
+    for base, name, ru, cs in ((comb, "comb", "совмещённое (ур. 60)",
+                                ("F1_max", "F2_max", "Fd1_max", "Fd2_max")),
+                               (ideal, "ideal", "идеальное совмещённое (ур. 61)",
+                                ("F1_fed", "F2_fed", "Fd1_max", "Fd2_max"))):
+        for s, tag in zip(SEPARATE, ("a", "b")):
+            d = _by(df, s)
+            for c in cs:
+                columns.append(Column(
+                    f"{c}_{tag}/{name}", "-", (d[c] / base[c]).to_numpy(float),
+                    {"en": f"{c} separate ({tag}) ÷ "
+                           + ("combined (eq. 60)" if name == "comb" else "ideal combined "
+                              "(eq. 61)"),
+                     "ru": f"{c} раздельное ({'а' if tag == 'a' else 'б'}) ÷ {ru}"}))
     out.append(Table("ratios", {lg: localize(_T["ratios"], lg) for lg in ("en", "ru")},
                      tuple(columns)))
     return out
@@ -240,7 +260,7 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
     >>> len(df), [p.name for p in files][-3:]  # 4 scenarios × 17 cycle times
     (68, ['cycles_ratios.csv', 'cycles_pump.csv', 'cycles_conclusions.csv'])
     >>> [v.key for v in verdicts if v.agrees]
-    ['boom_excess', 'dynamic_fall', 'pump_forces', 'pump_dynamic']
+    ['boom_excess', 'stick_excess', 'dynamic_fall', 'pump_forces', 'pump_dynamic']
     >>> write_cycles_report(io.load(io.bundled("hitch_003")), "unused")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -263,6 +283,10 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
     cols += [Column(c, "N", dd[c].to_numpy(float), {"en": f"max |{c[:-4]}|",
                                                      "ru": f"max |{c[:-4]}|"})
              for c in ("F1_max", "F2_max", "Fd1_max", "Fd2_max")]
+    cols += [Column(c, "N", dd[c].to_numpy(float),
+                    {"en": f"max {c[:-4]} in the fed direction",
+                     "ru": f"max {c[:-4]} в направлении питаемой полости"})
+             for c in ("F1_fed", "F2_fed")]
     tabs.append(Table("pump", {lg: localize(_T["pump_table"], lg) for lg in ("en", "ru")},
                       tuple(cols)))
     du = unit_system(model.mechanism, units)  # the tables, figures and texts shown in these
