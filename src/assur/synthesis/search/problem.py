@@ -40,6 +40,9 @@ __all__ = ["Variable", "Problem", "Batch", "FEASIBLE", "ASSEMBLY", "ENGINE", "LI
 #: designs per kernel call (bounds memory: q and status take 16 B per position)
 CHUNK = 1 << 16
 
+#: designs per block of :meth:`Problem.draw` (one random stream per block)
+BLOCK = 4096
+
 
 @dataclass(frozen=True)
 class Variable:
@@ -113,8 +116,13 @@ class Problem:
     name : str, optional
     source : tuple, optional
         How to rebuild the problem in another process (``(function, args)``, set by
-        :func:`assur.io.load_problem`): a problem made from a file pickles as
-        that recipe, so Dask workers rebuild it instead of receiving compiled kernels.
+        :func:`assur.io.load_problem`: the model's content, not its path): a problem
+        made from a file pickles as that recipe, so Dask workers rebuild it instead of
+        receiving compiled kernels.
+    identity : str, optional
+        What identifies the recipe (the hash of the model's content, the variables, the
+        positions), recorded in a sweep's manifest so that ``--resume`` continues only
+        the same problem; default: a hash of the names, bounds and positions.
     chunk : int
         Designs per kernel call.
     polish : bool
@@ -135,8 +143,9 @@ class Problem:
     """
 
     def __init__(self, mechanism, positions, variables, constraints=(), objectives=(), *,
-                 name=None, source=None, chunk=CHUNK, polish=True):
+                 name=None, source=None, chunk=CHUNK, polish=True, identity=None):
         self.variables = tuple(variables)
+        self._identity = identity
         self.polish = bool(polish)
         self.constraints = tuple(constraints)
         self.objectives = tuple(objectives)
@@ -260,6 +269,62 @@ class Problem:
         rng = np.random.default_rng(seed)
         lo, hi = self.bounds.T
         return lo + (hi - lo) * rng.random((int(m), len(self.variables)))
+
+    def draw(self, seed, start, stop) -> np.ndarray:
+        """Designs ``start`` … ``stop − 1`` of the sequence of seed ``seed``, drawn
+        uniformly within the bounds, shape (stop − start, number of variables) [SI].
+
+        Design ``i`` is the same whatever range it is drawn in: the sequence is made of
+        blocks of :data:`BLOCK` designs, block ``k`` drawn by its own generator
+        ``default_rng([seed, k])`` — so a Dask worker draws its chunk from (seed, range)
+        and a sweep's results do not depend on how it was cut into tasks.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> X = pb.draw(1, 0, 10_000)
+        >>> X.shape, bool((pb.draw(1, 4000, 4100) == X[4000:4100]).all())
+        ((10000, 8), True)
+        >>> bool(((X >= pb.bounds[:, 0]) & (X <= pb.bounds[:, 1])).all())
+        True
+        """
+        start, stop = int(start), int(stop)
+        if not 0 <= start <= stop:
+            raise ModelError(f"designs {start} … {stop}: expected 0 ≤ start ≤ stop")
+        lo, hi = self.bounds.T
+        nv = len(self.variables)
+        out = np.empty((stop - start, nv))
+        for k in range(start // BLOCK, -(-stop // BLOCK)):
+            a, b = max(start, k * BLOCK), min(stop, (k + 1) * BLOCK)
+            u = np.random.default_rng([int(seed), k]).random((b - k * BLOCK, nv))
+            out[a - start:b - start] = lo + (hi - lo) * u[a - k * BLOCK:]
+        return out
+
+    @property
+    def identity(self) -> str:
+        """What identifies this problem in a sweep's manifest (hex): the recipe's
+        (the model's content hash, the variables, the positions) when made from a
+        file, else a hash of the variables' names and bounds and of the positions.
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> a = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> b = load_problem(io.bundled("hitch_003_design"), positions=7)
+        >>> len(a.identity), a.identity != b.identity
+        (64, True)
+        """
+        if self._identity is None:
+            import hashlib
+            h = hashlib.sha256(repr((self.name, self.names)).encode("utf-8"))
+            h.update(np.ascontiguousarray(self.bounds).tobytes())
+            h.update(np.ascontiguousarray(self.positions).tobytes())
+            self._identity = h.hexdigest()
+        return self._identity
 
     def with_design(self, x):
         """The mechanism with the variables set to ``x`` [SI] (the original one's
