@@ -14,19 +14,48 @@ Formulas (SI: m, N, Pa):
 * chamber areas: piston side A_p = π·(D² − d2²)/4 (d2 = 0 but for a double-rod
   cylinder), rod side A_r = π·(D² − d²)/4;
 * the pressurised chamber and its sign σ: +1 for the piston side (the cylinder
-  pushes), −1 for the rod side (it pulls); ``side = "auto"`` picks, at each
-  position, the chamber that gives the force the loads need (σ = sign F);
+  pushes), −1 for the rod side (it pulls); for the pressure p, ``side = "auto"``
+  picks, at each position, the chamber that holds the loads there (σ = sign F);
+* the working direction of a stroke and its chamber σ_w (capacity and reserve):
+  the way the cylinder moves to do the work — to lift the payload. Declared:
+  ``side = "piston"`` (σ_w = +1, the cylinder extends, its piston side pushes) or
+  ``"rod"`` (σ_w = −1, it retracts, its rod side pulls). ``"auto"``: once per
+  stroke (per design), never per position, from the sign of the payload's virtual
+  work along the stroke, W = Σ_i F_pay(q_i) over the stroke's positions, F_pay the
+  actuator force of the loads that are not dead loads (:func:`stroke_work`);
+  σ_w = +1 where W ≥ 0. A payload whose force changes sign along the stroke (a
+  Z-bar bucket near the top of the lift) does not switch the chamber;
 * largest working pressure p_max = p_relief − (Δp_throttle + Δp_line)
   (seed 001 lab 1 eq. 1);
 * pressure p = σ·F/(η_m·k·A·η_h), F the actuator force of the loads by virtual
   work (seed 003: Pgc = Fgc/(k_gc·S_gc·η); seed 000: FS = P·Is/km), positive
   when the pressurised chamber holds the loads;
 * available force F_max = k·p_max·A·η_h (seed 000: Fmax = p·SS·kg, there in kgf);
-* lift capacity at a point, the vertical load the cylinders hold at p_max:
-  G = (σ·F_max·η_m − F_dead)/I with I = ∂Y/∂q of the point and F_dead the actuator
-  force of the dead loads (seed 003: G56 = k·p·η·S_gc/I56, GS6 with IS6; seed 001
-  lab 1 eqs. 8–10, 14 with the boom's weight);
-* capacity reserve ΔG = (G − P)/P·100 % (seed 003 ΔGS65);
+* lift capacity at a point, the vertical (downward) load the cylinders lift or
+  hold there at p_max in the working direction:
+  G = (σ_w·F_max,w·η_m − F_dead)/I with F_max,w the available force of the working
+  chamber, I = ∂Y/∂q of the point and F_dead the actuator force of the dead loads
+  (seed 003: G56 = k·p·η·S_gc/I56, GS6 with IS6; seed 001 lab 1 eqs. 8–10, 14 with
+  the boom's weight). G is positive for a pushing and for a pulling cylinder alike:
+  a pulling cylinder lifts the point as it shortens (I < 0, σ_w = −1);
+* capacity reserve ΔG = (G − P)/P·100 % against the payload P alone (seed 003
+  ΔGS65): G has already paid for the dead loads, so P is never a dead load.
+
+Signs, on a lever pivoted at O with the payload P at its tip T (q the cylinder's
+pin-to-pin length, I = ∂Y_T/∂q)::
+
+    pushing (extend, σ_w = +1)            pulling (retract, σ_w = −1)
+
+          O━━━━━━━━━A━━━━━━━━━T                      B (base)
+                    ║ ↑ p·A_piston    ↓P             ║ ↑ p·A_rod
+                    ║                                ║
+                    B (base)              O━━━━━━━━━━A━━━━━━━━━T
+                                                                ↓P
+    I > 0: T rises as q grows             I < 0: T rises as q shrinks
+    G = (+F_max,p·η_m − F_dead)/I > 0     G = (−F_max,r·η_m − F_dead)/I > 0
+
+With equal areas (A_piston of the pusher = A_rod of the puller) the two mirror
+images have the same capacity at the same cylinder length.
 * cylinders on one supply line share one pressure, by virtual work with every
   cylinder of the line as an actuator: p·Σ σ_i·k_i·A_i·η_h,i·∂L_i/∂q = F/η_m
   (seed 001 lab 4 eq. 15), L_i the cylinder's length (q itself for the driving
@@ -46,8 +75,8 @@ from typing import Callable, ClassVar, Union
 import numpy as np
 
 __all__ = ["Cylinder", "CylinderTerms", "piston_area", "chamber_area", "terms", "chamber_sign",
-           "working_area", "pressure", "force_max", "capacity", "reserve", "line_area",
-           "line_pressure", "select_array"]
+           "working_area", "pressure", "force_max", "stroke_work", "capacity", "reserve",
+           "line_area", "line_pressure", "select_array"]
 
 Ref = Union[str, float, int]
 
@@ -97,9 +126,13 @@ class Cylinder:
         Pressure losses at the throttle and in the line [Pa]; the largest working
         pressure is p_max = p_relief − (Δp_throttle + Δp_line) (001 lab 1 eq. 1).
     side : {"piston", "rod", "auto"}
-        Which chamber is pressurised: piston area π·(D² − d2²)/4 (pushes) or annulus
-        π·(D² − d²)/4 (pulls); ``"auto"``: the one that gives the force the loads
-        need at each position (a double-rod cylinder steering either way).
+        Which chamber is pressurised, i.e. the working direction of the stroke:
+        ``"piston"`` — the cylinder extends to do the work, its piston area
+        π·(D² − d2²)/4 pushes; ``"rod"`` — it retracts, the annulus π·(D² − d²)/4
+        pulls; ``"auto"`` — for the pressure, the chamber that gives the force the
+        loads need at each position (a double-rod cylinder steering either way); for
+        the capacity and reserve, the working chamber of the stroke from the sign of
+        the payload's virtual work along it (:func:`stroke_work`).
 
     Examples
     --------
@@ -344,12 +377,48 @@ def force_max(t: CylinderTerms, F, select: Callable, p=None):
     return t.count * p * working_area(t, F, select) * t.eta_hyd
 
 
-def capacity(t: CylinderTerms, F, F_dead, I, select: Callable, p=None):
-    """Lift capacity at a point, G = (σ·F_max·η_m − F_dead)/I [N]: the vertical load at
-    the point the cylinders hold at pressure ``p`` (default p_max), I = ∂Y/∂q of the
-    point along the cylinder's coordinate, F_dead the actuator force of the dead
-    loads (0 for none), F the actuator force of all the loads (it picks the chamber
-    of ``side = "auto"``).
+def stroke_work(F_payload, F, axis=-1):
+    """W: the payload's actuator force summed over the positions of a stroke [N] —
+    its virtual work along the stroke per unit step — whose sign is the working
+    direction of a ``side = "auto"`` cylinder (W ≥ 0: extend, the piston side works;
+    W < 0: retract, the rod side). Without a payload (W = 0: only dead loads, or no
+    loads) the sum of all the loads' force F decides. Over numpy arrays whose
+    ``axis`` holds the positions of one stroke (kept, of length 1).
+
+    Parameters
+    ----------
+    F_payload : array_like
+        Actuator force of the loads that are not dead loads, F − F_dead [N], over the
+        positions.
+    F : array_like
+        Actuator force of all the loads [N], same shape.
+    axis : int
+        The positions' axis.
+
+    Examples
+    --------
+    A payload whose force changes sign near the end of the stroke (a Z-bar bucket
+    passing over its pivot): one working direction for the whole stroke.
+
+    >>> from assur.core.cylinders import stroke_work
+    >>> stroke_work([[900.0, 400.0, -200.0]], [[1000.0, 500.0, -100.0]]).tolist()   # [N]
+    [[1100.0]]
+    >>> stroke_work([[0.0, 0.0]], [[-50.0, -70.0]]).tolist()   # dead loads only [N]
+    [[-120.0]]
+    """
+    wp = np.sum(np.asarray(F_payload, float), axis=axis, keepdims=True)
+    wa = np.sum(np.asarray(F, float), axis=axis, keepdims=True)
+    return np.where(wp != 0.0, wp, wa)
+
+
+def capacity(t: CylinderTerms, W, F_dead, I, select: Callable, p=None):
+    """Lift capacity at a point in the working direction, G = (σ_w·F_max,w·η_m −
+    F_dead)/I [N]: the vertical load at the point the cylinders lift (or hold) at
+    pressure ``p`` (default p_max) with the chamber of the stroke's working direction
+    σ_w, I = ∂Y/∂q of the point along the cylinder's coordinate, F_dead the actuator
+    force of the dead loads (0 for none). W decides the working chamber of
+    ``side = "auto"`` (:func:`stroke_work`, one value per stroke); a declared side
+    ignores it.
 
     Examples
     --------
@@ -361,13 +430,24 @@ def capacity(t: CylinderTerms, F, F_dead, I, select: Callable, p=None):
     >>> t = terms(m.cylinders[0], m.value_of)
     >>> round(float(capacity(t, 1.0, 0.0, 4.7133, select_array)))   # GS6 [N]
     31354
+
+    A pulling cylinder (``side = "rod"``, D = 80 mm, d = 40 mm, one cylinder at
+    17.5 MPa): the point rises as it shortens, I < 0, and the capacity is positive:
+
+    >>> from assur.core.cylinders import Cylinder
+    >>> pull = terms(Cylinder("pull", coordinate="S", bore=0.08, rod=0.04, side="rod",
+    ...                       p_relief=17.5e6), float)
+    >>> round(float(capacity(pull, 0.0, 0.0, -2.0, select_array)))  # F_max,r/|I| [N]
+    32987
     """
-    s = chamber_sign(t, F, select)
-    return (s * force_max(t, F, select, p) * t.eta_mech - F_dead) / I
+    s = chamber_sign(t, W, select)
+    return (s * force_max(t, W, select, p) * t.eta_mech - F_dead) / I
 
 
 def reserve(G, P):
-    """Capacity reserve ΔG = (G − P)/P·100 [%] for a load P [N] (seed 003 ΔGS65).
+    """Capacity reserve ΔG = (G − P)/P·100 [%] for a payload P [N] (seed 003 ΔGS65):
+    G (:func:`capacity`) has already carried the dead loads, so P is the payload
+    alone, never a dead load.
 
     Examples
     --------

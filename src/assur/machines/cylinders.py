@@ -7,6 +7,10 @@ quantities, which the outputs kernel, the design criteria, the sensitivities and
 lift test call too — evaluated on the analysis' arrays: the actuator force F of the
 loads by virtual work, the transmission numbers I = ∂Y/∂q and the actuator force of
 the dead loads.
+
+The pressure is that of the chamber holding the loads at each position; the capacity
+and reserve are in the working direction of the stroke, the same chamber at every
+position of it (:mod:`assur.core.cylinders`, its sign diagram).
 """
 
 from __future__ import annotations
@@ -128,9 +132,11 @@ class CylinderResult:
         return self.force_required / C.force_max(t, self.force, C.select_array)
 
     def capacity(self, point, dead_loads=None, pressure=None):
-        """Lift capacity at ``point``: the vertical load [N] the cylinders hold there at
-        p_max, G = (σ·F_max·η_m − F_dead)/I(point), I = ∂Y/∂q along this cylinder's
-        coordinate q (:func:`assur.core.cylinders.capacity`).
+        """Lift capacity at ``point`` in the working direction: the vertical load [N] the
+        cylinders lift (or hold) there at p_max, G = (σ_w·F_max,w·η_m − F_dead)/I(point),
+        I = ∂Y/∂q along this cylinder's coordinate q, σ_w and F_max,w of the working
+        chamber (:attr:`working_sign`, :func:`assur.core.cylinders.capacity`); positive
+        for a pulling cylinder as for a pushing one.
 
         Parameters
         ----------
@@ -181,17 +187,63 @@ class CylinderResult:
             raise SingularPositionError(f"capacity at {point!r}: its transmission number is 0 "
                                         f"at {int(bad.sum())} position(s) (the point does not "
                                         f"rise there)")
-        fdead = 0.0
-        if dead_loads is not None:
-            from ..core.statics import virtual_work_forces
-            kd = _with_loads(kin, dead_loads)
-            g = kin.mechanism.g if self.g is None else self.g
-            f = virtual_work_forces(kd, g=g)[self.cylinder.coordinate]
-            fdead = kin.reshape(np.broadcast_to(f, (kin.m, kin.n)))
-        return C.capacity(self.terms, self.force, fdead, I, C.select_array, p=pressure)
+        fdead = self._dead_force(dead_loads)
+        return C.capacity(self.terms, self.stroke_load, fdead, I, C.select_array, p=pressure)
+
+    def _dead_force(self, dead):
+        """Actuator force of the loads of mechanism ``dead`` along this cylinder's
+        coordinate [N], in the kinematics' shape (0.0 for None)."""
+        if dead is None:
+            return 0.0
+        from ..core.statics import virtual_work_forces
+        kin = self.kinematics
+        g = kin.mechanism.g if self.g is None else self.g
+        f = virtual_work_forces(_with_loads(kin, dead), g=g)[self.cylinder.coordinate]
+        return kin.reshape(np.broadcast_to(f, (kin.m, kin.n)))
+
+    @property
+    def stroke_load(self):
+        """W, the payload's actuator force summed over the positions of each design's
+        stroke [N] (:func:`assur.core.cylinders.stroke_work`): its sign is the working
+        direction of a ``side = "auto"`` cylinder — one chamber for the capacity at
+        every position — in the kinematics' shape. The payload: the model's loads but
+        its dead loads (``[tables] dead_loads``).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> cyl = examples.hitch_003().analyze([0.42, 0.67]).cylinder("ГЦ")
+        >>> [round(float(w)) for w in cyl.stroke_load]     # Fgc(0.42) + Fgc(0.67) [N]
+        [265266, 265266]
+        """
+        from .capacity import dead_load_mechanism
+        kin = self.kinematics
+        F = np.broadcast_to(np.asarray(self.force, float).reshape(kin.m, kin.n), (kin.m, kin.n))
+        fd = self._dead_force(dead_load_mechanism(kin.mechanism))
+        fd = np.broadcast_to(np.reshape(fd, (kin.m, kin.n)) if np.ndim(fd) else fd, F.shape)
+        W = C.stroke_work(F - fd, F, axis=1)
+        return kin.reshape(np.broadcast_to(W, (kin.m, kin.n)))
+
+    @property
+    def working_sign(self):
+        """σ_w of the working direction: +1 the cylinder extends to do the work (its
+        piston side), −1 it retracts (its rod side) — declared by ``side``, or for
+        ``"auto"`` from :attr:`stroke_load`; the kinematics' shape (a number for a
+        declared side).
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> examples.hitch_003().analyze([0.42, 0.67]).cylinder("ГЦ").working_sign
+        1.0
+        """
+        if self.cylinder.side != "auto":
+            return C.chamber_sign(self.terms, 1.0, C.select_array)
+        return C.chamber_sign(self.terms, self.stroke_load, C.select_array)
 
     def reserve(self, point, P):
-        """Capacity reserve (G − P)/P·100 [%] for a load P [N] at the point (003 ΔGS65).
+        """Capacity reserve (G − P)/P·100 [%] for a payload P [N] at the point (003 ΔGS65):
+        G, in the working direction, has carried the model's dead loads already.
 
         Examples
         --------

@@ -17,8 +17,8 @@ from the model (the frame's load point is a point of the model file, e.g. a
 * the force available at a point P, G_P = (σ·F·η_m − F_dead)/I_P [N] (virtual work:
   the vertical force at P that the cylinder force balances), with I_P = dY_P/dS —
   the lift capacity of :func:`assur.core.cylinders.capacity`, the same formula as
-  the reports' and the design criteria's, with the model's chamber (``side``,
-  ``"auto"`` included), counts and dead loads (``[tables] dead_loads``: the hitch's
+  the reports' and the design criteria's, with the working chamber of the model's
+  ``side`` (``"auto"``: of the test's stroke), counts and dead loads (``[tables] dead_loads``: the hitch's
   own links, which a test stand lifts too).
 
 The mechanism's other loads (the implement's weight) are not part of the test: it
@@ -299,7 +299,9 @@ def lift_test(mech, test: LiftTest, s_range, iterations=50) -> LiftTestResult:
     res = CylinderResult(kin, statics_solve(kin), cyl)
     pressure = test.pressure_share * float(np.ravel(np.asarray(mech.value_of(cyl.p_relief),
                                                                float))[0])
-    force = C.force_max(res.terms, res.force, C.select_array, pressure)
+    # the working chamber's force: the one the capacities below use (side = "auto": of
+    # the stroke's working direction, CylinderResult.stroke_load)
+    force = C.force_max(res.terms, res.stroke_load, C.select_array, pressure)
     force = float(force) if np.ndim(force) == 0 else np.ravel(force)
 
     def available(point):

@@ -354,6 +354,8 @@ class OutputContext(ReactionContextBase):
             return centre_of_mass(masses, self.value, self.point)[fn == "Yc"]
         if fn == "formula":
             return formula_of(self.mech, args[0]).compute(self.formula_terms())
+        if fn == "Fdead":  # internal (no output's text names it): W's first pass
+            return -self.vw_dead[self.mech.coordinates.index(args[0])]
         if fn in ("F", "Fr"):
             if args[0] not in self.mech.coordinates:
                 raise ModelError(f"output {fn}({args[0]}): not a coordinate "
@@ -399,11 +401,32 @@ class OutputContext(ReactionContextBase):
             return C.pressure(t, F, self.select)  # seed 003: Pgc = Fgc/(k_gc·S_gc·η)
         if not self.has_point(args[1]):
             raise ModelError(f"output {fn}(…): unknown point {args[1]!r}")
-        G = C.capacity(t, F, -self.vw_dead[j], self.jet(args[1], j)[1],
+        # in the working direction of the stroke: W decides side = "auto"'s chamber once
+        # per stroke (assur.core.cylinders.stroke_work)
+        W = self.stroke_load(c) if c.side == "auto" else 1.0
+        G = C.capacity(t, W, -self.vw_dead[j], self.jet(args[1], j)[1],
                        self.select)  # seed 003 G56, GS6
         if fn == "G":
             return G
         return C.reserve(G, self.value(args[2] if not _is_float(args[2]) else float(args[2])))
+
+    def stroke_load(self, cyl):
+        """W of a ``side = "auto"`` cylinder ``cyl``: its payload's actuator force summed
+        over the positions of each design's stroke [N]
+        (:func:`assur.core.cylinders.stroke_work`), one value per design — a
+        subclass's: the fused kernel reads it from its parameter table (computed by a
+        first pass over the positions), the dual numbers sum their values.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.synthesis.sensitivity import jet_context
+        >>> m = examples.steering_lab4_modern()
+        >>> ctx = jet_context(m, [0.0, 0.02])                # S [m]
+        >>> ctx.stroke_load(m.cylinders[0]).shape            # one per design
+        (1, 1)
+        """
+        raise NotImplementedError
 
     def line_pressure(self, line):
         """Pressure of supply line ``line`` [Pa] (:func:`assur.core.cylinders.line_pressure`,

@@ -15,7 +15,8 @@ from ...kernel import run as KR
 from ...kernel import vector as KV
 from ...kernel.source import CHUNK
 from .. import diagnostics
-from ._kernel import _kernel, _literals, joint_list
+from .. import cylinders as C
+from ._kernel import _kernel, _literals, joint_list, stroke_cylinders, stroke_key
 from ._notation import REDUCTIONS, output_unit, resolve_output
 
 class Fused:
@@ -224,6 +225,7 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     plan = m_.memo(("outputs", "plan", specs, bool(reduce), g), lambda: _plan(m_, specs, reduce, g))
     per_pos = 8.0 * (m_.program().k + 2 + (0 if reduce else len(specs)))
     qarr, shape, m, n = m_.coordinate_array(q, plan[1].shape[1], per_pos)
+    plan = _with_strokes(m_, specs, plan, qarr, m, n, g)
     out, red, status, ptab = _run(m_, plan, qarr, m, n, len(specs), reduce)
     E = qarr.shape[1]
     failed = status >= 0
@@ -246,6 +248,33 @@ def evaluate(mech, q, params=None, outputs=(), *, reduce=False, on_failure="rais
     if not np.isfinite(out).all():  # one pass; name the output only when one is not
         _check_finite(vals, "value")
     return Fused(outputs, units, vals, None, ~failed.reshape(shape), nfail, shape)
+
+
+def _with_strokes(mech, specs, plan, qarr, m, n, g):
+    """The plan with the W of each ``side = "auto"`` cylinder whose capacity or reserve
+    is asked for written into its parameter-table row, one value per design: a first
+    kernel pass gives the actuator forces of all the loads and of the dead loads at
+    every position, summed over each design's positions by
+    :func:`assur.core.cylinders.stroke_work` (failed positions count 0). The plan
+    itself when no such output is asked for."""
+    autos = [c for c in stroke_cylinders(mech)
+             if any(fn in ("G", "reserve") and args[0] == c.name for fn, args in specs)]
+    if not autos:
+        return plan
+    pre = tuple(s_ for c in autos for s_ in (("F", (c.coordinate,)), ("Fdead", (c.coordinate,))))
+    pplan = mech.memo(("outputs", "plan", pre, False, g), lambda: _plan(mech, pre, False, g))
+    out = _run(mech, pplan, qarr, m, n, len(pre))[0].reshape(len(pre), m, n)
+    kernels, ptab, trig, pose_failures = plan
+    if ptab.shape[1] == 1 and m > 1:
+        ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
+    else:
+        ptab = ptab.copy()
+    rows, values = _literals(mech, g, 0)
+    offset = ptab.shape[0] - len(values)
+    for i, c in enumerate(autos):
+        F, Fd = out[2 * i], out[2 * i + 1]
+        ptab[offset + rows[stroke_key(c.name)]] = C.stroke_work(F - Fd, F, axis=1)[:, 0]
+    return kernels, np.ascontiguousarray(ptab), np.ascontiguousarray(trig), pose_failures
 
 
 def _reductions(red, outputs, m, n):

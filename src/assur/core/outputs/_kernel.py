@@ -76,6 +76,11 @@ class _Fused(OutputContext):
             return a if x >= 0 else b
         return self.t.new(f"{code(a)} if {x.name} >= 0.0 else {code(b)}")
 
+    def stroke_load(self, cyl):
+        """W of an ``auto`` cylinder: a row of the parameter table, one value per design,
+        that :func:`assur.core.outputs.evaluate` fills from a first pass."""
+        return self.t.sym(f"params[{self.literal_rows[stroke_key(cyl.name)]}, d]")
+
 
 _G = "__gravity__"
 
@@ -86,9 +91,23 @@ def _valued(mech):
     return tuple(mech.loads) + tuple(mech.cylinders)
 
 
+def stroke_key(name):
+    """The key of the parameter-table row of ``auto`` cylinder ``name``'s W."""
+    return ("stroke", name)
+
+
+def stroke_cylinders(mech):
+    """The cylinders whose capacity needs W, one value per design: ``side = "auto"``,
+    driving a coordinate, on no supply line."""
+    return tuple(c for c in mech.cylinders
+                 if c.side == "auto" and c.coordinate is not None and c.supply is None)
+
+
 def _literals(mech, g, n0):
-    """Rows (from ``n0``) of gravity and of every number the loads and cylinders give,
-    and their values: ``({value or _G: row}, [values])`` in a fixed order."""
+    """Rows (from ``n0``) of gravity, of every number the loads and cylinders give and
+    of the W of each ``auto`` cylinder (:func:`stroke_key`; 1.0 until a first pass
+    fills it), and their values: ``({value, _G or key: row}, [values])`` in a fixed
+    order."""
     rows, values = {_G: n0}, [float(g)]
     for ld in _valued(mech):
         for f in dataclasses.fields(ld):
@@ -96,6 +115,9 @@ def _literals(mech, g, n0):
             if is_number(v) and float(v) not in rows:
                 rows[float(v)] = n0 + len(values)
                 values.append(float(v))
+    for c in stroke_cylinders(mech):
+        rows[stroke_key(c.name)] = n0 + len(values)
+        values.append(1.0)
     return rows, values
 
 
@@ -178,7 +200,7 @@ def _element_lines(mech, prog, specs, g):
         group_type(row[0]).emit(E, i, tuple(row[1:]))
     ctx = _traced_context(mech, prog, Tracer(E), g)
     fns = {fn for fn, _ in specs}
-    if fns & {"F", "Fr", "Rx", "Ry", "R", "Rm", "p", "G", "reserve"}:
+    if fns & {"F", "Fdead", "Fr", "Rx", "Ry", "R", "Rm", "p", "G", "reserve"}:
         ctx.apply_loads()
     if fns & {"Fr", "Rx", "Ry", "R", "Rm"}:
         _reverse(ctx)

@@ -67,6 +67,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...errors import ModelError
+from ...core import cylinders as C
 from ...core.outputs import OutputContext, output_unit, resolve_output
 from ...groups.base import is_number, signed_name
 from .dual import Dual, base, variables, where
@@ -153,6 +154,12 @@ class _JetContext(OutputContext):
 
     def select(self, x, a, b):
         return where(base(x) >= 0, a, b)
+
+    def stroke_load(self, cyl):
+        j = self.mech.coordinates.index(cyl.coordinate)
+        F = np.broadcast_to(base(-self.vw[j]), self.size)
+        Fd = np.broadcast_to(base(-self.vw_dead[j]), self.size)
+        return C.stroke_work(F - Fd, F, axis=-1)   # a constant: W only picks a chamber
 
 
 @dataclass(frozen=True)
