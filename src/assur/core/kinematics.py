@@ -90,6 +90,10 @@ class Kinematics(Analogs, Transfer, KinematicChecks):
         True where the mechanism assembled.
     failures : list of str
         Messages of failed elements when solved with ``on_failure="report"``.
+    path : HeldPath or None
+        The held path the positions lie on (:mod:`assur.core.held`; set by
+        :meth:`assur.io.Model.analyze` for a ``[range]`` with held coordinates): its
+        transmission numbers along the path are tabulated too. None otherwise.
 
     Examples
     --------
@@ -111,6 +115,7 @@ class Kinematics(Analogs, Transfer, KinematicChecks):
         self.shape = tuple(shape)
         self.ok = ok
         self.failures = []
+        self.path = None
         # the index of each point and scalar among the outputs (shared, read only)
         self._pidx = raw.get("pidx") or {p: i for i, p in enumerate(raw["out_pts"])}
         self._sidx = raw.get("sidx") or {s: i for i, s in enumerate(raw["out_sca"])}
@@ -321,6 +326,14 @@ class Kinematics(Analogs, Transfer, KinematicChecks):
         [0.666, 0.484]
         >>> [round(float(v), 1) for v in f["phi6"].iloc[[0, -1]]]  # table 2.1 [°]
         [88.5, 110.3]
+
+        Along a held path (:mod:`assur.core.held`) the transmission numbers along the
+        path, ``I<point>_path`` = dY/ds, come with the partial ones:
+
+        >>> from assur import io
+        >>> f = io.load(io.bundled("loader_lab1_level")).analyze().kinematics.to_frame()
+        >>> [c for c in f.columns if c.startswith("IS9")]
+        ['IS9_S', 'IS9_S1', 'IS9_path']
         """
         import pandas as pd
 
@@ -360,6 +373,8 @@ class Kinematics(Analogs, Transfer, KinematicChecks):
         for p in tab.get("transmissions", ()):
             for sfx, w in zip(suffixes, wrts):
                 cols[f"I{p}{sfx}"] = self.transmission(p, wrt=w).ravel()
+            if self.path is not None:   # along a held path: dY/ds with the held following
+                cols[f"I{p}_path"] = self.path.transmission(self, p).ravel()
         index = None
         if len(self.shape) == 2 or self.m > 1:
             index = pd.MultiIndex.from_product([range(self.m), range(self.n)],

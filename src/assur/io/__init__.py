@@ -99,7 +99,12 @@ class Model:
     paired : bool
         True when ``[range] paired = true``: the coordinates move together, position
         i of each with position i of the others (``range`` has shape (n, k)), not
-        over their full grid.
+        over their full grid; also for a held path.
+    path : HeldPath or None
+        A ``[range]`` with held coordinates (``S1 = { hold = "phi9", equals = …,
+        within = […] }``): the held coordinates solved at every position of the one
+        given, and the path's derivatives dq/ds, d²q/ds² (:mod:`assur.core.held`);
+        None otherwise.
 
     Examples
     --------
@@ -126,6 +131,7 @@ class Model:
     simulation: object = None
     design: object = None
     tolerances: tuple = ()
+    path: object = None
 
     @property
     def shape(self) -> tuple:
@@ -189,7 +195,14 @@ class Model:
         import dataclasses
 
         from ..analysis import add_dynamics, add_lift_test
-        analysis = self.mechanism.analyze(self.range)
+        rates = self.path.motion_rates(self.mechanism) if self.path is not None else None
+        if rates is None:
+            analysis = self.mechanism.analyze(self.range)
+        else:  # a rod moving along a held path: the held coordinates follow (q̇ = q'·ṡ)
+            analysis = self.mechanism.analyze(self.range, qdot=rates[0], qddot=rates[1])
+            analysis.notes.append(rates[2])
+        if self.path is not None:
+            analysis.kinematics.path = self.path
         spec = self.dynamics
         if not balancing and spec is not None and spec.counter_masses:
             spec = dataclasses.replace(spec, counter_masses=())
@@ -367,7 +380,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
                  tuple(builder.warnings), builder.lift_test, builder.paired, builder.drive,
-                 builder.simulation, design, tuple(builder.tolerances))
+                 builder.simulation, design, tuple(builder.tolerances), builder.path)
 
 
 def _warn(model: Model) -> Model:

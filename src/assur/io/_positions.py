@@ -133,11 +133,81 @@ class Conditions:
         except ModelError as e:
             raise self.error(paths[0], str(e)) from None
 
+    def held(self):
+        """The coordinates of ``[range]`` held by a condition (``hold``/``equals``)."""
+        return [c for c in self.coords if self.spec.range[c].hold is not None]
+
+    def unit_of(self, v, kind):
+        """The unit a value was written in (a parameter's: its own), for messages."""
+        p = parse(v)
+        if isinstance(p, str):
+            return self.units.get(signed_name(p) or p)
+        return display_unit(p, kind)
+
+    def held_path(self, mech, axes):
+        """The held coordinates solved at every position of the one coordinate given
+        (:func:`assur.core.held.hold_path`), a failure reported at its ``hold`` key."""
+        from ..core.held import Hold, hold_path
+        held = self.held()
+        free = [c for c in self.coords if c not in held]
+        if len(free) != 1:
+            raise self.error(("range", held[0], "hold"),
+                             f"a held coordinate needs a path: one coordinate given by from/to "
+                             f"or values and every other one held; given "
+                             f"{', '.join(free) or 'none'}")
+        if "design" in self.data:
+            raise self.error(("range", held[0], "hold"),
+                             "[design] evaluates the positions of [range] through the fused "
+                             "kernel with every coordinate given; a held coordinate is not "
+                             "supported there yet (give S1's values, or remove [design])")
+        along = free[0]
+        quantities = self.quantities(mech)
+        holds = []
+        for c in held:
+            r, rp = self.spec.range[c], ("range", c)
+            target = self.resolved[rp + ("equals",)]
+            if isinstance(target, str):
+                shown = self.units.get(signed_name(target) or target)
+                target = ref_value(mech.params, target)
+            else:
+                shown = display_unit(parse(r.equals), quantities.get(r.hold))
+            kind = self.kind_of_coordinate(c)
+            within = tuple(float(ref_value(mech.params, self.resolved[rp + ("within", k)]))
+                           for k in range(2))
+            if not within[0] < within[1]:
+                raise self.error(rp + ("within",), f"expected [low, high] with low < high, "
+                                                   f"found {S.show(list(r.within))}")
+            line = self.line(rp + ("hold",))
+            file = getattr(line, "file", None) or self.file
+            holds.append(Hold(c, r.hold, float(target), within, unit=shown,
+                              coordinate_unit=self.unit_of(r.within[0], kind),
+                              source=f"{file}:{int(line)}"))
+        ar = self.spec.range[along]
+        aunit = self.unit_of(ar.values[0] if "values" in ar.model_fields_set else ar.from_,
+                             self.kind_of_coordinate(along))
+        try:
+            check_memory(axes[along].size * 41, bytes_per_position(mech),
+                         "the scan of the held coordinate's limits (41 samples a position)")
+        except ModelError as e:
+            raise self.error(("range", held[0], "hold"), str(e)) from None
+        try:
+            path = hold_path(mech, along, axes[along], holds, along_unit=aunit)
+        except (AssemblyError, ModelError) as e:
+            msg = str(e)
+            i = next((k for k, h in enumerate(holds) if f"({h.source})" in msg), 0)
+            raise self.error(("range", held[i], "hold"),
+                             msg.replace(f" ({holds[i].source})", "")) from None
+        return path
+
     def positions(self, mech):
         params = mech.params
         axes = {}
         counts = {}
+        held = self.held()
+        self.path = None
         for c in self.coords:
+            if c in held:
+                continue
             r = self.spec.range[c]
             rp = ("range", c)
 
@@ -174,6 +244,14 @@ class Conditions:
                                                                if k != c})
             a.setflags(write=False)
             axes[c] = a
+        if held:  # a path: the held coordinates solved at each position of the given one
+            self.path = self.held_path(mech, axes)
+            self.paired = True
+            axes = {c: np.ascontiguousarray(self.path.q[:, j])
+                    for j, c in enumerate(self.coords)}
+            for a in axes.values():
+                a.setflags(write=False)
+            return self.path.q, axes
         if self.paired:  # paired paths: position i of every coordinate together
             if len(self.coords) < 2:
                 raise self.error(("range", "paired"), "paired paths need two or more "
@@ -200,6 +278,8 @@ class Conditions:
         counts, paths = {}, []
         for c in self.coords:
             r = self.spec.range[c]
+            if r.hold is not None:
+                continue
             if "values" in r.model_fields_set:
                 counts[c] = len(r.values)
                 paths.append(("range", c, "values"))

@@ -67,12 +67,31 @@ class RangeSpec(_Table):
     count: Annotated[StrictInt, Field(ge=2)] = None
     step: Value = None
     values: Annotated[list[Value], Field(min_length=1)] = None
+    #: a held coordinate: solved at every position so that the output ``hold``
+    #: equals ``equals``, within its limits (:mod:`assur.core.held`)
+    hold: Name = None
+    equals: Value = None
+    within: tuple[Value, Value] = None
 
     @model_validator(mode="after")
     def _one_form(self):
         given = self.model_fields_set
-        forms = "values = [...], or from, to and count, or from, to and step"
-        if "values" in given:
+        forms = ("values = [...], or from, to and count, or from, to and step, or hold, "
+                 "equals and within")
+        held = {"hold", "equals", "within"}
+        if given & held:
+            if given - held:
+                raise PydanticCustomError("range", f"expected one of: {forms}; not both "
+                                                   f"hold and " + ", ".join(
+                                                       sorted(k.rstrip("_")
+                                                              for k in given - held)))
+            missing = [k for k in ("hold", "equals", "within") if k not in given]
+            if missing:
+                raise PydanticCustomError("range", "a held coordinate needs hold (the "
+                                                   "output held), equals (its value) and "
+                                                   "within = [low, high] (the coordinate's "
+                                                   "limits); missing " + ", ".join(missing))
+        elif "values" in given:
             if given & {"from_", "to", "count", "step"}:
                 raise PydanticCustomError("range", f"expected one of: {forms}; not both "
                                                    f"values and from/to")

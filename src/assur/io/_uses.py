@@ -153,7 +153,17 @@ class Uses:
                                                f'coordinates ({", ".join(self.coords)})'
                                                f"{S.did_you_mean(c, self.coords)}")
             kind = self.kind_of_coordinate(c)
-            if "values" in r.model_fields_set:
+            if r.hold is not None:  # a held coordinate (io/_positions.py, core/held.py)
+                quantities = self.solve_quantities()
+                if r.hold not in quantities:
+                    raise self.error(("range", c, "hold"),
+                                     f"expected X<point>, Y<point>, phi<link> or a distance "
+                                     f"name, found {S.show(r.hold)}"
+                                     f"{S.did_you_mean(r.hold, quantities)}")
+                self.value(("range", c, "equals"), r.equals, quantities[r.hold])
+                for k, v in enumerate(r.within):
+                    self.value(("range", c, "within", k), v, kind)
+            elif "values" in r.model_fields_set:
                 for k, v in enumerate(r.values):
                     self.value(("range", c, "values", k), v, kind)
             else:
@@ -167,8 +177,9 @@ class Uses:
                                          f"({', '.join(self.coords)}), missing "
                                          f"{', '.join(missing)}")
 
-    def use_solve(self):
-        """``[[solve]]``: the quantity, the position ``at`` and the target ``equals``."""
+    def solve_quantities(self):
+        """The outputs a ``[[solve]]`` condition or a held ``[range]`` names, by kind:
+        ``X<point>``, ``Y<point>``, ``phi<link>``, distances."""
         sp = self.spec
         points = list(sp.frame) + [getattr(g, f) for g in self.groups
                                    for f in group_outputs(g)]
@@ -176,6 +187,12 @@ class Uses:
         quantities.update({f"phi{l}": ANGLE for l in sp.links})
         quantities.update({f"phi{d[2]}": ANGLE for d in sp.distances.values() if d[2]})
         quantities.update({d: LENGTH for d in sp.distances})
+        return quantities
+
+    def use_solve(self):
+        """``[[solve]]``: the quantity, the position ``at`` and the target ``equals``."""
+        sp = self.spec
+        quantities = self.solve_quantities()
         for i, s in enumerate(sp.solve):
             if s.quantity not in quantities:
                 raise self.error(("solve", i, "quantity"),
