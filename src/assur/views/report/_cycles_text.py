@@ -164,11 +164,11 @@ _T = {
                         "{4:+.0f} % статических составляющих — траектории различны); max |F| "
                         "при V1 = V2 (ур. 60): до T_ц = {5}"),
     "c3_never": Text("the gain stays ≥ {0:.0f} % up to the longest cycle, {1:g} s: separate "
-                     "motion's static forces in the fed direction are {2:+.0f} % higher (its "
+                     "motion's static forces in the fed direction are {2:.0f} % higher (its "
                      "paths hold one link while the other moves), which no cycle time removes",
                      ru="выигрыш остаётся ≥ {0:.0f} % до самого длинного цикла, {1:g} с: "
                         "статические усилия в направлении питаемой полости при раздельном "
-                        "движении больше на {2:+.0f} % (одно звено удерживается, пока "
+                        "движении больше на {2:.0f} % (одно звено удерживается, пока "
                         "движется другое), и никакое время цикла этого не устраняет"),
     "gain_at": Text("{0:+.0f} % at {1:g} s", ru="{0:+.0f} % при {1:g} с"),
     "none": Text("no cycle time", ru="ни при каком времени цикла"),
