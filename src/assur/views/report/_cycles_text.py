@@ -26,6 +26,12 @@ _T = {
                    "гидроцилиндра подъёма стрелы |F1|"),
     "max_F2": Text("Max force of the stick's cylinder |F2|", ru="Максимальное усилие "
                    "гидроцилиндра привода рукояти |F2|"),
+    "fed_F1": Text("Max force of the boom's cylinder in the fed direction σ1·F1",
+                   ru="Максимальное усилие гидроцилиндра подъёма стрелы в направлении "
+                      "питаемой полости σ1·F1"),
+    "fed_F2": Text("Max force of the stick's cylinder in the fed direction σ2·F2",
+                   ru="Максимальное усилие гидроцилиндра привода рукояти в направлении "
+                      "питаемой полости σ2·F2"),
     "dynamic_F1": Text("Max dynamic part of the boom cylinder's force |F_d1|",
                        ru="Максимальная динамическая составляющая усилия гидроцилиндра "
                           "подъёма стрелы |F_d1|"),

@@ -40,6 +40,9 @@ figure              what
 ==================  ==============================================================
 ``max_F1``          max |F1| of the boom's cylinder against T_c, per scenario
 ``max_F2``          max |F2| of the stick's cylinder (paper fig. 3)
+``fed_F1``          max σ1·F1, the boom's force in the fed direction (σ_j = ±1 the sign
+                    of the stroke, :func:`assur.dynamics.cycles.fed_sense`)
+``fed_F2``          max σ2·F2, the stick's (the verdicts' basis)
 ``dynamic_F1``      max |F_d1|, the dynamic part (paper fig. 4)
 ``dynamic_F2``      max |F_d2|
 ``static``          max |F_s1|, |F_s2|, the static parts (they do not depend on T_c)
@@ -66,7 +69,7 @@ __all__ = ["FIGURES", "PAPER", "ABOUT", "EFFECTIVE", "BASIS", "EQUAL", "Verdict"
            "drive_sweep", "pump_conclusions", "tables",
            "figures", "drive_speeds", "verdict_word", "write_cycles_report"]
 
-FIGURES = ("max_F1", "max_F2", "dynamic_F1", "dynamic_F2", "static")
+FIGURES = ("max_F1", "max_F2", "fed_F1", "fed_F2", "dynamic_F1", "dynamic_F2", "static")
 KN = 1e3
 
 
@@ -176,7 +179,8 @@ def _shown(du, values, si):
 
 def _curves(df, lang, key, col, title, du=None):
     f = new_figure()
-    sym = {"F1_max": "|F1|", "F2_max": "|F2|", "Fd1_max": "|F_d1|", "Fd2_max": "|F_d2|"}
+    sym = {"F1_max": "|F1|", "F2_max": "|F2|", "Fd1_max": "|F_d1|", "Fd2_max": "|F_d2|",
+           "F1_fed": "σ1·F1", "F2_fed": "σ2·F2"}
     fu, tu = _shown(du, 0.0, "N")[1], _shown(du, 0.0, "s")[1]
     ax = titled_axes(f, localize(_T[title], lang), f"{_t('T', lang)} [{unit(tu, lang)}]",
                      f"max {sym[col[0]]} [{unit(fu, lang)}]")
@@ -203,18 +207,21 @@ def figures(df, lang="en", units=None, mechanism=None):
     >>> df = sweep(model.mechanism, *strokes(model.drive))  # T_c = 4…20 s, 4 scenarios
     >>> figs = figures(df)
     >>> list(figs)
-    ['max_F1', 'max_F2', 'dynamic_F1', 'dynamic_F2', 'static']
+    ['max_F1', 'max_F2', 'fed_F1', 'fed_F2', 'dynamic_F1', 'dynamic_F2', 'static']
     >>> ax = figs["max_F2"].axes[0]
     >>> ax.get_title(), ax.get_ylabel(), len(ax.lines)  # a curve per scenario
     ("Max force of the stick's cylinder |F2|", 'max |F2| [kN]', 4)
     >>> round(float(ax.lines[0].get_ydata()[2]), 1)  # combined, T_c = 6 s [kN]
     78.3
+    >>> ax = figs["fed_F2"].axes[0]  # the stick retracts: its rod side is fed
+    >>> ax.get_ylabel(), round(float(ax.lines[1].get_ydata()[2]), 1)  # eq. 61, 6 s [kN]
+    ('max σ2·F2 [kN]', 54.7)
     """
     check_lang(lang)
     du = None if units is None and mechanism is None else unit_system(mechanism, units)
     out = {name: _curves(df, lang, name, (c,), name, du) for name, c in (
-        ("max_F1", "F1_max"), ("max_F2", "F2_max"), ("dynamic_F1", "Fd1_max"),
-        ("dynamic_F2", "Fd2_max"))}
+        ("max_F1", "F1_max"), ("max_F2", "F2_max"), ("fed_F1", "F1_fed"), ("fed_F2", "F2_fed"),
+        ("dynamic_F1", "Fd1_max"), ("dynamic_F2", "Fd2_max"))}
     f = new_figure()
     fu, tu = _shown(du, 0.0, "N")[1], _shown(du, 0.0, "s")[1]
     ax = titled_axes(f, _t("static", lang), f"{_t('T', lang)} [{unit(tu, lang)}]",
