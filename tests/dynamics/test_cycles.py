@@ -76,8 +76,10 @@ def test_dynamic_parts_scale_as_one_over_T_squared(crane):
 
 
 def test_paper_conclusions_at_a_6_s_cycle():
-    """Seed 004's conclusions against the model (ЛВ-184А, T = 6 s), numbers reported
-    in docs/simulation.md: separate motion (stick first) needs a boom force ≈ 80 %
+    """Seed 004's conclusions against the model (ЛВ-184А, T = 6 s) on the old basis,
+    max |F| against V1 = V2 (eq. 60), reported beside the verdicts' basis (the fed
+    direction against eq. 61: tests/views/report/test_cycles.py) in
+    docs/simulation.md: separate motion (stick first) needs a boom force ≈ 80 %
     higher than combined (paper: ≈ 90 %); the stick's force ≈ 13 % higher (paper:
     ≈ 30 %); the dynamic parts fall 5× (boom) and 8× (stick) with combined motion
     (paper: 3–8×). The boom-first order gives far smaller gains — the paper does not
