@@ -125,11 +125,11 @@ class Cylinder:
     dp_throttle, dp_line : float or str
         Pressure losses at the throttle and in the line [Pa]; the largest working
         pressure is p_max = p_relief − (Δp_throttle + Δp_line) (001 lab 1 eq. 1).
-    side : {"piston", "rod", "auto"}
+    side : {"piston", "rod", "auto", "extend", "retract"}
         Which chamber is pressurised, i.e. the working direction of the stroke:
-        ``"piston"`` — the cylinder extends to do the work, its piston area
-        π·(D² − d2²)/4 pushes; ``"rod"`` — it retracts, the annulus π·(D² − d²)/4
-        pulls; ``"auto"`` — for the pressure, the chamber that gives the force the
+        ``"piston"`` (or ``"extend"``) — the cylinder extends to do the work, its
+        piston area π·(D² − d2²)/4 pushes; ``"rod"`` (or ``"retract"``) — it
+        retracts, the annulus π·(D² − d²)/4 pulls; ``"auto"`` — for the pressure, the chamber that gives the force the
         loads need at each position (a double-rod cylinder steering either way); for
         the capacity and reserve, the working chamber of the stroke from the sign of
         the payload's virtual work along it (:func:`stroke_work`).
@@ -145,6 +145,8 @@ class Cylinder:
     >>> from assur.core.cylinders import Cylinder
     >>> Cylinder("ГЦ", coordinate="S", bore=0.08, count=2, eta_hyd=0.84, p_relief=17.5e6).bore
     0.08
+    >>> Cylinder("tilt", coordinate="S2", bore=0.1, rod=0.05, side="retract").side
+    'rod'
     """
 
     name: str
@@ -161,6 +163,12 @@ class Cylinder:
     distance: str | None = None
     supply: str | None = None
     rod2: Ref = 0.0
+
+    #: the working directions a ``side`` may name instead of its chamber
+    DIRECTIONS: ClassVar = {"extend": "piston", "retract": "rod"}
+
+    def __post_init__(self):  # a direction names its chamber (the model checks the rest)
+        object.__setattr__(self, "side", self.DIRECTIONS.get(self.side, self.side))
 
     quantities: ClassVar = {"bore": "length", "rod": "length", "rod2": "length",
                             "count": "number", "eta_mech": "number", "eta_hyd": "number",

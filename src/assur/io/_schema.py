@@ -172,7 +172,9 @@ class CylinderSpec(_Table):
     p_relief: Value = 0.0
     dp_throttle: Value = 0.0
     dp_line: Value = 0.0
-    side: typing.Literal["piston", "rod", "auto"] = "piston"
+    #: the working chamber, or the working direction naming it ("extend" = "piston",
+    #: "retract" = "rod"; assur.core.cylinders.Cylinder)
+    side: typing.Literal["piston", "rod", "auto", "extend", "retract"] = "piston"
 
 
 class WheelSpec(_Table):

@@ -131,7 +131,7 @@ class CylinderResult:
         t = C.terms(dataclasses.replace(self.cylinder, bore=float(bore)), self._val)
         return self.force_required / C.force_max(t, self.force, C.select_array)
 
-    def capacity(self, point, dead_loads=None, pressure=None):
+    def capacity(self, point, dead_loads=None, pressure=None, singular="raise"):
         """Lift capacity at ``point`` in the working direction: the vertical load [N] the
         cylinders lift (or hold) there at p_max, G = (σ_w·F_max,w·η_m − F_dead)/I(point),
         I = ∂Y/∂q along this cylinder's coordinate q, σ_w and F_max,w of the working
@@ -151,6 +151,9 @@ class CylinderResult:
         pressure : float, optional
             The pressure [Pa] instead of p_max (the standard lift test's share of the
             relief setting, :mod:`assur.machines.hitch_lift`).
+        singular : {"raise", "empty"}
+            Where the point does not rise (I = 0): raise, or leave the value empty
+            (NaN, a table's empty cell; :mod:`assur.views.report.tables`).
 
         Raises
         ------
@@ -183,6 +186,11 @@ class CylinderResult:
             dead_loads = dead_load_mechanism(kin.mechanism, dead_loads)
         I = kin.transmission(point, wrt=self.cylinder.coordinate if kin.k > 1 else None)
         bad = np.abs(I) <= 1e-12 * np.max(np.abs(I))
+        if singular == "empty":
+            fdead = self._dead_force(dead_loads)
+            G = C.capacity(self.terms, self.stroke_load, fdead, np.where(bad, 1.0, I),
+                           C.select_array, p=pressure)
+            return np.where(bad, np.nan, G)
         if np.any(bad):
             raise SingularPositionError(f"capacity at {point!r}: its transmission number is 0 "
                                         f"at {int(bad.sum())} position(s) (the point does not "

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ....core.cylinders import reserve
 from ....errors import SingularPositionError
 from ....texts import LANGS, localize
 from ..labels import TEXT
@@ -17,13 +18,8 @@ def _capacity(v, res, point):
     try:
         return v.pick(res.capacity(point)), None
     except SingularPositionError as e:
-        # the same formula as CylinderResult.capacity, left empty where I = 0
-        kin = v.kin
-        I = v.pick(kin.transmission(point, wrt=res.cylinder.coordinate if kin.k > 1 else None))
-        num = v.pick(res.force_max * res.eta_mech)
-        zero = I == 0.0
-        g = np.where(zero, np.nan, num / np.where(zero, 1.0, I))  # NaN = empty cell
-        return g, str(e)
+        # the same formula, left empty (NaN) where I = 0
+        return v.pick(res.capacity(point, singular="empty")), str(e)
 
 
 def _table_4_1(v):
@@ -53,8 +49,8 @@ def _table_4_1(v):
             elif v.k > 1:
                 extrema.append((f"G{p}{sfx}", p, g))
             for wname, P in v.weights_at(p)[:1]:
-                if P > 0:
-                    cols.append(Column(f"dG{p}{sfx}", "%", (g - P) / P * 100.0,
+                if P > 0:  # against the payload alone: G carried the dead loads
+                    cols.append(Column(f"dG{p}{sfx}", "%", reserve(g, P),
                                        {lang: TEXT["c_dG"][lang].format(
                                            p, localize(wname, lang), v.text(P, "N", lang))
                                         for lang in LANGS}))

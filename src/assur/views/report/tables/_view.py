@@ -151,10 +151,13 @@ class _View:
 
     # loads ---------------------------------------------------------------------------
     def weights_at(self, point):
-        """[(name, P [N])] of the weights acting at ``point``."""
+        """[(name, P [N])] of the payload weights acting at ``point``: the loads a
+        capacity there lifts, its reserve's P — not the dead loads
+        (``[tables] dead_loads``), which the capacity has carried already."""
+        from ....core.loads import is_dead
         out = []
         for ld in self.mech.loads:
-            if isinstance(ld, Weight) and ld.point == point:
+            if isinstance(ld, Weight) and ld.point == point and not is_dead(self.mech, ld):
                 name = ld.name or (ld.P if isinstance(ld.P, str) else "P")
                 out.append((name, self.scalar(self.mech.value_of(ld.P))))
         return out
