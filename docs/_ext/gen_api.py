@@ -38,6 +38,7 @@ SECTIONS = [
         ("assur.core.compile_context", "what a group's compile works with: slots, rows, pre-passes"),
         ("assur.core.columns", "extra table columns: formulas and sign maps"),
         ("assur.core.motion", "a crank's direction and speed"),
+        ("assur.core.held", "held outputs along a path: a coordinate solved so that an output keeps its value, the path's analogs"),
     ]),
     ("Machines", [
         ("assur.machines.cylinders", "areas, pressure, available force, lift capacity"),

@@ -86,3 +86,24 @@ assert abs(m16 - 800) <= 0.02 * 800 and m18 > m16
 # The lab's slips and the model's choices (the file's notes):
 for note in m.notes:
     print("-", note["en"] if isinstance(note, dict) else note)
+
+# %%
+# A self-levelling lift: S1 held — самовыравнивание траверсы
+# ----------------------------------------------------------
+# ``loader_lab1_level.toml`` extends this file with one ``[range]`` line: the traverse
+# cylinder S1 is solved at every position of S so that the traverse 9 (which carries
+# the tool) keeps φ9 = 75°, ``S1 = { hold = "phi9", equals = "phi9_level", within =
+# ["S1_short", "S1max"] }``. The path's analogs follow by the implicit-function rule
+# (dS1/dS = −(∂φ9/∂S)/(∂φ9/∂S1)); the transmission number of S9 along the path is
+# dY_S9/dS with S1 following:
+level = io.load(io.bundled("loader_lab1_level"))
+path = level.path
+print(path.describe())
+lk = level.mechanism.solve(level.range)
+print(f"φ9 stays within {np.abs(lk.phi('9') - np.radians(75)).max():.1e} rad of 75°")
+print(f"S1 from {level.range[0, 1]:.4f} to {level.range[-1, 1]:.4f} m, "
+      f"dS1/dS from {path.dq[0, 1]:.3f} to {path.dq[-1, 1]:.3f}")
+I_path = path.transmission(lk, "S9")
+print(f"dY_S9/dS along the path from {I_path.min():.3f} to {I_path.max():.3f} "
+      f"(∂Y_S9/∂S alone: {lk.transmission('S9', wrt='S').min():.3f} …)")
+assert np.abs(lk.phi("9") - np.radians(75)).max() < 1e-10

@@ -198,3 +198,17 @@ def test_an_unknown_output_is_refused(mech):
 def test_describe(level):
     assert isinstance(level.path, HeldPath)
     assert level.path.describe() == "path along S, 11 positions: S1 holds phi9 = 75 deg"
+
+
+def test_a_levelled_traverse_translates_along_the_path(level):
+    """With φ9 held, every point of link 9 moves as its pivot 09 does: the transmission
+    numbers along the path of S9 and 89 equal that of 09 (on the boom, S1 does not move
+    it), though their partial analogs differ."""
+    kin = level.mechanism.solve(level.range)
+    I09 = level.path.transmission(kin, "09")
+    np.testing.assert_allclose(I09, kin.transmission("09", wrt="S"), rtol=1e-13)
+    for p in ("S9", "89"):
+        np.testing.assert_allclose(level.path.transmission(kin, p), I09, rtol=1e-11)
+        np.testing.assert_allclose(level.path.transmission(kin, p, axis="x"),
+                                   level.path.transmission(kin, "09", axis="x"), rtol=1e-11)
+        assert np.abs(kin.transmission(p, wrt="S") - I09).min() > 0.1
