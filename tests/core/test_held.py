@@ -212,3 +212,59 @@ def test_a_levelled_traverse_translates_along_the_path(level):
         np.testing.assert_allclose(level.path.transmission(kin, p, axis="x"),
                                    level.path.transmission(kin, "09", axis="x"), rtol=1e-11)
         assert np.abs(kin.transmission(p, wrt="S") - I09).min() > 0.1
+
+
+def _arm():
+    """A serial arm of three cranks (absolute angles a, b, c [rad]): its tip E held at
+    a point by b and c while a turns — two held coordinates."""
+    from assur import Mechanism
+    from assur.groups import Crank
+    m = Mechanism("arm", coordinates=("a", "b", "c")).frame("O", 0.0, 0.0)
+    m = m.add(Crank(name="boom", pivot="O", out="A", radius=1.0, q="a", links=("1",)))
+    m = m.add(Crank(name="stick", pivot="A", out="B", radius=0.8, q="b", links=("2",)))
+    return m.add(Crank(name="bucket", pivot="B", out="E", radius=0.5, q="c", links=("3",)))
+
+
+def _arm_complex(m, a, guess, xy, J):
+    """(b, c) at complex ``a`` holding E at ``xy`` (Newton with the real Jacobian J)."""
+    u = np.array(guess, dtype=complex)
+    for _ in range(8):
+        p = m.evaluate_positions({"a": a, "b": u[0], "c": u[1]})["E"]
+        u = u - np.linalg.solve(J, np.array([p[0] - xy[0], p[1] - xy[1]]))
+    return u
+
+
+def test_two_held_coordinates_by_newton_on_the_exact_jacobian():
+    m = _arm()
+    k0 = m.solve([[0.4, 1.2, 0.3]])
+    xy = float(k0.x("E")[0]), float(k0.y("E")[0])
+    holds = [Hold("b", "XE", xy[0], (0.6, 2.0)), Hold("c", "YE", xy[1], (-1.0, 1.0))]
+    path = hold_path(m, "a", np.linspace(0.3, 0.5, 5), holds)
+    kin = m.solve(path.q)
+    assert np.abs(kin.x("E") - xy[0]).max() < 1e-12 and np.abs(kin.y("E") - xy[1]).max() < 1e-12
+    assert abs(path.q[2, 1] - 1.2) < 1e-12 and abs(path.q[2, 2] - 0.3) < 1e-12
+    d = 1e-3
+    w = np.array([1.0, -8.0, 8.0, -1.0]) / (12 * d)
+    for i in (1, 3):
+        a = float(path.s[i])
+        J = np.stack([kin.dx("E")[i, 1:], kin.dy("E")[i, 1:]])
+        u = _arm_complex(m, a + 1j * H, path.q[i, 1:], xy, J)
+        np.testing.assert_allclose(path.dq[i, 1:], u.imag / H, rtol=1e-9)
+        steps = [a - 2 * d, a - d, a + d, a + 2 * d]
+        du = np.array([_arm_complex(m, s + 1j * H, path.q[i, 1:], xy, J).imag / H
+                       for s in steps])
+        np.testing.assert_allclose(path.ddq[i, 1:], w @ du, rtol=1e-6)
+    # the tip stands still along the path, to second order
+    for axis in ("x", "y"):
+        _, d1, d2 = quantity_jets(kin, f"{axis.upper()}E")
+        first, second = path.along_path(d1, d2)
+        assert np.abs(first).max() < 1e-12 and np.abs(second).max() < 1e-9
+
+
+def test_newton_leaving_the_limits_of_a_held_coordinate_is_told():
+    m = _arm()
+    holds = [Hold("b", "XE", 1.688615442147027, (1.25, 2.0)),
+             Hold("c", "YE", 1.2828097144131012, (-1.0, 1.0))]
+    with pytest.raises(ModelError, match=r"at a = 0\.4 \(position 1 of the path\) Newton's "
+                                         r"method leaves b's limits \[1\.25, 2\]"):
+        hold_path(m, "a", [0.4], holds)

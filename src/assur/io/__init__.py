@@ -46,7 +46,7 @@ from ..core.mechanism import Mechanism
 from ._build import Builder
 from ._errors import ModelFileError, key_path
 from ._extends import resolve as resolve_extends
-from ._lines import line_index, line_of
+from ._lines import LazyIndex, line_index, line_of
 from ._schema import load_types_table, schema_table
 from .problems import load_problem
 
@@ -169,6 +169,11 @@ class Model:
         and the file's warnings, the crank dynamics of ``[motion]``/``[dynamics]``
         (:func:`assur.analysis.add_dynamics`) and the lift test of ``[lift_test]``
         (:func:`assur.analysis.add_lift_test`).
+
+        Along a held path (:attr:`path`) the kinematics carry it
+        (``analysis.kinematics.path``: transmission numbers along the path), and a
+        ``[motion]`` speed of the path's parameter moves the held coordinates with it
+        (:meth:`assur.core.held.HeldPath.motion_rates`: the inertia loads along the path).
 
         ``balancing=False`` leaves out the counter-masses' search of ``[dynamics]`` (an
         optimization of a second or more, whose results no table holds: the page and
@@ -368,7 +373,7 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
         raise TypeError(f"loads() takes the file's text as str, got {type(text).__name__}")
     text = text.removeprefix("\ufeff")
     data = _parse_toml(text, name)
-    index = line_index(text)
+    index = LazyIndex(text)  # scanned only for a message's line
     if "extends" in data:
         data, index = resolve_extends(data, index, name, source, _parse_toml)
     builder = Builder(name, data, index)
