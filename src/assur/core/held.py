@@ -376,7 +376,7 @@ def _residuals(kin, holds, with_jets=False):
     for hd in holds:
         v, d1, d2 = quantity_jets(kin, hd.quantity)
         r = v - hd.target
-        vals.append(_wrap(r) if hd.quantity.startswith("phi") else r)
+        vals.append(_wrap(r) if _kind(kin.mechanism, hd.quantity)[0] == "phi" else r)
         d1s.append(d1)
         d2s.append(d2)
     h = np.stack(vals, axis=-1)
@@ -455,8 +455,9 @@ def hold_path(mech, along, values, holds, params=None, *, tol=1e-12, scan=41,
         _kind(mech, h.quantity)
         lo, hi = (float(v) for v in h.within)
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise ModelError(f"{h.describe()}: within = [{h.shown(lo, 'c')}, "
-                             f"{h.shown(hi, 'c')}] must be [low, high] with low < high")
+            raise ModelError(f"{h.describe()}: within = [{h.shown(lo, 'coordinate')}, "
+                             f"{h.shown(hi, 'coordinate')}] must be [low, high] with "
+                             f"low < high")
     s = np.asarray(values, dtype=float).reshape(-1)
     n, k = s.size, len(coords)
     ia = coords.index(along)
@@ -487,8 +488,9 @@ def hold_path(mech, along, values, holds, params=None, *, tol=1e-12, scan=41,
         except AssemblyError as e:
             raise AssemblyError(f"{hd.describe()}: at {where(i)} (position {i + 1} of the "
                                 f"path) the mechanism does not assemble for {hd.coordinate} "
-                                f"in [{hd.shown(hd.within[0], 'c')}, "
-                                f"{hd.shown(hd.within[1], 'c')}]: {e}", group=e.group,
+                                f"in [{hd.shown(hd.within[0], 'coordinate')}, "
+                                f"{hd.shown(hd.within[1], 'coordinate')}]: {e}",
+                                group=e.group,
                                 links=e.links, coordinate=e.coordinate, position=i,
                                 amount=e.amount) from None
         raise AssemblyError(f"{hd.describe()}: at {where(i)} (position {i + 1} of the path) "
@@ -505,7 +507,7 @@ def hold_path(mech, along, values, holds, params=None, *, tol=1e-12, scan=41,
         r = np.where(ok, r, 0.0)
         both = ok[:, :-1] & ok[:, 1:]
         change = both & (r[:, :-1] * r[:, 1:] < 0)
-        if hd.quantity.startswith("phi"):   # a jump through ±π is no root
+        if _kind(mech, hd.quantity)[0] == "phi":   # a jump through ±π is no root
             change &= np.abs(r[:, :-1] - r[:, 1:]) < np.pi
         exact = ok & (r == 0)
         roots = change.sum(axis=1) + exact.sum(axis=1)
@@ -514,7 +516,8 @@ def hold_path(mech, along, values, holds, params=None, *, tol=1e-12, scan=41,
                 continue
             if not ok[i].any():
                 no_assembly(i, hd, 0.5 * (lo + hi))
-            span = (f"[{hd.shown(hd.within[0], 'c')}, {hd.shown(hd.within[1], 'c')}]")
+            span = (f"[{hd.shown(hd.within[0], 'coordinate')}, "
+                    f"{hd.shown(hd.within[1], 'coordinate')}]")
             if roots[i] == 0:
                 rr = r[i][ok[i]]
                 raise ModelError(f"{hd.describe()}: at {where(i)} (position {i + 1} of the "
@@ -567,8 +570,9 @@ def hold_path(mech, along, values, holds, params=None, *, tol=1e-12, scan=41,
             hd = holds[c]
             raise ModelError(f"{hd.describe()}: at {where(i)} (position {i + 1} of the path) "
                              f"Newton's method leaves {hd.coordinate}'s limits "
-                             f"[{hd.shown(lows[c], 'c')}, {hd.shown(highs[c], 'c')}] "
-                             f"(at {hd.shown(u[i, c], 'c')})")
+                             f"[{hd.shown(lows[c], 'coordinate')}, "
+                             f"{hd.shown(highs[c], 'coordinate')}] "
+                             f"(at {hd.shown(u[i, c], 'coordinate')})")
     h, d1, d2 = _residuals(kin, holds, with_jets=True)
     bad = np.abs(h) > tol
     if bad.any():
