@@ -119,3 +119,22 @@ def test_design_search_refuses_a_held_range_at_the_hold_key():
     e = fails(text)
     assert e.key_path == "range.S1.hold" and e.line == line_of(text, "S1 = {")
     assert "[design]" in e.problem and "not supported" in e.problem
+
+
+def test_a_held_point_height_over_listed_positions():
+    """``values`` for the given coordinate and a length held (Y of the tool's centre of
+    mass S9): S1 follows so that Y_S9 stays put."""
+    text = with_range('S = { values = ["1095 mm", "1100 mm", "1105 mm"] }',
+                      'S1 = { hold = "YS9", equals = "0.9734 m", within = ["0.77 m", '
+                      '"0.98 m"] }')
+    model = io.loads(text, name="loader.toml")
+    np.testing.assert_allclose(model.range[:, 0], [1.095, 1.1, 1.105], rtol=0, atol=1e-15)
+    kin = model.mechanism.solve(model.range)
+    assert np.abs(kin.y("S9") - 0.9734).max() < 1e-12
+    assert np.all(np.diff(model.range[:, 1]) < 0)   # S1 retracts as S extends
+    np.testing.assert_allclose(model.path.transmission(kin, "S9"), 0.0, atol=1e-12)
+    # a height out of reach: the position in the file's unit (mm)
+    e = fails(text.replace('"0.9734 m"', '"5 m"'))
+    assert e.key_path == "range.S1.hold"
+    assert "at S = 1095 mm (position 1 of the path) no S1 in [0.77 m, 0.98 m] reaches " \
+           "YS9 = 5 m" in e.problem, e.problem
