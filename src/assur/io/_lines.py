@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import bisect
 import re
+from collections.abc import Mapping
 
 _BARE = re.compile(r"[A-Za-z0-9_-]+")
 _ESCAPES = {"b": "\b", "t": "\t", "n": "\n", "f": "\f", "r": "\r", '"': '"', "\\": "\\"}
@@ -253,6 +254,44 @@ def line_index(text: str) -> dict[tuple, int]:
     except (ValueError, IndexError):  # not expected after tomllib: keep what we have
         pass
     return s.index
+
+
+class LazyIndex(Mapping):
+    """The :func:`line_index` of a text, scanned when a line is first asked for: a file
+    that loads without an error (the page's every answer) never pays for the scan.
+
+    Examples
+    --------
+    >>> idx = LazyIndex('[model]\\nname = "x"\\n')
+    >>> idx.scanned, idx[("model", "name")], idx.scanned
+    (False, 2, True)
+    """
+
+    def __init__(self, text: str):
+        self._text = text
+        self._index = None
+
+    @property
+    def scanned(self) -> bool:
+        """True once the text has been scanned."""
+        return self._index is not None
+
+    def _scan(self) -> dict:
+        if self._index is None:
+            self._index = line_index(self._text)
+        return self._index
+
+    def __getitem__(self, path):
+        return self._scan()[path]
+
+    def __contains__(self, path):
+        return path in self._scan()
+
+    def __iter__(self):
+        return iter(self._scan())
+
+    def __len__(self):
+        return len(self._scan())
 
 
 def line_of(index: dict[tuple, int], path) -> int:

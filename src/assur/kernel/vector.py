@@ -56,7 +56,7 @@ from .source import CHUNK, FORMAT, emit_program, quantities
 
 __all__ = ["SMALL", "LARGE", "RENT", "CALLS", "ready_key", "is_ready", "mark_ready", "rent",
            "settle",
-           "compiling", "BACKENDS", "ELEMENTS_START", "backend", "set_backend", "wanted", "is_vector",
+           "compiling", "serving", "BACKENDS", "ELEMENTS_START", "backend", "set_backend", "wanted", "is_vector",
            "vector_lines", "reduce_chunks", "generate_vector", "load_vector", "calls_left",
            "set_calls"]
 
@@ -81,7 +81,7 @@ LARGE = 4096
 #: check, a report) never starts the compiler
 RENT = 1.0
 
-_state = {"calls": 0, "limit": None, "backend": None}
+_state = {"calls": 0, "limit": None, "backend": None, "rent": None}
 _READY: set = set()
 _RENT = {"spent": {}, "started": set(), "threads": []}
 _VECTORS: dict = {}
@@ -339,7 +339,7 @@ def rent(seconds: float, key: str, compile_) -> None:
     if backend() != "auto" or key in _RENT["started"]:
         return
     spent = _RENT["spent"][key] = _RENT["spent"].get(key, 0.0) + float(seconds)
-    if spent < RENT:
+    if spent < (RENT if _state["rent"] is None else _state["rent"]):
         return
     _RENT["started"].add(key)
     t = threading.Thread(target=_background, args=(key, compile_), daemon=True,
@@ -377,6 +377,30 @@ def settle(key: str, vector: bool, seconds: float, compile_) -> None:
             mark_ready(key)  # it ran: numba's cache holds it
     elif not is_ready(key):
         rent(seconds, key, compile_)
+
+
+def serving() -> None:
+    """Make this process one that runs for long (a page's server, ``assur serve``): every
+    kernel not yet compiled on this machine is compiled in a background thread from its
+    first call (no :data:`RENT` to pay first), and numba is imported now, so that the
+    compiled kernels — ready ones loaded from numba's disk cache — take over from the
+    numpy evaluation as soon as each is there. A page's answer then costs the compiled
+    kernel's microseconds per call instead of the numpy evaluation's milliseconds
+    (``benchmarks/page.py``); the calls made meanwhile go on by numpy. Only for processes
+    that live long: a short command would pay numba's start-up (about half a second)
+    and compilations it never uses.
+
+    Examples
+    --------
+    >>> import subprocess, sys
+    >>> code = ("from assur.kernel import vector; vector.set_backend('auto'); "
+    ...         "vector.serving(); print(vector.calls_left(), vector.wanted(10))")
+    >>> subprocess.run([sys.executable, "-c", code], capture_output=True,
+    ...                text=True).stdout.split()   # no numpy calls left: compiled
+    ['0', 'False']
+    """
+    _state["rent"] = 0.0
+    import numba  # noqa: F401 - its start-up paid here, in the caller's thread
 
 
 def _background(key, compile_):

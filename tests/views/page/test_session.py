@@ -150,3 +150,50 @@ def test_too_few_positions_for_a_cranks_flywheel_is_a_message_not_a_crash():
     out = pm.compute({}, positions=11)
     assert not out["ok"] and out["error"]["kind"] == "model"
     assert "use more positions" in out["error"]["message"]
+
+
+@pytest.mark.parametrize("name", ["hitch_003", "loader_lab1", "cleaning_lab3"])
+def test_a_packed_answer_carries_the_same_values_as_bytes(name):
+    """``packed``: every column's values as little-endian float64 in base64, equal bit
+    for bit to the plain answer's list (NaN where it says null); the rest unchanged."""
+    import base64
+
+    import numpy as np
+
+    pm = PageModel.from_path(bundled(name))
+    plain, packed = pm.compute({}, 101), pm.compute({}, 101, packed=True)
+    assert plain["ok"] and packed["ok"]
+    for tp, tk in zip(plain["tables"], packed["tables"], strict=True):
+        assert tp["id"] == tk["id"]
+        for cp, ck in zip(tp["columns"], tk["columns"], strict=True):
+            got = np.frombuffer(base64.b64decode(ck["values"]["f64"]), "<f8")
+            want = np.array([np.nan if v is None else v for v in cp["values"]])
+            np.testing.assert_array_equal(got, want)
+    for key in ("geometry", "grid", "defaults", "solved", "warnings"):
+        assert plain[key] == packed[key]
+
+
+def test_a_file_that_loads_is_never_scanned_for_lines():
+    """The line index is built only when a message needs a line (the page's answers
+    do not pay for it); an error still names its line."""
+    from assur.io import ModelFileError, loads
+    from assur.io._lines import LazyIndex
+
+    text = bundled("cleaning_lab3").read_text()   # no [[solve]]: no line is asked for
+    made = []
+    real = LazyIndex._scan
+
+    def scan(self):
+        if not self.scanned:
+            made.append(1)
+        return real(self)
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(LazyIndex, "_scan", scan)
+        loads(text, name="cleaning_lab3.toml")
+        assert not made
+        bad = text.replace("[range]", "[range]\nnot_a_coordinate = 1", 1)
+        with pytest.raises(ModelFileError) as e:
+            loads(bad, name="cleaning_lab3.toml")
+    assert made == [1]
+    assert e.value.line == bad[:bad.index("not_a_coordinate")].count("\n") + 1

@@ -31,7 +31,7 @@ def serve(file: Path = typer.Argument(..., help="Model file (TOML)."),
     from ...errors import ModelError
 
     try:
-        application = create_app(file, lang=lang)
+        application = create_app(file, lang=lang, compiled=True)
     except (ModelError, OSError) as e:
         _fail(str(e))
     import socket

@@ -68,6 +68,11 @@ class AnalyzeRequest(_Request):
     """
 
     positions: int = Field(101, ge=2, le=MAX_POSITIONS)
+    #: the tables' columns as ``{"f64": base64}`` — their values as little-endian
+    #: float64 bytes, NaN where undefined — instead of JSON lists of numbers (null where
+    #: undefined): what the page asks for, whose answers then cost a fraction to encode
+    #: and to parse (``benchmarks/page.py``)
+    packed: bool = False
 
 
 class ExportRequest(_Request):

@@ -110,32 +110,46 @@ def _user_error(e) -> JSONResponse:
     return JSONResponse({"ok": False, "error": {"kind": kind, "message": str(e)}})
 
 
-def _warm(pm):
+def _warm(pm, compiled=False):
     """Compute the page's first answer, a first change and the tables' export once in a
     background thread, so the first request, the first edit and the first download of
     the model do not wait for kernels to compile or load, the conditions' solver to be
-    imported or the workbook writer to load."""
+    imported or the workbook writer to load. With ``compiled``, then switch the process
+    to compiled kernels (:func:`assur.kernel.vector.serving`: the new ones compiled in
+    the background) and compute the answers again once they are there, so that every
+    later answer runs compiled."""
     import threading
+
+    def answers(positions):
+        pm.compute({}, positions=positions)
+        # a first change: the design conditions solved again (their solver and
+        # kernels loaded), as after the user's first edit
+        for name, p in list(pm.editable.items())[:1]:
+            pm.compute({name: p["value"] * (1 + 1e-7) + 1e-12}, positions=positions)
 
     def run():
         try:
             from .api import AnalyzeRequest
             positions = AnalyzeRequest().positions
-            pm.compute({}, positions=positions)
-            # a first change: the design conditions solved again (their solver and
-            # kernels loaded), as after the user's first edit
-            for name, p in list(pm.editable.items())[:1]:
-                pm.compute({name: p["value"] * (1 + 1e-7) + 1e-12}, positions=positions)
+            answers(positions)
             pm.export_tables({}, "xlsx", positions=positions)
+            if compiled:
+                from ...kernel import vector
+                vector.serving()
+                answers(positions)  # ready kernels loaded; new ones start compiling
+                vector.compiling(wait=True)
+                answers(positions)  # and the newly compiled ones loaded
         except (ModelError, AssemblyError, SingularPositionError):
             pass  # the design's own error: the page shows it when it asks
         except Exception:  # noqa: BLE001 - a thread's last resort: logged, never silent
             log.exception("warming the model failed")
 
-    threading.Thread(target=run, name="assur-warm", daemon=True).start()
+    t = threading.Thread(target=run, name="assur-warm", daemon=True)
+    t.start()
+    return t
 
 
-def create_app(model, lang: str = "en", warm: bool = True) -> FastAPI:
+def create_app(model, lang: str = "en", warm: bool = True, compiled: bool = False) -> FastAPI:
     """The application serving one model file.
 
     Parameters
@@ -146,7 +160,13 @@ def create_app(model, lang: str = "en", warm: bool = True) -> FastAPI:
         The page's language by default.
     warm : bool
         Compute the first answer and the tables' export in the background at once
-        (:func:`_warm`), so the first ones the page asks for are not slow.
+        (:func:`_warm`), so the first ones the page asks for are not slow; the
+        warming thread is ``app.state.warming``.
+    compiled : bool
+        After warming, switch this process to compiled kernels
+        (:func:`assur.kernel.vector.serving`): for a server that runs for long
+        (``assur serve``), whose answers then take the compiled kernels' time; it
+        costs numba's start-up and, on a new structure, compilations in the background.
 
     Raises
     ------
@@ -175,8 +195,7 @@ def create_app(model, lang: str = "en", warm: bool = True) -> FastAPI:
     app = FastAPI(title="assur", docs_url=None, redoc_url=None, openapi_url="/api/openapi.json")
     app.add_middleware(_BodyLimit)
     app.state.page_model = pm
-    if warm:
-        _warm(pm)
+    app.state.warming = _warm(pm, compiled) if warm else None
     _add_error_handlers(app)
     _add_page_routes(app, lang)
     _add_api_routes(app, pm, lang)
@@ -254,7 +273,7 @@ def _add_api_routes(app, pm, lang):
     @app.post("/api/analyze")
     def analyze(req: AnalyzeRequest):
         out = pm.compute(dict(req.params), positions=req.positions, lang=req.lang,
-                         units=req.units)
+                         units=req.units, packed=req.packed)
         # serialized here: the payload is plain (lists of floats, None for NaN), and
         # FastAPI's generic encoder would walk it element by element
         return Response(json.dumps(out, allow_nan=False, separators=(",", ":")),

@@ -20,6 +20,7 @@ const state = {
   table: null,         // id of the table shown
   inflight: false, pending: false, seq: 0, t0: 0,
   timer: null,
+  urlTimer: undefined, // the address's pending write (saveUrl)
   history: [],         // earlier parameter sets (undo)
   lastPush: 0,
   traj: new Set(),     // points whose trajectories are drawn
@@ -268,7 +269,25 @@ function undo() {
 }
 
 // ---- the address: parameters, position, language, units and plots survive a reload
+// Written a moment after the last redraw, not during it: the browser's history update
+// (replaceState) costs tens of milliseconds, which a drag of a slider would pay at
+// every step; a page left or reloaded before then writes it at once.
+const URL_DELAY = 150;  // [ms]
+
 function saveUrl() {
+  clearTimeout(state.urlTimer);
+  state.urlTimer = setTimeout(writeUrl, URL_DELAY);
+}
+
+function flushUrl() {
+  if (state.urlTimer === undefined) return;
+  clearTimeout(state.urlTimer);
+  state.urlTimer = undefined;
+  writeUrl();
+}
+
+function writeUrl() {
+  state.urlTimer = undefined;
   const u = new URLSearchParams();
   u.set("lang", state.lang);
   u.set("units", state.units);
@@ -327,6 +346,26 @@ async function post(path, extra, params) {
   return {response: r, out: null};
 }
 
+// an answer asked for with {packed: true}: each table column's values come as
+// {f64: base64 of little-endian float64}; here they become the lists of numbers the
+// page reads, null where a value is undefined (NaN), as in an unpacked answer
+function unpack(out) {
+  if (!out || !out.tables) return out;
+  for (const t of out.tables) {
+    for (const c of t.columns) {
+      if (!c.values || typeof c.values.f64 !== "string") continue;
+      const bin = atob(c.values.f64);
+      const bytes = new Uint8Array(bin.length);
+      for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+      const f = new Float64Array(bytes.buffer);   // little-endian, as every browser's
+      const v = new Array(f.length);
+      for (let i = 0; i < f.length; i++) v[i] = Number.isFinite(f[i]) ? f[i] : null;
+      c.values = v;
+    }
+  }
+  return out;
+}
+
 async function send() {
   state.inflight = true;
   state.pending = false;
@@ -334,9 +373,9 @@ async function send() {
   const t0 = state.t0;
   const seq = ++state.seq;
   $("status").textContent = T("computing");
-  let {response, out} = await post("/api/analyze", positionsOf());
+  let {response, out} = await post("/api/analyze", Object.assign({packed: true}, positionsOf()));
   if (!out) {
-    try { out = await response.json(); }
+    try { out = unpack(await response.json()); }
     catch (e) { out = {ok: false, error: {kind: "network", message: `${T("bad_answer")} (HTTP ${response.status})`}}; }
   }
   const answered = performance.now();
@@ -358,9 +397,9 @@ async function send() {
 async function loadOriginal() {
   if (state.original && state.original.units.system === state.data.units.system &&
       state.original.lang === state.lang) return;
-  const {response, out} = await post("/api/analyze", positionsOf(), {});
+  const {response, out} = await post("/api/analyze", Object.assign({packed: true}, positionsOf()), {});
   if (out) return;
-  const o = await response.json();
+  const o = unpack(await response.json());
   if (o.ok) { o.lang = state.lang; state.original = o; renderPose(); renderPlots(); }
 }
 
@@ -1059,6 +1098,7 @@ async function start() {
   });
   for (const b of document.querySelectorAll("[data-export]"))
     b.addEventListener("click", () => download(b.dataset.export, b));
+  window.addEventListener("pagehide", flushUrl);   // a reload keeps the last change
   request();
 }
 
