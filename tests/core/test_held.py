@@ -268,3 +268,10 @@ def test_newton_leaving_the_limits_of_a_held_coordinate_is_told():
     with pytest.raises(ModelError, match=r"at a = 0\.4 \(position 1 of the path\) Newton's "
                                          r"method leaves b's limits \[1\.25, 2\]"):
         hold_path(m, "a", [0.4], holds)
+
+
+def test_part_of_a_result_on_the_path_keeps_its_part_of_the_path(level):
+    a = level.analyze()
+    part = a.kinematics.positions(3, 7)
+    np.testing.assert_array_equal(part.to_frame()["IS9_path"],
+                                  a.kinematics.to_frame()["IS9_path"].iloc[3:7])

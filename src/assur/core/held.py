@@ -234,6 +234,20 @@ class HeldPath:
         """
         return self.q[:, self.coordinates.index(self.along)]
 
+    def part(self, i0, i1):
+        """The same path restricted to positions i0:i1 (views).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> path = io.load(io.bundled("loader_lab1_level")).path
+        >>> path.part(2, 5).q.shape, bool((path.part(2, 5).dq == path.dq[2:5]).all())
+        ((3, 2), True)
+        """
+        import dataclasses
+        sl = slice(i0, i1)
+        return dataclasses.replace(self, q=self.q[sl], dq=self.dq[sl], ddq=self.ddq[sl])
+
     def along_path(self, d1, d2):
         """The derivatives along the path of an output whose partial analogs are
         ``d1`` = ∂y/∂q, shape (n, k), and ``d2`` = ∂²y/∂q∂q, shape (n, k, k):

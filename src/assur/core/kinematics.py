@@ -145,6 +145,8 @@ class Kinematics(Analogs, Transfer, KinematicChecks):
         b._pv, b._pd, b._pdd = self._pv[sl], self._pd[sl], self._pdd[sl]
         b._sv, b._sd, b._sdd = self._sv[sl], self._sd[sl], self._sdd[sl]
         b._buffer = None   # the views are of part of the buffer
+        if self.path is not None:
+            b.path = self.path.part(i0, i1)
         b._frame = self._frame.sliced(sl) if hasattr(self._frame, "sliced") else \
             {k: v[sl] for k, v in self._frame.items()}
         return b
