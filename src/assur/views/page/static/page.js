@@ -21,6 +21,7 @@ const state = {
   inflight: false, pending: false, seq: 0, t0: 0,
   timer: null,
   urlTimer: undefined, // the address's pending write (saveUrl)
+  tableShape: null,    // what the table drawn shows (renderTable)
   history: [],         // earlier parameter sets (undo)
   lastPush: 0,
   traj: new Set(),     // points whose trajectories are drawn
@@ -836,26 +837,56 @@ function renderCurrent() {
   }
 }
 
+// The table of the current results: built when its shape (table, columns, rows, units,
+// language) changes, else only its cells' texts replaced — a parameter change then
+// rewrites a thousand texts instead of building a thousand elements.
 function renderTable() {
   const t = currentTable();
   const tab = $("table");
+  if (!t) {
+    tab.textContent = "";
+    $("table-notes").textContent = "";
+    state.tableShape = null;
+    return;
+  }
+  const n = t.columns.length ? t.columns[0].values.length : 0;
+  const shape = JSON.stringify([t.id, t.label, t.title, t.columns.map(c => [c.symbol, c.unit, c.label]), n]);
+  const notes = $("table-notes");
+  notes.textContent = "";
+  notes.appendChild(h("h3", {}, `${T("table")} ${t.label}. ${t.title}`));
+  for (const x of t.notes) if (x) notes.appendChild(h("p", {}, x));
+  if (shape === state.tableShape && tab.rows.length === n + 1) {
+    for (let i = 0; i < n; i++) {
+      const cells = tab.rows[i + 1].cells;
+      t.columns.forEach((c, k) => {
+        const s = fmt(c.values[i]);
+        if (cells[k].textContent !== s) cells[k].textContent = s;
+      });
+    }
+    markTable();
+    return;
+  }
+  state.tableShape = shape;
   tab.textContent = "";
-  $("table-notes").textContent = "";
-  if (!t) return;
-  $("table-notes").appendChild(h("h3", {}, `${T("table")} ${t.label}. ${t.title}`));
-  for (const n of t.notes) if (n) $("table-notes").appendChild(h("p", {}, n));
   const head = h("tr");
   for (const c of t.columns)
     head.appendChild(h("th", {title: c.label}, c.unit === "-" ? c.symbol : `${c.symbol} [${c.unit}]`));
   tab.appendChild(head);
-  const n = t.columns.length ? t.columns[0].values.length : 0;
+  const rows = document.createDocumentFragment();
   for (let i = 0; i < n; i++) {
     const tr = h("tr", {"data-row": i});
     for (const c of t.columns) tr.appendChild(h("td", {}, fmt(c.values[i])));
-    if (perPosition(t)) tr.addEventListener("click", () => setPos(i));
-    tab.appendChild(tr);
+    rows.appendChild(tr);
   }
+  tab.appendChild(rows);
   markTable();
+}
+
+// a click on a row of a per-position table picks that position (one listener)
+function tableClick(e) {
+  const tr = e.target.closest("tr[data-row]");
+  const t = currentTable();
+  if (tr && t && perPosition(t)) setPos(Number(tr.dataset.row));
 }
 
 function markTable() {
@@ -1099,6 +1130,7 @@ async function start() {
   for (const b of document.querySelectorAll("[data-export]"))
     b.addEventListener("click", () => download(b.dataset.export, b));
   window.addEventListener("pagehide", flushUrl);   // a reload keeps the last change
+  $("table").addEventListener("click", tableClick);
   request();
 }
 
