@@ -140,6 +140,13 @@ def test_check_reports_paired_paths(tmp_path):
     assert "paired paths S, S1: 7 positions" in r.output
 
 
+def test_check_says_what_a_held_path_holds():
+    r = runner.invoke(app, ["check", str(io.bundled("loader_lab1_level"))])
+    assert r.exit_code == 0, r.output
+    m = io.load(io.bundled("loader_lab1_level"))
+    assert f"path along S, {len(m.range)} positions: S1 holds phi9 = 75 deg" in r.output
+
+
 #: the bundled loader on a grid of 5 × 4 positions (its report's code, 20 frames of
 #: animation instead of 104)
 SMALL_GRID = f'''extends = "{LOADER}"

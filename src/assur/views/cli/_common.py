@@ -118,8 +118,11 @@ def _assemble(model):
 
 
 def _shape_text(model) -> str:
-    """'grid S × S1: 13 × 8 = 104 positions' or 'paired paths S, S1: 9 positions'."""
+    """'grid S × S1: 13 × 8 = 104 positions', 'paired paths S, S1: 9 positions' or, for
+    held coordinates, 'path along S, 11 positions: S1 holds phi9 = 75 deg'."""
     cs = list(model.mechanism.coordinates)
+    if model.path is not None:
+        return model.path.describe()
     if model.paired:
         return f"paired paths {', '.join(cs)}: {len(model.range)} positions"
     shape = model.shape
