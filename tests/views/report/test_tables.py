@@ -241,3 +241,22 @@ def test_a_cranks_velocities_and_accelerations_are_the_time_derivatives_at_its_s
         assert np.allclose(t[f"v{p}"], v, rtol=1e-6)
         assert np.allclose(t[f"a{p}"], acc, rtol=1e-3)
     assert t["vA"] == pytest.approx(30.0 * 0.040)          # ω·L1, L1 = 40 mm [m/s]
+
+
+def test_a_held_path_tabulates_its_analogs_along_the_path():
+    """Table 3.1 of the self-levelling loader: beside the partial analogs, those along
+    the path — dY/dS = ∂Y/∂S + ∂Y/∂S1·S1' with S1' = −(∂φ9/∂S)/(∂φ9/∂S1) from the
+    table's own partial columns; the held φ9 stands still and the levelled traverse
+    translates (dY_S9/dS = dY_09/dS)."""
+    from assur.views.report.tables import seed_tables
+
+    a = io.load(io.bundled("loader_lab1_level")).analyze()
+    t = next(t for t in seed_tables(a) if t.id == "3.1")
+    col = {c.symbol: np.asarray(c.values, float) for c in t.columns}
+    s1 = -col["dphi9_S"] / col["dphi9_S1"]
+    np.testing.assert_allclose(col["IS9_path"], col["IS9_S"] + col["IS9_S1"] * s1,
+                               rtol=1e-9)
+    np.testing.assert_allclose(col["dphi9_path"], 0.0, atol=1e-9)
+    np.testing.assert_allclose(col["IS9_path"], col["I09_path"], rtol=1e-9)
+    label = next(c.label for c in t.columns if c.symbol == "IS9_path")
+    assert label["en"].endswith("along the held path (S1: phi9 = 75 deg)")

@@ -182,6 +182,12 @@ TEXT = {
             "ru": "передаточное число dY/d{1} точки {0}"},
     "c_dphi": {"en": "angular-velocity analog dφ{0}/d{1}",
                "ru": "аналог угловой скорости dφ{0}/d{1}"},
+    "c_I_path": {"en": "transmission number dY/d{1} of point {0} along the held path ({2})",
+                 "ru": "передаточное число dY/d{1} точки {0} вдоль траектории с "
+                       "удержанием ({2})"},
+    "c_dphi_path": {"en": "angular-velocity analog dφ{0}/d{1} along the held path ({2})",
+                    "ru": "аналог угловой скорости dφ{0}/d{1} вдоль траектории с "
+                          "удержанием ({2})"},
     "c_F": {"en": "cylinder force by virtual work ({0})", "ru": "сила на ГЦ ({0})"},
     "c_Frx": {"en": "cylinder force from the reactions ({0})",
               "ru": "сила на ГЦ по реакциям ({0})"},

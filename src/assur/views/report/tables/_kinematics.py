@@ -79,6 +79,7 @@ def _table_3_1(v):
             cols.append(Column(f"d{dist.name}{sfx}", "m/rad" if v.is_angle(c) else "-",
                                sign * v.pick(kin.dlength(dist.name, w)),
                                _both("c_ddist", dist.name, c)))
+    cols += _path_columns(v)
     cols += _second_order_columns(v)
     for c in v.coords:
         note = v.absent_note(c, *still[c])
@@ -88,6 +89,28 @@ def _table_3_1(v):
         notes.append(_both("derived_links"))
     notes += v.convention_notes(analogs=True)
     return Table("3.1", _both("t3.1"), tuple(cols), tuple(notes))
+
+
+def _path_columns(v):
+    """Along a held path (:mod:`assur.core.held`): the transmission numbers
+    ``I<point>_path`` = dY/ds and the analogs ``dphi<link>_path`` = dφ/ds with the held
+    coordinates following (the implicit-function rule), beside the partial ones."""
+    path = v.kin.path
+    if path is None:
+        return []
+    s = path.along
+    held = "; ".join(f"{h.coordinate}: {h.quantity} = {h.shown(h.target)}" for h in path.holds)
+    sign = v.rate_sign(s)
+    cols = []
+    for p in v.mech.tables.get("transmissions", ()):
+        cols.append(Column(f"I{p}_path", v.transmission_unit(s),
+                           sign * v.pick(path.transmission(v.kin, p)),
+                           _both("c_I_path", p, s, held)))
+    for link in v.kin.links:
+        cols.append(Column(f"dphi{link}_path", v.analog_unit(s),
+                           sign * v.pick(path.derivative(v.kin, f"phi{link}")[1]),
+                           _both("c_dphi_path", link, s, held)))
+    return cols
 
 
 def _second_order_columns(v):
