@@ -35,6 +35,7 @@ units (or are parameter names), and every error names the file, line and key.
 from __future__ import annotations
 
 import dataclasses
+import re
 import typing
 from dataclasses import dataclass
 
@@ -141,8 +142,31 @@ def build_drive(builder, mech):
 
 
 def _si(builder, mech, path, v, kind, flag=None):
+    if isinstance(v, bool) or not isinstance(v, (str, int, float)):
+        raise builder.error(path, f"expected {kind.article} (e.g. {kind.example}) or a "
+                                  f"parameter name, found {S.show(v)}")
     si = builder.value(path, v, kind, flag)
     return float(mech.params[si]) if isinstance(si, str) else float(si)
+
+
+def _in_span(builder, path, cls, key, v, si, kind):
+    """``si`` [SI] within the physical span of ``cls``'s field ``key``
+    (:func:`assur.dynamics.drive.span`), else the located error."""
+    lo, hi = _drive.span(cls, key)
+    if not lo <= si <= hi:
+        unit = kind.si.replace("**", "^") if kind.si else ""
+        raise builder.error(path, f"{key} = {S.show(v)} is outside the physical span of "
+                                  f"{kind.article}, {lo:g} … {hi:g}{' ' + unit if unit else ''}"
+                                  f" (is its unit or exponent right?)")
+    return si
+
+
+def _field_named(message, fields):
+    """The field a component's error names (``"… bore = 0.0 must be …"``), or None."""
+    for f in fields:
+        if re.search(rf"(^|[\s:]){re.escape(f)} = ", message):
+            return f
+    return None
 
 
 def _shown_name(builder, path, v):
@@ -181,7 +205,8 @@ def _component(builder, mech, types, entry, at):
                                       f'{", ".join(fields)})')
         q = cls.quantities.get(key)
         if q is not None:
-            kw[key] = _si(builder, mech, path, v, KINDS[q])
+            kw[key] = _in_span(builder, path, cls, key, v,
+                               _si(builder, mech, path, v, KINDS[q]), KINDS[q])
         elif key == "coordinate":
             if v not in mech.coordinates:
                 raise builder.error(path, f'expected a generalized coordinate (one of: '
@@ -203,5 +228,6 @@ def _component(builder, mech, types, entry, at):
         raise builder.error(at, f'missing required key "{missing[0]}" of a {t}')
     try:
         return cls(**kw)
-    except ModelError as e:
-        raise builder.error(at, str(e)) from None
+    except ModelError as e:  # at the key the message names, else at the entry
+        f = _field_named(str(e), fields)
+        raise builder.error(at + (f,) if f in entry else at, str(e)) from None

@@ -68,6 +68,8 @@ class DriveCylinder:
     role: ClassVar[str] = "cylinder"
     quantities: ClassVar = {"bore": "length", "rod": "length", "s_min": "length",
                             "s_max": "length", "count": "number"}
+    #: cylinders working as one: 1 … 100
+    spans: ClassVar = {"count": (1, 100)}
 
     def __post_init__(self):
         positive(self, "bore", "rod", "s_min", "s_max", "count")

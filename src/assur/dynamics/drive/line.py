@@ -134,6 +134,8 @@ class Line:
     quantities: ClassVar = {"length": "length", "diameter": "length", "density": "density",
                             "viscosity": "kinematic viscosity", "roughness": "length",
                             "fittings": "number"}
+    #: a smooth pipe's roughness is 0; at most 1000 fittings on one line
+    spans: ClassVar = {"roughness": (0.0, 1e-2), "fittings": (0, 1000)}
 
     def __post_init__(self):
         positive(self, "length", "diameter", "density", "viscosity")

@@ -58,6 +58,8 @@ class OilVolume:
     title: ClassVar[Text] = Text("oil volume", ru="объём жидкости")
     role: ClassVar[str] = "volume"
     quantities: ClassVar = {"volume": "volume", "bulk_modulus": "pressure"}
+    #: the oil's bulk modulus: 1 MPa (foam) … 100 GPa (beyond steel)
+    spans: ClassVar = {"bulk_modulus": (1e6, 1e11)}
 
     def __post_init__(self):
         positive(self, "volume", "bulk_modulus")
