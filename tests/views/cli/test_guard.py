@@ -74,7 +74,7 @@ def test_numpy_memory_error_in_a_sweep(logs, monkeypatch):
 
     def huge(*args, **kwargs):
         return np.empty(2**47)  # 1 PiB
-    monkeypatch.setattr("assur.synthesis.search.scale.sweep", huge)
+    monkeypatch.setattr("assur.synthesis.search.scale.sweep_to", huge)
     r = runner.invoke(app, ["sweep", str(bundled("hitch_003_design")), "--workers", "0",
                             "--samples", "3", "-o", str(logs.parent / "x.parquet")])
     assert r.exit_code == 1, r.output

@@ -89,9 +89,9 @@ def test_a_scheduler_without_workers_0(tmp_path):
 
     out = tmp_path / "s.parquet"
     with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, protocol="tcp://",
-                      dashboard_address=None) as cluster:
+                      dashboard_address=":0") as cluster:
         r = runner.invoke(app, ["sweep", DESIGN, "--samples", "6", "--positions", "3",
                                 "--scheduler", cluster.scheduler_address, "-o", str(out)])
     assert r.exit_code == 0, r.output
     assert f"on Dask scheduler {cluster.scheduler_address}" in " ".join(r.output.split())
-    assert out.is_file()
+    assert (out / "_manifest.json").is_file() and len(list(out.glob("part-*.parquet"))) == 1

@@ -222,6 +222,7 @@ class Executor:
         self.phase = phase
         self.timeout = float(timeout)
         self.client = None
+        self._phases: set = set()
         self._stack = contextlib.ExitStack()
 
     @property
@@ -237,7 +238,8 @@ class Executor:
         return self.scheduler is not None or self.workers > 0
 
     def _phase(self, text):
-        if self.phase is not None:
+        if self.phase is not None and text not in self._phases:  # each phase said once
+            self._phases.add(text)
             self.phase(text)
 
     def __enter__(self):
@@ -257,7 +259,7 @@ class Executor:
                 self._stack.callback(_restore_environ, dict(os.environ), started)
                 cluster = self._stack.enter_context(LocalCluster(
                     n_workers=self.workers, threads_per_worker=1, processes=True,
-                    dashboard_address=None))
+                    dashboard_address=":0"))  # its HTTP server on a free port
                 started["environ"] = dict(os.environ)
                 self.client = self._stack.enter_context(Client(cluster))
             self._check_versions()
@@ -531,9 +533,9 @@ class _Run:
                                              self.inflight.values()) else ""))
 
     def _lost(self, e):
-        why = f": {_words(e)}" if e is not None else ""
-        return (f"lost the connection to {self.ex.describe()}{why} ({self.done} of "
-                f"{self.total} designs done); check that the scheduler runs, then run again")
+        why = f" ({type(e).__name__})" if e is not None else ""
+        return (f"lost the connection to {self.ex.describe()}{why} after {self.done} of "
+                f"{self.total} designs; check that the scheduler runs, then run again")
 
     def _result(self, f, c):
         from distributed import CancelledError
@@ -557,8 +559,7 @@ class _Run:
         # cancelled or lost: the scheduler forgot it (it restarted, or we lost it)
         if self.ex.client.status != "running":
             raise ClusterError(self._lost(None))
-        raise ClusterError(self._lost(CancelledError(f"designs {c.start} … {c.stop - 1} "
-                                                     f"were cancelled")))
+        raise ClusterError(self._lost(CancelledError()))
 
 
 def _allowed_failures() -> int:

@@ -84,24 +84,48 @@ def _design_problem(file: Path, var, positions):
         _fail(str(e))
 
 
-def _executor(scheduler, workers, chunk, progress):
-    """The executor of ``--scheduler``/``--workers``/``--chunk``: the scheduler's port
-    must answer within :data:`CONNECT_TIMEOUT` (else one message, exit 1); workers
-    default to 2 without a scheduler and to none with one."""
-    from ...synthesis.search.scale import Executor
+def _executor(scheduler, workers, chunk, progress, phase=None, scheduler_file=None,
+              timeout=None):
+    """The executor of ``--scheduler``/``--scheduler-file``/``--workers``/``--chunk``:
+    in this process by default; a scheduler's port must answer within
+    :data:`CONNECT_TIMEOUT` (else one message, exit 1)."""
+    from ...synthesis.search.scale import TIMEOUT, Executor
     from ...errors import ModelError
+    if scheduler is not None and scheduler_file is not None:
+        _fail("give either --scheduler or --scheduler-file, not both", 2)
+    if scheduler_file is not None:
+        if not Path(scheduler_file).is_file():
+            _fail(f"--scheduler-file {scheduler_file}: no such file (the file `dask scheduler "
+                  f"--scheduler-file` writes)", 2)
+        scheduler = str(scheduler_file)
     if scheduler is not None:
         if workers:
             _fail(f"give either --scheduler or --workers, not both (--scheduler {scheduler} "
                   f"--workers {workers})", 2)
         workers = 0
-        _reachable(scheduler)
-    elif workers is None:
-        workers = 2
+        if scheduler_file is None:
+            _reachable(scheduler)
     try:
-        return Executor(scheduler=scheduler, workers=workers, chunk=chunk, progress=progress)
+        return Executor(scheduler=scheduler, workers=workers or 0, chunk=chunk,
+                        progress=progress, phase=phase, timeout=timeout or TIMEOUT)
     except ModelError as e:
         _fail(str(e), 2)
+
+
+@contextlib.contextmanager
+def _quiet_dask():
+    """Dask's own log records (a worker lost, a reconnection tried) stay out of the
+    terminal while a command runs: what matters reaches the user as one message."""
+    import logging
+    names = ("distributed", "tornado", "asyncio")
+    levels = {n: logging.getLogger(n).level for n in names}
+    for n in names:
+        logging.getLogger(n).setLevel(logging.CRITICAL + 1)
+    try:
+        yield
+    finally:
+        for n, lv in levels.items():
+            logging.getLogger(n).setLevel(lv)
 
 
 @contextlib.contextmanager
@@ -109,24 +133,28 @@ def _running(ex, scheduler):
     """``with ex`` whose connection to a ``scheduler`` fails in one message (exit 1)
     naming the address, within :data:`CONNECT_TIMEOUT` seconds — also when what
     answers there is not a Dask scheduler."""
-    if scheduler is None:
+    if not ex.distributed:
         with ex:
             yield ex
         return
     import dask
     import distributed  # noqa: F401 - its config defaults first: set() then restores them
 
-    try:
-        with dask.config.set({"distributed.comm.timeouts.connect": f"{CONNECT_TIMEOUT:g}s"}):
-            ex.__enter__()
-    except Exception as e:  # refused, timed out, garbage for a handshake
-        why = " ".join(str(e).split())[:200]
-        _fail(f"cannot connect to the Dask scheduler at {scheduler}: "
-              f"{type(e).__name__}{': ' + why if why else ''} (is a Dask scheduler listening "
-              f"there?)")
-    with contextlib.ExitStack() as stack:
-        stack.push(ex)
-        yield ex
+    from ...errors import ModelError
+    with _quiet_dask():
+        try:
+            with dask.config.set({"distributed.comm.timeouts.connect": f"{CONNECT_TIMEOUT:g}s"}):
+                ex.__enter__()
+        except ModelError as e:  # another assur version on a worker
+            _fail(str(e))
+        except Exception as e:  # refused, timed out, garbage for a handshake
+            why = " ".join(str(e).split())[:200]
+            _fail(f"cannot connect to the Dask scheduler at {scheduler}: "
+                  f"{type(e).__name__}{': ' + why if why else ''} (is a Dask scheduler "
+                  f"listening there?)")
+        with contextlib.ExitStack() as stack:
+            stack.push(ex)
+            yield ex
 
 
 def _reachable(address: str):
@@ -150,23 +178,81 @@ _VAR = typer.Option([], "--var", help='A design variable: NAME=LOW:HIGH or NAME=
                                       'as in files (e.g. "L4=0.6 m:0.72 m", "X01=±30 mm"); '
                                       'repeat. Adds to (or replaces) the file\'s [design].')
 _WORKERS = typer.Option(None, "--workers", parser=Count(0),
-                        help="Worker processes of a Dask LocalCluster, a whole number ≥ 0 "
-                             "(0: in this process); default 2, none with --scheduler.")
+                        help="Worker processes of a Dask LocalCluster started here, a whole "
+                             "number ≥ 0; default 0: in this process.")
 _SCHED = typer.Option(None, "--scheduler", parser=Address(),
-                      help="An existing Dask scheduler, [tcp://]host:port, e.g. "
+                      help="An existing Dask scheduler, [tcp://|tls://]host:port, e.g. "
                            "tcp://host:8786 (instead of --workers); it must answer within "
-                           "10 s.")
+                           "10 s. TLS: Dask's configuration (distributed.comm.tls).")
+_SCHED_FILE = typer.Option(None, "--scheduler-file",
+                           help="The file `dask scheduler --scheduler-file` wrote (instead "
+                                "of --scheduler).")
+_TIMEOUT = typer.Option(60.0, "--timeout", parser=Positive("s"),
+                        help="Seconds without any Dask worker before the run ends with a "
+                             "message (the finished parts are kept).")
 _CHUNK = typer.Option(16384, "--chunk", parser=COUNT, help="Designs per task (≥ 1).")
 _POSITIONS_HELP = ("Positions over the range, a whole number ≥ 2 (default: [design] "
                    "positions, else the range).")
 _SEED_HELP = "Seed of the random generator, 0 … 2**32 − 1."
 
+#: seconds between two progress lines when stderr is not a terminal
+LINE_EVERY = 10.0
 
-def _bar():
-    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
-    return Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False), BarColumn(),
-                    TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(),
-                    console=err, transient=True)
+
+class _Progress:
+    """A command's progress: a bar on a terminal; else lines (phase, percent,
+    rate, ETA) every :data:`LINE_EVERY` seconds and at the end."""
+
+    def __init__(self, what, total, unit):
+        self.what, self.total, self.unit = what, total, unit
+        self.terminal = err.is_terminal
+        self.t0 = time.perf_counter()
+        self.t_first = None
+        self.last = -LINE_EVERY
+        self.done = 0
+        self.bar = None
+
+    def __enter__(self):
+        if self.terminal:
+            from rich.progress import (BarColumn, Progress, SpinnerColumn, TextColumn,
+                                       TimeElapsedColumn, TimeRemainingColumn)
+            self.bar = Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False),
+                                BarColumn(), TextColumn("{task.completed}/{task.total}"),
+                                TimeElapsedColumn(), TimeRemainingColumn(), console=err,
+                                transient=True)
+            self.bar.__enter__()
+            self.task = self.bar.add_task(self.what, total=self.total)
+        return self
+
+    def __exit__(self, *exc):
+        if self.bar is not None:
+            self.bar.__exit__(*exc)
+
+    def phase(self, text):
+        if self.bar is not None:
+            self.bar.update(self.task, description=f"{self.what}: {text}")
+        else:
+            err.print(Text(f"{self.what}: {text} ({time.perf_counter() - self.t0:.1f} s)"),
+                      soft_wrap=True)
+
+    def __call__(self, done, total=None):
+        now = time.perf_counter()
+        if self.t_first is None:
+            self.t_first, self.done_first = now, done
+        self.done = done
+        if self.bar is not None:
+            self.bar.update(self.task, completed=done)
+            return
+        if now - self.last < LINE_EVERY and done < self.total:
+            return
+        self.last = now
+        pct = 100.0 * done / max(1, self.total)
+        dt = now - self.t_first
+        rate = (done - self.done_first) / dt if dt > 0 else 0.0
+        eta = (self.total - done) / rate if rate > 0 else float("nan")
+        eta_text = f", ETA {eta:.0f} s" if eta == eta and done < self.total else ""
+        err.print(Text(f"{self.what}: {pct:.0f} % ({done}/{self.total} {self.unit}), "
+                       f"{rate:.4g} {self.unit}/s{eta_text}"), soft_wrap=True)
 
 
 def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
@@ -178,44 +264,55 @@ def sweep(file: Path = typer.Argument(..., help="Model file (TOML) with [design]
           positions: int = typer.Option(None, "--positions", parser=Count(2),
                                         help=_POSITIONS_HELP),
           workers: int = _WORKERS, scheduler: str = _SCHED,
+          scheduler_file: Path = _SCHED_FILE, timeout: float = _TIMEOUT,
           chunk: int = _CHUNK,
+          resume: bool = typer.Option(False, "--resume",
+                                      help="Keep the parts an earlier run of the same file, "
+                                           "variables, positions, seed and samples finished "
+                                           "in the output, and compute only the rest."),
           output: str = typer.Option("assur-sweep.parquet", "-o", "--output",
-                                     help="The results table (Parquet).")):
-    """Evaluate many designs (on Dask) and write every design's criteria, feasibility
-    and reason to Parquet."""
-    from ...synthesis.search.scale import sweep as run_sweep, write_parquet
+                                     help="The results: a Parquet dataset (a folder of "
+                                          "parts and its _manifest.json).")):
+    """Evaluate many designs (in this process or on Dask) and write every design's
+    criteria, feasibility and reason to a Parquet dataset, part by part as the chunks
+    complete."""
+    from ...synthesis.search.scale import sweep_to
     from ...errors import AssemblyError, ModelError
 
     pb = _design_problem(file, var, positions)
     t0 = time.perf_counter()
-    with _bar() as bar:
-        task = bar.add_task("designs", total=samples)
-        ex = _executor(scheduler, workers, chunk,
-                       lambda done, total: bar.update(task, completed=done))
+    with _Progress("designs", samples, "designs") as prog:
+        ex = _executor(scheduler, workers, chunk, prog, prog.phase, scheduler_file, timeout)
         try:
-            with _running(ex, scheduler):
-                batch = run_sweep(pb, samples=samples, seed=seed, executor=ex)
-        except (ModelError, AssemblyError, OSError) as e:
-            _fail(str(e))
-    try:
-        write_parquet(batch, output)
-    except (OSError, ValueError) as e:
-        _fail(f"{output}: cannot write the table: {e}")
-    nf = int(batch.feasible.sum())
-    _ok(f"{samples} designs × {len(pb.positions)} positions on {ex.describe()} in "
-        f"{time.perf_counter() - t0:.1f} s; {nf} feasible; table: {output}")
-    i = batch.best()
-    if i >= 0:
+            with _running(ex, scheduler or scheduler_file):
+                r = sweep_to(pb, output, samples=samples, seed=seed, executor=ex,
+                             resume=resume)
+        except (ModelError, AssemblyError) as e:
+            kept = _parts_kept(output)
+            _fail(f"{e}" + (f"; {kept}" if kept else ""))
+        except OSError as e:
+            _fail(f"{output}: {e.strerror or e}")
+    done = f"{r.computed} designs" + (f" (and {r.resumed} of an earlier run)" if r.resumed
+                                      else "")
+    _ok(f"{done} × {len(pb.positions)} positions on {ex.describe()} in "
+        f"{time.perf_counter() - t0:.1f} s; {r.feasible} feasible; table: {output}")
+    if r.best is not None:
         c = pb.objectives[0]
-        console.print(Text(f"best sampled design: {c.sense} {c.name} = "
-                           f"{c.show(batch.objectives[i, 0])}"))
-    counts: dict = {}
-    for r in batch.reasons:
-        if r:
-            key = r.split(" at position")[0].split(" = ")[0]
-            counts[key] = counts.get(key, 0) + 1
-    for k, n in sorted(counts.items(), key=lambda kv: -kv[1])[:5]:
+        console.print(Text(f"best sampled design: #{r.best[0]}, {c.sense} {c.name} = "
+                           f"{c.show(r.best[1])}"))
+    for k, n in sorted(r.reasons.items(), key=lambda kv: -kv[1])[:5]:
         console.print(Text(f"  {n} infeasible: {k}"))
+
+
+def _parts_kept(output) -> str:
+    """What a failed sweep left in ``output``, in words ("" when nothing)."""
+    from ...synthesis.search.dataset import MANIFEST
+    p = Path(output)
+    if not (p / MANIFEST).is_file():
+        return ""
+    n = len(list(p.glob("part-*.parquet")))
+    return (f"{n} finished parts are kept in {output}: rerun the same command with --resume "
+            f"to compute only the rest") if n else ""
 
 
 def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [design] or --var."),
@@ -230,6 +327,7 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
              seed: int = typer.Option(0, "--seed", parser=SEED, help=_SEED_HELP),
              workers: int = _WORKERS,
              scheduler: str = _SCHED,
+             scheduler_file: Path = _SCHED_FILE, timeout: float = _TIMEOUT,
              chunk: int = _CHUNK,
              output: str = typer.Option("assur-optimize", "-o", "--output",
                                         help="Output directory."),
@@ -250,7 +348,8 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
     if not pb.objectives:
         _fail(f"{file}: no objective: add [[design.objectives]] (maximize = … or minimize = …)")
     out = _output_dir(output)
-    res, ex, dt = _search(pb, popsize, maxiter, seed, workers, scheduler, chunk, polish)
+    res, ex, dt = _search(pb, popsize, maxiter, seed, workers, scheduler, chunk, polish,
+                          scheduler_file, timeout)
     if len(pb.objectives) > 1:
         _pareto_written(pb, res, out, dt)
         return
@@ -264,28 +363,26 @@ def optimize(file: Path = typer.Argument(..., help="Model file (TOML) with [desi
         f"{ex.describe()}, {dt:.1f} s; model: {path}; report: {rep}")
 
 
-def _search(pb, popsize, maxiter, seed, workers, scheduler, chunk, polish):
+def _search(pb, popsize, maxiter, seed, workers, scheduler, chunk, polish,
+            scheduler_file=None, timeout=None):
     """Differential evolution (one objective) or NSGA-II (several) on the executor,
     with a progress bar: the result, the executor and the time taken [s]."""
     from ...synthesis.search.search import optimize as run_de, pareto
     from ...errors import AssemblyError, ModelError
 
     t0 = time.perf_counter()
-    with _bar() as bar:
-        task = bar.add_task("generations", total=maxiter)
-        ex = _executor(scheduler, workers, chunk, None)
+    with _Progress("generations", maxiter, "generations") as prog:
+        ex = _executor(scheduler, workers, chunk, None, prog.phase, scheduler_file, timeout)
         try:
-            with _running(ex, scheduler):
+            with _running(ex, scheduler or scheduler_file):
                 def run(X):
                     return ex.evaluate(pb, X)
                 if len(pb.objectives) > 1:
                     res = pareto(pb, pop_size=popsize * len(pb.variables), generations=maxiter,
-                                 seed=seed, evaluate=run,
-                                 callback=lambda g, n: bar.update(task, completed=g))
+                                 seed=seed, evaluate=run, callback=lambda g, n: prog(g))
                 else:
                     res = run_de(pb, popsize=popsize, maxiter=maxiter, seed=seed, evaluate=run,
-                                 callback=lambda g, v: bar.update(task, completed=g),
-                                 polish=polish)
+                                 callback=lambda g, v: prog(g), polish=polish)
         except (ModelError, AssemblyError) as e:
             _fail(str(e))
         except OSError as e:  # the scheduler went away, or did not speak Dask
