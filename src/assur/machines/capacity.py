@@ -3,8 +3,10 @@ minimum over the positions and the farthest reach (seed 001 lab 1, eqs. 10, 14, 
 
 A loader's boom cylinder S lifts the suspension axis 09 and everything the boom
 carries; its traverse cylinder S1 only turns the traverse about 09. The capacity of
-a cylinder at a point, G = (F_max·η_m − F_dead)/I with I = ∂Y/∂q of the point along
-the cylinder's coordinate q (:meth:`assur.machines.cylinders.CylinderResult.capacity`), has
+a cylinder at a point, G = (σ_w·F_max,w·η_m − F_dead)/I with I = ∂Y/∂q of the point
+along the cylinder's coordinate q and σ_w, F_max,w of the chamber of the stroke's
+working direction (positive for a pulling cylinder too; :mod:`assur.core.cylinders`
+has the sign diagram) (:meth:`assur.machines.cylinders.CylinderResult.capacity`), has
 a meaning only for the points of the chain that cylinder drives
 (:mod:`assur.core.chains`); elsewhere I ≡ 0 and the capacity is left out, with a note.
 
@@ -19,7 +21,9 @@ which is eq. (14) solved for the weight G = m_po·g (eq. 14 writes the same with
 m_str/m_po inside the bracket). A model names the links whose loads are dead loads
 (``[tables] dead_loads = ["3"]``, :meth:`Mechanism.with_tables`); their weights and
 masses are then carried in every capacity, through the virtual work of those loads
-along the cylinder's coordinate (zero for a cylinder that does not move them).
+along the cylinder's coordinate (zero for a cylinder that does not move them). A
+dead load is never the load to lift: the reserve (G − P)/P is against the payload P
+alone, since G has already paid for the dead loads.
 """
 
 from __future__ import annotations

@@ -26,10 +26,10 @@ Outputs are written as function calls (units SI):
                          ``Rm(i, j)`` the moment at a prismatic pair or crank drive [N·m]
 ``p(cyl)``               pressure of cylinder ``cyl``, σ·F/(η_m·k·A·η_h), or of its
                          supply line [Pa]
-``G(cyl, p)``            lift capacity at point p, (σ·k·p_max·A·η_h·η_m − F_dead)/I(p)
-                         [N]
-``reserve(cyl, p, P)``   capacity reserve (G − P)/P·100 for a load P (number or
-                         parameter) [%]
+``G(cyl, p)``            lift capacity at point p in the working direction,
+                         (σ_w·k·p_max·A_w·η_h·η_m − F_dead)/I(p) [N]
+``reserve(cyl, p, P)``   capacity reserve (G − P)/P·100 for a payload P (number or
+                         parameter; G carried the dead loads) [%]
 ``Xc``, ``Yc``           the common centre of mass of the masses on moving links,
                          Σ m_i·r_i / Σ m_i (001 lab 3, :mod:`assur.dynamics.balancing`) [m]
 ``name``                 a formula of the model's ``[[tables.formulas]]`` by its name
@@ -41,6 +41,14 @@ a cylinder's quantities: the chamber of ``side``, ``"auto"`` included, double ro
 counts, supply lines, the model's dead loads ``[tables] dead_loads``), evaluated in
 the context's kind of number; the reports' :class:`assur.machines.cylinders.CylinderResult`
 calls the same formulas over arrays.
+
+The capacity's working chamber of a ``side = "auto"`` cylinder is one per stroke
+(design): the sign of W, the payload's actuator force summed over the design's
+positions (:func:`assur.core.cylinders.stroke_work`). The kernel is per position, so
+:func:`evaluate` runs a first pass for the forces of all the loads and of the dead
+loads, sums them per design and writes W into a row of the parameter table; asking
+for ``G`` or ``reserve`` of an ``auto`` cylinder thus costs one more kernel run that
+stores two values per position.
 
 Static loads only (weights, forces, moments, springs, the weights of masses); the
 fused kernel does not check continuity between positions (``solve`` does).
