@@ -16,6 +16,7 @@ position of it (:mod:`assur.core.cylinders`, its sign diagram).
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 
@@ -209,7 +210,7 @@ class CylinderResult:
         f = virtual_work_forces(_with_loads(kin, dead), g=g)[self.cylinder.coordinate]
         return kin.reshape(np.broadcast_to(f, (kin.m, kin.n)))
 
-    @property
+    @functools.cached_property
     def stroke_load(self):
         """W, the payload's actuator force summed over the positions of each design's
         stroke [N] (:func:`assur.core.cylinders.stroke_work`): its sign is the working
