@@ -95,3 +95,49 @@ def test_a_scheduler_without_workers_0(tmp_path):
     assert r.exit_code == 0, r.output
     assert f"on Dask scheduler {cluster.scheduler_address}" in " ".join(r.output.split())
     assert (out / "_manifest.json").is_file() and len(list(out.glob("part-*.parquet"))) == 1
+
+
+def test_sweep_runs_in_this_process_by_default_and_logs_lines(tmp_path):
+    """No --workers, no --scheduler: this process; stderr not a terminal: the phases
+    and the progress as lines (percent, designs/s), the end's writing too."""
+    out = tmp_path / "s.parquet"
+    r = runner.invoke(app, ["sweep", DESIGN, "--samples", "2e3", "--positions", "3",
+                            "--chunk", "500", "-o", str(out)])
+    assert r.exit_code == 0, r.output
+    text = " ".join(r.output.split())
+    assert "2000 designs × 3 positions on this process" in text
+    assert "designs: 100 % (2000/2000 designs)" in r.stderr and "designs/s" in r.stderr
+    assert "designs: writing the manifest" in r.stderr
+    import pandas as pd
+    assert len(pd.read_parquet(out)) == 2000
+
+
+def test_sweep_resume_on_the_command_line(tmp_path):
+    out = tmp_path / "s.parquet"
+    args = ["sweep", DESIGN, "--samples", "1200", "--positions", "3", "--chunk", "400",
+            "-o", str(out)]
+    assert runner.invoke(app, args).exit_code == 0
+    first = sorted(out.glob("part-*.parquet"))
+    first[-1].unlink()  # the last part lost, as if the run had been stopped there
+    r = runner.invoke(app, args + ["--resume"])
+    assert r.exit_code == 0, r.output
+    assert "400 designs (and 800 of an earlier run)" in " ".join(r.output.split())
+
+
+def test_a_cluster_without_workers_ends_in_one_message(tmp_path):
+    """A scheduler with no worker: after --timeout seconds, one line that says so."""
+    from distributed import LocalCluster
+
+    out = tmp_path / "s.parquet"
+    with LocalCluster(n_workers=0, processes=False, protocol="tcp://",
+                      dashboard_address=":0") as cluster:
+        t0 = time.perf_counter()
+        r = runner.invoke(app, ["sweep", DESIGN, "--samples", "100", "--positions", "3",
+                                "--scheduler", cluster.scheduler_address, "--timeout", "1",
+                                "-o", str(out)])
+    assert r.exit_code == 1, r.output
+    line = " ".join(r.stderr.split("error: ")[-1].split())  # after the phases' lines
+    assert "error: " in r.stderr and "\n" not in r.stderr.split("error: ")[-1].strip()
+    assert line.startswith(f"Dask scheduler {cluster.scheduler_address} has had no "
+                           f"worker for 1 s"), line
+    assert "Traceback" not in r.output and time.perf_counter() - t0 < 30

@@ -37,6 +37,7 @@ send each population to the cluster; :func:`write_parquet` stores a batch as a t
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
 import time
 from dataclasses import dataclass
@@ -124,6 +125,10 @@ def run_chunk(problem, chunk):
         X = chunk.X if chunk.X is not None else problem.draw(chunk.seed, chunk.start,
                                                               chunk.stop)
         batch = problem.evaluate(X)
+    # a chunk's mechanism and its kernels' plans form reference cycles that the
+    # young generations hold: collected now, else they pile up (1e7 designs: 0.45 →
+    # 1.4 GB) until a full collection; 3 ms a chunk
+    gc.collect(1)
     if chunk.out == "part":
         from .dataset import part_bytes
         return part_bytes(batch, chunk.start)
@@ -476,8 +481,6 @@ class _Run:
         ex = self.ex
         first = True
         self._threads()
-        if not self.nthreads:
-            ex._phase(f"waiting for workers ({ex.describe()} has none)")
         ex._phase("first chunks (the workers build the problem; a new kernel compiles)")
         try:
             while self.todo or self.inflight:
@@ -741,9 +744,7 @@ def write_parquet(batch, path):
     >>> df.shape, list(df.columns[:3]), str(df["status"].dtype)
     ((20, 18), ['design', 'X01', 'Y01'], 'category')
     """
-    import pyarrow.parquet as pq
-
-    from .dataset import part_table
-    pq.write_table(part_table(batch), path, compression="zstd")
+    from .dataset import part_table, write_table
+    write_table(part_table(batch), path)
     return path
 
