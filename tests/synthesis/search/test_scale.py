@@ -56,3 +56,30 @@ def test_a_local_cluster_leaves_the_environment_as_it_was():
     assert "OMP_NUM_THREADS" in changed or before.get("OMP_NUM_THREADS") == "1"  # Dask did
     assert os.environ.pop("ASSUR_TEST_SET_INSIDE") == "kept"
     assert dict(os.environ) == before
+
+
+def _kernel_threads_in_a_task():
+    from assur.kernel import threads
+    from assur.synthesis.search import scale
+    with scale._worker_threads():
+        return threads()
+
+
+@pytest.mark.parametrize("nthreads", [1, 3])
+def test_the_kernel_threads_follow_the_worker_threads(nthreads, monkeypatch):
+    """A worker of n threads running one task: its kernel on n threads (it was the
+    CPUs of the machine whatever --nthreads); $ASSUR_THREADS still wins; this
+    process's own setting is back after the task."""
+    from distributed import Client, LocalCluster
+
+    from assur.kernel import threads
+    monkeypatch.delenv("ASSUR_THREADS", raising=False)
+    mine = threads()
+    with LocalCluster(n_workers=1, threads_per_worker=nthreads, processes=False,
+                      dashboard_address=":0") as cluster, Client(cluster) as client:
+        assert client.submit(_kernel_threads_in_a_task, pure=False).result() == nthreads
+        monkeypatch.setenv("ASSUR_THREADS", "5")
+        assert client.submit(_kernel_threads_in_a_task, pure=False).result() == 5
+    assert threads() == 5
+    monkeypatch.delenv("ASSUR_THREADS")
+    assert threads() == mine
