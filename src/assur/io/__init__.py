@@ -105,6 +105,9 @@ class Model:
         within = […] }``): the held coordinates solved at every position of the one
         given, and the path's derivatives dq/ds, d²q/ds² (:mod:`assur.core.held`);
         None otherwise.
+    ratings : tuple of Rating
+        The ``[[rating]]`` tables (:mod:`assur.machines.ratings`, docs/ratings.md), in
+        the file's order; empty without them. :meth:`analyze` evaluates them.
 
     Examples
     --------
@@ -132,6 +135,7 @@ class Model:
     design: object = None
     tolerances: tuple = ()
     path: object = None
+    ratings: tuple = ()
 
     @property
     def shape(self) -> tuple:
@@ -213,6 +217,9 @@ class Model:
             spec = dataclasses.replace(spec, counter_masses=())
         add_dynamics(analysis, spec)
         add_lift_test(analysis, self.lift_test)
+        # [[rating]]: each rating over the analysis' positions (assur.machines.ratings)
+        analysis.ratings = tuple(r.evaluate(self.mechanism, analysis.kinematics)
+                                 for r in self.ratings)
         analysis.solved = tuple(self.solved)
         analysis.model_warnings = tuple(self.warnings)  # shown among the report's warnings
         analysis.source = self.source.name if self.source else None  # the file, not its folders
@@ -385,7 +392,8 @@ def loads(text: str, name: str = "<string>", *, source: Path | None = None) -> M
     return Model(mech, grid, MappingProxyType(axes), tuple(solved), source,
                  builder.dynamics,
                  tuple(builder.warnings), builder.lift_test, builder.paired, builder.drive,
-                 builder.simulation, design, tuple(builder.tolerances), builder.path)
+                 builder.simulation, design, tuple(builder.tolerances), builder.path,
+                 tuple(builder.ratings))
 
 
 def _warn(model: Model) -> Model:

@@ -309,6 +309,8 @@ class Builder(Uses, Assembly, Conditions):
         self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
         from ._lift_test import build_lift_test
         self.lift_test = build_lift_test(self, mech)  # [lift_test]: io/_lift_test.py
+        from ._ratings import build_ratings
+        self.ratings = build_ratings(self, mech)  # [[rating]]: io/_ratings.py
         from ._tolerances import build_tolerances
         self.tolerances = build_tolerances(self, mech)  # [tolerances]: io/_tolerances.py
         self.drive = self.simulation = None

@@ -308,6 +308,8 @@ class FileSpec(_Table):
     #: [design]: checked by :mod:`assur.io._design` (design variables and criteria)
     design: Optional[dict[str, Any]] = None
     motion: dict[str, MotionSpec] = {}
+    #: [[rating]]: checked by :mod:`assur.io._ratings` (ratings of the standards)
+    rating: Optional[Any] = None
 
 
 def __getattr__(name):

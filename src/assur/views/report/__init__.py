@@ -239,6 +239,9 @@ def _figure_set(analysis, lang, design, du) -> dict:
     if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
         from .lift import lift_test_figure
         figs["lift_test"] = lift_test_figure(analysis, lang, units=du)
+    if getattr(analysis, "ratings", None):  # [[rating]]: views/report/ratings.py
+        from .ratings import rating_figures
+        figs.update(rating_figures(analysis, lang, units=du))
     return figs
 
 

@@ -20,7 +20,7 @@ __all__ = ["TABLE_CONTENTS", "table_filename", "write_csv", "write_frame_csv", "
 TABLE_CONTENTS = {"2.1": "link_angles", "2.2": "points", "3.1": "analogs", "4.1": "cylinders",
             "G": "capacity_maps", "5.1": "reactions", "5.2": "reactions_with_inertia",
             "D": "crank_dynamics", "V": "velocities", "6.1": "axle_loads", "IC": "ic_check", "L": "lift_test",
-            "F": "formulas"}
+            "F": "formulas", **{f"R{i}": f"rating_{i}" for i in range(1, 100)}}
 
 
 def table_filename(table, ext="csv") -> str:

@@ -1,0 +1,27 @@
+"""Ratings of machines in the manner of the standards, one home for all of them
+(docs/ratings.md): a rating kind per model-file ``[[rating]] type``, its parameters,
+its definition in our words with the standard cited, and its result as named arrays
+with their quantities (:mod:`assur.machines.ratings.base`, the registry
+:mod:`assur.machines.ratings._registry`).
+
+* ``crane_chart`` — a crane's load chart (:mod:`assur.machines.ratings.crane`);
+* ``excavator_digging`` — the digging forces of an excavator's or a backhoe's arm,
+  ISO 6015 (:mod:`assur.machines.ratings.digging`).
+
+Examples
+--------
+>>> from assur.machines.ratings import registry
+>>> [(name, cls.standard) for name, cls in registry().items()][:1]
+[('crane_chart', 'ISO 4301-1, ISO 10245-1 (load charts)')]
+"""
+
+from __future__ import annotations
+
+from ._registry import rating_type, register, registry
+from .base import (ROLES, Param, Rating, RatingResult, Series, carried_loads, check_names,
+                   declared, need_cylinders, number, param, with_loads_of)
+from . import crane as _crane  # noqa: F401  (registers crane_chart)
+from . import digging as _digging  # noqa: F401  (registers excavator_digging)
+
+__all__ = ["ROLES", "Param", "param", "Series", "RatingResult", "Rating", "carried_loads",
+           "with_loads_of", "declared", "check_names", "need_cylinders", "number", "register", "registry", "rating_type"]

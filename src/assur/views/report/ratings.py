@@ -1,0 +1,97 @@
+"""The report's ratings (``[[rating]]``, :mod:`assur.machines.ratings`): a table and a
+figure per rating, titled from the model's rating, in the user's units. The numbers
+are the rating's own (:class:`assur.machines.ratings.RatingResult`); nothing is
+computed here."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...texts import LANGS, localize
+from ._canvas import new_figure
+from .labels import check_lang, unit
+from .tables._data import Column, Table
+
+__all__ = ["rating_tables", "rating_figures"]
+
+
+def _results(analysis):
+    return tuple(getattr(analysis, "ratings", None) or ())
+
+
+def rating_tables(analysis) -> list:
+    """One :class:`~assur.views.report.tables.Table` per rating of ``analysis``
+    (ids ``R1``, ``R2`` … in the file's order), columns in SI as the other tables'.
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.views.report.ratings import rating_tables
+    >>> a = io.load(io.bundled("crane_lv184a")).analyze()
+    >>> t = rating_tables(a)[0]
+    >>> t.id, [c.symbol for c in t.columns][-3:], t.column("M").unit
+    ('R1', ['G', 'governing', 'M'], 'N·m')
+    """
+    out = []
+    for i, r in enumerate(_results(analysis)):
+        cols = tuple(Column(s.symbol, s.unit, np.asarray(s.values, float),
+                            {lang: localize(s.label, lang) for lang in LANGS})
+                     for s in r.series)
+        notes = tuple({lang: localize(n, lang) for lang in LANGS} for n in r.notes)
+        titles = {lang: r.rating.heading(lang) for lang in LANGS}
+        out.append(Table(f"R{i + 1}", titles, cols, notes))
+    return out
+
+
+def rating_figures(analysis, lang="en", units=None) -> dict:
+    """``{name: Figure}``, one per rating of ``analysis``: its curves (``y``) over its
+    abscissa (``x``), one curve per value of its ``group`` (a load chart: one per boom
+    position), in the display units (``units``; default: the model file's).
+
+    Examples
+    --------
+    >>> from assur import io
+    >>> from assur.views.report.ratings import rating_figures
+    >>> figs = rating_figures(io.load(io.bundled("crane_lv184a")).analyze())
+    >>> ax = figs["rating_1"].axes[0]
+    >>> ax.get_xlabel(), ax.get_ylabel()
+    ('reach of D [m]', 'lifting capacity at D [N]')
+    """
+    from ...core.display import unit_system
+    lang = check_lang(lang)
+    du = unit_system(analysis.mechanism, units)
+    figs = {}
+    for i, r in enumerate(_results(analysis)):
+        fig = new_figure()
+        ax = fig.add_subplot()
+        xs = r.get(r.x)
+        xv, xu = du.convert(np.asarray(xs.values, float), xs.unit)
+        xv = np.asarray(xv, float)
+        groups = [None]
+        if r.group is not None:
+            gv = np.asarray(r[r.group])
+            groups = list(dict.fromkeys(gv.tolist()))
+        styles = ("-", "--", ":", "-.")
+        for j, sym in enumerate(r.y):
+            ys = r.get(sym)
+            yv, yu = du.convert(np.asarray(ys.values, float), ys.unit)
+            yv = np.asarray(yv, float)
+            for gi, g in enumerate(groups):
+                sel = np.ones(len(xv), bool) if g is None else np.asarray(r[r.group]) == g
+                label = localize(ys.label, lang)
+                if g is not None:  # one curve per value of the group, in the rows' order
+                    gs = r.get(r.group)
+                    gv, gu = du.convert(float(g), gs.unit)
+                    label = f"{label}, {r.group} = {float(gv):.4g} {unit(gu, lang)}"
+                ax.plot(xv[sel], yv[sel], styles[j % len(styles)], marker=".",
+                        color=f"C{gi % 10}" if g is not None else f"C{j}", label=label)
+        ax.set_title(r.rating.heading(lang), fontsize=10)
+        ax.set_xlabel(f"{localize(xs.label, lang)} [{unit(xu, lang)}]")
+        first = r.get(r.y[0])
+        ax.set_ylabel(f"{localize(first.label, lang)} "
+                      f"[{unit(du.convert(1.0, first.unit)[1], lang)}]")
+        ax.grid(True, alpha=0.35)
+        if r.y:
+            ax.legend(fontsize=8)
+        figs[f"rating_{i + 1}"] = fig
+    return figs
