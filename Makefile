@@ -70,6 +70,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/page.py
 	$(PY) benchmarks/report.py
 	$(PY) benchmarks/latency.py
+	$(PY) benchmarks/scale.py
 
 # the interactive page for the seed-003 hitch (docs/page.md)
 serve: $(PAGE_STAMP)

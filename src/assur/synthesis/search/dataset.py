@@ -322,6 +322,22 @@ class Dataset:
         ModelError
             The folder is not an assur sweep, or (``resume``) it is one of another
             problem, seed or number of samples.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> (Path(d) / "s.parquet").mkdir()
+        >>> _ = (Path(d) / "s.parquet" / "notes.txt").write_text("mine")
+        >>> Dataset(f"{d}/s.parquet", pb, samples=10, seed=1).open()  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        assur.errors.ModelError: .../s.parquet: the folder is not an assur sweep (no _manifest.json); choose another output (-o)
         """
         p = self.path
         if p.is_file() or p.is_symlink() and not p.is_dir():
@@ -370,11 +386,41 @@ class Dataset:
     # ---- parts -------------------------------------------------------------------------
     @property
     def done(self) -> int:
-        """Designs the finished parts hold."""
+        """Designs the finished parts hold.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 0, 10)), start=0))
+        >>> ds.done
+        10
+        """
         return sum(s["stop"] - s["start"] for s in self.summaries)
 
     def missing(self) -> list:
-        """The ranges ``(start, stop)`` of designs no finished part holds, in order."""
+        """The ranges ``(start, stop)`` of designs no finished part holds, in order.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 10, 20)), start=10))
+        >>> ds.missing()
+        [(0, 10), (20, 30)]
+        """
         out, at = [], 0
         for s in sorted(self.summaries, key=lambda s: s["start"]):
             if s["start"] > at:
@@ -385,7 +431,22 @@ class Dataset:
         return out
 
     def write(self, data, summary):
-        """Write a part's bytes (hidden name, then renamed) and keep its summary."""
+        """Write a part's bytes (hidden name, then renamed) and keep its summary.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 0, 30)), start=0))
+        >>> sorted(p.name for p in ds.path.iterdir())
+        ['_manifest.json', 'part-000000000000-000000000030.parquet']
+        """
         a, b = summary["start"], summary["stop"]
         name = f"part-{a:012d}-{b:012d}.parquet"
         tmp = self.path / f".{name}.tmp"
@@ -398,18 +459,65 @@ class Dataset:
         self.summaries.append(summary)
 
     def close(self, seconds=None):
-        """Mark the run complete in the manifest (every design written)."""
+        """Mark the run complete in the manifest (every design written).
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> import json
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 0, 30)), start=0))
+        >>> ds.close(seconds=0.1)
+        >>> json.loads((ds.path / "_manifest.json").read_text(encoding="utf-8"))["complete"]
+        True
+        """
         self._write_json(MANIFEST, {**self.manifest(), "complete": True,
                                     "parts": len(self.summaries), "seconds": seconds})
 
     # ---- the summary -------------------------------------------------------------------
     def feasible(self) -> int:
-        """Feasible designs in the finished parts."""
+        """Feasible designs in the finished parts.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 0, 30)), start=0))
+        >>> ds.feasible()
+        0
+        """
         return sum(s["feasible"] for s in self.summaries)
 
     def best(self):
         """(index, objective [SI]) of the best feasible design of the finished parts
-        for the first objective, or None."""
+        for the first objective, or None.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 0, 30)), start=0))
+        >>> ds.best() is None
+        True
+        """
         pb = self.problem
         if not pb.objectives:
             return None
@@ -418,7 +526,22 @@ class Dataset:
         return min(cands, key=lambda c: (sign * c[1], c[0])) if cands else None
 
     def reasons(self) -> dict:
-        """Infeasible designs of the finished parts counted by the kind of reason."""
+        """Infeasible designs of the finished parts counted by the kind of reason.
+
+        Examples
+        --------
+        >>> import tempfile
+        >>> from pathlib import Path
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> from assur.synthesis.search.dataset import Dataset, part_bytes
+        >>> pb = load_problem(io.bundled("hitch_003_design"), positions=6)
+        >>> d = tempfile.mkdtemp()
+        >>> ds = Dataset(f"{d}/s.parquet", pb, samples=30, seed=1).open()
+        >>> ds.write(*part_bytes(pb.evaluate(pb.draw(1, 0, 30)), start=0))
+        >>> sum(ds.reasons().values())
+        30
+        """
         out: dict = {}
         for s in self.summaries:
             for k, n in s["reasons"].items():
