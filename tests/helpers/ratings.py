@@ -127,7 +127,8 @@ def _angle(u, v):
 def hand_rates(kin, i):
     """dθ1/dS1 and dθ2/dS2 at position i from the cylinder triangles (S² = a² + b² −
     2ab·cos γ ⇒ dγ/dS = S/(a·b·sin γ)), and the points [m]."""
-    P = {p: np.array([flat(kin.x(p))[i], flat(kin.y(p))[i]]) for p in ("B", "O1", "E", "G", "T", "C")}
+    P = {p: np.array([flat(kin.x(p))[i], flat(kin.y(p))[i]])
+         for p in ("B", "O1", "E", "G", "T", "C")}
     O, A = np.zeros(2), np.array([0.2, -0.4])
     S1, S2 = flat(kin.q("S1"))[i], flat(kin.q("S2"))[i]
     g1 = _angle(A - O, P["B"] - O)

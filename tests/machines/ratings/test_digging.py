@@ -1,6 +1,5 @@
 """excavator_digging (ISO 6015) against the closed-form forces of a two-link arm."""
 
-
 import numpy as np
 import pytest
 

@@ -53,7 +53,7 @@ def registry() -> dict[str, type]:
     --------
     >>> from assur.machines.ratings import registry
     >>> list(registry())
-    ['crane_chart', 'excavator_digging']
+    ['crane_chart', 'excavator_digging', 'loader_tipping', 'loader_breakout', 'loader_lift']
     """
     return dict(_REGISTRY)
 
@@ -71,10 +71,10 @@ def rating_type(name: str) -> type:
     >>> from assur.machines.ratings import rating_type
     >>> rating_type("crane_chart").type_name
     'crane_chart'
-    >>> rating_type("crane")
+    >>> rating_type("crane")   # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    KeyError: "no rating type 'crane'; types: crane_chart, excavator_digging"
+    KeyError: "no rating type 'crane'; types: crane_chart, excavator_digging, loader_tipping, ..."
     """
     try:
         return _REGISTRY[name]

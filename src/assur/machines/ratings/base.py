@@ -179,6 +179,9 @@ class RatingResult:
         None: one curve per ``y``.
     notes : tuple of Text
         What the table says under it (the governing limits' key, the definitions).
+    scalars : tuple of Series
+        Single values of the rating (one-element arrays: a static tipping load at the
+        standard position), shown under its table in the user's units.
 
     Examples
     --------
@@ -196,6 +199,7 @@ class RatingResult:
     y: tuple
     group: str | None = None
     notes: tuple = ()
+    scalars: tuple = ()
 
     @property
     def symbols(self) -> tuple:

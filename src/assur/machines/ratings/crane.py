@@ -85,8 +85,8 @@ def holding_limit(mech, cyl, I, F_dead=0.0):
     >>> from assur.core.cylinders import Cylinder
     >>> from assur.machines.ratings.crane import holding_limit
     >>> c = Cylinder("c", coordinate="S", bore=0.08, rod=0.04, p_relief=20e6)
-    >>> [round(float(g)) for g in holding_limit(None, c, np.array([2.0, -2.0, 0.0]))]
-    [50265, 37699, inf]
+    >>> holding_limit(None, c, np.array([2.0, -2.0, 0.0])).round().tolist()   # [N]
+    [50265.0, 37699.0, inf]
     """
     t = C.terms(replace(cyl, side="auto"), lambda r: number(mech, r))
     I = np.asarray(I, float)

@@ -93,7 +93,8 @@ class ExcavatorDigging(Rating):
     tip: str = param("point", doc="the bucket's tooth tip")
     bucket_cylinder: str = param("cylinder", doc="the bucket cylinder (its side: the way it digs)")
     bucket_pivot: str = param("point", doc="the bucket's pivot on the arm")
-    arm_cylinder: str = param("cylinder", doc="the arm (stick) cylinder (its side: the way it digs)")
+    arm_cylinder: str = param("cylinder",
+                              doc="the arm (stick) cylinder (its side: the way it digs)")
     arm_pivot: str = param("point", doc="the arm's pivot on the boom")
     self_weight: bool = param("flag", default=False,
                               doc="carry the model's loads other than those at the tip")

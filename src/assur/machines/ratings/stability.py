@@ -55,7 +55,7 @@ def machine_of(mech):
     return carrying.machine_for({r: number(mech, r) for r in carrying.ref_names()})
 
 
-def tipping_load(mech, kin, point, carried=None):
+def tipping_load(mech, kin, point, carried=None, x=None):
     """The static tipping load at ``point`` over the positions of ``kin`` (one design)
     [N] (module notes).
 
@@ -71,6 +71,9 @@ def tipping_load(mech, kin, point, carried=None):
         A mechanism whose loads' vertical forces the machine carries besides the load
         (:func:`assur.machines.ratings.carried_loads`); None: the machine's own weights
         only.
+    x : ndarray, optional
+        The load's horizontal coordinate over the positions [m], where it acts at no
+        named point (a point of a body between two named ones); default: ``point``'s.
 
     Examples
     --------
@@ -90,7 +93,7 @@ def tipping_load(mech, kin, point, carried=None):
     0.0
     """
     machine = machine_of(mech)
-    x = np.asarray(kin.x(point), float).reshape(-1)
+    x = np.asarray(kin.x(point) if x is None else x, float).reshape(-1)
     names = list(machine.axles)
     xa = np.array([machine.axles[n] for n in names])
     far = np.argmax(np.abs(x[:, None] - xa[None, :]), axis=1)   # (n,)

@@ -10,6 +10,7 @@ import numpy as np
 from ...texts import LANGS, localize
 from ._canvas import new_figure
 from .labels import check_lang, unit
+from .numbers import quantity
 from .tables._data import Column, Table
 
 __all__ = ["rating_tables", "rating_figures"]
@@ -19,9 +20,11 @@ def _results(analysis):
     return tuple(getattr(analysis, "ratings", None) or ())
 
 
-def rating_tables(analysis) -> list:
+def rating_tables(analysis, units=None) -> list:
     """One :class:`~assur.views.report.tables.Table` per rating of ``analysis``
-    (ids ``R1``, ``R2`` … in the file's order), columns in SI as the other tables'.
+    (ids ``R1``, ``R2`` … in the file's order), columns in SI as the other tables';
+    its single values (a static tipping load) written under it in ``units`` (a
+    :class:`assur.core.display.DisplayUnits`; default: the model file's).
 
     Examples
     --------
@@ -32,12 +35,17 @@ def rating_tables(analysis) -> list:
     >>> t.id, [c.symbol for c in t.columns][-3:], t.column("M").unit
     ('R1', ['G', 'governing', 'M'], 'N·m')
     """
+    from ...core.display import unit_system
+    du = unit_system(analysis.mechanism, units)
     out = []
     for i, r in enumerate(_results(analysis)):
         cols = tuple(Column(s.symbol, s.unit, np.asarray(s.values, float),
                             {lang: localize(s.label, lang) for lang in LANGS})
                      for s in r.series)
-        notes = tuple({lang: localize(n, lang) for lang in LANGS} for n in r.notes)
+        notes = tuple({lang: localize(n, lang) for lang in LANGS} for n in r.notes) + tuple(
+            {lang: f"{localize(v.label, lang)}: "
+                   f"{quantity(float(v.values[0]), v.quantity, du, lang)}"
+             for lang in LANGS} for v in r.scalars)
         titles = {lang: r.rating.heading(lang) for lang in LANGS}
         out.append(Table(f"R{i + 1}", titles, cols, notes))
     return out

@@ -69,7 +69,7 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None,
     v = _View(analysis, design, angles=angles, analogs=analogs, units=units)
     tables = [t for t in (b(v) for b in _BUILDERS) if t is not None]
     from ..ratings import rating_tables
-    tables += rating_tables(analysis)  # [[rating]]: views/report/ratings.py
+    tables += rating_tables(analysis, v.units)  # [[rating]]: views/report/ratings.py
     tables = _with_formulas(v, tables)
     # the model may name columns as its seed does (``tables.symbols``: F_S → Fgc …)
     rename = dict(analysis.mechanism.tables.get("symbols", {}))
