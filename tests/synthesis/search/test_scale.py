@@ -83,3 +83,23 @@ def test_the_kernel_threads_follow_the_worker_threads(nthreads, monkeypatch):
     assert threads() == 5
     monkeypatch.delenv("ASSUR_THREADS")
     assert threads() == mine
+
+
+def test_a_worker_that_raises_sends_its_message_back():
+    """A design problem's own error on a worker reaches the client as in this process:
+    the same type, the same message (not a Dask error, not a hang)."""
+    from distributed import LocalCluster
+
+    from assur.errors import ModelError
+    pb = load_problem(io.bundled("hitch_003_design"), positions=4)
+    X = pb.sample(6, seed=1)
+    X[4, 2] = np.nan
+    with pytest.raises(ModelError) as here:
+        Executor(chunk=3).evaluate(pb, X)
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                      dashboard_address=":0") as cluster:
+        with Executor(scheduler=cluster.scheduler_address, chunk=3) as ex:
+            with pytest.raises(ModelError) as there:
+                ex.evaluate(pb, X)
+    assert "has a value that is not finite" in str(here.value)
+    assert str(there.value) == str(here.value)

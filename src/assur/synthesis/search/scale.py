@@ -413,10 +413,13 @@ class Executor:
         total = sum(b - a for a, b in ranges)
         if self.client is None:
             done = 0
+            self._phase("first chunk (a new kernel compiles)")
             for a, b in ranges:
                 for s in range(a, b, self.chunk):
                     c = make(s, min(b, s + self.chunk))
-                    handle(c, run_chunk(problem, c))
+                    result = run_chunk(problem, c)
+                    self._phase("evaluating")
+                    handle(c, result)
                     done += c.size
                     if self.progress:
                         self.progress(done, total)
