@@ -122,6 +122,7 @@ def test_sweep_resume_on_the_command_line(tmp_path):
     r = runner.invoke(app, args + ["--resume"])
     assert r.exit_code == 0, r.output
     assert "400 designs (and 800 of an earlier run)" in " ".join(r.output.split())
+    assert "designs: 100 % (400/400 designs)" in r.stderr
 
 
 def test_a_cluster_without_workers_ends_in_one_message(tmp_path):

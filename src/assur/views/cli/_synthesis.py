@@ -237,11 +237,13 @@ class _Progress:
 
     def __call__(self, done, total=None):
         now = time.perf_counter()
+        if total is not None:  # a resumed sweep computes only the missing designs
+            self.total = total
         if self.t_first is None:
             self.t_first, self.done_first = now, done
         self.done = done
         if self.bar is not None:
-            self.bar.update(self.task, completed=done)
+            self.bar.update(self.task, completed=done, total=self.total)
             return
         if now - self.last < LINE_EVERY and done < self.total:
             return
