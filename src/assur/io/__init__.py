@@ -454,10 +454,13 @@ def load(path, *, warn: bool = False) -> Model:
     return _warn(model) if warn else model
 
 
-def read_model_bytes(p: Path, shown: str) -> bytes:
+def read_model_bytes(p: Path, shown: str, what: str = "model file (.toml)",
+                     limit: int | None = None) -> bytes:
     """The bytes of the model file ``p``, refusing what is not a regular file of at
     most :data:`MAX_FILE_BYTES` *before* opening it (a FIFO would block, a device
-    such as ``/dev/zero`` would never end).
+    such as ``/dev/zero`` would never end). ``what`` names the file expected in the
+    messages and ``limit`` its size at most [bytes] (default :data:`MAX_FILE_BYTES`),
+    for the other files a command reads (``assur fit``'s printed table).
 
     Raises
     ------
@@ -468,29 +471,30 @@ def read_model_bytes(p: Path, shown: str) -> bytes:
         ``"<path>: file name too long"``, ``"<path>: … larger than 64 MiB"``.
     """
     from ..errors import ModelError
+    limit = MAX_FILE_BYTES if limit is None else int(limit)
+    noun = what.split(" (")[0]
     try:
         st = os.stat(p)
     except FileNotFoundError:
         raise
     except (OSError, ValueError) as e:  # name too long, NUL byte, permission: one message
         why = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
-        raise ModelError(f"{shown}: cannot read the model file: {why}") from None
+        raise ModelError(f"{shown}: cannot read the {noun}: {why}") from None
     if stat.S_ISDIR(st.st_mode):
-        raise ModelError(f"{shown}: is a directory; expected a model file (.toml)")
+        raise ModelError(f"{shown}: is a directory; expected a {what}")
     if not stat.S_ISREG(st.st_mode):
         raise ModelError(f"{shown}: not a regular file (a FIFO, socket or device); expected "
-                         f"a model file (.toml)")
-    if st.st_size > MAX_FILE_BYTES:
-        raise ModelError(f"{shown}: the file has {st.st_size / 1024**2:.1f} MiB; a model file "
-                         f"may have at most {MAX_FILE_BYTES // 1024**2} MiB")
+                         f"a {what}")
+    if st.st_size > limit:
+        raise ModelError(f"{shown}: the file has {st.st_size / 1024**2:.1f} MiB; a {noun} "
+                         f"may have at most {limit // 1024**2} MiB")
     try:
         with open(p, "rb") as f:
-            data = f.read(MAX_FILE_BYTES + 1)
+            data = f.read(limit + 1)
     except OSError as e:  # permission denied, I/O error: one message
-        raise ModelError(f"{shown}: cannot read the model file: {e.strerror or e}") from None
-    if len(data) > MAX_FILE_BYTES:  # grew while reading
-        raise ModelError(f"{shown}: a model file may have at most "
-                         f"{MAX_FILE_BYTES // 1024**2} MiB")
+        raise ModelError(f"{shown}: cannot read the {noun}: {e.strerror or e}") from None
+    if len(data) > limit:  # grew while reading
+        raise ModelError(f"{shown}: a {noun} may have at most {limit // 1024**2} MiB")
     return data
 
 

@@ -188,8 +188,8 @@ def _component(builder, mech, types, entry, at):
     t = entry.get("type")
     if t is None:
         raise builder.error(at, f'missing required key "type" (one of: {options})')
-    if t not in types:
-        raise builder.error(at + ("type",), f'unknown component type "{t}"'
+    if not isinstance(t, str) or t not in types:
+        raise builder.error(at + ("type",), f'unknown component type {S.show(t)}'
                                             f'{S.did_you_mean(str(t), types)} (one of: '
                                             f'{options})')
     cls = types[t]

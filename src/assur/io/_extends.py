@@ -28,6 +28,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from ..errors import ModelError
 from ._errors import ModelFileError
 from ._lines import line_index, line_of
 
@@ -146,8 +147,15 @@ def _merge(base, bsrc, bpath, child, csrc, cpath, mpath, out):
     return child
 
 
-def _read(path: Path, shown: str, parse):
-    data = path.read_bytes()
+def _read(path: Path, shown: str, parse, fail):
+    """The parsed base file and its text: a regular file of at most the model files'
+    size (:func:`assur.io.read_model_bytes`; a FIFO, a directory or a larger file is
+    ``fail``'s message at the ``extends`` key)."""
+    from . import read_model_bytes
+    try:
+        data = read_model_bytes(path, shown, what="base model file (.toml)")
+    except ModelError as e:
+        raise fail(f"the base file {e}") from None
     try:
         text = data.decode("utf-8").removeprefix("\ufeff")
     except UnicodeDecodeError as e:
@@ -201,15 +209,24 @@ def resolve(data: dict, index: dict, name: str, source: Path | None, parse,
                    f"{ext!r}")
     here = source.resolve() if source is not None else None
     base_dir = here.parent if here is not None else Path.cwd()
-    path = (base_dir / ext).resolve()
+    said = ext if len(ext) <= 120 else ext[:60] + "…" + ext[-40:]   # a long path, shortened
+    said = said.replace("\x00", "\\u0000")
+    try:  # a symlink loop, a NUL byte, a name too long: one message at the key
+        path = (base_dir / ext).resolve()
+        exists = path.exists()
+    except (OSError, RuntimeError, ValueError) as e:
+        why = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
+        if isinstance(e, RuntimeError):
+            why = "a loop of symbolic links"
+        raise fail(f'cannot read the base file "{said}": {why}') from None
     shown = (os.path.join(os.path.dirname(name), ext) if source is not None else ext)
     chain = chain + ((here,) if here is not None else ())
     if path in chain:
         loop = " → ".join(p.name for p in chain[chain.index(path):]) + f" → {path.name}"
-        raise fail(f'"{ext}" extends this file again: a cycle of extends ({loop})')
-    if not path.is_file():
-        raise fail(f'cannot read the base file "{ext}": no such file ({path})')
-    bdata, btext = _read(path, shown, parse)
+        raise fail(f'"{said}" extends this file again: a cycle of extends ({loop})')
+    if not exists:
+        raise fail(f'cannot read the base file "{said}": no such file ({path})')
+    bdata, btext = _read(path, shown, parse, fail)
     bdata, bindex = resolve(bdata, line_index(btext), shown, path, parse, chain)
     child = {k: v for k, v in data.items() if k != "extends"}
     out = {}

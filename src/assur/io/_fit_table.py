@@ -12,6 +12,7 @@ is printed with: its tolerance is half a unit of its last digit (``21.199`` →
 from __future__ import annotations
 
 import csv
+import io as _io
 import math
 import re
 from pathlib import Path
@@ -21,7 +22,10 @@ import numpy as np
 from ..errors import ModelError
 from ._units import _base_factor
 
-__all__ = ["read_targets"]
+__all__ = ["read_targets", "MAX_TABLE_BYTES"]
+
+#: the size of a printed table at most [bytes]
+MAX_TABLE_BYTES = 16 * 2**20
 
 _HEADER = re.compile(r"^\s*(.+?)\s*\[\s*(.*?)\s*\]\s*$")
 
@@ -66,11 +70,29 @@ def read_targets(path, mechanism):
     ModelError
         Naming the file, the row or column and what is wrong.
     """
+    from . import read_model_bytes
+
     path = Path(path)
-    with open(path, newline="", encoding="utf-8") as f:
-        rows = [r for r in csv.reader(f) if any(c.strip() for c in r)]
+    # a regular file of at most MAX_TABLE_BYTES, checked before it is opened (a FIFO
+    # would block), UTF-8 text, no cell beyond the csv module's field limit
+    data = read_model_bytes(path, str(path), what="printed table (CSV)",
+                            limit=MAX_TABLE_BYTES)
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as e:
+        line = data[:e.start].count(b"\n") + 1
+        raise ModelError(f"{path}: line {line}: not UTF-8 text (byte {data[e.start]:#04x}); "
+                         f"save the table as UTF-8") from None
+    reader = csv.reader(_io.StringIO(text, newline=""))
+    try:
+        rows = [r for r in reader if any(c.strip() for c in r)]
+    except csv.Error as e:
+        raise ModelError(f"{path}: line {reader.line_num}: {e}") from None
     if len(rows) < 2:
         raise ModelError(f"{path}: expected a header and at least one row")
+    if len(rows[0]) < 2:
+        raise ModelError(f"{path}: expected the coordinate's column and at least one column "
+                         f"of values, found only {rows[0][0]!r}")
     head = []
     for j, cell in enumerate(rows[0]):
         m = _HEADER.match(cell)
@@ -93,6 +115,14 @@ def read_targets(path, mechanism):
             raise ModelError(f"{path}: row {i + 1}, column {j + 1}: not finite: {cell!r}")
         return v
 
+    seen = {}
+    for i, r in enumerate(rows[1:], start=1):
+        q0 = number(i, 0, r[0])
+        if q0 in seen:
+            raise ModelError(f"{path}: row {i + 1}: {coord} = {r[0].strip()} [{head[0][1]}] "
+                             f"again (row {seen[q0] + 1}): give each position once")
+        seen[q0] = i
+
     from ..synthesis.fitting import Target
 
     targets = []
@@ -112,6 +142,9 @@ def read_targets(path, mechanism):
                                   tolerance=np.array(tol), period=period))
         except ModelError as e:
             raise ModelError(f"{path}: column {j + 1}: {e}") from None
+    if not targets:
+        raise ModelError(f"{path}: no values under the columns "
+                         f"{[h[0] for h in head[1:]]}")
     for t in targets:
         try:
             t._formula.check(mechanism)
