@@ -312,9 +312,9 @@ def check_cylinders(mech, refs):
             raise ModelError(f"{where}: two cylinder entries drive {c.coordinate!r}")
         if c.coordinate is not None:
             seen.add(c.coordinate)
-        if c.side not in ("piston", "rod", "auto"):
+        if c.side not in ("piston", "rod", "auto", *c.DIRECTIONS):
             raise ModelError(f"{where}: cylinder {c.name!r}: side must be one of: "
-                             f"['piston', 'rod', 'auto'], got {c.side!r}")
+                             f"{['piston', 'rod', 'auto', *c.DIRECTIONS]}, got {c.side!r}")
         for f in c.quantities:
             refs.value(f"cylinder {c.name!r}: {f}", getattr(c, f))
     check_supply_lines(mech, where)
