@@ -103,3 +103,25 @@ def test_a_worker_that_raises_sends_its_message_back():
                 ex.evaluate(pb, X)
     assert "has a value that is not finite" in str(here.value)
     assert str(there.value) == str(here.value)
+
+
+def test_another_assur_version_on_a_worker_is_one_message(monkeypatch):
+    """At connect, every worker's assur version is asked (another one: a message
+    naming the worker); each task checks it again (a worker that joins later)."""
+    from distributed import LocalCluster
+
+    import assur
+    from assur.synthesis.search import scale
+    from assur.synthesis.search.scale import Chunk, ClusterError, run_chunk
+    pb = load_problem(io.bundled("hitch_003_design"), positions=4)
+    with pytest.raises(ClusterError, match=r"this Dask worker runs assur .*, the client "
+                                           r"assur 0\.0\.1: install the same version"):
+        run_chunk(pb, Chunk(0, 2, seed=1, version="0.0.1"))
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False, protocol="tcp://",
+                      dashboard_address=":0") as cluster:
+        monkeypatch.setattr(scale, "_versions", lambda: "0.0.1")
+        with pytest.raises(ClusterError) as e:
+            with Executor(scheduler=cluster.scheduler_address):
+                pass
+    assert (f"the client runs assur {assur.__version__}, but tcp://127.0.0.1:"
+            in str(e.value)) and "runs 0.0.1: install the same version" in str(e.value)

@@ -249,26 +249,33 @@ class Executor:
 
     def __enter__(self):
         if self.distributed:
-            from distributed import Client, LocalCluster
-            if self.scheduler is not None:
-                self._phase(f"connecting to {self.describe()}")
-                if "://" not in self.scheduler and os.path.isfile(self.scheduler):
-                    self.client = self._stack.enter_context(
-                        Client(scheduler_file=self.scheduler))
-                else:
-                    self.client = self._stack.enter_context(Client(self.scheduler))
-            else:
-                self._phase(f"starting {self.describe()}")
-                # registered first, so called last: after the client and the cluster closed
-                started = {}
-                self._stack.callback(_restore_environ, dict(os.environ), started)
-                cluster = self._stack.enter_context(LocalCluster(
-                    n_workers=self.workers, threads_per_worker=1, processes=True,
-                    dashboard_address=":0"))  # its HTTP server on a free port
-                started["environ"] = dict(os.environ)
-                self.client = self._stack.enter_context(Client(cluster))
-            self._check_versions()
+            try:
+                self._start()
+            except BaseException:  # no `with` body, no __exit__: close what was opened
+                self.client = None
+                self._stack.close()
+                raise
         return self
+
+    def _start(self):
+        from distributed import Client, LocalCluster
+        if self.scheduler is not None:
+            self._phase(f"connecting to {self.describe()}")
+            if "://" not in self.scheduler and os.path.isfile(self.scheduler):
+                self.client = self._stack.enter_context(Client(scheduler_file=self.scheduler))
+            else:
+                self.client = self._stack.enter_context(Client(self.scheduler))
+        else:
+            self._phase(f"starting {self.describe()}")
+            # registered first, so called last: after the client and the cluster closed
+            started = {}
+            self._stack.callback(_restore_environ, dict(os.environ), started)
+            cluster = self._stack.enter_context(LocalCluster(
+                n_workers=self.workers, threads_per_worker=1, processes=True,
+                dashboard_address=":0"))  # its HTTP server on a free port
+            started["environ"] = dict(os.environ)
+            self.client = self._stack.enter_context(Client(cluster))
+        self._check_versions()
 
     def __exit__(self, *exc):
         client, self.client = self.client, None
