@@ -47,6 +47,12 @@ SECTIONS = [
         ("assur.machines.hitch_lift", "the standard lift test of a three-point hitch"),
         ("assur.machines.steering", "Ackermann relation, turning radius, resisting moment"),
         ("assur.machines.conditioner", "the spring pressing device (lab 2)"),
+        ("assur.machines.ratings", "ratings of the standards: one contract and registry"),
+        ("assur.machines.ratings.base", "the contract of a rating: parameters, result"),
+        ("assur.machines.ratings.crane", "a crane's load chart: capacity over the reach"),
+        ("assur.machines.ratings.digging", "digging forces of an excavator's arm (ISO 6015)"),
+        ("assur.machines.ratings.loader", "tipping load, breakout forces, lift (ISO 14397)"),
+        ("assur.machines.ratings.stability", "the static tipping load of a machine"),
     ]),
     ("Dynamics", [
         ("assur.dynamics", "equations of motion, simulation, work cycles"),

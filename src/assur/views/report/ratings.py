@@ -1,54 +1,17 @@
-"""The report's ratings (``[[rating]]``, :mod:`assur.machines.ratings`): a table and a
-figure per rating, titled from the model's rating, in the user's units. The numbers
-are the rating's own (:class:`assur.machines.ratings.RatingResult`); nothing is
-computed here."""
+"""The report's figures of the ratings (``[[rating]]``, :mod:`assur.machines.ratings`;
+their tables: :mod:`assur.views.report.tables`): one per rating, titled from the
+model's rating, in the user's units. The numbers are the rating's own
+(:class:`assur.machines.ratings.RatingResult`); nothing is computed here."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from ...texts import LANGS, localize
+from ...texts import localize
 from ._canvas import new_figure
 from .labels import check_lang, unit
-from .numbers import quantity
-from .tables._data import Column, Table
 
-__all__ = ["rating_tables", "rating_figures"]
-
-
-def _results(analysis):
-    return tuple(getattr(analysis, "ratings", None) or ())
-
-
-def rating_tables(analysis, units=None) -> list:
-    """One :class:`~assur.views.report.tables.Table` per rating of ``analysis``
-    (ids ``R1``, ``R2`` … in the file's order), columns in SI as the other tables';
-    its single values (a static tipping load) written under it in ``units`` (a
-    :class:`assur.core.display.DisplayUnits`; default: the model file's).
-
-    Examples
-    --------
-    >>> from assur import io
-    >>> from assur.views.report.ratings import rating_tables
-    >>> a = io.load(io.bundled("crane_lv184a")).analyze()
-    >>> t = rating_tables(a)[0]
-    >>> t.id, [c.symbol for c in t.columns][-3:], t.column("M").unit
-    ('R1', ['G', 'governing', 'M'], 'N·m')
-    """
-    from ...core.display import unit_system
-    du = unit_system(analysis.mechanism, units)
-    out = []
-    for i, r in enumerate(_results(analysis)):
-        cols = tuple(Column(s.symbol, s.unit, np.asarray(s.values, float),
-                            {lang: localize(s.label, lang) for lang in LANGS})
-                     for s in r.series)
-        notes = tuple({lang: localize(n, lang) for lang in LANGS} for n in r.notes) + tuple(
-            {lang: f"{localize(v.label, lang)}: "
-                   f"{quantity(float(v.values[0]), v.quantity, du, lang)}"
-             for lang in LANGS} for v in r.scalars)
-        titles = {lang: r.rating.heading(lang) for lang in LANGS}
-        out.append(Table(f"R{i + 1}", titles, cols, notes))
-    return out
+__all__ = ["rating_figures"]
 
 
 def rating_figures(analysis, lang="en", units=None) -> dict:
@@ -69,7 +32,7 @@ def rating_figures(analysis, lang="en", units=None) -> dict:
     lang = check_lang(lang)
     du = unit_system(analysis.mechanism, units)
     figs = {}
-    for i, r in enumerate(_results(analysis)):
+    for i, r in enumerate(getattr(analysis, "ratings", None) or ()):
         fig = new_figure()
         ax = fig.add_subplot()
         xs = r.get(r.x)

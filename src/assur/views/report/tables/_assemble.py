@@ -10,6 +10,7 @@ from ._data import Column, Table, _both, _same, in_units
 from ._forces import _table_4_1, _table_5_1, _table_5_2, _table_g
 from ._kinematics import _table_2_1, _table_2_2, _table_3_1, _table_ic
 from ._machines import _table_6_1, _table_d, _table_l, _table_v
+from ._ratings import rating_tables
 from ._view import _View
 
 __all__ = ["seed_tables", "numbered", "NUMBERINGS"]
@@ -68,8 +69,7 @@ def seed_tables(analysis, lang="en", design=None, angles=None, analogs=None,
     check_lang(lang)
     v = _View(analysis, design, angles=angles, analogs=analogs, units=units)
     tables = [t for t in (b(v) for b in _BUILDERS) if t is not None]
-    from ..ratings import rating_tables
-    tables += rating_tables(analysis, v.units)  # [[rating]]: views/report/ratings.py
+    tables += rating_tables(analysis, v.units)  # [[rating]]: tables/_ratings.py
     tables = _with_formulas(v, tables)
     # the model may name columns as its seed does (``tables.symbols``: F_S → Fgc …)
     rename = dict(analysis.mechanism.tables.get("symbols", {}))
