@@ -87,3 +87,9 @@ offset = "4 in"
     assert r.offset == pytest.approx(0.1016, rel=1e-12)
     e = _error(text.replace('offset = "4 in"', 'offset = "4 kN"'))
     assert e.key_path == "rating[0].offset"
+
+
+def test_a_chart_whose_cylinders_do_not_move_its_point_is_refused_at_the_point():
+    text = ARM + CHART.replace('point = "T"', 'point = "A"')   # a frame point
+    e = _error(text)
+    assert e.key_path == "rating[0].point" and "no cylinder of the chart moves 'A'" in str(e)

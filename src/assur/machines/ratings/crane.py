@@ -127,6 +127,25 @@ class CraneChart(Rating):
                                    ru="Грузовая характеристика: грузоподъёмность по вылету")
     standard: ClassVar[str] = "ISO 4301-1, ISO 10245-1 (load charts)"
 
+    def check(self, mech):
+        """Some cylinder of the chart must drive a coordinate that moves the load point:
+        ``(parameter, message)`` or None.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.machines.ratings import rating_type
+        >>> rating_type("crane_chart")(point="07", axis="01").check(examples.hitch_003())
+        ('point', "no cylinder of the chart moves '07' (cylinders on coordinates: ГЦ on S)")
+        """
+        cyls = [c for c in mech.cylinders if c.coordinate is not None
+                and (self.cylinders is None or c.name in self.cylinders)]
+        if not any(lifts(mech, c.coordinate, self.point) for c in cyls):
+            on = ", ".join(f"{c.name} on {c.coordinate}" for c in cyls) or "none"
+            return "point", (f"no cylinder of the chart moves {self.point!r} (cylinders on "
+                             f"coordinates: {on})")
+        return None
+
     def evaluate(self, mech, kin) -> RatingResult:
         """The load chart over the positions of ``kin`` (one design; module notes).
 

@@ -180,6 +180,24 @@ class LoaderBreakout(Rating):
     title: ClassVar[object] = Text("Breakout forces", ru="Вырывные усилия")
     standard: ClassVar[str] = "ISO 14397-2"
 
+    def check(self, mech):
+        """The lift and tilt cylinders must drive coordinates: ``(parameter, message)``
+        or None.
+
+        Examples
+        --------
+        >>> from assur import examples
+        >>> from assur.machines.ratings import rating_type
+        >>> r = rating_type("loader_breakout")("S9", "09", "MPS", "MPT")
+        >>> print(r.check(examples.loader_lab1()))
+        None
+        """
+        driving = {c.name for c in mech.cylinders if c.coordinate is not None}
+        for key in ("lift_cylinder", "tilt_cylinder"):
+            if getattr(self, key) not in driving:
+                return key, "expected a cylinder that drives a coordinate"
+        return None
+
     def evaluate(self, mech, kin) -> RatingResult:
         """The breakout forces over the positions of ``kin`` (one design).
 
