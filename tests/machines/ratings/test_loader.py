@@ -116,3 +116,11 @@ def test_a_tipping_rating_without_a_machine_is_refused_at_its_key(arm_text):
         io.loads(text, name="arm.toml")
     assert e.value.key_path == "rating[0].point"
     assert "[machine]" in str(e.value)
+
+
+def test_a_fraction_outside_0_1_is_refused_at_its_key(arm_text):
+    text = arm_text + MACHINE + TIPPING.replace("fraction = 0.5", "fraction = 1.5")
+    with pytest.raises(io.ModelFileError) as e:
+        io.loads(text, name="arm.toml")
+    assert e.value.key_path == "rating[0].fraction" and "(0, 1]" in str(e.value)
+    assert e.value.line == text.splitlines().index("fraction = 1.5") + 1

@@ -101,7 +101,8 @@ class LoaderTipping(Rating):
     standard: ClassVar[str] = "ISO 14397-1"
 
     def check(self, mech):
-        """The rating needs ``[machine]``: ``(parameter, message)`` or None.
+        """The rating needs ``[machine]`` and a fraction in (0, 1]: ``(parameter,
+        message)`` or None.
 
         Examples
         --------
@@ -112,6 +113,9 @@ class LoaderTipping(Rating):
         """
         if mech.machine is None:
             return "point", "a tipping load needs the machine's axles and weights ([machine])"
+        share = number(mech, self.fraction)
+        if not 0.0 < share <= 1.0:
+            return "fraction", f"expected a share of the tipping load in (0, 1], found {share:g}"
         return None
 
     def evaluate(self, mech, kin) -> RatingResult:
