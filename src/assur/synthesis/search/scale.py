@@ -52,6 +52,10 @@ __all__ = ["Executor", "ClusterError", "SweepResult", "sweep", "sweep_to", "writ
 #: seconds without any worker before a cluster run ends with a message
 TIMEOUT = 60.0
 
+#: resubmissions of a chunk the scheduler forgot (Dask itself recomputes the chunks of
+#: a lost worker, up to distributed.scheduler.allowed-failures times)
+RETRIES = 3
+
 
 class ClusterError(ModelError):
     """A Dask cluster could not finish the work: no worker for too long, the scheduler
@@ -450,6 +454,7 @@ class _Run:
         self.nthreads = 0
         self.checked = 0.0
         self.no_workers_since = None
+        self.retries: dict = {}  # chunk start -> resubmissions
 
     def _size(self, remaining):
         """Designs of the next chunk: at most --chunk, and the rest shared by the
@@ -504,6 +509,8 @@ class _Run:
                     continue
                 for f in done:
                     _, c = self.inflight.pop(f.key)
+                    if f.status in ("cancelled", "lost") and self._resubmit(f, c):
+                        continue
                     result = self._result(f, c)
                     f.release()
                     if first:
@@ -525,6 +532,21 @@ class _Run:
                 with contextlib.suppress(Exception):
                     f.release()
             self.inflight.clear()
+
+    def _resubmit(self, f, c):
+        """A chunk the scheduler forgot while it still runs (a worker's data lost, a
+        restart): submitted again, at most :data:`RETRIES` times; False when the
+        scheduler is gone or the retries are spent."""
+        if self.ex.client.status != "running":
+            return False
+        n = self.retries.get(c.start, 0)
+        if n >= RETRIES:
+            return False
+        self.retries[c.start] = n + 1
+        f.release()
+        g = self.ex.client.submit(run_chunk, self.problem, c, pure=False)
+        self.inflight[g.key] = (g, c)
+        return True
 
     def _watch_workers(self):
         ex = self.ex
