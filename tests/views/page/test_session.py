@@ -197,3 +197,27 @@ def test_a_file_that_loads_is_never_scanned_for_lines():
             loads(bad, name="cleaning_lab3.toml")
     assert made == [1]
     assert e.value.line == bad[:bad.index("not_a_coordinate")].count("\n") + 1
+
+
+def test_a_file_that_extends_another_edits_the_bases_parameters():
+    """``hitch_003_design`` extends ``hitch_003``: the page offers the base's parameters
+    (with its groups) and an edit gives the same answer as the same edit of the base;
+    the TOML written back holds the edit in the child's own [params]."""
+    import tomllib
+
+    child, base = PageModel.from_path(bundled("hitch_003_design")), \
+        PageModel.from_path(bundled("hitch_003"))
+    got = {p["name"]: p for p in child.parameters()}
+    want = {p["name"]: p for p in base.parameters()}
+    assert set(got) == set(want)
+    assert got["L5"]["group"] == "§1.2 links" and got["L5"]["editable"]
+    assert got["L4"]["solved"] and not got["L4"]["editable"]
+    a, b = child.compute({"L5": 0.5}, 11), base.compute({"L5": 0.5}, 11)
+    assert a["ok"] and b["ok"]
+    assert a["solved"] == b["solved"]
+    assert [c["values"] for c in a["tables"][0]["columns"]] == \
+        [c["values"] for c in b["tables"][0]["columns"]]
+    text = child.edited_text({"L5": 0.5})
+    doc = tomllib.loads(text)
+    assert doc["extends"] == "hitch_003.toml" and "design" in doc
+    assert doc["params"]["L5"] == "0.5 m"

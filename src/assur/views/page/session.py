@@ -154,7 +154,7 @@ class PageModel:
         import tomlkit
 
         from ...io import loads
-        self.text = text.removeprefix("\ufeff")
+        self.text = _inherited(text.removeprefix("\ufeff"), source)
         self.name = name
         self.source = source
         self.model = loads(self.text, name=name, source=source)  # refuses a bad start
@@ -783,6 +783,58 @@ def default_plots(tables, k, declared=(), warnings=None) -> list:
                     add(t, c)
                     return out
     return out
+
+
+def _inherited(text: str, source, depth: int = 0) -> str:
+    """The model file's ``text`` with the parameters it inherits through ``extends``
+    written into its own ``[params]`` (with the base's comments, as the base writes
+    them), so that the page shows and edits them; the model is the same (a file's
+    ``[params]`` overrides its base's with the same values). A text without
+    ``extends`` (or without a ``source`` to find the base from, or whose base cannot be
+    read: its load then says why) is returned as it is.
+
+    Examples
+    --------
+    >>> from assur.io import bundled, loads
+    >>> from assur.views.page.session import _inherited
+    >>> child = bundled("hitch_003_design")                # extends hitch_003.toml
+    >>> text = _inherited(child.read_text(encoding="utf-8"), child)
+    >>> 'L5 = "0.480 m"' in text, "# §1.2 links" in text   # the base's, with its comments
+    (True, True)
+    >>> m = loads(text, name=child.name, source=child)
+    >>> m.mechanism.params == loads(child.read_text(encoding="utf-8"), name=child.name,
+    ...                             source=child).mechanism.params
+    True
+    """
+    import tomlkit
+
+    from ...io import read_model_bytes
+    try:
+        doc = tomlkit.parse(text)
+    except Exception:  # noqa: BLE001 - not TOML: the model's load says where
+        return text
+    ext = doc.get("extends")
+    if not isinstance(ext, str) or source is None or depth > 16:
+        return text
+    try:
+        base = (Path(source).resolve().parent / ext).resolve()
+        base_text = read_model_bytes(base, str(base)).decode("utf-8").removeprefix("\ufeff")
+        base_params = tomlkit.parse(_inherited(base_text, base, depth + 1)).get("params")
+    except Exception:  # noqa: BLE001 - the model's own load reports the base's problem
+        return text
+    own = doc.get("params")
+    if not base_params or not hasattr(base_params, "items"):
+        return text
+    missing = [k for k in base_params if own is None or k not in own]
+    if not missing:
+        return text
+    if own is None:
+        block = tomlkit.dumps({"params": base_params})
+        return (text.rstrip("\n") + f"\n\n# the parameters of {ext} (this file extends it), "
+                f"written here by the page\n" + block)
+    for k in missing:
+        own.add(k, base_params[k])
+    return tomlkit.dumps(doc)
 
 
 def _error(kind, e, t0):
