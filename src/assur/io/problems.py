@@ -157,8 +157,12 @@ def model_content(path) -> ModelContent:
     >>> c.main, len(c.files)
     ('hitch_003.toml', 1)
     """
-    from . import read_model_bytes
-    first = Path(path).resolve()
+    from . import load, read_model_bytes
+    try:
+        first = Path(path).resolve()
+    except (OSError, RuntimeError, ValueError):  # a symlink loop, a NUL byte …
+        load(path)  # its own message
+        raise
     paths, datas = [], []
     p = first
     while p is not None and p not in paths:
@@ -167,10 +171,11 @@ def model_content(path) -> ModelContent:
         datas.append(data)
         try:
             ext = tomllib.loads(data.decode("utf-8").removeprefix("\ufeff")).get("extends")
-        except (UnicodeDecodeError, tomllib.TOMLDecodeError):
-            ext = None
-        nxt = (p.parent / ext).resolve() if isinstance(ext, str) and ext.strip() else None
-        p = nxt if nxt is not None and nxt.is_file() else None
+            nxt = (p.parent / ext).resolve() if isinstance(ext, str) and ext.strip() else None
+            p = nxt if nxt is not None and nxt.is_file() else None
+        except (UnicodeDecodeError, tomllib.TOMLDecodeError, OSError, RuntimeError,
+                ValueError):  # the chain ends here: loading the file reports it at its key
+            p = None
     root = Path(os.path.commonpath([str(q.parent) for q in paths]))
     rel = [q.relative_to(root).as_posix() for q in paths]
     return ModelContent(rel[0], tuple(zip(rel, datas)), shown=str(path))
