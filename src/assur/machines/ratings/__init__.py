@@ -15,7 +15,7 @@ Examples
 --------
 >>> from assur.machines.ratings import registry
 >>> [(name, cls.standard) for name, cls in registry().items()][:1]
-[('crane_chart', 'ISO 4301-1, ISO 10245-1 (load charts)')]
+[('crane_chart', 'ISO 4301-1, ISO 10245-1')]
 """
 
 from __future__ import annotations

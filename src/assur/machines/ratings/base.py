@@ -245,7 +245,7 @@ class Rating:
     >>> from assur.machines.ratings import Rating, rating_type
     >>> cls = rating_type("crane_chart")
     >>> issubclass(cls, Rating), cls.standard
-    (True, 'ISO 4301-1, ISO 10245-1 (load charts)')
+    (True, 'ISO 4301-1, ISO 10245-1')
     >>> [p.name for p in cls.fields][:2]
     ['point', 'axis']
     """
@@ -263,7 +263,7 @@ class Rating:
         --------
         >>> from assur.machines.ratings import rating_type
         >>> rating_type("crane_chart")(point="D", axis="O").heading()
-        'Load chart: lifting capacity over the reach (ISO 4301-1, ISO 10245-1 (load charts))'
+        'Load chart: lifting capacity over the reach (ISO 4301-1, ISO 10245-1)'
         """
         from ...texts import localize
         own = getattr(self, "name", None)

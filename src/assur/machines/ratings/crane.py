@@ -38,7 +38,7 @@ import numpy as np
 
 from ...core import cylinders as C
 from ...core.virtual_work import virtual_work_forces
-from ...texts import Text
+from ...texts import Text, localize
 from ..capacity import lifts
 from ._registry import register
 from .base import (Rating, RatingResult, Series, carried_loads, need_cylinders, number, param,
@@ -125,7 +125,7 @@ class CraneChart(Rating):
     type_name: ClassVar[str] = "crane_chart"
     title: ClassVar[object] = Text("Load chart: lifting capacity over the reach",
                                    ru="Грузовая характеристика: грузоподъёмность по вылету")
-    standard: ClassVar[str] = "ISO 4301-1, ISO 10245-1 (load charts)"
+    standard: ClassVar[str] = "ISO 4301-1, ISO 10245-1"
 
     def check(self, mech):
         """Some cylinder of the chart must drive a coordinate that moves the load point:
@@ -181,12 +181,13 @@ class CraneChart(Rating):
             sym = "G_" + "_".join(str(cyl.name).split())
             limits.append(G)
             names.append(cyl.name)
-            series.append(Series(sym, G, "force", Text(f"limit of cylinder {cyl.name}",
-                                                       ru=f"предел по цилиндру {cyl.name}")))
+            series.append(Series(sym, G, "force",
+                                 Text(f"limit of cylinder {localize(cyl.name, 'en')}",
+                                      ru=f"предел по цилиндру {localize(cyl.name, 'ru')}")))
         if mech.machine is not None:
             G = tipping_load(mech, kin, P, carried)
             limits.append(G)
-            names.append("stability")
+            names.append(Text("stability", ru="устойчивость"))
             series.append(Series("G_stability", G, "force",
                                  Text("stability limit (tipping)",
                                       ru="предел по устойчивости (опрокидывание)")))
@@ -199,8 +200,9 @@ class CraneChart(Rating):
                           Text("governing limit (key below)", ru="определяющий предел (ниже)")),
                    Series("M", G * reach, "moment", Text("gross lifting moment G·reach",
                                                          ru="грузовой момент G·вылет"))]
-        key = "; ".join(f"{i + 1} = {n}" for i, n in enumerate(names))
-        notes = (Text(f"governing limit: {key}", ru=f"определяющий предел: {key}"),
+        key = {lg: "; ".join(f"{i + 1} = {localize(n, lg)}" for i, n in enumerate(names))
+               for lg in ("en", "ru")}
+        notes = (Text(f"governing limit: {key['en']}", ru=f"определяющий предел: {key['ru']}"),
                  Text(f"each cylinder at its largest working pressure, in the chamber that "
                       f"holds a load at {P}; "
                       + ("the model's other loads carried" if carried is not None

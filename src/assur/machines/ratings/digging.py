@@ -36,7 +36,7 @@ import numpy as np
 
 from ...core.virtual_work import virtual_work_forces
 from ...errors import ModelError
-from ...texts import Text
+from ...texts import Text, localize
 from ._registry import register
 from .base import Rating, RatingResult, Series, carried_loads, param, with_loads_of
 from .crane import flat, holding_limit
@@ -170,11 +170,12 @@ class ExcavatorDigging(Rating):
                        f"H_{tag}_{'_'.join(str(c.name).split())}")
                 limits.append(G)
                 names.append(c.name)
+                cen, cru = localize(c.name, "en"), localize(c.name, "ru")
                 series.append(Series(sym, G, "force", Text(
-                    f"{en} digging: force of cylinder {c.name}" if mine
-                    else f"{en} digging: holding limit of cylinder {c.name}",
-                    ru=f"копание {ru}: усилие цилиндра {c.name}" if mine
-                    else f"копание {ru}: предел удержания цилиндром {c.name}")))
+                    f"{en} digging: force of cylinder {cen}" if mine
+                    else f"{en} digging: holding limit of cylinder {cen}",
+                    ru=f"копание {ru}: усилие цилиндра {cru}" if mine
+                    else f"копание {ru}: предел удержания цилиндром {cru}")))
             L = np.vstack(limits)
             which = np.argmin(L, axis=0)
             F = L[which, np.arange(L.shape[1])]
@@ -185,10 +186,12 @@ class ExcavatorDigging(Rating):
                            f"{en} digging: governing cylinder (key below)",
                            ru=f"копание {ru}: определяющий цилиндр (ниже)"))]
             ys.append(f"F_{tag}")
-            key = "; ".join(f"{i + 1} = {n}" for i, n in enumerate(names))
-            notes.append(Text(f"gov_{tag}, {en} digging along the tangent about {pivot}: {key}",
+            key = {lg: "; ".join(f"{i + 1} = {localize(n, lg)}" for i, n in enumerate(names))
+                   for lg in ("en", "ru")}
+            notes.append(Text(f"gov_{tag}, {en} digging along the tangent about {pivot}: "
+                              f"{key['en']}",
                               ru=f"gov_{tag}, копание {ru} по касательной к окружности "
-                                 f"около {pivot}: {key}"))
+                                 f"около {pivot}: {key['ru']}"))
         x = kin.coordinates[0]
         group = kin.coordinates[1] if k == 2 else None
         return RatingResult(self, tuple(series), x, tuple(ys), group, tuple(notes))

@@ -41,7 +41,7 @@ import numpy as np
 
 from ...core.virtual_work import virtual_work_forces
 from ...errors import ModelError
-from ...texts import Text
+from ...texts import Text, localize
 from ._registry import register
 from .base import (Rating, RatingResult, Series, carried_loads, number, param,
                    with_loads_of)
@@ -242,7 +242,8 @@ class LoaderBreakout(Rating):
             Series("x", px, "length", Text("reach of the point 100 mm behind the edge",
                                            ru="вылет точки в 100 мм за кромкой"))]
         series += [Series(f"G_{'_'.join(str(n).split())}", g, "force", Text(
-            f"force of cylinder {n} at the point", ru=f"усилие цилиндра {n} в точке"))
+            f"force of cylinder {localize(n, 'en')} at the point",
+            ru=f"усилие цилиндра {localize(n, 'ru')} в точке"))
             for n, g in G.items()]
         tip = None
         if mech.machine is not None:
