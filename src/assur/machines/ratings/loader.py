@@ -287,7 +287,7 @@ class LoaderLift(CraneChart):
     type_name: ClassVar[str] = "loader_lift"
     title: ClassVar[object] = Text("Lift capacity over the height",
                                    ru="Грузоподъёмность по высоте подъёма")
-    standard: ClassVar[str] = "ISO 14397-1 (hydraulic lift capacity)"
+    standard: ClassVar[str] = "ISO 14397-1"
 
     def evaluate(self, mech, kin) -> RatingResult:
         """The load chart with the hinge pin's height as its abscissa.
@@ -296,7 +296,7 @@ class LoaderLift(CraneChart):
         --------
         >>> from assur.machines.ratings import rating_type
         >>> rating_type("loader_lift").standard
-        'ISO 14397-1 (hydraulic lift capacity)'
+        'ISO 14397-1'
         """
         r = CraneChart.evaluate(self, mech, kin)
         pin = self.pin or self.point
