@@ -39,7 +39,11 @@ Formulas (SI: m, N, Pa):
   the boom's weight). G is positive for a pushing and for a pulling cylinder alike:
   a pulling cylinder lifts the point as it shortens (I < 0, σ_w = −1);
 * capacity reserve ΔG = (G − P)/P·100 % against the payload P alone (seed 003
-  ΔGS65): G has already paid for the dead loads, so P is never a dead load.
+  ΔGS65): G has already paid for the dead loads, so P is never a dead load;
+* cylinders on one supply line share one pressure, by virtual work with every
+  cylinder of the line as an actuator: p·Σ σ_i·k_i·A_i·η_h,i·∂L_i/∂q = F/η_m
+  (seed 001 lab 4 eq. 15), L_i the cylinder's length (q itself for the driving
+  cylinder, a named distance for a passive one).
 
 Signs, on a lever pivoted at O with the payload P at its tip T (q the cylinder's
 pin-to-pin length, I = ∂Y_T/∂q)::
@@ -56,10 +60,6 @@ pin-to-pin length, I = ∂Y_T/∂q)::
 
 With equal areas (A_piston of the pusher = A_rod of the puller) the two mirror
 images have the same capacity at the same cylinder length.
-* cylinders on one supply line share one pressure, by virtual work with every
-  cylinder of the line as an actuator: p·Σ σ_i·k_i·A_i·η_h,i·∂L_i/∂q = F/η_m
-  (seed 001 lab 4 eq. 15), L_i the cylinder's length (q itself for the driving
-  cylinder, a named distance for a passive one).
 
 The formulas take a ``select(x, a, b)`` of the caller's kind of number — ``a``
 where x ≥ 0, else ``b`` — so that a chamber chosen by the sign of a force is the
