@@ -71,6 +71,22 @@ assert lift.capacity("G").min() > float(m.params["P_load"])
 assert lift.pressure.max() < float(m.params["p_relief"])
 
 # %%
+# Ratings — номинальные показатели (docs/ratings.md)
+# -------------------------------------------------
+# The file declares three ``[[rating]]`` tables: the static tipping load at the
+# farthest reach of G and the rated operating capacity, half of it (ISO 14397-1), the
+# breakout forces 100 mm behind the cutting edge (ISO 14397-2) and the lift capacity
+# over the hinge pin's height:
+tipping, breakout, lift_chart = model.analyze().ratings
+for s in tipping.scalars:
+    print(f"{s.label}: {s.values[0] / 1e3:.1f} kN" if s.quantity == "force"
+          else f"{s.label}: {s.values[0] * 1e3:.0f} mm")
+print(f"lift breakout force {np.min(breakout['F_lift']) / 1e3:.1f} … "
+      f"{np.max(breakout['F_lift']) / 1e3:.1f} kN along the lift")
+roc = {s.symbol: s.values[0] for s in tipping.scalars}["ROC_rated"]
+assert roc >= float(m.params["P_load"])
+
+# %%
 # The file's notes — примечания модели
 for note in m.notes:
     print("-", note["en"] if isinstance(note, dict) else note)

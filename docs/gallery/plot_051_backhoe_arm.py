@@ -80,3 +80,18 @@ for name, c in (("boom", "S1"), ("arm", "S2"), ("bucket", "S3")):
           f"p from {p.min() / 1e6:5.1f} to {p.max() / 1e6:4.1f} MPa; "
           f"|virtual work − reactions| ≤ {np.abs(vw - rx).max():.1e} N")
     assert np.abs(vw - rx).max() < 1e-6 * np.abs(vw).max()
+
+# %%
+# Digging forces and the lift chart — усилия копания (ISO 6015)
+# -------------------------------------------------------------
+# The file's ``[[rating]]`` tables (docs/ratings.md): the bucket- and arm-cylinder
+# digging forces at the tooth tip, each limited by the other cylinders' holding, and
+# the hydraulic lift capacity at the bucket pivot Q over the reach from the swing axis:
+digging, chart = model.analyze().ratings
+print(f"bucket-cylinder digging force up to {np.max(digging['F_B']) / 1e3:.1f} kN "
+      f"(the bucket cylinder alone up to {np.max(digging['F_B_bucket']) / 1e3:.1f} kN)")
+print(f"arm-cylinder digging force up to {np.max(digging['F_A']) / 1e3:.1f} kN "
+      f"(the arm cylinder alone up to {np.max(digging['F_A_arm']) / 1e3:.1f} kN)")
+print(f"lift capacity at Q from {np.min(chart['G']) / 1e3:.1f} to "
+      f"{np.max(chart['G']) / 1e3:.1f} kN")
+assert 30e3 < np.max(digging["F_B_bucket"]) < 50e3

@@ -150,3 +150,21 @@ def test_a_cylinders_pressure_from_its_force(model, analysis):
         area = math.pi / 4 * P(model, f"D_{name}") ** 2
         np.testing.assert_allclose(analysis.cylinder(name).pressure,
                                    F / (P(model, "eta") * area), rtol=1e-12)
+
+
+def test_ratings_digging_force_by_hand(model):
+    """The file's ISO 6015 rating (docs/ratings.md): the bucket cylinder's own digging
+    force at the tooth tip is its force at the relief pressure over the tip's travel
+    per unit stroke, F·η/|∂tip/∂S3| (the tip turns about Q: its tangent is along
+    ∂tip/∂S3); the rated force is at most that; a 5–8 t excavator's 30–50 kN."""
+    a = model.analyze()
+    digging, chart = a.ratings
+    kin = a.kinematics
+    F = math.pi / 4 * P(model, "D_bucket") ** 2 * P(model, "p_relief") * P(model, "eta")
+    travel = np.hypot(kin.dx("tip", wrt="S3"), kin.dy("tip", wrt="S3"))
+    np.testing.assert_allclose(digging["F_B_bucket"], F / travel, rtol=1e-10)
+    assert np.all(np.asarray(digging["F_B"]) <= np.asarray(digging["F_B_bucket"]) * (1 + 1e-12))
+    assert 30e3 < np.max(digging["F_B_bucket"]) < 50e3
+    assert 25e3 < np.max(digging["F_A_arm"]) < 45e3
+    # the lift chart at the bucket pivot: reach from the swing axis
+    np.testing.assert_allclose(chart["reach"], kin.x("Q"), rtol=0, atol=1e-12)

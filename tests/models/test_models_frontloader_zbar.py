@@ -157,3 +157,27 @@ def test_lift_capacity_and_pressures(model, analysis):
     expected = (F_max * P(model, "eta") - F_dead) / kin.transmission("G", wrt="S")
     np.testing.assert_allclose(lift.capacity("G"), expected, rtol=1e-12)
     assert np.all(lift.capacity("G") > P(model, "P_load"))
+
+
+def test_ratings_tipping_load_by_hand(model):
+    """The file's ratings (docs/ratings.md): the static tipping load at the farthest
+    reach of G by moments about the front axle, summed here — the machine's weight
+    behind it against the boom's, the crank's and the bucket's weights and the load
+    ahead of it — and the rated operating capacity, half of it, at least the payload."""
+    a = model.analyze()
+    tipping, breakout, lift = a.ratings
+    scalars = {s.symbol: float(s.values[0]) for s in tipping.scalars}
+    kin = a.kinematics
+    i = int(np.argmax(kin.x("G")))
+    holding = P(model, "P_machine") * 1.25 - sum(
+        P(model, m) * G * kin.x(p)[i] for m, p in (("m_boom", "Sk"), ("m_crank", "K"),
+                                                   ("m_bucket", "Sb")))
+    assert scalars["W_tip_static"] == pytest.approx(holding / kin.x("G")[i], rel=1e-12)
+    assert scalars["ROC_rated"] == pytest.approx(0.5 * scalars["W_tip_static"], rel=1e-15)
+    assert 2.2e3 * G < scalars["W_tip_static"] < 2.6e3 * G
+    assert scalars["ROC_rated"] >= P(model, "P_load")
+    # the lift chart's capacity never exceeds any of its limits
+    G_all = np.asarray(lift["G"])
+    for c in ("G_lift", "G_tilt", "G_stability"):
+        assert np.all(G_all <= np.asarray(lift[c]) * (1 + 1e-12))
+    assert np.all(np.asarray(breakout["F_lift"]) > 0)
