@@ -48,8 +48,9 @@ drawn = drawing.draw(m.analyze(model.range[[0, 6, 12]]))
 # bucket back as the boom rises; held, the bucket only translates, so the payload's
 # centre of gravity G rises exactly as the hinge pin does (dY_G/dS = dY_H/dS along the
 # path, while ∂Y_G/∂S with S1 locked is larger):
-locked = m.solve(np.column_stack([model.range[:, 0], np.full(13, model.range[0, 1])]))
-print(f"locked: the bucket rolls back {np.degrees(locked.phi('bucket')[-1]):.0f}° at full lift")
+locked = m.solve(np.column_stack([model.range[:5, 0], np.full(5, model.range[0, 1])]))
+print(f"locked: the bucket rolls back {np.degrees(locked.phi('bucket')[-1]):.0f}° by "
+      f"S = {model.range[4, 0] * 1e3:.0f} mm (the hinge pin at {kin.y('H')[4] * 1e3:.0f} mm)")
 I_path, I_H = path.transmission(kin, "G"), path.transmission(kin, "H")
 print(f"dY_G/dS along the path {I_path.min():.3f} … {I_path.max():.3f}; "
       f"∂Y_G/∂S with S1 locked {kin.transmission('G', wrt='S').min():.3f} … "
