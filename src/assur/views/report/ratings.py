@@ -42,6 +42,8 @@ def rating_figures(analysis, lang="en", units=None) -> dict:
         if r.group is not None:
             gv = np.asarray(r[r.group])
             groups = list(dict.fromkeys(gv.tolist()))
+            if len(groups) == len(gv):  # a path: the group moves at every row, one curve
+                groups = [None]
         styles = ("-", "--", ":", "-.")
         for j, sym in enumerate(r.y):
             ys = r.get(sym)
@@ -54,7 +56,11 @@ def rating_figures(analysis, lang="en", units=None) -> dict:
                     gs = r.get(r.group)
                     gv, gu = du.convert(float(g), gs.unit)
                     label = f"{label}, {r.group} = {float(gv):.4g} {unit(gu, lang)}"
-                ax.plot(xv[sel], yv[sel], styles[j % len(styles)], marker=".",
+                # rows whose abscissa repeats (a grid of three coordinates over one of
+                # them) are points, not a line through the grid's order
+                repeats = len(np.unique(xv[sel])) < int(sel.sum())
+                ax.plot(xv[sel], yv[sel], linestyle="none" if repeats else styles[j % len(styles)],
+                        marker="o" if repeats else ".", markersize=3 if repeats else 6,
                         color=f"C{gi % 10}" if g is not None else f"C{j}", label=label)
         ax.set_title(r.rating.heading(lang), fontsize=10)
         ax.set_xlabel(f"{localize(xs.label, lang)} [{unit(xu, lang)}]")
