@@ -85,10 +85,12 @@ def test_table_l_in_the_report(model):
     ("positions = 6", "lift_test.positions"),
     ('frame = "F610"', "lift_test.frame"),
     ("pressure_share = 0.9", "lift_test.pressure_share"),
+    ('hitch = "56"', "lift_test.hitch"),
 ])
 def test_errors_name_the_key_and_line(edit, key):
     bad = {"positions = 6": "positions = 4", 'frame = "F610"': 'frame = "F611"',
-           "pressure_share = 0.9": "pressure_share = 1.5"}[edit]
+           "pressure_share = 0.9": "pressure_share = 1.5",
+           'hitch = "56"': 'hitch = "01"'}[edit]   # a frame point (was an IndexError)
     text = HITCH.replace(edit, bad)
     line = text.splitlines().index(bad) + 1
     with pytest.raises(ModelFileError) as e:
@@ -107,3 +109,12 @@ def test_a_hitch_point_that_does_not_rise_monotonically_is_an_error():
         lift_test(model.mechanism, model.lift_test, (0.42, 0.67))
     with pytest.raises(ModelError, match="at least 6 positions"):
         LiftTest("56", positions=5)
+
+
+def test_a_hitch_point_the_cylinder_does_not_move_is_an_error():
+    """A point the cylinder does not drive (the lever's pivot 03 as a frame point is
+    refused at load; through the API, any point that stands still) is one message,
+    not an IndexError."""
+    model = io.loads(HITCH, name="h.toml")
+    with pytest.raises(ModelError, match="'03' does not move with S"):
+        lift_test(model.mechanism, LiftTest("03"), (0.42, 0.67))

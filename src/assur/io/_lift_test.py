@@ -56,6 +56,10 @@ def build_lift_test(builder, mech):
         if p is not None and p not in points:
             raise builder.error(("lift_test", key), f'expected a point of the model, found '
                                                     f'"{p}"{S.did_you_mean(p, points)}')
+    if spec.hitch in mech.frame_points:
+        raise builder.error(("lift_test", "hitch"), f'"{spec.hitch}" is a frame point, which does '
+                                                    f"not move: expected the point the "
+                                                    f"implement hangs on")
     names = [c.name for c in mech.cylinders]
     if spec.cylinder is not None and spec.cylinder not in names:
         raise builder.error(("lift_test", "cylinder"),

@@ -271,6 +271,10 @@ def lift_test(mech, test: LiftTest, s_range, iterations=50) -> LiftTestResult:
     # the lift range: a dense scan finds the extreme heights and checks monotonicity
     scan = mech.solve(np.linspace(lo, hi, 201))
     y, dy = np.ravel(scan.y(test.hitch)), np.ravel(scan.transmission(test.hitch))
+    if not np.any(dy):
+        raise ModelError(f"lift test of {mech.name!r}: the hitch point {test.hitch!r} does not "
+                         f"move with {c} (a frame point, or a point the cylinder does not "
+                         f"drive): name the point the implement hangs on")
     if not (np.all(dy > 0) or np.all(dy < 0)):
         k = int(np.flatnonzero(np.sign(dy) != np.sign(dy[0]))[0])
         raise ModelError(f"lift test of {mech.name!r}: the hitch point {test.hitch!r} does not "
