@@ -73,7 +73,7 @@ plt.show()
 # (stick) higher" and "dynamic components fall 3–8 times with combined motion". The
 # forces compared are those in the fed direction (``F1_fed``, ``F2_fed``: the chamber
 # the valve feeds for the stroke — the boom extends, the stick's rod retracts), against
-# ideal combined motion (eq. 61: both rods end at T_c); max |F| against V1 = V2
+# ideal combined motion (eq. 61: both rods end at T_c); max abs(F) against V1 = V2
 # (eq. 60, whose "6 s" cycle lasts 7.8 s) beside them.
 d = sweep(m, start, end, periods=[6, 11]).set_index(["scenario", "T"])
 for T in (6, 11):
@@ -105,8 +105,8 @@ for other in (io.load(io.bundled("crane_lv185")), io.load(io.bundled("crane_lv21
           f"{s_.F1_fed / c.F1_fed:.2f}, F2 {s_.F2_fed / c.F2_fed:.2f}")
 
 # %%
-# Both agree: the boom +89 % against ≈ 90 %, the stick +25 % against ≈ 30 % (max |F|
-# against V1 = V2 gives +79 % and +13 %: the stick's largest |F| is the push against
+# Both agree: the boom +89 % against ≈ 90 %, the stick +25 % against ≈ 30 % (max abs(F)
+# against V1 = V2 gives +79 % and +13 %: the stick's largest abs(F) is the push against
 # its motion at the start, held by the drained side). The paper does not say which
 # order, crane or speeds its figure is for, and its own S_max2 does not give the
 # stroke's start angle Φ1p0. With constant rod speeds every

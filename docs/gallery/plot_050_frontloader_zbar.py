@@ -73,7 +73,7 @@ assert lift.pressure.max() < float(m.params["p_relief"])
 
 # %%
 # Ratings — номинальные показатели (docs/ratings.md)
-# -------------------------------------------------
+# --------------------------------------------------
 # The file declares three ``[[rating]]`` tables: the static tipping load at the
 # farthest reach of G and the rated operating capacity, half of it (ISO 14397-1), the
 # breakout forces 100 mm behind the cutting edge (ISO 14397-2) and the lift capacity
