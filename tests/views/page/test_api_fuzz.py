@@ -93,3 +93,30 @@ def test_any_length_is_a_drawing_or_a_message(name, value):
     _check(r)
     out = r.json()
     assert out["ok"] or out["error"]["kind"] in ("model", "assembly", "singular")
+
+
+#: positions the export routes get at and beyond their edges: repeated, extreme,
+#: non-finite written as JSON can (strings), many, empty
+EXPORT_POSITIONS = [[0.5, 0.5], [0.5] * 64, [1e308, -1e308], [0.42, 0.67, 0.42],
+                    [-1e12, 1e12], [], [0.5, "nan"], [0.5, None], list(range(65)),
+                    [5e-324], [0.55, 0.550000000000001]]
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=list(HealthCheck))
+@given(route=st.sampled_from(["/api/export/dxf", "/api/export/csv", "/api/export/xlsx",
+                              "/api/export/toml"]),
+       at=st.sampled_from(EXPORT_POSITIONS),
+       positions=st.sampled_from([None, 2, 3, 1, 0, -1, 1001, 1002, 10**9, 2.5, "11"]),
+       params=st.sampled_from([{}, {"L5": 0.5}, {"L5": 1e6}, {"L5": -0.48}]))
+def test_exports_at_repeated_and_extreme_positions(route, at, positions, params):
+    """Issue 27: the export routes with repeated (``[0.5, 0.5]`` was the page's one 500),
+    extreme, too many and non-numeric positions and position counts: a file or a
+    message, never 500."""
+    body = {"params": params, "at": at}
+    if positions is not None:
+        body["positions"] = positions
+    r = client().post(route, json=body)
+    _check(r)
+    if r.status_code == 200 and route == "/api/export/dxf" \
+            and r.headers.get("content-type", "").startswith("image/vnd.dxf"):
+        assert b"SECTION" in r.content[:200]
