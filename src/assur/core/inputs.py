@@ -70,9 +70,23 @@ SPANS = {
     "mass": (1e9, 1e-9),              # kg
     "stiffness": (1e12, 0.0),         # N/m
     "inertia": (1e12, 0.0),           # kg·m²
+    # the hydraulic drive's kinds (its components: assur.dynamics.drive): wide enough for
+    # any machine's drive, narrow enough that a slip of a unit or an exponent (a
+    # displacement of 1e308 cm³, a flow of 1e-300 l/min) is refused at its key
+    "volume": (10.0, 1e-9),           # m³: 10 m³, 1 mm³
+    "flow": (10.0, 1e-9),             # m³/s: 600 000 l/min, 0.06 ml/min
+    "angular velocity": (1e4, 1e-2),  # rad/s: 95 000 rpm, 0.1 rpm
+    "density": (1e5, 1.0),            # kg/m³
+    "kinematic viscosity": (1e-1, 1e-8),  # m²/s: 100 000 mm²/s, 0.01 mm²/s
+    "inertance": (1e15, 0.0),         # Pa·s²/m³
+    "resistance": (1e15, 0.0),        # Pa·s/m³
+    "turbulent resistance": (1e18, 0.0),  # Pa·s²/m⁶
 }
 _SI = {"length": "m", "angle": "rad", "force": "N", "moment": "N·m", "pressure": "Pa",
-       "mass": "kg", "stiffness": "N/m", "inertia": "kg·m²"}
+       "mass": "kg", "stiffness": "N/m", "inertia": "kg·m²", "volume": "m³",
+       "flow": "m³/s", "angular velocity": "rad/s", "density": "kg/m³",
+       "kinematic viscosity": "m²/s", "inertance": "Pa·s²/m³", "resistance": "Pa·s/m³",
+       "turbulent resistance": "Pa·s²/m⁶"}
 #: smallest efficiency accepted [-]
 MIN_EFFICIENCY = 0.01
 #: largest number of cylinders of one group [-]
@@ -351,10 +365,11 @@ def span_problem(kind: str, value: float, positive: bool = False) -> str | None:
         return None
     big, small = SPANS[kind]
     unit = _SI[kind]
+    a = "an" if kind[0] in "aeiou" else "a"
     if abs(value) > big:
-        return f"expected a {kind} of at most {big:g} {unit} in magnitude"
+        return f"expected {a} {kind} of at most {big:g} {unit} in magnitude"
     if positive and value < small:
-        return f"expected a {kind} of at least {small:g} {unit}"
+        return f"expected {a} {kind} of at least {small:g} {unit}"
     return None
 
 

@@ -16,7 +16,7 @@ flow_divider        divider     Q_i = s_i·Q
 ==================  ==========  ===================================================
 """
 
-from .base import ROLES, SPANS, component_type, register, registry, span
+from .base import ROLES, component_type, register, registry, span
 from .pump import GearPump
 from .relief import ReliefValve
 from .valve import DirectionalValve
@@ -26,6 +26,6 @@ from .cylinder import DriveCylinder
 from .divider import FlowDivider
 from .circuit import Circuit
 
-__all__ = ["ROLES", "register", "registry", "component_type", "SPANS", "span", "GearPump", "ReliefValve",
+__all__ = ["ROLES", "register", "registry", "component_type", "span", "GearPump", "ReliefValve",
            "DirectionalValve", "Line", "LineLosses", "OilVolume", "BULK_MODULUS",
            "DriveCylinder", "FlowDivider", "Circuit"]

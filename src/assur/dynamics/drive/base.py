@@ -15,7 +15,7 @@ lumped in one node, fig. 6.2). Each one
 * has ``quantities`` — ``{field: kind}`` of its value fields (the units the file
   may give them in, :mod:`assur.io._drive`), and may have ``spans`` — ``{field:
   (low, high)}`` [SI] where a field's physical span is narrower or wider than its
-  kind's (:data:`SPANS`, :func:`span`): a file's value outside is refused at its key;
+  kind's (:data:`assur.core.inputs.SPANS`, :func:`span`): a file's value outside is refused at its key;
 * states its equation and the unit of every field in its docstring, SI inside;
 * checks its values on construction (:meth:`check`), raising
   :class:`assur.errors.ModelError` that names the component, the field and value.
@@ -32,37 +32,18 @@ import math
 
 from ...errors import ModelError
 
-__all__ = ["register", "registry", "component_type", "ROLES", "positive", "nonneg", "SPANS",
-           "span"]
+__all__ = ["register", "registry", "component_type", "ROLES", "positive", "nonneg", "span"]
 
 #: the places a component can take in the circuit
 ROLES = ("pump", "relief", "valve", "line", "volume", "cylinder", "divider")
 
 _REGISTRY: dict[str, type] = {}
 
-#: the physical span of each kind of value a component takes [SI], both ends
-#: included: wide enough for any hydraulic drive of a machine (a model's displacement
-#: of 0.1 cm³ or oil volume of 5 m³ passes), narrow enough that a slip of a unit or
-#: an exponent (a displacement of 1e308 cm³, a flow of 1e-300 l/min, a bore of
-#: 1e-300 mm) is refused at its key instead of overflowing the simulation
-SPANS = {
-    "volume": (1e-9, 10.0),              # [m³]: 1 mm³ … 10 m³
-    "flow": (1e-9, 10.0),                # [m³/s]: 0.06 ml/min … 600 000 l/min
-    "angular velocity": (1e-2, 1e4),     # [rad/s]: 0.1 rpm … 95 000 rpm
-    "length": (1e-5, 1e4),               # [m]: 0.01 mm … 10 km
-    "pressure": (0.0, 1e9),              # [Pa]: 0 … 1000 MPa
-    "density": (1.0, 1e5),               # [kg/m³]
-    "kinematic viscosity": (1e-8, 1e-1),  # [m²/s]: 0.01 … 100 000 mm²/s
-    "inertance": (0.0, 1e15),            # [Pa·s²/m³]
-    "resistance": (0.0, 1e15),           # [Pa·s/m³]
-    "turbulent resistance": (0.0, 1e18),  # [Pa·s²/m⁶]
-    "number": (0.0, 1e6),                # [-]
-}
-
-
 def span(cls, field) -> tuple:
     """``(low, high)`` [SI]: the physical span of the value field ``field`` of the
-    component type ``cls`` — its own ``spans`` entry, else its kind's (:data:`SPANS`).
+    component type ``cls`` — its own ``spans`` entry, else its kind's
+    (:data:`assur.core.inputs.SPANS`: up to its largest magnitude, from its smallest
+    positive value; a kind without a span: any finite number).
 
     Examples
     --------
@@ -73,10 +54,12 @@ def span(cls, field) -> tuple:
     >>> span(DriveCylinder, "count")             # cylinders working as one [-]
     (1, 100)
     """
+    from ...core.inputs import SPANS
     own = getattr(cls, "spans", {})
     if field in own:
         return own[field]
-    return SPANS[cls.quantities[field]]
+    big, small = SPANS.get(cls.quantities[field], (math.inf, -math.inf))
+    return small, big
 
 
 def register(cls):
