@@ -807,11 +807,13 @@ def _inherited(text: str, source, depth: int = 0) -> str:
     True
     """
     import tomlkit
+    from tomlkit.exceptions import TOMLKitError
 
+    from ...errors import ModelError
     from ...io import read_model_bytes
     try:
         doc = tomlkit.parse(text)
-    except Exception:  # noqa: BLE001 - not TOML: the model's load says where
+    except TOMLKitError:  # not TOML: the model's load says where
         return text
     ext = doc.get("extends")
     if not isinstance(ext, str) or source is None or depth > 16:
@@ -820,8 +822,8 @@ def _inherited(text: str, source, depth: int = 0) -> str:
         base = (Path(source).resolve().parent / ext).resolve()
         base_text = read_model_bytes(base, str(base)).decode("utf-8").removeprefix("\ufeff")
         base_params = tomlkit.parse(_inherited(base_text, base, depth + 1)).get("params")
-    except Exception:  # noqa: BLE001 - the model's own load reports the base's problem
-        return text
+    except (OSError, RuntimeError, ValueError, ModelError, TOMLKitError):
+        return text  # a base that cannot be read or parsed: the model's own load says why
     own = doc.get("params")
     if not base_params or not hasattr(base_params, "items"):
         return text
