@@ -53,15 +53,37 @@ import numpy as np
 from ..errors import AssemblyError, ModelError
 from .quantities import Unit
 
-__all__ = ["Hold", "HeldPath", "hold_path", "quantity_jets"]
+__all__ = ["Hold", "HeldPath", "hold_path", "quantity_jets", "output_kind"]
 
 _DEG = Unit("deg", math.pi / 180.0)
 _M = Unit("m", 1.0)
 
 
-def _kind(mech, name):
-    """('x'|'y'|'phi'|'dist', object) of an output's name, or ModelError."""
-    links = {l.name for l in mech.links} | set(mech.bodies)
+def output_kind(mech, name, *, what="output", declared=False):
+    """``("x"|"y"|"phi"|"dist", object)`` of an output named as ``[[solve]]``
+    conditions, ``[design]`` constraints and held coordinates name them:
+    ``X<point>``, ``Y<point>`` [m], ``phi<link>`` [rad] or a distance's name [m]; with
+    ``declared``, the angles of the declared links only (a design condition's
+    quantity), else of the bodies too.
+
+    Raises
+    ------
+    ModelError
+        ``"unknown <what> '<name>': use …"`` with the names the model has.
+
+    Examples
+    --------
+    >>> from assur import examples
+    >>> from assur.core.held import output_kind
+    >>> m = examples.hitch_003()
+    >>> output_kind(m, "Y56"), output_kind(m, "phi3")
+    (('y', '56'), ('phi', '3'))
+    >>> output_kind(m, "Y99", what="quantity", declared=True)   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    assur.errors.ModelError: unknown quantity 'Y99': use X<point>/Y<point> (points [...
+    """
+    links = {l.name for l in mech.links} | (set() if declared else set(mech.bodies))
     dists = {d.name for d in mech.distances}
     points = set(mech.points) | set(mech.frame_points)
     if name.startswith("phi") and name[3:] in links:
@@ -70,9 +92,13 @@ def _kind(mech, name):
         return name[0].lower(), name[1:]
     if name in dists:
         return "dist", name
-    raise ModelError(f"unknown output {name!r} to hold: use X<point>/Y<point> (points "
+    raise ModelError(f"unknown {what} {name!r}: use X<point>/Y<point> (points "
                      f"{sorted(points)}), phi<link> (links {sorted(links)}) or a distance "
                      f"{sorted(dists)}")
+
+
+def _kind(mech, name):
+    return output_kind(mech, name)
 
 
 def quantity_jets(kin, name):

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..core.held import output_kind
 from ..errors import AssemblyError, ModelError
 
 __all__ = ["DesignError", "Condition", "SolvedCondition", "solve_conditions", "condition_residual",
@@ -158,19 +159,10 @@ class SolvedCondition:
 
 
 def _quantity(mech, name):
-    """('x'|'y'|'phi'|'dist', object name) of a quantity, or ModelError."""
-    links = {l.name for l in mech.links}
-    dists = {d.name for d in mech.distances}
-    points = set(mech.points)
-    if name.startswith("phi") and name[3:] in links:
-        return "phi", name[3:]
-    if name[:1] in "XY" and name[1:] in points:
-        return name[0].lower(), name[1:]
-    if name in dists:
-        return "dist", name
-    raise ModelError(f"unknown quantity {name!r}: use X<point>/Y<point> (points "
-                     f"{sorted(points)}), phi<link> (links {sorted(links)}) or a distance "
-                     f"{sorted(dists)}")
+    """('x'|'y'|'phi'|'dist', object name) of a condition's quantity: a declared link's
+    angle, a moving point's coordinate or a distance (:func:`assur.core.held.output_kind`),
+    or ModelError."""
+    return output_kind(mech, name, what="quantity", declared=True)
 
 
 def _depends(mech, cond, unknowns):
