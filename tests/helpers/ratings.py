@@ -151,3 +151,18 @@ def hand_limit(name, I, F_dead):
     piston, rod = AREAS[name]
     F = P_RELIEF * (piston if I > 0 else -rod) * ETA[name]
     return (F - F_dead) / I
+
+
+#: a [machine] on two axles and a loader_tipping rating at T, for ARM (the reports' tests)
+TIPPING = '''
+[machine]
+axles = { near = "-0.1 m", far = "2.0 m" }
+steered = "far"
+weights = [{ name = "body", P = "60 kN", x = "1.2 m" }]
+implement = { point = "T", weight = "10 kN" }
+
+[[rating]]
+type = "loader_tipping"
+point = "T"
+name = { en = "Tipping of the test loader", ru = "Опрокидывание" }
+'''

@@ -4,20 +4,7 @@ import numpy as np
 
 from assur import io
 from assur.views.report.ratings import rating_figures
-from tests.helpers.ratings import ARM
-
-TIPPING = '''
-[machine]
-axles = { near = "-0.1 m", far = "2.0 m" }
-steered = "far"
-weights = [{ name = "body", P = "60 kN", x = "1.2 m" }]
-implement = { point = "T", weight = "10 kN" }
-
-[[rating]]
-type = "loader_tipping"
-point = "T"
-name = { en = "Tipping of the test loader", ru = "Опрокидывание" }
-'''
+from tests.helpers.ratings import ARM, TIPPING
 
 
 def test_a_ratings_figure_in_the_users_units():

@@ -7,20 +7,7 @@ from assur.core.display import unit_system
 from assur.views.report import seed_tables
 from assur.views.report.tables import table_filename
 from assur.views.report.tables._ratings import rating_tables
-from tests.helpers.ratings import ARM
-
-TIPPING = '''
-[machine]
-axles = { near = "-0.1 m", far = "2.0 m" }
-steered = "far"
-weights = [{ name = "body", P = "60 kN", x = "1.2 m" }]
-implement = { point = "T", weight = "10 kN" }
-
-[[rating]]
-type = "loader_tipping"
-point = "T"
-name = { en = "Tipping of the test loader", ru = "Опрокидывание" }
-'''
+from tests.helpers.ratings import ARM, TIPPING
 
 
 def test_the_crane_charts_table_is_among_the_reports_tables():
