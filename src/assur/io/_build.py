@@ -305,14 +305,22 @@ class Builder(Uses, Assembly, Conditions):
         use_wheels(self)  # [[wheels]]: io/_wheels.py
         self.parameters()
         mech = build_wheels(self, self.mechanism())
-        from ._dynamics import build_dynamics
-        self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
-        from ._lift_test import build_lift_test
-        self.lift_test = build_lift_test(self, mech)  # [lift_test]: io/_lift_test.py
-        from ._ratings import build_ratings
-        self.ratings = build_ratings(self, mech)  # [[rating]]: io/_ratings.py
-        from ._tolerances import build_tolerances
-        self.tolerances = build_tolerances(self, mech)  # [tolerances]: io/_tolerances.py
+        # the optional sections' readers are imported only for a file that has the
+        # section (each returns its empty value without it): `assur check` of a file
+        # without them imports none of their modules
+        self.dynamics, self.lift_test, self.ratings, self.tolerances = None, None, (), ()
+        if "dynamics" in self.data:
+            from ._dynamics import build_dynamics
+            self.dynamics = build_dynamics(self, mech)  # [dynamics]: io/_dynamics.py
+        if "lift_test" in self.data:
+            from ._lift_test import build_lift_test
+            self.lift_test = build_lift_test(self, mech)  # [lift_test]: io/_lift_test.py
+        if "rating" in self.data:
+            from ._ratings import build_ratings
+            self.ratings = build_ratings(self, mech)  # [[rating]]: io/_ratings.py
+        if "tolerances" in self.data:
+            from ._tolerances import build_tolerances
+            self.tolerances = build_tolerances(self, mech)  # [tolerances]: io/_tolerances.py
         self.drive = self.simulation = None
         if "drive" in self.data or "simulation" in self.data:  # [[drive]]: io/_drive.py
             from ._drive import build_drive

@@ -7,6 +7,7 @@ type's declared fields with :func:`pydantic.create_model`. Nothing here lists a 
 from __future__ import annotations
 
 import typing
+from collections.abc import Mapping
 from typing import Optional
 
 from pydantic import StrictStr, create_model, model_validator
@@ -58,7 +59,7 @@ def group_spec(cls) -> type[_Group]:
 _SPECS: dict = {}
 
 
-def group_types() -> dict[str, type[_Group]]:
+def group_types() -> Mapping[str, type[_Group]]:
     """The ``[[groups]]`` table models by ``type``, one per registered group type (the
     frame, which is the ``[frame]`` section, excluded), in the order the package
     :mod:`assur.groups` lists them (its ``__all__``; registration order follows the
@@ -71,8 +72,27 @@ def group_types() -> dict[str, type[_Group]]:
     types = {n: reg[n] for n in order if n != "frame"}
     key = tuple(types.items())
     if _SPECS.get("key") != key:
-        _SPECS.update(key=key, specs={n: group_spec(c) for n, c in types.items()})
+        _SPECS.update(key=key, specs=_Specs(types))
     return _SPECS["specs"]
+
+
+class _Specs(Mapping):
+    """The group types' table models by name, each made by :func:`group_spec` when
+    first asked for (a file names a few of the types; making a model costs ~1 ms)."""
+
+    def __init__(self, types):
+        self._types, self._made = types, {}
+
+    def __getitem__(self, name):
+        if name not in self._made:
+            self._made[name] = group_spec(self._types[name])
+        return self._made[name]
+
+    def __iter__(self):
+        return iter(self._types)
+
+    def __len__(self):
+        return len(self._types)
 
 
 # ---- [[loads]] ----------------------------------------------------------------------

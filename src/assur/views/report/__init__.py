@@ -25,7 +25,19 @@ from __future__ import annotations
 from pathlib import Path
 
 from .labels import check_lang
-from .tables import Column, Table, seed_tables, table_filename, write_csv, write_xlsx
+
+#: names this package re-exports from :mod:`assur.views.report.tables`, imported when
+#: first asked for (``assur check`` formats numbers with :mod:`.numbers` and need not
+#: import the tables' builders)
+_FROM_TABLES = ("Column", "Table", "seed_tables", "table_filename", "write_csv",
+                "write_xlsx")
+
+
+def __getattr__(name):
+    if name in _FROM_TABLES:
+        from . import tables
+        return getattr(tables, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = ["write_report", "report_steps", "FORMATS", "DEFAULT_FORMATS", "seed_tables",
            "write_csv", "write_xlsx", "Table", "Column"]
@@ -136,6 +148,7 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     """
     from . import html as _html  # no matplotlib: the tables' inputs and the page
     from ...core.display import unit_system
+    from .tables import seed_tables, table_filename, write_csv, write_xlsx
 
     mech = analysis.mechanism
     lang = check_lang(lang or mech.display.get("lang") or "en")
