@@ -89,7 +89,9 @@ def test_paired_needs_two_coordinates():
 
 def test_maps_have_the_coordinates_on_their_axes(grid_analysis):
     """Every diagram over the grid (S, S1) is a set of maps: x the first coordinate,
-    y the second, in their units; no axis is a position index."""
+    y the second, in their units; no axis is a position index. The panels share
+    their axes: the names (and tick values) are printed on the bottom row and the
+    left column only, every other panel sharing both axes with a named one."""
     figs = F.figures(grid_analysis, "en")
     assert {"angles", "analogs", "transmission", "capacity", "force", "pressure",
             "reactions", "stability"} <= set(figs)
@@ -98,9 +100,18 @@ def test_maps_have_the_coordinates_on_their_axes(grid_analysis):
             continue
         maps = [ax for ax in fig.axes if ax.get_label() != "<colorbar>"]
         assert maps, name
+        assert {ax.get_xlabel() for ax in maps} <= {"S [m]", ""}, name
+        assert {ax.get_ylabel() for ax in maps} <= {"S1 [m]", ""}, name
+        assert maps[-1].get_xlabel() == "S [m]" and maps[0].get_ylabel() == "S1 [m]", name
         for ax in maps:
-            assert ax.get_xlabel() == "S [m]", (name, ax.get_xlabel())
-            assert ax.get_ylabel() == "S1 [m]", (name, ax.get_ylabel())
+            if ax.get_xlabel() == "":  # a panel below it, sharing the axis, names it
+                assert not ax.xaxis.get_tick_params()["labelbottom"], name
+                assert any(ax.get_shared_x_axes().joined(ax, b) for b in maps
+                           if b.get_xlabel()), name
+            if ax.get_ylabel() == "":
+                assert not ax.yaxis.get_tick_params()["labelleft"], name
+                assert any(ax.get_shared_y_axes().joined(ax, b) for b in maps
+                           if b.get_ylabel()), name
     for fig in figs.values():
         for ax in fig.axes:
             assert "position" not in ax.get_xlabel().lower()

@@ -5,6 +5,7 @@ abscissa, its order and breaks, and the maps over a grid of two coordinates
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from ._canvas import figure_legend, new_figure
 from .labels import check_lang, t, unit
@@ -59,7 +60,7 @@ def path_abscissa(columns):
     return 0
 
 
-def _grid_layout(fig, nrow, ncol, top, left=0.75, right=0.95, bottom=0.55, wgap=1.5,
+def _grid_layout(fig, nrow, ncol, top, left=0.75, right=0.95, bottom=0.55, wgap=1.2,
                  hgap=0.85):
     """A fixed layout of a grid of map panels (each with its colour bar on the right),
     margins and gaps in inches: the same places as a constrained layout finds for
@@ -196,11 +197,16 @@ class _Plot:
         fig.suptitle("\n".join(lines), fontsize="medium", y=1.0 - 0.1 / fig.get_figheight(),
                      va="top")
         _grid_layout(fig, nrow, ncol, top=0.35 + 0.2 * len(lines))
+        first = None
         for k, (label, y) in enumerate(maps.series):
-            ax = fig.add_subplot(nrow, ncol, k + 1)
+            # the panels share the coordinates' axes: their values and names are
+            # printed on the outer panels only (the bottom row, the left column)
+            ax = fig.add_subplot(nrow, ncol, k + 1, sharex=first, sharey=first)
+            first = first or ax
             z = self.surface(y)
             mesh = ax.pcolormesh(u1, u2, z, shading="nearest", cmap="viridis")
-            fig.colorbar(mesh, ax=ax, label=yu)
+            bar = fig.colorbar(mesh, ax=ax, label=yu)
+            bar.locator = MaxNLocator(5)
             lo, hi = float(np.min(z)), float(np.max(z))
             if hi - lo > 1e-12 * max(abs(lo), abs(hi), 1e-300):
                 cs = ax.contour(u1, u2, z, levels=6, colors="k", linewidths=0.6)
@@ -210,8 +216,18 @@ class _Plot:
                         ax.contour(u1, u2, z, levels=[level], colors="C3", linewidths=1.6,
                                    linestyles="--")
             ax.set_title(label, fontsize="small")
-            ax.set_xlabel(self.axis_label(c1))
-            ax.set_ylabel(self.axis_label(c2))
+            row, col = divmod(k, ncol)
+            if k + ncol >= n:  # nothing below it: the bottom of its column
+                ax.set_xlabel(self.axis_label(c1))
+            else:
+                ax.tick_params(labelbottom=False)
+            if col == 0:
+                ax.set_ylabel(self.axis_label(c2))
+            else:
+                ax.tick_params(labelleft=False)
+        if first is not None:
+            first.xaxis.set_major_locator(MaxNLocator(5))
+            first.yaxis.set_major_locator(MaxNLocator(5))
         return fig
 
     def line(self, ax, y, label, angle=False, **kw):
