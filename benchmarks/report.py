@@ -34,7 +34,7 @@ from assur.views.report import DEFAULT_FORMATS, write_report
 N = 3
 TARGET_S = 3.0
 TARGET_RATIO = 2.0
-MODELS = ("hitch_003", "loader_lab1", "steering_lab4", "cleaning_lab3")
+MODELS = tuple(os.environ.get("ASSUR_BENCH_MODELS", "hitch_003,loader_lab1,steering_lab4,cleaning_lab3").split(","))
 RUNS = {"csv": "csv", "html": "html", "all": ",".join(DEFAULT_FORMATS)}
 ASSUR = [sys.executable, "-m", "assur.views.cli"]
 

@@ -1,6 +1,7 @@
 """The numpy evaluation of a structure's kernel (:mod:`assur.kernel.vector`, the first
 small calls of a process that has not loaded numba) gives the compiled kernel's
-answers: outputs, first and second analogs, status codes and continuity depths, on
+answers to the last bit (the same operations in the same order; numba without
+fastmath): outputs, first and second analogs, status codes and continuity depths, on
 random mechanisms of every group type (the samples of the group contract test,
 including parameters that cannot assemble), on two bundled models over their ranges
 (one per kind of structure), and in the continuity check's corner cases (within and
@@ -48,10 +49,9 @@ def _execute(mech, q, n, vector, monkeypatch, check=True, params=None):
 
 def _same(a, b, what):
     assert np.array_equal(a["status"], b["status"]), (what, a["status"], b["status"])
-    for k in KEYS:
+    for k in KEYS:  # to the last bit: the same operations in the same order
         x, y = a[k], b[k]
-        scale = max(1.0, float(np.abs(y).max(initial=0.0)))
-        assert np.allclose(x, y, rtol=1e-12, atol=1e-12 * scale), (what, k)
+        assert np.array_equal(x, y, equal_nan=True), (what, k, np.abs(x - y).max(initial=0))
     bad = a["status"] % KE.CODES_PER_OP == KE.FAIL_CONTINUITY
     assert np.array_equal(a["amount"][bad], b["amount"][bad]), what
 
