@@ -178,15 +178,24 @@ def save(fig, path, dpi=110) -> Path:
                          f"got {path.name!r}")
     meta = {"Software": None} if fmt == "png" else {"Creator": None}
     plain_texts(fig)
-    if fmt == "svg" and _laid_out(fig):
-        # printed directly: savefig would draw the figure once more first (a pass
-        # to lay it out, with nothing to lay out here) — 40 % of an SVG's time
-        from matplotlib.backends.backend_svg import FigureCanvasSVG
-        canvas = fig.canvas
-        try:
-            FigureCanvasSVG(fig).print_svg(path, metadata=meta)
-        finally:
-            fig.set_canvas(canvas)
+    if fmt == "svg":
+        # texts as text (<text>, in the figure's font family): found by a search,
+        # copied and edited in a drawing program, and a third faster to write than
+        # each glyph as a path
+        from matplotlib import rc_context
+        with rc_context({"svg.fonttype": "none"}):
+            if _laid_out(fig):
+                # printed directly: savefig would draw the figure once more first (a
+                # pass to lay it out, with nothing to lay out here) — 40 % of an
+                # SVG's time
+                from matplotlib.backends.backend_svg import FigureCanvasSVG
+                canvas = fig.canvas
+                try:
+                    FigureCanvasSVG(fig).print_svg(path, metadata=meta)
+                finally:
+                    fig.set_canvas(canvas)
+            else:
+                fig.savefig(path, format=fmt, dpi=dpi, metadata=meta)
         return path
     fig.savefig(path, format=fmt, dpi=dpi, metadata=meta)
     return path
