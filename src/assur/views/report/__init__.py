@@ -177,15 +177,13 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     gif = "gif" in formats
     if figured or gif or "html" in formats:  # matplotlib only for figures (not CSV, XLSX)
         from . import drawing as _drawing
-    jobs_ = []  # what the renderers make: the figures, the drawing, the GIF's frames
-    figs = _figure_set(analysis, lang, design, du) if figured else {}
-    if figured:
-        figs[_DRAWING] = _drawing.draw(analysis, positions=positions, lang=lang,
-                                       design=design, units=du)
-        jobs_ += [("figure", n) for n in figs]
+    # what the renderers make — each figure built and drawn by the renderer that takes
+    # it (the builders run in parallel too): the diagrams, the drawing, the GIF's frames
+    jobs_ = (_figure_jobs(analysis) + [("drawing", None)]) if figured else []
     if gif:
-        jobs_.append(("gif", None))
-    render = _Renderers(jobs_, figs, out, formats, dict(
+        jobs_.insert(0, ("gif", None))  # the longest job of a small machine: first
+    render = _Renderers(jobs_, dict(analysis=analysis, lang=lang, design=design, units=du,
+                                    positions=positions), out, formats, dict(
         analysis=analysis, frames=frames, lang=lang, design=design, units=du), jobs)
     with render:
         if "xlsx" in formats:  # while the renderers draw
@@ -194,19 +192,19 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
                                           inputs=_html.model_inputs(analysis, lang, du))]
         if figured:
             step("figures")
-            for name in figs:
-                if name is _DRAWING:
+            for job in jobs_:
+                if job[0] in ("gif", "drawing"):
                     continue
-                png, caption, svg = render.result(("figure", name))
-                pngs[name] = (png, caption)
-                if "png" in formats:
-                    p = out / f"fig_{name}.png"
-                    p.write_bytes(png)
-                    written["png"].append(p)
-                if svg is not None:
-                    written["svg"].append(svg)
+                for name, png, caption, svg in render.result(job):
+                    pngs[name] = (png, caption)
+                    if "png" in formats:
+                        p = out / f"fig_{name}.png"
+                        p.write_bytes(png)
+                        written["png"].append(p)
+                    if svg is not None:
+                        written["svg"].append(svg)
             step("drawing")
-            drawing_png, _, svg = render.result(("figure", _DRAWING))
+            ((_, drawing_png, _, svg),) = render.result(("drawing", None))
             if "png" in formats:
                 p = out / "mechanism.png"
                 p.write_bytes(drawing_png)
@@ -240,69 +238,78 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     return written
 
 
-def _figure_set(analysis, lang, design, du) -> dict:
-    """Every diagram of the report, ``{name: Figure}`` in its order: the analysis'
-    (:func:`assur.views.report.figures.figures`), the crank dynamics', the lift test's."""
-    from . import figures as _figures
-    figs = dict(_figures.figures(analysis, lang, design=design, units=du))
+def _figure_jobs(analysis) -> list:
+    """The report's diagrams as the renderers' jobs, in the report's order: each of
+    :data:`assur.views.report.figures.FIGURES`, then the crank dynamics', the lift
+    test's and the ratings' (each job builds its figures, :func:`_build`)."""
+    from .figures import FIGURES
+    jobs = [("figure", n) for n in FIGURES]
     if getattr(analysis, "dynamics", None) is not None:  # crank dynamics (lab 3)
-        from . import dynamics as _dynamics
-        figs.update(_dynamics.figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
-                                      balancing=analysis.balancing, units=du))
+        jobs.append(("dynamics", None))
     if getattr(analysis, "lift_test", None) is not None:  # ISO 789-2 lift test
-        from .lift import lift_test_figure
-        figs["lift_test"] = lift_test_figure(analysis, lang, units=du)
+        jobs.append(("lift_test", None))
     if getattr(analysis, "ratings", None):  # [[rating]]: views/report/ratings.py
-        from .ratings import rating_figures
-        figs.update(rating_figures(analysis, lang, units=du))
-    return figs
+        jobs.append(("ratings", None))
+    return jobs
 
 
-def _render(job, figs, out, formats, anim):
-    """What one renderer makes of ``job``: a figure's ``(PNG bytes, caption, SVG path or
-    None)``; the GIF's path."""
-    from . import figures as _figures
+def _build(job, analysis, lang, design, units, positions) -> dict:
+    """The figures of one job, ``{name: Figure}`` (none for a diagram with nothing to
+    draw for this machine): a diagram (:func:`assur.views.report.figures.figures`),
+    the crank dynamics', the lift test's, the ratings' or the mechanism's drawing."""
     kind, name = job
+    if kind == "figure":
+        from .figures import figures
+        return figures(analysis, lang, design=design, names=[name], units=units)
+    if kind == "dynamics":
+        from .dynamics import figures
+        return dict(figures(analysis.dynamics, lang, flywheel=analysis.flywheel,
+                            balancing=analysis.balancing, units=units))
+    if kind == "lift_test":
+        from .lift import lift_test_figure
+        return {"lift_test": lift_test_figure(analysis, lang, units=units)}
+    if kind == "ratings":
+        from .ratings import rating_figures
+        return dict(rating_figures(analysis, lang, units=units))
+    if kind == "drawing":
+        from .drawing import draw
+        return {"drawing": draw(analysis, positions=positions, lang=lang, design=design,
+                                units=units)}
+    raise ValueError(f"unknown report job {job!r}")
+
+
+def _render(job, build, out, formats, anim):
+    """What one renderer makes of ``job``: for a figure job ``[(name, PNG bytes,
+    caption, SVG path or None), …]`` in its order (the drawing's files are
+    ``mechanism.*``); the GIF's path."""
+    from . import figures as _figures
+    kind, _ = job
     if kind == "gif":
         from . import drawing as _drawing
         imgs = _drawing.render_frames(**anim)
         return _drawing.write_gif(imgs, out / "mechanism.gif")
-    fig = figs[name]
-    # a figure of maps (two coordinates) has its title above the panels
-    caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
-    png = _figures.to_png_bytes(fig)
-    svg = None
-    if "svg" in formats:
-        fig.set_layout_engine("none")  # laid out for the PNG: the SVG keeps its places
-        svg = _figures.save(fig, out / ("mechanism.svg" if name is _DRAWING
-                                        else f"fig_{name}.svg"))
-    return png, caption, svg
+    made = []
+    for name, fig in _build(job, **build).items():
+        # a figure of maps (two coordinates) has its title above the panels
+        caption = fig.get_suptitle() or (fig.axes[0].get_title() if fig.axes else name)
+        png = _figures.to_png_bytes(fig)
+        svg = None
+        if "svg" in formats:
+            fig.set_layout_engine("none")  # laid out for the PNG: the SVG keeps its places
+            svg = _figures.save(fig, out / ("mechanism.svg" if kind == "drawing"
+                                            else f"fig_{name}.svg"))
+        made.append((name, png, caption, svg))
+    return made
 
 
-class _Drawing:
-    """The key of the mechanism's drawing among the figures (no diagram's name)."""
-
-    def __repr__(self):
-        return "drawing"
-
-
-_DRAWING = _Drawing()
-
-#: what the forked renderers read: the parent's figures (inherited, not pickled)
+#: what the forked renderers read: the parent's analysis (inherited, not pickled)
 _JOB: dict = {}
 
 
 def _render_forked(i):
-    """Job ``i`` of the renderers' list (an index is sent, not the job: the drawing's key
-    is this process's object)."""
+    """Job ``i`` of the renderers' list (an index is sent, not the job)."""
     args = dict(_JOB)
     return i, _render(args.pop("jobs")[i], **args)
-
-
-def _cost(job, figs) -> int:
-    """A rough cost of a job, to start the long ones first: a figure's panels; the GIF
-    as many."""
-    return 12 if job[0] == "gif" else len(figs[job[1]].axes) + 1
 
 
 class _Renderers:
@@ -312,11 +319,11 @@ class _Renderers:
     inherits the figures, nothing is pickled but the files' bytes), the longest jobs
     first, each taken by the first renderer free; else here, as each is asked for."""
 
-    def __init__(self, jobs_, figs, out, formats, anim, jobs=1):
+    def __init__(self, jobs_, build, out, formats, anim, jobs=1):
         import os
         import sys
         self.jobs_, self.done, self.pool, self.pending = list(jobs_), {}, None, None
-        self.args = dict(figs=figs, out=out, formats=formats, anim=anim)
+        self.args = dict(build=build, out=out, formats=formats, anim=anim)
         n = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
         self.n = min(n, len(self.jobs_)) if sys.platform.startswith("linux") else 1
 
@@ -325,9 +332,8 @@ class _Renderers:
             import multiprocessing as mp
             _JOB.update(self.args, jobs=self.jobs_)
             self.pool = mp.get_context("fork").Pool(self.n)
-            order = sorted(range(len(self.jobs_)),
-                           key=lambda i: -_cost(self.jobs_[i], self.args["figs"]))
-            self.pending = self.pool.imap_unordered(_render_forked, order)
+            # in the list's order (the GIF first), each taken by the first renderer free
+            self.pending = self.pool.imap_unordered(_render_forked, range(len(self.jobs_)))
         return self
 
     def result(self, job):

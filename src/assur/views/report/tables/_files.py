@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import csv
+import functools
 import math
 import re
 from pathlib import Path
@@ -153,7 +154,8 @@ def sheet_name(table, lang="en", taken=()) -> str:
         name = name[:cut] if cut > len(table.label) else name[:31]
     k = 2
     base = name
-    while name in taken:
+    used = {n.casefold() for n in taken}  # Excel's sheet names ignore case
+    while name.casefold() in used:
         tag = f" ({k})"
         name = base[:31 - len(tag)].rstrip() + tag
         k += 1
@@ -228,64 +230,77 @@ def write_xlsx(tables, path, lang="en", inputs=None) -> Path:
     >>> rows[3][0], round(rows[3][1]), fmt  # S [m], Fgc [N]; seed 003 table 4.1: 129614
     (0.42, 129614, '0')
     """
-    from openpyxl import Workbook
-    from openpyxl.cell import WriteOnlyCell
-    from openpyxl.styles import Font
-    from openpyxl.utils import get_column_letter
+    import xlsxwriter
 
-    bold, title_font = Font(bold=True), Font(bold=True, size=12)
-    unit_font = Font(italic=True, color="57606A")
-    # write-only: each row streamed to the file as it is appended (a crank turn's 361
-    # rows of 30 columns keep no cell object per value), every float written by repr
     path = Path(path)
-    with _exact_floats():
-        wb = Workbook(write_only=True)
-        taken = []
+    # streamed row by row (a crank turn's 361 rows of 30 columns keep no cell object);
+    # a text is a text (never read as a formula or a link); numbers as _exact_sheet_class
+    # writes them
+    wb = xlsxwriter.Workbook(str(path), {"constant_memory": True,
+                                         "strings_to_formulas": False,
+                                         "strings_to_urls": False})
+    bold = wb.add_format({"bold": True})
+    title_font = wb.add_format({"bold": True, "font_size": 12})
+    unit_font = wb.add_format({"italic": True, "font_color": "#57606A"})
+    formats: dict = {}
 
-        def styled(ws, value, font=None, number_format=None):
-            cell = WriteOnlyCell(ws, value=value)
-            if font is not None:
-                cell.font = font
-            if number_format is not None:
-                cell.number_format = number_format
-            return cell
+    def fmt(number_format):
+        if number_format not in formats:
+            formats[number_format] = wb.add_format({"num_format": number_format})
+        return formats[number_format]
 
+    def put(ws, r, c, value, cell_format=None):
+        if isinstance(value, str):
+            ws.write_string(r, c, value, cell_format)
+        elif value is not None:  # None (NaN, infinite): an empty cell
+            ws.write_number(r, c, value, cell_format)
+
+    taken = []
+    try:
         if inputs:
-            ws = wb.create_sheet(t("inputs_sheet", lang))
-            taken.append(ws.title)
+            ws = wb.add_worksheet(t("inputs_sheet", lang), worksheet_class=_exact_sheet_class())
+            taken.append(ws.name)
             width = [12, 14, 10]
             for _, rows in inputs:
                 for row in rows:
                     for j, v in enumerate(row[:len(width)]):
                         width[j] = max(width[j], min(60, len(str(v)) + 2))
-            for j, w in enumerate(width, start=1):
-                ws.column_dimensions[get_column_letter(j)].width = w
+            for j, w in enumerate(width):
+                ws.set_column(j, j, w)
+            r = 0
             for heading, rows in inputs:
-                ws.append([styled(ws, heading, title_font)])
+                put(ws, r, 0, heading, title_font)
+                r += 1
                 for row in rows:
-                    ws.append([_xlsx_value(v) if not isinstance(v, str) else v for v in row])
-                ws.append([])
+                    for j, v in enumerate(row):
+                        put(ws, r, j, v if isinstance(v, str) else _xlsx_value(v))
+                    r += 1
+                r += 1  # a blank row between the sections
         for tab in tables:
-            ws = wb.create_sheet(sheet_name(tab, lang, taken))
-            taken.append(ws.title)
-            ws.freeze_panes = "B4"
-            for j, c in enumerate(tab.columns, start=1):
-                ws.column_dimensions[get_column_letter(j)].width = max(10, len(c.symbol) + 3,
-                                                                       len(c.unit) + 3)
-            ws.append([styled(ws, f"{t('table', lang)} {tab.label} — {tab.title(lang)}",
-                              title_font)])
-            ws.append([styled(ws, c.symbol, bold) for c in tab.columns])
-            ws.append([styled(ws, unit(c.unit, lang), unit_font) for c in tab.columns])
-            formats = [number_format(c.values) for c in tab.columns]
+            ws = wb.add_worksheet(sheet_name(tab, lang, taken), worksheet_class=_exact_sheet_class())
+            taken.append(ws.name)
+            ws.freeze_panes(3, 1)  # B4: the title, symbols and units rows, the first column
+            for j, c in enumerate(tab.columns):
+                ws.set_column(j, j, max(10, len(c.symbol) + 3, len(c.unit) + 3))
+            put(ws, 0, 0, f"{t('table', lang)} {tab.label} — {tab.title(lang)}", title_font)
+            # row by row: a row once left is written (constant_memory)
+            for j, c in enumerate(tab.columns):
+                put(ws, 1, j, c.symbol, bold)
+            for j, c in enumerate(tab.columns):
+                put(ws, 2, j, unit(c.unit, lang), unit_font)
+            shown = [fmt(number_format(c.values)) for c in tab.columns]
+            r = 3
             for row in zip(*(c.values for c in tab.columns)):
-                ws.append([styled(ws, _xlsx_value(x), number_format=f)
-                           for x, f in zip(row, formats)])
+                for j, (x, f) in enumerate(zip(row, shown)):
+                    put(ws, r, j, _xlsx_value(x), f)
+                r += 1
             notes = [n.get(lang, n.get("en", "")) for n in tab.notes]
-            if notes:
-                ws.append([])
-                for n in notes:
-                    ws.append([n])
-        wb.save(path)
+            r += 1  # a blank row, then the notes
+            for n in notes:
+                put(ws, r, 0, n)
+                r += 1
+    finally:
+        wb.close()
     return path
 
 
@@ -297,33 +312,20 @@ def _xlsx_value(x):
     return x + 0.0 if math.isfinite(x) else None
 
 
-class _exact_floats:
-    """While writing, floats with ``repr`` (the shortest text that reads back as
-    the same double) instead of openpyxl's ``"%.16g"``, which rounds some doubles
-    (e.g. 0.47555555555555556 becomes 0.4755555555555556, one ulp off). Patches
-    the cell writer's formatter for the duration of the ``with`` block only."""
+@functools.cache
+def _exact_sheet_class():
+    """The worksheet class of :func:`write_xlsx` (made once, when xlsxwriter is imported)."""
+    from xlsxwriter.worksheet import Worksheet
 
-    def __enter__(self):
-        try:
-            from openpyxl.cell import _writer
-        except ImportError:  # pragma: no cover - a future openpyxl layout
-            self._mod = None
-            return self
-        self._mod, self._orig = _writer, getattr(_writer, "safe_string", None)
-        if self._orig is None:  # pragma: no cover
-            self._mod = None
-            return self
-        orig = self._orig
+    class ExactSheet(Worksheet):
+        """A worksheet whose numbers are written with ``repr`` (the shortest text
+        that reads back as the same double; integers as such) instead of
+        xlsxwriter's ``"%.16G"``, which rounds some doubles (0.47555555555555556
+        becomes 0.4755555555555556, one ulp off)."""
 
-        def safe_string(value):
-            if isinstance(value, float) and math.isfinite(value):
-                return repr(value)
-            return orig(value)
+        def _xml_number_element(self, number, attributes=()):
+            attr = "".join(f' {k}="{self._escape_attributes(v)}"' for k, v in attributes)
+            text = repr(float(number)) if isinstance(number, float) else str(int(number))
+            self.fh.write(f"<c{attr}><v>{text}</v></c>")
 
-        _writer.safe_string = safe_string
-        return self
-
-    def __exit__(self, *exc):
-        if self._mod is not None:
-            self._mod.safe_string = self._orig
-        return False
+    return ExactSheet
