@@ -39,14 +39,32 @@ def test_a_limit_that_is_no_number_is_told_at_its_key(tmp_path, limit):
     assert "expected a length" in msg
 
 
-def test_a_variable_table_with_other_keys_names_them(tmp_path):
+def _variable(tmp_path, form):
     path = tmp_path / "design.toml"
     path.write_text(io.bundled("hitch_003_design").read_text(encoding="utf-8").replace(
-        'X01 = { within = "30 mm" }', 'X01 = { low = "0.5 m", high = "0.6 m" }')
+        'X01 = { within = "30 mm" }', f"X01 = {form}")
         .replace('extends = "hitch_003.toml"', f'extends = "{io.bundled("hitch_003").as_posix()}"'),
         encoding="utf-8")
+    return path
+
+
+def test_a_variable_by_low_and_high_equals_the_array_form(tmp_path):
+    by_name = io.load_problem(_variable(tmp_path, '{ low = "-1.1 m", high = "-1000 mm" }'))
+    (tmp_path / "b").mkdir()
+    as_array = io.load_problem(_variable(tmp_path / "b", '["-1.1 m", "-1000 mm"]'))
+    assert by_name.bounds.tolist() == as_array.bounds.tolist()
+    assert by_name.bounds[0].tolist() == [-1.1, -1.0]  # X01 [m]
+
+
+@pytest.mark.parametrize("form, said", [
+    ('{ low = "0.5 m", top = "0.6 m" }', 'missing required key "high"'),
+    ('{ wide = "0.1 m" }', 'missing required key "within"'),
+    ('{ low = "0.5 m" }', 'missing required key "high"'),
+    ('{ low = "0.5 m", high = "3 kg" }', "expected a length"),
+])
+def test_a_variable_table_that_is_wrong_names_its_keys(tmp_path, form, said):
     with pytest.raises(ModelFileError) as e:
-        io.load(path)
+        io.load(_variable(tmp_path, form))
     msg = str(e.value)
     assert 'design.variables.X01' in msg and "list[" not in msg and "function-after" not in msg
-    assert 'unknown key "low" (allowed: within)' in msg or 'missing required key "within"' in msg
+    assert said in msg, msg

@@ -131,7 +131,8 @@ def test_exact_gradient_of_a_scalar_maximised_objective(monkeypatch):
         con = kw["constraints"][0]
         _check(con["jac"](w), _central(con["fun"], w), "constraint")
     assert r.x[0] == pytest.approx(np.pi / 2, abs=1e-6) and r.x[1] == pytest.approx(1.0)
-    assert r.value == pytest.approx(1.0, abs=1e-9) and r.feasible
+    # to SLSQP's constraint tolerance: scipy ≥ 1.16's SLSQP ends 1.3e-9 beyond x1 ≤ 1
+    assert r.value == pytest.approx(1.0, abs=1e-8) and r.feasible
 
 
 def test_an_infeasible_start_is_reported_in_words():

@@ -10,6 +10,7 @@ polish = true                               # SLSQP polish with exact gradients 
 [design.variables]                          # parameters of [params] and their bounds
 X01 = { within = "30 mm" }                  # ± around the file's value
 L4 = ["0.60 m", "0.72 m"]                   # [low, high]
+X07 = { low = "0.40 m", high = "0.46 m" }   # the same, by name
 
 [[design.constraints]]
 quantity = "Y(56)"                          # type = "bound" (the default): an output
@@ -52,6 +53,12 @@ class _Within(BaseModel):
     within: S.Value
 
 
+class _Bounds(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+    low: S.Value
+    high: S.Value
+
+
 class _Criterion(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
     type: Literal["bound", "capacity", "pressure", "transmission_angle", "box"] = "bound"
@@ -80,7 +87,7 @@ class DesignSection(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
     positions: Optional[StrictInt] = Field(None, ge=2)
     polish: Optional[StrictBool] = None
-    variables: dict[str, Union[list[S.Value], _Within]] = {}
+    variables: dict[str, Union[list[S.Value], _Within, _Bounds]] = {}
     constraints: list[_Constraint] = []
     objectives: list[_Objective] = []
 
@@ -205,6 +212,8 @@ def build_design(builder, mech, path_prefix=("design",)):
                     raise ValueError(f"within must be positive, found {b.within}")
                 lo, hi = value - d, value + d
             else:
+                if isinstance(b, _Bounds):  # { low = …, high = … }: [low, high] by name
+                    b = [b.low, b.high]
                 if len(b) != 2:
                     raise ValueError(f"expected [low, high], found {len(b)} values")
                 lo, _ = _si(b[0], kind, f"expected {_article(kind)}")

@@ -184,27 +184,48 @@ def validate(cls, data, prefix=()):
 
     Examples
     --------
-    A ``[design]`` variable is ``{ within = … }`` or ``[low, high]``; given a table with
-    other keys, the table's keys are told (not "expected an array"):
+    A ``[design]`` variable is ``[low, high]``, ``{ low, high }`` or ``{ within }``;
+    given a table, the keys of the table it comes nearest to are told (not "expected
+    an array", nor the other table's keys):
 
     >>> from assur.io._design import DesignSection
     >>> from assur.io._schema_words import validate
     >>> for path, message in validate(DesignSection, {"variables": {"X01": {"low": "0.5 m"}}},
     ...                               ("design",))[1]:
     ...     print(".".join(path) + ":", message)
+    design.variables.X01.high: missing required key "high"
+    >>> for path, message in validate(DesignSection, {"variables": {"X01": {"width": 1}}},
+    ...                               ("design",))[1]:
+    ...     print(".".join(path) + ":", message)
     design.variables.X01.within: missing required key "within"
-    design.variables.X01.low: unknown key "low" (allowed: within)
+    design.variables.X01.width: unknown key "width"; did you mean "within"? (allowed: within)
     """
     try:
         return cls.model_validate(data), []
     except ValidationError as e:
         errors = list(e.errors())
     out = []
+    # where several alternatives of a union take the value's shape (two kinds of table),
+    # the one the value comes nearest to: the fewest errors ({ low = … } is told its
+    # missing "high", not the other table's missing "within")
+    tried: dict = {}
+    for x in errors:
+        loc = tuple(x["loc"])
+        tags = _union_tags(data, loc, x["type"])
+        if tags and all(_fits(str(loc[i]), v) for i, v in tags):
+            site = loc[:tags[0][0]]
+            member = tuple(loc[i] for i, _ in tags)
+            tried.setdefault(site, {}).setdefault(member, 0)
+            tried[site][member] += 1
+    nearest = {site: min(members, key=members.get) for site, members in tried.items()}
     for fitting in (True, False):  # no alternative of the value's shape: say them all
         for x in errors:
             loc = tuple(x["loc"])
             tags = _union_tags(data, loc, x["type"])
             if fitting and not all(_fits(str(loc[i]), v) for i, v in tags):
+                continue
+            if fitting and tags and nearest.get(loc[:tags[0][0]],
+                                                None) != tuple(loc[i] for i, _ in tags):
                 continue
             p, m = describe(x, cls)
             drop = {i for i, _ in tags}
