@@ -370,3 +370,86 @@ def test_the_command_on_a_mutated_file_that_loads(case, tmp_path):
     _assert_clean(r, args)
     assert r.exit_code in (0, 1), (args, r.output)
     assert time.perf_counter() - t0 < CASE_SECONDS, args
+    if r.exit_code == 0:
+        assert out.exists(), args
+        assert _not_finite_written(out) == [], args
+
+
+#: the second command of a file (its mutated cases above): optimize, dxf
+SECOND_RUNS = {
+    "hitch_003_design": ["optimize", "--popsize", "5", "--maxiter", "2", "--positions", "3",
+                         "--no-polish"],
+    "hitch_003": ["dxf", "--at", "0.5,0.6"],
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", [c for c in _clean_cases(1) if c.name in SECOND_RUNS],
+                         ids=repr)
+def test_the_second_command_on_a_mutated_file_that_loads(case, tmp_path):
+    """``optimize`` and ``dxf`` on the mutated files above: results or one message, no
+    traceback, no NaN written."""
+    path = tmp_path / io.bundled(case.name).name
+    text = case.text
+    m = re.search(r'^extends = "([^"]+)"', text, re.M)
+    if m:
+        base = m.group(1)
+        (tmp_path / base).write_text(io.bundled(base[:-5]).read_text(encoding="utf-8"),
+                                     encoding="utf-8")
+    path.write_text(text, encoding="utf-8")
+    command, *extra = SECOND_RUNS[case.name]
+    out = tmp_path / ("out.dxf" if command == "dxf" else "out")
+    args = [command, str(path), *extra, "-o", str(out)]
+    r = runner.invoke(app, args)
+    _assert_clean(r, args)
+    assert r.exit_code in (0, 1), (args, r.output)
+    if r.exit_code == 0:
+        assert out.exists(), args
+        assert _not_finite_written(out) == [], args
+
+
+_NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(nan|inf|infinity)(?![\w.])", re.I)
+
+
+def _not_finite_written(out):
+    """The files under ``out`` that hold a NaN or an infinite value: a CSV, HTML, TOML
+    or DXF file with the word (nan, inf) as a value, a Parquet file with a NaN or an
+    infinite float (a null, a design that did not evaluate, is not one)."""
+    import pyarrow.compute as pc
+    import pyarrow.parquet as pq
+
+    bad = []
+    files = [out] if out.is_file() else sorted(p for p in out.rglob("*") if p.is_file())
+    for f in files:
+        if f.suffix in (".csv", ".html", ".toml", ".dxf", ""):
+            text = f.read_text(encoding="utf-8-sig", errors="replace")
+            if f.suffix == ".html":  # the values of the tables, not the page's script
+                text = re.sub(r"<script.*?</script>|<svg.*?</svg>", "", text, flags=re.S)
+            if _NOT_FINITE.search(text):
+                bad.append(f.name)
+        elif f.suffix == ".parquet":
+            table = pq.read_table(f)
+            for name in table.column_names:
+                col = table[name]
+                if col.type in ("double", "float") and (
+                        pc.any(pc.is_nan(col)).as_py()
+                        or pc.any(pc.is_inf(col)).as_py()):
+                    bad.append(f"{f.name}:{name}")
+    return bad
+
+
+def test_the_check_of_written_files_finds_nan_and_inf(tmp_path):
+    """The check above can fail: a NaN in a CSV, an infinity in a table of an HTML
+    report and a NaN in a Parquet column are found; finite numbers, the word
+    "information" and a null are not."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    (tmp_path / "ok.csv").write_text("S;F\n0,42;1e-5\ninformation;\n", encoding="utf-8")
+    assert _not_finite_written(tmp_path) == []
+    (tmp_path / "t.csv").write_text("S,F\n0.42,nan\n", encoding="utf-8")
+    (tmp_path / "r.html").write_text("<td>-inf</td><script>x = NaN</script>",
+                                     encoding="utf-8")
+    pq.write_table(pa.table({"a": [1.0, float("nan")], "b": [1.0, None]}),
+                   tmp_path / "d.parquet")
+    assert _not_finite_written(tmp_path) == ["d.parquet:a", "r.html", "t.csv"]
