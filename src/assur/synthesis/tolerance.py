@@ -352,7 +352,10 @@ class ToleranceResult:
         >>> (np.round(r.worst_percentiles("p(ГЦ)") / 1e6, 3)).tolist()  # P1 … P99 [MPa]
         [15.407, 15.409, 15.431, 15.449, 15.451]
         """
-        return np.percentile(self.worst(output), q)
+        w = self.worst(output)
+        if w.shape[0] == 0:
+            raise ModelError("no drawn machine assembles: no distribution to report")
+        return np.percentile(w, q)
 
     def std(self, output) -> np.ndarray:
         """Standard deviation over the assembled machines per position, (n,) [SI].
@@ -367,7 +370,11 @@ class ToleranceResult:
         >>> (np.round(r.std("p(ГЦ)") / 1e3, 3)).tolist()  # σ of p at S = 0.45, 0.6 m [kPa]
         [8.633, 13.161]
         """
-        return self.values(output).std(axis=0, ddof=1)
+        v = self.values(output)
+        if v.shape[0] < 2:
+            raise ModelError(f"the spread σ over the machines needs two or more that "
+                             f"assemble; {v.shape[0]} of {self.samples.shape[0]} did")
+        return v.std(axis=0, ddof=1)
 
     def mean(self, output) -> np.ndarray:
         """Mean over the assembled machines per position, (n,) [SI].

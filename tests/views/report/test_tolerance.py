@@ -8,6 +8,7 @@ import pandas as pd
 import pytest
 
 from assur import examples
+from assur.errors import ModelError
 from assur.synthesis.tolerance import Tolerance, monte_carlo
 from assur.views.report.tolerance import display_scale, tolerance_tables, write_tolerance
 
@@ -51,3 +52,51 @@ def test_the_written_tables(run, tmp_path):
         back = pd.read_csv(tmp_path / f"{name}.csv")
         np.testing.assert_allclose(back.select_dtypes("number"), df.select_dtypes("number"),
                                    rtol=1e-12)
+
+
+def _drawn(assembling):
+    """Two seed-003 hitches drawn with ±3 m on the pivot X01 (most do not assemble),
+    the first seed of which ``assembling`` assemble."""
+    from assur.synthesis.tolerance import Tolerance as T
+    m = examples.hitch_003()
+    for seed in range(50):
+        r = monte_carlo(m, [0.45, 0.6], [T("X01", 3.0)], outputs=["p(ГЦ)"], samples=2,
+                        seed=seed)
+        if int(r.assembled.sum()) == assembling:
+            return m, r
+    raise AssertionError(f"no seed below 50 draws {assembling} machines that assemble")
+
+
+def test_one_machine_that_assembles_is_reported_without_nan(tmp_path):
+    """Of two machines drawn one assembles: its values are the percentiles, σ (MC) —
+    undefined for one — is an empty cell, "—" in the report with a note; nothing
+    written holds a NaN, and no numpy warning is raised."""
+    import re
+    import warnings
+
+    m, r = _drawn(1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a σ of one value would warn (ddof = 1)
+        files = write_tolerance(r, m, tmp_path, formats=("csv", "xlsx", "html"))
+    worst = pd.read_csv(tmp_path / "tolerance_worst.csv")
+    assert worst["σ (MC)"].isna().all()  # empty cells
+    w = r.worst("p(ГЦ)")[0] / 1e6
+    assert worst.loc[0, "P5"] == pytest.approx(w) and worst.loc[0, "P95"] == pytest.approx(w)
+    page = (tmp_path / "tolerance.html").read_text(encoding="utf-8")
+    page = re.sub(r"data:[^'\"]*", "", page)
+    assert "one machine assembles" in page and "<td>—</td>" in page
+    assert not re.search(r"\b(nan|NaN|inf)\b", page)
+    for f in files:
+        if f.suffix == ".csv":
+            assert "nan" not in f.read_text(encoding="utf-8").lower()
+    with pytest.raises(ModelError, match="two or more that assemble; 1 of 2 did"):
+        r.std("p(ГЦ)")
+
+
+def test_no_machine_that_assembles_is_one_message(tmp_path):
+    m, r = _drawn(0)
+    with pytest.raises(ModelError, match=r"none of the 2 machines drawn assembles: no "
+                                         r"distribution to report \(machine 0: "):
+        write_tolerance(r, m, tmp_path)
+    with pytest.raises(ModelError, match="no drawn machine assembles"):
+        r.worst_percentiles("p(ГЦ)")

@@ -52,6 +52,12 @@ def fit(file: Path = typer.Argument(..., help="Model file (TOML)."),
                              outlier=outlier)
     except (ModelError, OSError) as e:
         _fail(str(e))
+    from ...core.inputs import check_table
+    try:  # no NaN or infinity printed as a result
+        check_table("fitted parameters [SI]", {n: [v] for n, v in res.params.items()},
+                    key="")
+    except ModelError as e:
+        _fail(f"{file}: {e}")
     rt = Table(title="fitted parameters", header_style="bold", title_justify="left")
     for h in ("parameter", "value [SI]", "bounds [SI]", "in the file's unit"):
         rt.add_column(h, justify="right")
@@ -396,6 +402,15 @@ def _pareto_written(pb, res, out: Path, dt):
     """The Pareto front's figure and table written to ``out``, and said so."""
     from ..report.design import pareto_figure
 
+    from ...core.inputs import check_table
+    from ...errors import ModelError
+    try:  # the front's designs and objectives: no NaN or infinity in a file
+        check_table("pareto.parquet [SI]", {
+            **{v.name: res.X[:, j] for j, v in enumerate(pb.variables)},
+            **{f"{c.sense} {c.name}": res.batch.objectives[:, j]
+               for j, c in enumerate(pb.objectives)}}, key="")
+    except ModelError as e:
+        _fail(str(e))
     fig = pareto_figure(pb, res, out / "pareto.png")
     if res.batch is not None:
         from ...synthesis.search.scale import write_parquet
@@ -416,6 +431,13 @@ def _best_written(file: Path, pb, res, out: Path) -> Path:
     name = f"{file.stem}_best.toml"
     units = display_units(pb.original)
     values = {v.name: float(x) for v, x in zip(pb.variables, res.x)}
+    from ...core.inputs import check_table
+    try:  # the model file and the report: no NaN or infinity written
+        check_table(f"{name} (best design) [SI]", {
+            **{k: [x] for k, x in values.items()}, f"{c.sense} {c.name}": [res.value],
+            f"{c.sense} {c.name} of the original": [res.original.objectives[0, 0]]}, key="")
+    except ModelError as e:
+        _fail(f"{file}: {e}")
     path = write_design_file(out / name, file, values, units, header=(
         f"The best design of {file.name} found by assur optimize: {c.sense} {c.name} = "
         f"{c.show(res.value)} (original {c.show(res.original.objectives[0, 0])}).",)
@@ -469,7 +491,10 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
         r = monte_carlo(model, None, model.tolerances, samples=samples, seed=seed)
     except (AssemblyError, ModelError, SingularPositionError) as e:
         _fail(f"{file}: {e}")
-    files = write_tolerance(r, model.mechanism, out, lang)
+    try:
+        files = write_tolerance(r, model.mechanism, out, lang)
+    except ModelError as e:  # no machine assembles: nothing to report
+        _fail(f"{file}: {e}")
     tab = Table(title=f"{model.mechanism.name}: {samples} machines, seed {seed}",
                 show_header=True, header_style="bold")
     for col in ("output", "unit", "nominal", "P5", "P50", "P95", "σ MC", "σ lin"):
@@ -479,11 +504,11 @@ def tolerance(file: Path = typer.Argument(..., help="Model file (TOML) with [tol
         k, u = display_scale(r, o)
         how = worst_kind(o)
         nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
-        p = r.worst_percentiles(o) if r.assembled.any() else [float("nan")] * 5
+        p = r.worst_percentiles(o)  # some machine assembles (write_tolerance said so)
         iw = int(np.argmin(r.nominal[:, j]) if how == "min" else np.argmax(r.nominal[:, j]))
-        sd = r.std(o)[iw] if r.assembled.sum() > 1 else float("nan")
-        tab.add_row(f"{o} {how}", u, *(f"{v / k:.5g}" for v in (nom, p[1], p[2], p[3], sd,
-                                                              r.linear_sigma[iw, j])))
+        sd = f"{r.std(o)[iw] / k:.5g}" if r.assembled.sum() > 1 else "—"  # σ of one: none
+        tab.add_row(f"{o} {how}", u, *(f"{v / k:.5g}" for v in (nom, p[1], p[2], p[3])), sd,
+                    f"{r.linear_sigma[iw, j] / k:.5g}")
     console.print(tab)
     console.print(f"does not assemble: {100 * r.failure_share:.3g} % of the machines")
     for d, _g, msg in r.reasons[:5]:

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ...errors import ModelError
 from ...texts import Text, localize
 from ._canvas import new_figure, save, to_png_bytes
 from .html import data_uri
@@ -34,6 +35,9 @@ _T = {
     "nominal": Text("nominal", ru="номинал"),
     "mean": Text("mean (MC)", ru="среднее (МК)"),
     "std": Text("σ (MC)", ru="σ (МК)"),
+    "one": Text("one machine assembles: its values are shown, the spread σ (MC) needs two "
+                "or more (—)", ru="собирается одна машина: показаны её значения, для "
+                "разброса σ (МК) нужны две или больше (—)"),
     "lin": Text("σ (first order)", ru="σ (первый порядок)"),
     "reasons": Text("Machines that do not assemble", ru="Несобираемые машины"),
     "position": Text("Per position", ru="По положениям"),
@@ -96,6 +100,11 @@ def tolerance_tables(r, lang="en"):
     import pandas as pd
     lang = check_lang(lang)
     from ...synthesis.tolerance import worst_kind
+    n_ok = int(r.assembled.sum())
+    if n_ok == 0:
+        raise ModelError(f"none of the {r.samples.shape[0]} machines drawn assembles: no "
+                         f"distribution to report (machine {r.reasons[0][0]}: "
+                         f"{r.reasons[0][2]})" if r.reasons else "no machine was drawn")
     rows = []
     for o in r.outputs:
         k, u = display_scale(r, o)
@@ -103,9 +112,11 @@ def tolerance_tables(r, lang="en"):
         how = worst_kind(o)
         nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
         w = r.worst(o)
+        # σ of one machine is undefined: an empty cell in the CSV and the workbook, "—" in
+        # the report (na_rep), said in a note
         row = {_l("output", lang): f"{o} ({_l(how, lang)})", "unit": u,
                _l("nominal", lang): nom / k, _l("mean", lang): w.mean() / k,
-               _l("std", lang): w.std(ddof=1) / k}
+               _l("std", lang): w.std(ddof=1) / k if n_ok > 1 else np.nan}
         row.update({p: v / k for p, v in zip(_PCT, r.worst_percentiles(o))})
         rows.append(row)
     worst = pd.DataFrame(rows)
@@ -114,7 +125,7 @@ def tolerance_tables(r, lang="en"):
         k, u = display_scale(r, o)
         j = r.outputs.index(o)
         cols[f"{o} {_l('nominal', lang)} [{u}]"] = r.nominal[:, j] / k
-        cols[f"{o} {_l('std', lang)} [{u}]"] = r.std(o) / k
+        cols[f"{o} {_l('std', lang)} [{u}]"] = r.std(o) / k if n_ok > 1 else np.full(len(r.q), np.nan)
         cols[f"{o} {_l('lin', lang)} [{u}]"] = r.linear_sigma[:, j] / k
         for p, v in zip(_PCT, r.percentiles(o).T):
             cols[f"{o} {p} [{u}]"] = v / k
@@ -165,7 +176,7 @@ def tolerance_histogram(r, output, lang="en"):
 
 def _table_html(df):
     return df.to_html(index=False, float_format=lambda x: f"{x:.5g}", border=0,
-                      classes="tab")
+                      classes="tab", na_rep="—")
 
 
 def tolerance_html(r, mech, lang="en", figures=None):
@@ -198,6 +209,7 @@ def tolerance_html(r, mech, lang="en", figures=None):
              f"<h1>{e(_l('title', lang))}: {e(title)}</h1>",
              f"<p>{e(_l('machines', lang))}: {r.samples.shape[0]}; {e(_l('seed', lang))}: "
              f"{r.seed}; {e(_l('fail', lang))}: {100 * r.failure_share:.3g} %</p>",
+             f"<p>{e(_l('one', lang))}</p>" if r.assembled.sum() == 1 else "",
              f"<h2>{e(_l('tols', lang))}</h2><table class='tab'><tr><th>"
              f"{e(_l('param', lang))}</th><th>{e(_l('dist', lang))}</th><th>"
              f"{e(_l('sigma', lang))} [SI]</th></tr>"]
