@@ -42,8 +42,8 @@ def simulate(file: Path = typer.Argument(..., help="Model file (TOML) with [[dri
     try:
         files = write_simulation_report(result, out, localize(model.mechanism.title, lang),
                                         lang, model=model, units=du)
-    except ModelError as e:  # e.g. an animation too long for the memory limit
-        _fail(f"{file}: {e}")
+    except ModelError as e:  # an animation too long for the memory limit, a NaN or inf
+        _fail(f"{file}: {e}" + ("" if result.success else f" ({result.message})"))
     except OSError as e:
         _fail(f"{output}: cannot write the report: {e.strerror or e}")
     if not result.success:

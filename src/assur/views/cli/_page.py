@@ -99,6 +99,14 @@ def dxf(file: Path = typer.Argument(..., help="Model file (TOML)."),
         analysis = _assemble(model)
         kin = analysis.kinematics
         idx = _unique(_positions(analysis, at, option="--at") or [0, kin.shape[-1] - 1])
+    from ...core.inputs import check_table
+    try:  # the drawn positions' every point: no NaN or infinity in the file
+        check_table(f"{out.name} (positions drawn) [m]",
+                    {**{c: kin.q(c)[idx] for c in kin.coordinates},
+                     **{f"{a}{p}": getattr(kin, a.lower())(p)[idx]
+                        for p in kin.points for a in ("X", "Y")}})
+    except ModelError as e:
+        _fail(f"{file}: {e}")
     try:
         write_dxf(kin, out, positions=idx)
     except OSError as e:

@@ -276,13 +276,28 @@ def pump_conclusions(dd, lang="en", paper=PAPER, about=ABOUT):
     names = {"pump_second": "a" if lang == "en" else "а",
              "pump_first": "b" if lang == "en" else "б"}
 
-    def ratio(kind):
-        return {s: [float(d.loc[s, f"F{j}_{kind}"] / d.loc["divider", f"F{j}_{kind}"])
+    zero = [c for c in ("F1_fed", "F2_fed", "F1_max", "F2_max", "Fd1_max", "Fd2_max")
+            if float(d.loc["divider", c]) == 0.0]
+    if zero:  # a pump so slow that a force vanishes: the ratios would be 0/0
+        from ...errors import ModelError
+        raise ModelError(f"the work cycles: {', '.join(zero)} with the flow divider {'is' if len(zero) == 1 else 'are'} 0 N "
+                         f"(its cycle takes {float(d.loc['divider', 'duration']):.6g} s), "
+                         f"so the ratios of separate motion to the divider are undefined; "
+                         f"check the pump's displacement, speed and eta_volumetric")
+
+    def ratio(kind, f="F"):
+        return {s: [float(d.loc[s, f"{f}{j}_{kind}"] / d.loc["divider", f"{f}{j}_{kind}"])
                     for j in (1, 2)] for s in names}
 
-    r, rm, rd = ratio("fed"), ratio("max"), {s: [float(d.loc[s, f"Fd{j}_max"]
-                                                       / d.loc["divider", f"Fd{j}_max"])
-                                                 for j in (1, 2)] for s in names}
+    r, rm, rd = ratio("fed"), ratio("max"), ratio("max", "Fd")
+    # the ratios the verdicts print: a force of 0 with the divider (a pump so slow that
+    # the dynamic parts vanish) makes one 0/0 — refused, never printed as nan
+    from ...core.inputs import check_table
+    check_table("cycles_conclusions (separate ÷ divider) [-]", {
+        "scenario": list(names),
+        **{f"{col}{j}_{kind}": [rs[s][j - 1] for s in names]
+           for col, kind, rs in (("F", "fed", r), ("F", "max", rm), ("Fd", "max", rd))
+           for j in (1, 2)}})
     lo, hi = paper["pump_forces"]
     target = paper["pump_dynamic"]
     times = (float(d.loc["divider", "duration"]), float(d.loc["pump_second", "duration"]))

@@ -252,7 +252,9 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
     Raises
     ------
     ModelError
-        A model without a drive (its strokes come from the cylinders' stops).
+        A model without a drive (its strokes come from the cylinders' stops); a
+        value of a table that is NaN or infinite
+        (:func:`assur.core.inputs.check_table`: nothing is written).
     ValueError
         A mechanism that is not of two coordinates.
 
@@ -298,6 +300,13 @@ def write_cycles_report(model, outdir, lang="en", formats=("csv", "xlsx", "png",
                       tuple(cols)))
     du = unit_system(model.mechanism, units)  # the tables, figures and texts shown in these
     tabs = [in_units(tab, du) for tab in tabs]
+    # no NaN or infinity in any file: the scenarios the figures draw and every table,
+    # checked before anything is written (naming the table, column and row)
+    from ...core.inputs import check_table
+    check_table("cycles (scenarios)", df)
+    for tab in tabs:
+        check_table(f"cycles_{tab.id}", {f"{c.symbol} [{c.unit}]": c.values
+                                         for c in tab.columns})
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files = []

@@ -350,6 +350,12 @@ def write_simulation_report(result, outdir, title="", lang="en",
     list of Path
         The files written.
 
+    Raises
+    ------
+    ModelError
+        A value of the time series or of the energy balance is NaN or infinite
+        (:func:`assur.core.inputs.check_table`): nothing is written.
+
     Examples
     --------
     >>> import tempfile
@@ -374,6 +380,13 @@ def write_simulation_report(result, outdir, title="", lang="en",
         title = title or localize(model.mechanism.title, lang)
     if len(result.t):  # the frames must fit in memory: refused before anything is written
         check_frames(float(result.t[-1]), frame_step, mechanism, formats)
+    # every format shows these values: a NaN or an infinity is refused before any file
+    # (the time series' every column, the energy balance), naming column and time
+    from ...core.inputs import check_table
+    series = time_series(result, units, mechanism)
+    check_table("simulation.csv", series)
+    check_table("simulation_summary.csv (energy balance) [J]",
+                {k: [v] for k, v in result.energy.items()}, key="")
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files = []
@@ -382,8 +395,7 @@ def write_simulation_report(result, outdir, title="", lang="en",
         import pandas as pd
 
         from .tables import write_frame_csv
-        files.append(write_frame_csv(time_series(result, units, mechanism),
-                                     out / "simulation.csv", lang))
+        files.append(write_frame_csv(series, out / "simulation.csv", lang))
         files.append(write_frame_csv(pd.DataFrame(summary(result, lang, units, mechanism),
                                                   columns=["item", "value", "unit"]),
                                      out / "simulation_summary.csv", lang))
