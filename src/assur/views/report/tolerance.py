@@ -112,11 +112,11 @@ def tolerance_tables(r, lang="en"):
         how = worst_kind(o)
         nom = r.nominal[:, j].min() if how == "min" else r.nominal[:, j].max()
         w = r.worst(o)
-        # σ of one machine is undefined: an empty cell in the CSV and the workbook, "—" in
-        # the report (na_rep), said in a note
+        # σ of one machine is undefined: None (no number, which check_table lets pass),
+        # an empty cell in the CSV and the workbook, "—" in the report (na_rep), a note
         row = {_l("output", lang): f"{o} ({_l(how, lang)})", "unit": u,
                _l("nominal", lang): nom / k, _l("mean", lang): w.mean() / k,
-               _l("std", lang): w.std(ddof=1) / k if n_ok > 1 else np.nan}
+               _l("std", lang): w.std(ddof=1) / k if n_ok > 1 else None}
         row.update({p: v / k for p, v in zip(_PCT, r.worst_percentiles(o))})
         rows.append(row)
     worst = pd.DataFrame(rows)
@@ -125,7 +125,8 @@ def tolerance_tables(r, lang="en"):
         k, u = display_scale(r, o)
         j = r.outputs.index(o)
         cols[f"{o} {_l('nominal', lang)} [{u}]"] = r.nominal[:, j] / k
-        cols[f"{o} {_l('std', lang)} [{u}]"] = r.std(o) / k if n_ok > 1 else np.full(len(r.q), np.nan)
+        cols[f"{o} {_l('std', lang)} [{u}]"] = (r.std(o) / k if n_ok > 1
+                                                else np.full(len(r.q), None, dtype=object))
         cols[f"{o} {_l('lin', lang)} [{u}]"] = r.linear_sigma[:, j] / k
         for p, v in zip(_PCT, r.percentiles(o).T):
             cols[f"{o} {p} [{u}]"] = v / k
@@ -175,8 +176,9 @@ def tolerance_histogram(r, output, lang="en"):
 
 
 def _table_html(df):
-    return df.to_html(index=False, float_format=lambda x: f"{x:.5g}", border=0,
-                      classes="tab", na_rep="—")
+    # an undefined value (None: σ of one machine) is "—"
+    return df.fillna("—").to_html(index=False, float_format=lambda x: f"{x:.5g}", border=0,
+                                  classes="tab")
 
 
 def tolerance_html(r, mech, lang="en", figures=None):
@@ -234,6 +236,12 @@ def write_tolerance(r, mech, out, lang="en", formats=("csv", "xlsx", "html", "pn
     """Write the tables (CSV, XLSX), the histograms (PNG) and the HTML report into the
     directory ``out``; returns the paths written.
 
+    Raises
+    ------
+    ModelError
+        No machine assembles, or a value of a table is NaN or infinite
+        (:func:`assur.core.inputs.check_table`): nothing is written.
+
     Examples
     --------
     >>> import tempfile
@@ -251,10 +259,13 @@ def write_tolerance(r, mech, out, lang="en", formats=("csv", "xlsx", "html", "pn
     >>> "Анализ допусков" in page
     True
     """
+    from ...core.inputs import check_table
+    tabs = tolerance_tables(r, lang)
+    for name, df in tabs.items():  # no NaN or infinity in any file: checked first
+        check_table(name, df)      # (σ of one machine: None, shown empty or "—")
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     files = []
-    tabs = tolerance_tables(r, lang)
     if "csv" in formats:
         for name, df in tabs.items():
             p = out / f"{name}.csv"
