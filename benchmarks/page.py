@@ -14,12 +14,16 @@ conditions solved again, the hitch analyzed at 101 positions and its tables buil
 * **browser**: in Debian's headless chromium (Playwright, when /usr/bin/chromium is
   there), the time from the input event of a parameter field to the new drawing,
   as the page logs it ("assur: redrawn in … ms").
+
+``ASSUR_BENCH_MODELS=loader_lab1,hitch_003`` times only those bundled models (their
+table, without the seed-003 figures above it).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import json
+import os
 import re
 import statistics
 import time
@@ -110,7 +114,12 @@ M = 5
 
 
 def _model_names():
+    """The bundled models timed: all that assemble, or those of ``$ASSUR_BENCH_MODELS``
+    (comma-separated names)."""
     from importlib.resources import files
+    chosen = os.environ.get("ASSUR_BENCH_MODELS")
+    if chosen:
+        return [n.strip() for n in chosen.split(",") if n.strip()]
     return sorted(p.name[:-5] for p in files("assur.models").iterdir()
                   if p.name.endswith(".toml") and p.name[:-5] not in NOT_ASSEMBLING)
 
@@ -132,7 +141,8 @@ def kind_of(unit):
 
 def every_model():
     """Per bundled model: the browser's time from a parameter's input event to the new
-    drawing (M changes of its first editable length, else its first editable value,
+    drawing, and its parts: the server's own time (``compute``), the answer (request,
+    server, transfer, JSON parsed) and the drawing (plots, table, pose) (M changes of its first editable length, else its first editable value,
     by a few tenths of a per cent,
     each new) and the first CSV and XLSX export of a new server (started as
     ``assur serve`` starts it: the model warmed in the background) after the page's
@@ -142,6 +152,7 @@ def every_model():
     print(f"every bundled model: browser input → new drawing (median of {M} changes; "
           f"target ≤ {TARGET:.0f} ms), first export after the page loaded (target ≤ 2 s)")
     print(f"  {'model':<28}{'positions':>10}{'redraw [ms]':>13}{'server [ms]':>13}"
+          f"{'answer [ms]':>13}{'drawing [ms]':>13}"
           f"{'1st CSV [s]':>13}{'1st XLSX [s]':>13}{'warm [s]':>10}")
     from playwright.sync_api import sync_playwright
     with sync_playwright() as p:
@@ -155,7 +166,7 @@ def every_model():
             t0 = time.perf_counter()
             app = create_app(pm, compiled=True)  # as `assur serve` makes it
             with running(app) as url:
-                page_ms, server_ms, n = [], [], "-"
+                page_ms, server_ms, answer_ms, drawing_ms, n = [], [], [], [], "-"
                 t_csv = t_xlsx = t_warm = float("nan")
                 if b is not None:
                     page = b.new_page(viewport={"width": 1400, "height": 1000})
@@ -176,19 +187,26 @@ def every_model():
                         page.fill(f"#input-{par['name']}", repr(round(v, 9)))
                         page.wait_for_timeout(400)
                     page.close()
-                    for m in (re.search(r"redrawn in ([\d.]+) ms \(server ([\d.]+) ms", s)
+                    for m in (re.search(r"redrawn in ([\d.]+) ms \(server ([\d.]+) ms, "
+                                        r"answer ([\d.]+) ms, drawing ([\d.]+) ms", s)
                               for s in logs[start:]):
                         if m:
                             page_ms.append(float(m.group(1)))
                             server_ms.append(float(m.group(2)))
+                            answer_ms.append(float(m.group(3)))
+                            drawing_ms.append(float(m.group(4)))
                 med = (lambda v: f"{statistics.median(v):13.0f}" if v else f"{'-':>13}")
                 print(f"  {name:<28}{n!s:>10}{med(page_ms)}{med(server_ms)}"
+                      f"{med(answer_ms)}{med(drawing_ms)}"
                       f"{t_csv:13.2f}{t_xlsx:13.2f}{t_warm:10.1f}", flush=True)
         if b is not None:
             b.close()
 
 
 def main():
+    if os.environ.get("ASSUR_BENCH_MODELS"):  # only the models named: their table
+        every_model()
+        return
     print("page (seed-003 hitch, 101 positions, a new L5 each time; medians):")
     server_figures()
     with running(create_app(bundled("hitch_003"))) as url:

@@ -4,9 +4,11 @@ A :class:`PageModel` holds the file's text as a :mod:`tomlkit` document (comment
 order and layout kept). The page sends new values of parameters of ``[params]``
 in the unit the file gives each one (``L5 = 0.48`` for ``L5 = "0.480 m"``,
 ``phiBD = 22`` for ``"22 deg"``); :meth:`PageModel.edited_text` writes them into
-the text (``L5 = "0.5 m"``) and :meth:`PageModel.load` reads that text with
-:func:`assur.io.loads` — the same TOML parser, pydantic schema
-(:mod:`assur.io._schema`) and builder as a file on disk. Nothing the page sends is
+the text (``L5 = "0.5 m"``) and :meth:`PageModel.load` gives the model of that text
+as :func:`assur.io.loads` reads it — the same TOML values, pydantic schema
+(:mod:`assur.io._schema`) and builder as a file on disk; the file's TOML (and its
+``extends`` files) is parsed once, and a change puts its values into that data
+(:meth:`assur.io.ParsedText.with_values`). Nothing the page sends is
 executed: values are finite numbers, names must be parameters of the file.
 
 :meth:`PageModel.compute` analyzes the edited model over ``positions`` evenly
@@ -153,11 +155,17 @@ class PageModel:
         require("page", "the interactive page (assur serve)")
         import tomlkit
 
-        from ...io import loads
+        from ...io import parse_text
         self.text = _inherited(text.removeprefix("\ufeff"), source)
         self.name = name
         self.source = source
-        self.model = loads(self.text, name=name, source=source)  # refuses a bad start
+        # the text read once (TOML, extends): a change of values builds from it
+        # (:meth:`load`); the model as io.loads gives it, which refuses a bad start
+        self._parsed = parse_text(self.text, name, source=source)
+        self.model = self._parsed.build()
+        #: where each editable value stands in the file's data: ("params", name), or
+        #: ("motion", coordinate, "speed")
+        self._paths = {}
         # the models of the texts loaded last (a model is immutable, loading is pure):
         # a slider moved back, the language switched or a download after a change
         # reads its file once
@@ -273,6 +281,7 @@ class PageModel:
                 continue  # a parameter's name: edited as the parameter
             rpm = round(abs(float(speed)) * 60.0 / (2.0 * np.pi), 4)
             self._spans[name] = hits[0].span(1)
+            self._paths[name] = ("motion", c, "speed")
             self._params.append({
                 "name": name, "group": "[motion]", "unit": "rpm", "value": rpm,
                 "file_value": nu[0], "editable": True, "solved": False,
@@ -302,6 +311,7 @@ class PageModel:
                 nu = _number_and_unit(text if raw[:1] in "\"'" else _toml_number(raw))
                 if nu is not None and nu[0] == p["file_value"]:
                     spans[p["name"]] = hits[0].span(1)
+                    self._paths[p["name"]] = ("params", p["name"])
         return spans
 
     def parameters(self) -> list:
@@ -385,20 +395,25 @@ class PageModel:
         self.check_params(values)
         if not values:
             return self.text
-        edits = []
+        edits = [(*self._spans[k], new) for k, new in self._written(values).items()]
+        text = self.text
+        for start, end, new in sorted(edits, reverse=True):
+            text = text[:start] + new + text[end:]
+        return text
+
+    def _written(self, values: dict) -> dict:
+        """``{name: TOML text}``: each value as :meth:`edited_text` writes it (in the
+        unit the file gives it)."""
+        out = {}
         for k, v in values.items():
             unit = self.editable[k]["unit"]
             num = repr(float(v))
             num = num[:-2] if num.endswith(".0") else num
             if unit == "-":
-                new = num  # 2.0 is written 2 (a TOML integer), 0.84 as it is
+                out[k] = num  # 2.0 is written 2 (a TOML integer), 0.84 as it is
             else:
-                new = f'"{num} {unit}"'
-            edits.append((*self._spans[k], new))
-        text = self.text
-        for start, end, new in sorted(edits, reverse=True):
-            text = text[:start] + new + text[end:]
-        return text
+                out[k] = f'"{num} {unit}"'
+        return out
 
     def load(self, values: dict):
         """The :class:`assur.io.Model` of the edited text.
@@ -420,19 +435,36 @@ class PageModel:
         >>> pm.load({"L5": 0.5}) is model                   # kept by its text
         True
         """
-        from ...io import loads
         text = self.edited_text(values)
         with self._lock:
             model = self._models.get(text)
             if model is not None:
                 self._models.move_to_end(text)
                 return model
-        model = loads(text, name=self.name, source=self.source)  # raises: not kept
+        model = self._build(values, text)  # raises: not kept
         with self._lock:
             self._models[text] = model
             while len(self._models) > MODELS_KEPT:
                 self._models.popitem(last=False)
         return model
+
+    def _build(self, values: dict, text: str):
+        """The model of ``text`` (the edited text of ``values``) as :func:`assur.io.loads`
+        gives it, built from the file's data read once with the new values put where the
+        text writes them (:meth:`assur.io.ParsedText.with_values`): the same data,
+        line index and builder as a fresh read of ``text``, without reading its TOML
+        (and its ``extends`` files) again; ``text`` is read afresh when a value is not
+        in the data as the text writes it."""
+        import tomllib
+
+        from ...io import loads
+        try:
+            new = {self._paths[k]: tomllib.loads(f"v = {w}")["v"]
+                   for k, w in self._written(values).items()}
+            parsed = self._parsed.with_values(new)
+        except (KeyError, tomllib.TOMLDecodeError):
+            return loads(text, name=self.name, source=self.source)
+        return parsed.build()
 
     # ---- the page's payload -------------------------------------------------------
     def model_on(self, model, positions: int):
