@@ -166,3 +166,23 @@ def test_optimize_refuses_a_best_design_that_is_not_finite(tmp_path, monkeypatch
     assert re.search(r"table 'hitch_003_design_best\.toml \(best design\) \[SI\]': column "
                      r"'\w+' is inf", _one_line(r)), r.output
     assert _written(out) == []
+
+
+def test_tolerance_refuses_a_table_value_that_is_not_finite(tmp_path, monkeypatch):
+    import assur.synthesis.tolerance as tolerance
+
+    monte_carlo = tolerance.monte_carlo
+
+    def spoiled(*args, **kwargs):
+        r = monte_carlo(*args, **kwargs)
+        r.nominal[2, 0] = np.inf  # the nominal machine's first output at position 2
+        return r
+
+    monkeypatch.setattr(tolerance, "monte_carlo", spoiled)
+    out = tmp_path / "out"
+    r = runner.invoke(app, ["tolerance", str(io.bundled("hitch_003_tolerances")), "--samples",
+                            "20", "-o", str(out)])
+    assert r.exit_code == 1, r.output
+    assert re.search(r"table 'tolerance_worst': column 'nominal' is inf at row 0 \(output = "
+                     r"'p\(ГЦ\)", _one_line(r)), r.output
+    assert _written(out) == []
