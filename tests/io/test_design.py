@@ -68,3 +68,17 @@ def test_a_variable_table_that_is_wrong_names_its_keys(tmp_path, form, said):
     msg = str(e.value)
     assert 'design.variables.X01' in msg and "list[" not in msg and "function-after" not in msg
     assert said in msg, msg
+
+
+@pytest.mark.parametrize("form", ['{ low = "-1.0 m", high = "-1100 mm" }',
+                                  '["-1.0 m", "-1100 mm"]',
+                                  '{ low = "-1.0 m", high = "-1.0 m" }'])
+def test_low_not_below_high_is_told_at_the_variables_line(tmp_path, form):
+    """Either form, with units: low must be below high, told at X01's own line."""
+    path = _variable(tmp_path, form)
+    line = path.read_text(encoding="utf-8").splitlines().index(f"X01 = {form}") + 1
+    with pytest.raises(ModelFileError) as e:
+        io.load_problem(path)
+    msg = " ".join(str(e.value).split())
+    assert f"design.toml:{line}: design.variables.X01:" in msg, msg
+    assert "low < high" in msg and "[-1.0, -1." in msg, msg
