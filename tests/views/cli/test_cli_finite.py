@@ -186,3 +186,38 @@ def test_tolerance_refuses_a_table_value_that_is_not_finite(tmp_path, monkeypatc
     assert re.search(r"table 'tolerance_worst': column 'nominal' is inf at row 0 \(output = "
                      r"'p\(ГЦ\)", _one_line(r)), r.output
     assert _written(out) == []
+
+
+@pytest.mark.parametrize("seed, assembling", [(0, 0), (1, 1)])
+def test_tolerance_with_no_or_one_machine_that_assembles(tmp_path, seed, assembling):
+    """±5 m on the frame pivot X05: of two hitches drawn none (seed 0) or one (seed 1)
+    assembles. None: one message saying how many and why (exit 1), nothing written;
+    one: every file written without a NaN, σ (MC) "—" on the terminal."""
+    from assur.synthesis.tolerance import monte_carlo
+
+    path = tmp_path / "wide.toml"
+    path.write_text(f'extends = "{io.bundled("hitch_003").as_posix()}"\n\n[model]\n'
+                    f'name = "wide"\n\n[tolerances]\nX05 = {{ pm = "5000 mm", dist = '
+                    f'"uniform" }}\n', encoding="utf-8")
+    model = io.load(path)
+    drawn = monte_carlo(model, None, model.tolerances, samples=2, seed=seed)
+    assert int(drawn.assembled.sum()) == assembling  # the case this test is about
+    out = tmp_path / "out"
+    r = runner.invoke(app, ["tolerance", str(path), "--samples", "2", "--seed", str(seed),
+                            "-o", str(out)])
+    msg = _one_line(r)
+    if assembling == 0:
+        assert r.exit_code == 1, r.output
+        assert "none of the 2 machines drawn assembles" in msg and "(machine 0: " in msg
+        assert _written(out) == []
+        return
+    assert r.exit_code == 0, r.output
+    assert "Traceback" not in r.output and not _NOT_FINITE.search(r.output), r.output
+    assert "—" in r.output
+    files = _written(out)
+    assert {"tolerance.html", "tolerance.xlsx", "tolerance_worst.csv",
+            "tolerance_positions.csv"} <= set(files)
+    for name in files:
+        if name.endswith((".csv", ".html")):
+            text = re.sub(r"data:[^'\"]*", "", (out / name).read_text(encoding="utf-8"))
+            assert not _NOT_FINITE.search(text), name
