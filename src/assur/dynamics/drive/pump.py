@@ -6,6 +6,7 @@ import math
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ...core.inputs import MIN_EFFICIENCY
 from ...texts import Text
 from .base import positive, register
 
@@ -47,6 +48,9 @@ class GearPump:
     role: ClassVar[str] = "pump"
     quantities: ClassVar = {"displacement": "volume", "speed": "angular velocity",
                             "eta_volumetric": "number"}
+    #: a volumetric efficiency within the project's efficiencies [MIN_EFFICIENCY, 1]
+    #: (1e-9 left the cycles' forces 0/0)
+    spans: ClassVar = {"eta_volumetric": (MIN_EFFICIENCY, 1.0)}
 
     def __post_init__(self):
         positive(self, "displacement", "speed", "eta_volumetric")
