@@ -50,7 +50,7 @@ def _check_tables(name, tabs, du, lang, out):
         rows = read_report_csv(write_csv(t, out / table_filename(t), lang), lang)
         assert rows[0] == [f"{c.symbol} [{unit(c.unit, lang)}]" for c in t.columns]
         for j, c in enumerate(t.columns):
-            back = np.array([float(r[j]) for r in rows[1:]])
+            back = np.array([float(r[j]) if r[j] else np.nan for r in rows[1:]])  # '': undefined
             assert np.array_equal(back, np.asarray(c.values, dtype=float), equal_nan=True), \
                 (name, du.system, lang, t.id, c.symbol)
 

@@ -234,3 +234,21 @@ def test_no_negative_zero_in_files_or_terminal(tmp_path):
     assert number(-0.0, 0) == "0" and number(-2.0, 0) == "-2" and number(-1e-9, 3) == "0.000"
     assert [number(v, decimals([-2.0, -1.0, -0.149])) for v in (-2.0, -1.0, -0.149)] == \
         ["-2.000", "-1.000", "-0.149"]  # one count of decimals per column
+
+
+def test_an_undefined_value_is_an_empty_cell(tmp_path):
+    """An undefined value (NaN: a singular ratio) is an empty cell in the CSV, in both
+    dialects, and in the workbook — never the word nan."""
+    import csv
+
+    import openpyxl
+
+    from assur.views.report.tables import Column, Table, write_csv, write_xlsx
+    tab = Table("3.1", {"en": "t", "ru": "t"}, (Column("S", "m", np.array([0.42, 0.5])),
+                                                 Column("U", "-", np.array([np.nan, 1.5]))))
+    with open(write_csv(tab, tmp_path / "t.csv"), encoding="utf-8") as f:
+        assert list(csv.reader(f))[1:] == [["0.42", ""], ["0.5", "1.5"]]
+    with open(write_csv(tab, tmp_path / "r.csv", "ru"), encoding="utf-8-sig") as f:
+        assert list(csv.reader(f, delimiter=";"))[1:] == [["0,42", ""], ["0,5", "1,5"]]
+    ws = openpyxl.load_workbook(write_xlsx([tab], tmp_path / "t.xlsx")).active
+    assert [ws.cell(4, 2).value, ws.cell(5, 2).value] == [None, 1.5]

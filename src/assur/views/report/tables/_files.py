@@ -54,6 +54,8 @@ def _cell(v, lang="en"):
         return str(int(v))
     if isinstance(v, (int, np.integer)):
         return str(int(v))
+    if math.isnan(v):  # undefined (a singular ratio): an empty cell, as the workbook's
+        return ""
     text = repr(float(v) + 0.0)  # + 0.0: never "-0.0"
     return text.replace(".", ",") if lang == "ru" else text
 
@@ -92,8 +94,8 @@ def write_csv(table, path, lang="en") -> Path:
     In English the separator is ``,`` and the decimal point ``.`` (UTF-8); in Russian
     (``lang="ru"``) the separator is ``;``, the decimal mark a comma and the units
     Russian, in UTF-8 with a byte-order mark, so that a Russian Excel opens the file
-    as a table (:data:`CSV_DIALECTS`). NaN (undefined, e.g. a singular ratio) is
-    written ``nan``, infinity ``inf``.
+    as a table (:data:`CSV_DIALECTS`). An undefined value (NaN, e.g. a singular
+    ratio) is an empty cell, as in the workbook and the report.
 
     Examples
     --------
