@@ -116,3 +116,41 @@ def test_hitch_page_end_to_end(browser, url, page_log):
              f"{', '.join(f'{t:.0f}' for t in times)}")
     page.close()
 
+
+
+@pytest.mark.parametrize("name", ["hitch_003", "steering_lab4"])   # steering: wheels
+def test_a_packed_answer_reads_in_the_page_as_the_plain_one(browser, name):
+    """The page asks for packed answers (tables' columns, the drawing's points,
+    coordinates and wheels' headings as float64 bytes): read by its ``unpack``, an
+    answer is the plain JSON answer — the same keys, lists and texts, the same numbers
+    (to 1e-12: two analyses of one model may differ in the last bit)."""
+    from assur.views.page.server import create_app, running
+    with running(create_app(bundled(name), warm=False)) as u:
+        page = browser.new_page()
+        page.goto(u + "/")
+        page.wait_for_selector("#drawing circle.point")
+        diffs, numbers = page.evaluate("""async () => {
+            const ask = async (packed) => (await fetch('/api/analyze', {method: 'POST',
+                headers: {'Content-Type': 'application/json'},
+                body: JSON.stringify({params: {}, positions: 101, packed})})).json();
+            const plain = await ask(false), packed = unpack(await ask(true));
+            delete plain.ms; delete packed.ms;
+            const diffs = [];
+            let numbers = 0;
+            const walk = (a, b, path) => {
+              if (typeof a !== typeof b || Array.isArray(a) !== Array.isArray(b)
+                  || (a === null) !== (b === null)) { diffs.push(path); return; }
+              if (a !== null && typeof a === 'object') {
+                const ka = Object.keys(a), kb = Object.keys(b);
+                if (ka.join() !== kb.join()) { diffs.push(path); return; }
+                for (const k of ka) walk(a[k], b[k], path + '.' + k);
+              } else if (typeof a === 'number') {
+                numbers++;
+                if (Math.abs(a - b) > 1e-12 * Math.max(1, Math.abs(a))) diffs.push(path);
+              } else if (a !== b) diffs.push(path);
+            };
+            walk(plain, packed, '');
+            return [diffs.slice(0, 5), numbers];
+        }""")
+        page.close()
+    assert diffs == [] and numbers > 1000

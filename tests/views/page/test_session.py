@@ -152,10 +152,11 @@ def test_too_few_positions_for_a_cranks_flywheel_is_a_message_not_a_crash():
     assert "use more positions" in out["error"]["message"]
 
 
-@pytest.mark.parametrize("name", ["hitch_003", "loader_lab1", "cleaning_lab3"])
+@pytest.mark.parametrize("name", ["hitch_003", "loader_lab1", "cleaning_lab3", "steering_lab4"])
 def test_a_packed_answer_carries_the_same_values_as_bytes(name):
     """``packed``: every column's values as little-endian float64 in base64, equal bit
-    for bit to the plain answer's list (NaN where it says null); the rest unchanged."""
+    for bit to the plain answer's list (NaN where it says null); so are the drawing's
+    points (x, y by position), coordinates and wheels' headings; the rest unchanged."""
     import base64
 
     import numpy as np
@@ -169,7 +170,23 @@ def test_a_packed_answer_carries_the_same_values_as_bytes(name):
             got = np.frombuffer(base64.b64decode(ck["values"]["f64"]), "<f8")
             want = np.array([np.nan if v is None else v for v in cp["values"]])
             np.testing.assert_array_equal(got, want)
-    for key in ("geometry", "grid", "defaults", "solved", "warnings"):
+    def values(p):
+        return np.frombuffer(base64.b64decode(p["f64"]), "<f8")
+
+    gp, gk = plain["geometry"], packed["geometry"]
+    assert gp["points"].keys() == gk["points"].keys() and gp["q"].keys() == gk["q"].keys()
+    for p, xy in gp["points"].items():
+        np.testing.assert_array_equal(values(gk["points"][p]).reshape(-1, 2), np.array(xy))
+    for c, q in gp["q"].items():
+        np.testing.assert_array_equal(values(gk["q"][c]), np.array(q))
+    assert len(gp["wheels"]) == len(gk["wheels"])
+    for wp, wk in zip(gp["wheels"], gk["wheels"]):
+        np.testing.assert_array_equal(values(wk["heading"]), np.array(wp["heading"]))
+        assert {k: v for k, v in wp.items() if k != "heading"} == \
+            {k: v for k, v in wk.items() if k != "heading"}
+    assert {k: v for k, v in gp.items() if k not in ("points", "q", "wheels")} == \
+        {k: v for k, v in gk.items() if k not in ("points", "q", "wheels")}
+    for key in ("grid", "defaults", "solved", "warnings"):
         assert plain[key] == packed[key]
 
 

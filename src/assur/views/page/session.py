@@ -538,7 +538,9 @@ class PageModel:
             ``{"ok": False, "error": {"kind", "message"}, "ms"}``; ``kind`` is
             ``"model"`` (the file or a value), ``"assembly"`` (the mechanism cannot
             assemble) or ``"singular"``. With ``packed``, each column's ``values``
-            is ``{"f64": base64}`` (:func:`packed_values`) instead of a list.
+            is ``{"f64": base64}`` (:func:`packed_values`) instead of a list, and so
+            are the drawing's points (x, y by position), coordinates and wheels'
+            headings (:func:`_packed_geometry`).
 
         Examples
         --------
@@ -583,7 +585,9 @@ class PageModel:
         except ModelError as e:
             return _error("model", e, t0)
         mech = model.mechanism
-        tabs = [_table_json(t, lang) for t in tables]
+        # the columns' values as arrays for the grid and the default plots, then as the
+        # page reads them: bytes (packed) or JSON lists
+        tabs = [_table_json(t, lang, _column) for t in tables]
         page_warnings = []
         solved = [{"name": s.condition.unknown,
                    "value": float(s.value) / (mech.units[s.condition.unknown].scale
@@ -593,10 +597,12 @@ class PageModel:
         defaults = default_plots(tabs, len(mech.coordinates),
                                  declared=mech.display.get("plots", ()),
                                  warnings=page_warnings)
-        if packed:  # the same values, as bytes (what the page reads)
-            for tj, t in zip(tabs, tables):
-                for cj, c in zip(tj["columns"], t.columns):
-                    cj["values"] = packed_values(c.values)
+        encode = packed_values if packed else _finite
+        for tj in tabs:
+            for cj in tj["columns"]:
+                cj["values"] = encode(cj["values"])
+        if packed:
+            geo = _packed_geometry(geo)
         return {
             "ok": True,
             "title": localize(mech.title, lang),
@@ -796,9 +802,10 @@ def default_plots(tables, k, declared=(), warnings=None) -> list:
         for c in t["columns"][k:]:
             s = c["symbol"]
             if s.startswith("R") and s[-1:] not in ("x", "y") and kind_of(c["unit"]) == "force":
-                vals = [abs(v) for v in c["values"] if v is not None]
-                rank = (s.startswith("R0"), max(vals)) if vals else None  # on the frame first
-                if vals and (peak is None or rank > peak[0]):
+                v = np.asarray(c["values"], dtype=float)   # a list (None: undefined) or array
+                vals = np.abs(v[np.isfinite(v)])
+                rank = (s.startswith("R0"), float(vals.max())) if vals.size else None  # frame first
+                if vals.size and (peak is None or rank > peak[0]):
                     peak = (rank, t, c)
         if peak is not None:
             break  # the statics' table (without inertia loads), not the kinetostatics'
@@ -904,7 +911,39 @@ def packed_values(values) -> dict:
     return {"f64": base64.b64encode(a.tobytes()).decode("ascii")}
 
 
-def _table_json(t, lang):
+def _column(values):
+    """A column's values as one flat float array."""
+    return np.asarray(values, dtype=float).ravel()
+
+
+def _packed_geometry(geo) -> dict:
+    """The drawing's data (:func:`assur.views.geometry.geometry`) with its arrays per
+    position — each point's ``[x, y]`` (as ``(n, 2)`` values, row by row), each
+    coordinate's values and each wheel's heading — as :func:`packed_values` (a JSON
+    list of numbers costs ten times as much to write and to read).
+
+    Examples
+    --------
+    >>> import base64
+    >>> import numpy as np
+    >>> g = _packed_geometry({"points": {"A": [[0.0, 1.0], [0.5, 1.5]]}, "q": {"S": [0.4, 0.6]},
+    ...                       "wheels": [{"heading": [0.0, 0.1]}], "n": 2})
+    >>> np.frombuffer(base64.b64decode(g["points"]["A"]["f64"]), "<f8").tolist()
+    [0.0, 1.0, 0.5, 1.5]
+    >>> g["q"]["S"]["f64"] == packed_values([0.4, 0.6])["f64"], g["n"]
+    (True, 2)
+    """
+    out = dict(geo)
+    out["points"] = {p: packed_values(v) for p, v in geo["points"].items()}
+    out["q"] = {c: packed_values(v) for c, v in geo["q"].items()}
+    if "wheels" in geo:
+        out["wheels"] = [dict(w, heading=packed_values(w["heading"])) for w in geo["wheels"]]
+    return out
+
+
+def _table_json(t, lang, values=_finite):
+    """A table as the page's JSON; ``values`` makes each column's values (default: a JSON
+    list, None where undefined)."""
     from ..report.labels import unit
     return {
         "id": t.id,
@@ -912,6 +951,6 @@ def _table_json(t, lang):
         "title": t.title(lang),
         "columns": [{"symbol": c.symbol, "unit": unit(c.unit, lang),
                      "label": c.label.get(lang, ""),
-                     "values": _finite(c.values)} for c in t.columns],
+                     "values": values(c.values)} for c in t.columns],
         "notes": [n.get(lang, "") for n in t.notes],
     }

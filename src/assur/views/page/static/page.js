@@ -349,21 +349,39 @@ async function post(path, extra, params) {
 
 // an answer asked for with {packed: true}: each table column's values come as
 // {f64: base64 of little-endian float64}; here they become the lists of numbers the
-// page reads, null where a value is undefined (NaN), as in an unpacked answer
+// page reads, null where a value is undefined (NaN), as in an unpacked answer; so do
+// the drawing's points ([x, y] by position), coordinates and wheels' headings
+function float64(p) {
+  const bin = atob(p.f64);
+  const bytes = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+  return new Float64Array(bytes.buffer);   // little-endian, as every browser's
+}
+
+function packed(v) { return v && typeof v.f64 === "string"; }
+
 function unpack(out) {
   if (!out || !out.tables) return out;
   for (const t of out.tables) {
     for (const c of t.columns) {
-      if (!c.values || typeof c.values.f64 !== "string") continue;
-      const bin = atob(c.values.f64);
-      const bytes = new Uint8Array(bin.length);
-      for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-      const f = new Float64Array(bytes.buffer);   // little-endian, as every browser's
+      if (!packed(c.values)) continue;
+      const f = float64(c.values);
       const v = new Array(f.length);
       for (let i = 0; i < f.length; i++) v[i] = Number.isFinite(f[i]) ? f[i] : null;
       c.values = v;
     }
   }
+  const g = out.geometry;
+  if (!g) return out;
+  for (const [p, v] of Object.entries(g.points)) {
+    if (!packed(v)) continue;
+    const f = float64(v);
+    const xy = new Array(f.length / 2);
+    for (let i = 0; i < xy.length; i++) xy[i] = [f[2 * i], f[2 * i + 1]];
+    g.points[p] = xy;
+  }
+  for (const [c, v] of Object.entries(g.q)) if (packed(v)) g.q[c] = Array.from(float64(v));
+  for (const w of g.wheels || []) if (packed(w.heading)) w.heading = Array.from(float64(w.heading));
   return out;
 }
 
@@ -817,8 +835,13 @@ function perPosition(t) {
   return t.columns.length && t.columns[0].values.length === state.data.geometry.n;
 }
 
+// the tables' and the plots' choices, built again only when the tables' names change
+// (the language, the units), not on every answer
 function buildTableSelect(tables) {
   const s = $("table-select");
+  const key = JSON.stringify([state.lang, tables.map(t => [t.id, t.label, t.title])]);
+  if (s.dataset.key === key) { s.value = state.table; return; }
+  s.dataset.key = key;
   s.textContent = "";
   for (const t of tables) s.appendChild(h("option", {value: t.id}, `${t.label} — ${t.title}`));
   s.value = state.table;
@@ -907,9 +930,13 @@ function findColumn(tables, table, symbol) {
 
 function buildPlotSelect(tables) {
   const s = $("add-plot");
+  const nc = state.data.coordinates.length;
+  const key = JSON.stringify([state.lang, nc, tables.map(t => [
+    t.id, t.label, t.title, perPosition(t), t.columns.map(c => [c.symbol, c.unit, c.label])])]);
+  if (s.dataset.key === key) return;
+  s.dataset.key = key;
   s.textContent = "";
   s.appendChild(h("option", {value: ""}, "+ " + T("add_plot")));
-  const nc = state.data.coordinates.length;
   for (const t of tables) {
     if (!perPosition(t)) continue;
     const og = h("optgroup", {label: `${t.label} — ${t.title}`});
