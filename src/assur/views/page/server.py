@@ -132,6 +132,11 @@ def _warm(pm, compiled=False):
             from .api import AnalyzeRequest
             positions = AnalyzeRequest().positions
             answers(positions)
+            if pm.model.solved:
+                # the conditions' root finder (scipy.optimize, ~0.2 s to import): the first
+                # change above may have found its roots in the solve cache on disk and not
+                # loaded it, which the user's first new value would then wait for
+                import scipy.optimize  # noqa: F401
             pm.export_tables({}, "xlsx", positions=positions)
             if compiled:
                 from ...kernel import vector
