@@ -154,3 +154,30 @@ def test_a_packed_answer_reads_in_the_page_as_the_plain_one(browser, name):
         }""")
         page.close()
     assert diffs == [] and numbers > 1000
+
+
+def test_the_table_out_of_view_is_brought_up_to_date_when_seen(browser, url):
+    """An answer that comes while the long table is scrolled out of view leaves its cells
+    (they are not seen); scrolled into view, the table shows the answer's values."""
+    page = browser.new_page(viewport={"width": 1400, "height": 700})
+    page.goto(url + "/")
+    page.wait_for_selector("#pt-56")
+    page.select_option("#table-select", "2.2")
+    shown = """() => { const t = currentTable(), tab = document.getElementById('table');
+        let same = 0, all = 0;
+        t.columns.forEach((c, k) => c.values.forEach((v, i) => {
+            all++; if (tab.rows[i + 1].cells[k].textContent === fmt(v)) same++; }));
+        return [same, all]; }"""
+    same, cells = page.evaluate(shown)
+    assert same == cells > 100
+    assert not page.evaluate("state.tableInView")      # below the drawing and the plots
+    page.fill("#input-L5", "0.49")
+    page.wait_for_function("state.tableStale === true")
+    assert page.evaluate("state.values.L5") == 0.49
+    same, cells = page.evaluate(shown)
+    assert same < cells                                  # Y56 moved: those cells are old
+    page.eval_on_selector("#table-box", "e => e.scrollIntoView()")
+    page.wait_for_function("state.tableStale === false")
+    same, cells = page.evaluate(shown)
+    assert same == cells
+    page.close()

@@ -22,6 +22,8 @@ const state = {
   timer: null,
   urlTimer: undefined, // the address's pending write (saveUrl)
   tableShape: null,    // what the table drawn shows (renderTable)
+  tableInView: true,   // the table's box is on the screen (or near it): watchTable
+  tableStale: false,   // an answer came while the table was out of view
   history: [],         // earlier parameter sets (undo)
   lastPush: 0,
   traj: new Set(),     // points whose trajectories are drawn
@@ -864,8 +866,10 @@ function renderCurrent() {
 
 // The table of the current results: built when its shape (table, columns, rows, units,
 // language) changes, else only its cells' texts replaced — a parameter change then
-// rewrites a thousand texts instead of building a thousand elements.
-function renderTable() {
+// rewrites a thousand texts instead of building a thousand elements; and not even those
+// while the table is scrolled out of view (below the drawing and the plots): then they
+// are rewritten when it comes into view (watchTable). force: now, in view or not.
+function renderTable(force) {
   const t = currentTable();
   const tab = $("table");
   if (!t) {
@@ -876,11 +880,14 @@ function renderTable() {
   }
   const n = t.columns.length ? t.columns[0].values.length : 0;
   const shape = JSON.stringify([t.id, t.label, t.title, t.columns.map(c => [c.symbol, c.unit, c.label]), n]);
+  const same = shape === state.tableShape && tab.rows.length === n + 1;
+  state.tableStale = same && !force && !state.tableInView;
+  if (state.tableStale) return;
   const notes = $("table-notes");
   notes.textContent = "";
   notes.appendChild(h("h3", {}, `${T("table")} ${t.label}. ${t.title}`));
   for (const x of t.notes) if (x) notes.appendChild(h("p", {}, x));
-  if (shape === state.tableShape && tab.rows.length === n + 1) {
+  if (same) {
     for (let i = 0; i < n; i++) {
       const cells = tab.rows[i + 1].cells;
       t.columns.forEach((c, k) => {
@@ -905,6 +912,18 @@ function renderTable() {
   }
   tab.appendChild(rows);
   markTable();
+}
+
+// whether the table's box is on the screen (within 400 px of it): the table is brought
+// up to date when it comes into view after answers that came while it was not
+function watchTable() {
+  if (!("IntersectionObserver" in window)) return;
+  new IntersectionObserver((entries) => {
+    for (const e of entries) {
+      state.tableInView = e.isIntersecting;
+      if (e.isIntersecting && state.tableStale) renderTable(true);
+    }
+  }, {rootMargin: "400px"}).observe($("table-box"));
 }
 
 // a click on a row of a per-position table picks that position (one listener)
@@ -1144,7 +1163,7 @@ async function start() {
   });
   $("table-select").addEventListener("change", () => {
     state.table = $("table-select").value;
-    renderTable();
+    renderTable(true);
     renderCurrent();
   });
   $("add-plot").addEventListener("change", () => {
@@ -1160,6 +1179,7 @@ async function start() {
     b.addEventListener("click", () => download(b.dataset.export, b));
   window.addEventListener("pagehide", flushUrl);   // a reload keeps the last change
   $("table").addEventListener("click", tableClick);
+  watchTable();
   request();
 }
 
