@@ -349,11 +349,24 @@ def _clean_cases(per_file: int):
     return [c for cases in out.values() for c in cases]
 
 
+#: a second command of a file (run on the same mutated cases): optimize, dxf
+SECOND_RUNS = {
+    "hitch_003_design": ["optimize", "--popsize", "5", "--maxiter", "2", "--positions", "3",
+                         "--no-polish"],
+    "hitch_003": ["dxf", "--at", "0.5,0.6"],
+}
+#: where each command writes
+OUTPUTS = {"sweep": "out.parquet", "dxf": "out.dxf"}
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("case", _clean_cases(1), ids=repr)
-def test_the_command_on_a_mutated_file_that_loads(case, tmp_path):
-    """The file's own command on a mutated file that loads: its results or one message
-    (exit 0 or 1), no traceback; what it writes has no NaN (the commands check)."""
+@pytest.mark.parametrize("case, run", [(c, RUNS[c.name]) for c in _clean_cases(1)]
+                         + [(c, SECOND_RUNS[c.name]) for c in _clean_cases(1)
+                            if c.name in SECOND_RUNS], ids=repr)
+def test_the_command_on_a_mutated_file_that_loads(case, run, tmp_path):
+    """The file's own command (and optimize, dxf) on a mutated file that loads: its
+    results or one message (exit 0 or 1), no traceback; what it writes after exit 0
+    has no NaN or infinity (the commands check)."""
     path = tmp_path / io.bundled(case.name).name
     text = case.text
     m = re.search(r'^extends = "([^"]+)"', text, re.M)
@@ -362,47 +375,14 @@ def test_the_command_on_a_mutated_file_that_loads(case, tmp_path):
         (tmp_path / base).write_text(io.bundled(base[:-5]).read_text(encoding="utf-8"),
                                      encoding="utf-8")
     path.write_text(text, encoding="utf-8")
-    command, *extra = RUNS[case.name]
-    out = tmp_path / ("out.parquet" if command == "sweep" else "out")
+    command, *extra = run
+    out = tmp_path / OUTPUTS.get(command, "out")
     args = [command, str(path), *extra, "-o", str(out)]
     t0 = time.perf_counter()
     r = runner.invoke(app, args)
     _assert_clean(r, args)
     assert r.exit_code in (0, 1), (args, r.output)
     assert time.perf_counter() - t0 < CASE_SECONDS, args
-    if r.exit_code == 0:
-        assert out.exists(), args
-        assert _not_finite_written(out) == [], args
-
-
-#: the second command of a file (its mutated cases above): optimize, dxf
-SECOND_RUNS = {
-    "hitch_003_design": ["optimize", "--popsize", "5", "--maxiter", "2", "--positions", "3",
-                         "--no-polish"],
-    "hitch_003": ["dxf", "--at", "0.5,0.6"],
-}
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("case", [c for c in _clean_cases(1) if c.name in SECOND_RUNS],
-                         ids=repr)
-def test_the_second_command_on_a_mutated_file_that_loads(case, tmp_path):
-    """``optimize`` and ``dxf`` on the mutated files above: results or one message, no
-    traceback, no NaN written."""
-    path = tmp_path / io.bundled(case.name).name
-    text = case.text
-    m = re.search(r'^extends = "([^"]+)"', text, re.M)
-    if m:
-        base = m.group(1)
-        (tmp_path / base).write_text(io.bundled(base[:-5]).read_text(encoding="utf-8"),
-                                     encoding="utf-8")
-    path.write_text(text, encoding="utf-8")
-    command, *extra = SECOND_RUNS[case.name]
-    out = tmp_path / ("out.dxf" if command == "dxf" else "out")
-    args = [command, str(path), *extra, "-o", str(out)]
-    r = runner.invoke(app, args)
-    _assert_clean(r, args)
-    assert r.exit_code in (0, 1), (args, r.output)
     if r.exit_code == 0:
         assert out.exists(), args
         assert _not_finite_written(out) == [], args
