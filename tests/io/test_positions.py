@@ -113,12 +113,14 @@ def test_a_path_needs_one_coordinate_given():
         in e.problem
 
 
-def test_design_search_refuses_a_held_range_at_the_hold_key():
-    text = with_range(*LEVEL) + '\n[design]\nvariables = { L7 = { within = ["0.2 m", ' \
-                                '"0.3 m"] } }\n'
-    e = fails(text)
-    assert e.key_path == "range.S1.hold" and e.line == line_of(text, "S1 = {")
-    assert "[design]" in e.problem and "not supported" in e.problem
+def test_design_search_along_a_held_range_loads():
+    """A [design] over a held path is no longer refused: the path is the model's and
+    the design search solves each design's own (tests/synthesis/search/
+    test_problem_held.py)."""
+    text = with_range(*LEVEL) + '\n[design]\nvariables = { L35 = { within = "5 mm" } }\n'
+    model = io.loads(text, name="loader.toml")
+    assert model.path is not None and model.path.holds[0].coordinate == "S1"
+    assert [v.name for v in model.design.variables] == ["L35"]
 
 
 def test_a_held_point_height_over_listed_positions():

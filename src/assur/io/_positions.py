@@ -155,17 +155,15 @@ class Conditions:
                              f"a held coordinate needs a path: one coordinate given by from/to "
                              f"or values and every other one held; given "
                              f"{', '.join(free) or 'none'}")
-        if "design" in self.data:
-            raise self.error(("range", held[0], "hold"),
-                             "[design] evaluates the positions of [range] through the fused "
-                             "kernel with every coordinate given; a held coordinate is not "
-                             "supported there yet (give S1's values, or remove [design])")
         along = free[0]
         quantities = self.quantities(mech)
         holds = []
         for c in held:
             r, rp = self.spec.range[c], ("range", c)
             target = self.resolved[rp + ("equals",)]
+            # the parameters a design search reads each design's target and limits from
+            refs = (target,) + tuple(self.resolved[rp + ("within", k)] for k in range(2))
+            refs = tuple(v if isinstance(v, str) else None for v in refs)
             if isinstance(target, str):
                 shown = self.units.get(signed_name(target) or target)
                 target = ref_value(mech.params, target)
@@ -181,7 +179,7 @@ class Conditions:
             file = getattr(line, "file", None) or self.file
             holds.append(Hold(c, r.hold, float(target), within, unit=shown,
                               coordinate_unit=self.unit_of(r.within[0], kind),
-                              source=f"{file}:{int(line)}"))
+                              source=f"{file}:{int(line)}", refs=refs))
         ar = self.spec.range[along]
         aunit = self.unit_of(ar.values[0] if "values" in ar.model_fields_set else ar.from_,
                              self.kind_of_coordinate(along))

@@ -289,7 +289,25 @@ def _build(model, path, content, variables, positions, chunk):
     polish = spec.polish if spec is not None and spec.polish is not None else True
     identity = hashlib.sha256(repr((content.digest, tuple(variables), positions)).encode(
         "utf-8")).hexdigest()
-    return Problem(model.mechanism, positions_of(model, count), vars_,
-                   spec.constraints if spec else (), spec.objectives if spec else (),
+    path = _held_path(model, count, path_of=str(path))
+    return Problem(model.mechanism, positions_of(model, count) if path is None else path.q,
+                   vars_, spec.constraints if spec else (), spec.objectives if spec else (),
                    name=model.name, source=(rebuild, (content, variables, positions, chunk)),
-                   chunk=chunk or CHUNK, polish=polish, identity=identity)
+                   chunk=chunk or CHUNK, polish=polish, identity=identity, path=path)
+
+
+def _held_path(model, count, path_of):
+    """The model's held path (``[range]`` with ``hold``), over ``count`` values of its
+    parameter evenly over its span when given; None without one."""
+    from ..core.held import hold_path
+    from ..errors import AssemblyError
+    path = model.path
+    if path is None or count is None:
+        return path
+    s = np.linspace(path.s[0], path.s[-1], int(count))
+    try:
+        return hold_path(model.mechanism, path.along, s, path.holds,
+                         along_unit=path.along_unit)
+    except (AssemblyError, ModelError) as e:
+        raise ModelError(f"{path_of}: [design] positions = {int(count)} over the held "
+                         f"path: {e}") from None

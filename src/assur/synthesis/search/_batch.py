@@ -8,7 +8,7 @@ import numpy as np
 
 from ...core import diagnostics
 from ...core.program import execute
-from ...errors import AssemblyError
+from ...errors import AssemblyError, ModelError
 from ...kernel.emit import CODES_PER_OP
 
 __all__ = ["Batch", "FEASIBLE", "ASSEMBLY", "ENGINE", "LIFT", "CONSTRAINT", "FAILURE_TEXT"]
@@ -27,13 +27,21 @@ FAILURE_TEXT = {1: "its outer joints are farther apart than its two sides reach"
                 8: "two slider lines are parallel"}
 
 
-def _assembly_failures(problem, X):
+def _held_base(mech):
+    """The first :attr:`Batch.detail` of a held path's failure (hold 0): after the
+    groups, links and distances a failure to assemble names."""
+    return len(mech.groups) + len(mech.links) + len(mech.distances)
+
+
+def _assembly_failures(problem, X, Q=None):
     """(group index, failure code, position) of the first failed position of each
-    design of ``X`` (all of which fail somewhere): one kinematic pass."""
+    design of ``X`` (all of which fail somewhere) at :attr:`Problem.positions` or at
+    each design's own positions ``Q`` (m, n, k): one kinematic pass."""
     mech = problem.mechanism.with_params(**problem._params(X))
     prog = mech.program(())
     ptab, trig, _ = mech.prepared(prog)
-    qarr, _, m, n = mech.coordinate_array(problem.positions, ptab.shape[1])
+    qarr, _, m, n = mech.coordinate_array(problem.positions if Q is None else Q,
+                                          ptab.shape[1])
     if ptab.shape[1] == 1 and m > 1:
         ptab, trig = np.repeat(ptab, m, axis=1), np.repeat(trig, m, axis=1)
     status = execute(prog, ptab, qarr, n, False, trig=trig)["status"].reshape(m, n)
@@ -50,7 +58,7 @@ def _evaluate_chunk(problem, X, ref):
     only where the engine refuses a design); ``ref``: the constraints' values for the
     original design, by name, where a limit is ``"original"``."""
     m = len(X)
-    red, nfail, errors = problem._reduce(X)
+    red, nfail, errors, held = problem._reduce(X)
     status = np.zeros(m, np.int8)
     detail = np.full(m, -1, np.int64)  # group index / criterion index
     code = np.zeros(m, np.int64)
@@ -58,9 +66,15 @@ def _evaluate_chunk(problem, X, ref):
     amount = np.zeros(m)
     engine = np.array([e is not None for e in errors])
     status[engine] = ENGINE
-    asm = (nfail > 0) & ~engine
+    hf = np.zeros(m, bool) if held is None else ~held.ok
+    if hf.any():  # a held coordinate that cannot reach its target: no positions
+        status[hf] = ASSEMBLY
+        detail[hf] = _held_base(problem.mechanism) + held.hold[hf]
+        code[hf], where[hf] = held.code[hf], held.position[hf]
+    asm = (nfail > 0) & ~engine & ~hf
     if asm.any():
-        op, cd, pos = _assembly_failures(problem, X[asm])
+        op, cd, pos = _assembly_failures(problem, X[asm],
+                                         None if held is None else held.q[asm])
         status[asm] = ASSEMBLY
         detail[asm], code[asm], where[asm] = op, cd, pos
     ok = status == FEASIBLE
@@ -291,10 +305,19 @@ class Batch:
         pb = self.problem
         mech = pb.mechanism
         at = ""
-        if w >= 0:
+        if w >= 0 and pb.path is not None:  # the held coordinates differ per design
+            at = (f" at position {w} "
+                  f"({diagnostics.coordinate_text(mech, pb.path.along, pb.path.s[w])})")
+        elif w >= 0:
             coords = ", ".join(diagnostics.coordinate_text(mech, c, v) for c, v in
                                zip(mech.coordinates, np.atleast_1d(pb.positions[w])))
             at = f" at position {w} ({coords})"
+        if st == ASSEMBLY and pb.path is not None and det >= _held_base(mech):
+            from ...core.held import HELD_TEXT
+            hd = pb.path.holds[det - _held_base(mech)]
+            why = HELD_TEXT.get(cd, f"failure code {cd}").format(c=hd.coordinate,
+                                                                 y=hd.quantity)
+            return f"does not assemble along the held path: {why}{at}"
         if st == ASSEMBLY:
             if det < len(mech.groups):
                 g = mech.groups[det]
@@ -445,10 +468,12 @@ class Batch:
         if int(self.status[i]) != ASSEMBLY:
             return self.reason(i)
         pb = self.problem
-        try:
-            pb.mechanism.solve(pb.positions, pb._params(self.X[i:i + 1]),
+        try:  # along a held path: the design's own positions (or why it has none)
+            pb.mechanism.solve(pb.positions_of(self.X[i]), pb._params(self.X[i:i + 1]),
                                check_continuity=False)
-        except AssemblyError as e:
+        except (AssemblyError, ModelError) as e:
+            if isinstance(e, ModelError) and pb.path is None:
+                raise
             return str(e)
         return self.reason(i)
 

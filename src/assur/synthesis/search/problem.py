@@ -17,6 +17,12 @@ A design is infeasible, with its reason (:attr:`Batch.reasons`), when
 * the engine refuses it as a whole ("engine": e.g. a pose that cannot assemble,
   a non-finite output — the batch is split in halves until that design is alone,
   so the rest of the batch is still evaluated);
+* along a held path (``[range]`` with ``hold``, :mod:`assur.core.held`), its held
+  coordinate cannot reach its target within its limits at some position ("assembly":
+  the hold, why, the position — the held coordinates of every design solved at every
+  position first, vectorized over designs × positions by
+  :func:`assur.core.held.hold_paths`; the outputs then evaluated at each design's own
+  positions);
 * a capacity it reads has a transmission number ≤ 0 somewhere ("lift");
 * a constraint does not hold ("constraint": the first one violated, by how much).
 
@@ -107,7 +113,8 @@ class Problem:
     mechanism : Mechanism
         The original design (its parameter values are the start and the reference).
     positions : array_like, shape (n,) (one coordinate) or (n, k)
-        Where every design is checked [m or rad].
+        Where every design is checked [m or rad]; with ``path``, ``path.q`` (the
+        original design's positions).
     variables : sequence of Variable
     constraints : sequence of Criterion
         Each with a :class:`~assur.synthesis.search.criteria.Limit`.
@@ -128,7 +135,13 @@ class Problem:
     polish : bool
         Whether :func:`~assur.synthesis.search.search.optimize` polishes differential
         evolution's optimum by SLSQP with exact gradients unless told otherwise
-        (``[design] polish`` of a model file).
+        (``[design] polish`` of a model file); False along a held path (no exact
+        gradients there yet, :meth:`jet`).
+    path : assur.core.held.HeldPath, optional
+        The original design's held path (``Model.path``): every design is checked at
+        its own positions, its held coordinates solved at each value of the path's
+        parameter ``path.s`` with its parameters (and its targets and limits, where
+        a hold's ``refs`` name variables).
 
     Examples
     --------
@@ -143,10 +156,11 @@ class Problem:
     """
 
     def __init__(self, mechanism, positions, variables, constraints=(), objectives=(), *,
-                 name=None, source=None, chunk=CHUNK, polish=True, identity=None):
+                 name=None, source=None, chunk=CHUNK, polish=True, identity=None, path=None):
         self.variables = tuple(variables)
         self._identity = identity
-        self.polish = bool(polish)
+        self.path = path
+        self.polish = bool(polish) and path is None
         self.constraints = tuple(constraints)
         self.objectives = tuple(objectives)
         self.name = name or mechanism.name
@@ -181,6 +195,10 @@ class Problem:
         self.original = mechanism
         self.mechanism = mech
         self.positions = np.asarray(positions, float)
+        if path is not None and not np.array_equal(self.positions, path.q):
+            raise ModelError(f"design problem {self.name!r}: along a held path the "
+                             f"positions are the path's (path.q, shape {path.q.shape}), "
+                             f"got shape {self.positions.shape}")
         outs = []
         for c in self.constraints + self.objectives:
             outs += [o for o in c.outputs if o not in outs]
@@ -366,10 +384,41 @@ class Problem:
         cylinder–lever group 'I (2,3)' (links 2, 3) cannot assemble at position 0 (S = 0.42): the distance |01–03| = 0.627009 m exceeds S + L3 = 0.42 + 0.2 = 0.62 m by 7.01 mm; ...
         """
         try:
-            self.with_design(x).solve(self.positions)
+            self.with_design(x).solve(self.positions_of(x))
         except AssemblyError as e:
             return str(e)
+        except ModelError as e:
+            if self.path is None:
+                raise
+            return str(e)
         return ""
+
+    def positions_of(self, x) -> np.ndarray:
+        """The positions design ``x`` [SI] is checked at [m or rad]: :attr:`positions`,
+        or along a held path its own (:func:`assur.core.held.hold_path` with its
+        parameters), shape (n, k).
+
+        Raises
+        ------
+        ModelError, AssemblyError
+            Along a held path: the design's held coordinate cannot reach its target
+            within its limits at some position (the message names it).
+
+        Examples
+        --------
+        >>> from assur import io
+        >>> from assur.io import load_problem
+        >>> pb = load_problem(io.bundled("hitch_003_design"))  # seed-003 hitch, pivots ±30 mm
+        >>> pb.positions_of(pb.x0) is pb.positions             # no held path: the same
+        True
+        """
+        if self.path is None:
+            return self.positions
+        from ...core.held import hold_path
+        x = np.asarray(x, float).reshape(1, -1)
+        p = self.path
+        return hold_path(self.mechanism, p.along, p.s, p.holds, self._params(x),
+                         along_unit=p.along_unit).q
 
     # ---- exact gradients ---------------------------------------------------------------
     def jet(self, x):
@@ -419,6 +468,10 @@ class Problem:
         """
         from ..sensitivity import sensitivities
         from .criteria import jet_reductions
+        if self.path is not None:
+            raise ModelError(f"design problem {self.name!r}: no exact gradients along a "
+                             f"held path yet ({self.path.describe()}): the positions move "
+                             f"with the design (search without polish)")
         x = np.asarray(x, float).reshape(-1)
         if x.shape != (len(self.variables),):
             raise ModelError(f"design problem {self.name!r}: a design has "
@@ -450,7 +503,9 @@ class Problem:
         16.064
         """
         if self._reference is None:
-            red, nfail, err = self._reduce(self.x0[None])
+            red, nfail, err, held = self._reduce(self.x0[None])
+            if held is not None and not held.ok[0]:
+                err = [str(held.error(0))]
             if nfail[0] or err[0] is not None:
                 raise ModelError(f"design problem {self.name!r}: the original design does not "
                                  f"assemble over the positions, so a limit cannot be "
@@ -513,12 +568,41 @@ class Problem:
 
     def _reduce(self, X):
         """Reductions of the outputs over the positions for the designs ``X``, the
-        number of failed positions per design and the engine's refusal per design
-        (None where it evaluated). Splits the batch where the engine raises."""
+        number of failed positions per design, the engine's refusal per design (None
+        where it evaluated) and, along a held path, the designs' paths
+        (:class:`assur.core.held.HeldPaths`; else None): a design whose held
+        coordinate cannot reach is not evaluated (its reductions 0, its failed
+        positions the scan's)."""
+        if self.path is None:
+            return self._reduce_at(X, None) + (None,)
+        from ...core.held import hold_paths
+        p = self.path
+        held = hold_paths(self.mechanism, p.along, p.s, p.holds, self._params(X),
+                          along_unit=p.along_unit)
+        m = len(X)
+        red0 = [{o: np.zeros(m) for o in self.outputs} for _ in range(2)]
+        red0 += [{o: np.full(m, -1, np.int64) for o in self.outputs} for _ in range(2)]
+        nfail = np.where(held.ok, 0, held.failed_positions)
+        errors = [None] * m
+        w = np.flatnonzero(held.ok)
+        if len(w):
+            red, nf, err = self._reduce_at(X[w], held.q[w])
+            for d, r in zip(red0, (red.mins, red.maxs, red.argmins, red.argmaxs)):
+                for o in self.outputs:
+                    d[o][w] = r[o]
+            nfail[w] = nf
+            for j, e in zip(w.tolist(), err):
+                errors[j] = e
+        return Reductions(*red0, self._param_fn(X)), nfail, errors, held
+
+    def _reduce_at(self, X, Q):
+        """:meth:`_reduce` at the positions Q of each design, shape (m, n, k) (None:
+        :attr:`positions` for all). Splits the batch where the engine raises."""
         m = len(X)
         try:
-            f = self.mechanism.evaluate(self.positions, self._params(X), outputs=self.outputs,
-                                        reduce=True, on_failure="report")
+            f = self.mechanism.evaluate(self.positions if Q is None else Q, self._params(X),
+                                        outputs=self.outputs, reduce=True,
+                                        on_failure="report")
         except (ModelError, AssemblyError) as e:
             if m == 1:
                 zero = {o: np.zeros(1) for o in self.outputs}
@@ -526,7 +610,8 @@ class Problem:
                 return (Reductions(zero, dict(zero), neg, dict(neg), self._param_fn(X)),
                         np.full(1, self.n_positions), [str(e)])
             h = m // 2
-            a, b = self._reduce(X[:h]), self._reduce(X[h:])
+            a = self._reduce_at(X[:h], None if Q is None else Q[:h])
+            b = self._reduce_at(X[h:], None if Q is None else Q[h:])
             red = Reductions(*({o: np.concatenate([ra[o], rb[o]]) for o in self.outputs}
                                for ra, rb in ((a[0].mins, b[0].mins), (a[0].maxs, b[0].maxs),
                                               (a[0].argmins, b[0].argmins),
