@@ -79,7 +79,7 @@ def curves(problem, x):
     """
     mech = problem.mechanism.with_params(**{v.name: float(xi)
                                             for v, xi in zip(problem.variables, x)})
-    f = mech.evaluate(problem.positions, outputs=list(problem.outputs))
+    f = mech.evaluate(problem.positions_of(x), outputs=list(problem.outputs))  # its own path
     return {o: np.asarray(f[o]) for o in problem.outputs if not o.startswith("length(__")}
 
 
