@@ -153,14 +153,17 @@ def hand_limit(name, I, F_dead):
     return (F - F_dead) / I
 
 
-#: a [machine] on two axles and a loader_tipping rating at T, for ARM (the reports' tests)
-TIPPING = '''
+#: a [machine] on two axles for ARM, its implement at T
+MACHINE = '''
 [machine]
 axles = { near = "-0.1 m", far = "2.0 m" }
 steered = "far"
 weights = [{ name = "body", P = "60 kN", x = "1.2 m" }]
 implement = { point = "T", weight = "10 kN" }
+'''
 
+#: MACHINE and a loader_tipping rating at T (the reports' tests)
+TIPPING = MACHINE + '''
 [[rating]]
 type = "loader_tipping"
 point = "T"

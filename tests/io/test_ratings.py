@@ -3,7 +3,7 @@
 import pytest
 
 from assur import io
-from tests.helpers.ratings import ARM
+from tests.helpers.ratings import ARM, MACHINE
 
 CHART = '''
 [[rating]]
@@ -68,13 +68,7 @@ def test_unknown_and_missing_keys_and_wrong_values():
 
 
 def test_a_value_takes_units_and_parameters():
-    text = ARM + '''
-[machine]
-axles = { near = "-0.1 m", far = "2.0 m" }
-steered = "far"
-weights = [{ name = "body", P = "60 kN", x = "1.2 m" }]
-implement = { point = "T", weight = "10 kN" }
-
+    text = ARM + MACHINE + '''
 [[rating]]
 type = "loader_breakout"
 edge = "T"
