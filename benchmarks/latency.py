@@ -89,7 +89,7 @@ def _line(label, times, target=None):
 
 
 def model_section(label, model, work):
-    assur = [sys.executable, "-m", "assur.views.cli"]
+    assur = [sys.executable, "-m", "assur"]  # as the console script `assur`
     print(f"  {label} ({model.name}):")
     work.mkdir(parents=True, exist_ok=True)
     shared = work / "shared"
@@ -136,7 +136,7 @@ def main():
               [_wall([sys.executable, "-c", "import assur"], env, work)[0] for _ in range(R)],
               TARGETS["import assur"])
         _line("assur --version",
-              [_wall([sys.executable, "-m", "assur.views.cli", "--version"], env, work)[0]
+              [_wall([sys.executable, "-m", "assur", "--version"], env, work)[0]
                for _ in range(R)])
         new = new_structure_model(work, extra=2, seed=int(time.time()) % 1000)
         model_section("a new structure, 9 groups", new, work / "new")

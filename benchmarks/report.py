@@ -36,7 +36,7 @@ TARGET_S = 3.0
 TARGET_RATIO = 2.0
 MODELS = tuple(os.environ.get("ASSUR_BENCH_MODELS", "hitch_003,loader_lab1,steering_lab4,cleaning_lab3").split(","))
 RUNS = {"csv": "csv", "html": "html", "all": ",".join(DEFAULT_FORMATS)}
-ASSUR = [sys.executable, "-m", "assur.views.cli"]
+ASSUR = [sys.executable, "-m", "assur"]  # as the console script `assur`
 
 
 def _cli(name, formats, out):

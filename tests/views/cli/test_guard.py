@@ -164,13 +164,13 @@ def test_an_exception_while_parsing_is_one_line_too(logs, monkeypatch, capsys):
 
 
 def test_the_console_script_prints_no_traceback(tmp_path):
-    """The installed entry point (``assur.views.cli:app``) in its own process, with the
+    """The installed entry point (``assur.__main__:main``) in its own process, with the
     loader broken: one line on the real stderr, exit 1, the traceback in the log."""
     code = ("import sys, assur.io as io\n"
             "def boom(*a, **k):\n    raise RuntimeError('broken in a subprocess')\n"
             "io.load = boom\n"
-            "from assur.views.cli import app\n"
-            "app(prog_name='assur')\n")
+            "from assur.__main__ import main\n"
+            "main()\n")
     env = dict(os.environ, ASSUR_CACHE_DIR=str(tmp_path), COLUMNS="60")
     p = subprocess.run([sys.executable, "-c", code, "check", str(bundled("hitch_003"))],
                        capture_output=True, text=True, env=env, cwd=ROOT, timeout=120)
