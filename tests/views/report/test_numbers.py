@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 from assur.core.display import unit_system
-from assur.views.report.numbers import decimals, number, quantity, value_text
+from assur.views.report.numbers import decimals, number, numbers, quantity, value_text
 
 
 @given(st.lists(st.floats(min_value=-1e12, max_value=1e12, allow_nan=False), min_size=1,
@@ -48,3 +48,20 @@ def test_value_text_converts_a_column_unit():
     assert value_text(0.42, "m", eng, "ru") == "420 мм"
     assert value_text(90.0, "deg", eng) == "90°"
     assert value_text(90.0, "deg", unit_system(None, "si")) == "1.571 rad"
+
+
+@given(st.lists(st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.floats(-1e-3, 1e-3),                      # what rounds to zero, of either sign
+    st.sampled_from([0.0, -0.0, -1e-12, 0.5, -0.5, 2.5, -2.5, 1e15, -1e300])),
+    max_size=30), st.one_of(st.none(), st.integers(0, 8)), st.sampled_from(["en", "ru"]))
+def test_a_column_prints_as_each_of_its_numbers(values, digits, lang):
+    """numbers() is number() at once: the same string for every value."""
+    a = np.array(values, dtype=float)
+    assert numbers(a, digits, lang) == [number(x, digits, lang) for x in values]
+
+
+def test_columns_of_integers_and_flags_print_as_number_prints_them():
+    for a in (np.array([3, -2, 0]), np.array([True, False]), np.array([], dtype=float)):
+        for lang in ("en", "ru"):
+            assert numbers(a, 2, lang) == [number(x, 2, lang) for x in a.tolist()]

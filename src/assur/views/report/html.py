@@ -25,7 +25,7 @@ import numpy as np
 from ...core.display import parameter_units, unit_system
 from ...texts import localize
 from .labels import TEXT, check_lang, t, unit
-from .numbers import decimals, number, quantity
+from .numbers import decimals, number, numbers, quantity
 from .values import parameter_value, solved_line
 
 __all__ = ["write_html", "render_html", "model_inputs", "stylesheet"]
@@ -194,10 +194,42 @@ def table_view(tab, lang):
         tip = c.label.get(lang, "") + (f" — {t('printed_sign', lang)}" if mark else "")
         cols.append(dict(symbol=c.symbol + mark, unit=unit(c.unit, lang), tip=tip))
         shown.append((c, decimals(c.values)))
-    rows = [[number(c.values[i], d, lang) for c, d in shown] for i in range(len(tab))]
+    texts = [numbers(c.values, d, lang) for c, d in shown]  # column by column
+    rows = [list(r) for r in zip(*texts)] if texts else [[] for _ in range(len(tab))]
     return dict(id=tab.id, label=tab.label, anchor=_anchor("table-", tab.id),
-                title=tab.title(lang), cols=cols,
-                rows=rows, notes=checks + [n.get(lang, n.get("en", "")) for n in tab.notes])
+                title=tab.title(lang), cols=cols, rows=rows, cells=_cells(rows),
+                parts=_print_parts(rows, len(cols)),
+                notes=checks + [n.get(lang, n.get("en", "")) for n in tab.notes])
+
+
+#: a table of more columns than this has a print-only copy cut into parts of at most
+#: this many columns, each repeating the first column (the coordinate)
+PART_COLS = 16
+
+
+def _print_parts(rows, n):
+    """The parts of the print-only copy of a table of ``n`` columns (none when it fits
+    on the page): the columns of each (the first one, then an equal share of the
+    others) and its rows' cells (:func:`_cells`)."""
+    if n <= PART_COLS:
+        return []
+    count = -(-(n - 1) // (PART_COLS - 1))
+    per = -(-(n - 1) // count)
+    parts = []
+    for k in range(count):
+        idx = [0] + list(range(1 + k * per, min(n, 1 + (k + 1) * per)))
+        parts.append(dict(cols=idx, cells=_cells([[r[j] for j in idx] for r in rows])))
+    return parts
+
+
+def _cells(rows):
+    """Each row's cells as one piece of HTML (``<td>…</td>…``, every text escaped): a
+    table of a crank turn has tens of thousands of cells, escaped here once each
+    instead of once per copy the template prints."""
+    from html import escape
+
+    from markupsafe import Markup
+    return [Markup("".join(f"<td>{escape(s, quote=False)}</td>" for s in r)) for r in rows]
 
 
 def figure_items(figures, lang):

@@ -21,7 +21,8 @@ import numpy as np
 
 from .labels import unit as unit_text
 
-__all__ = ["SIGNIFICANT", "decimals", "number", "quantity", "value_text", "unit_label"]
+__all__ = ["SIGNIFICANT", "decimals", "number", "numbers", "quantity", "value_text",
+           "unit_label"]
 
 #: significant digits of a column's largest magnitude, and of a single value
 SIGNIFICANT = 4
@@ -94,6 +95,35 @@ def number(x, digits: int | None = None, lang: str = "en",
     if s.startswith("-") and float(s.replace(",", ".")) == 0.0:
         s = s[1:]
     return s.replace(".", ",") if lang == "ru" else s
+
+
+def numbers(values, digits: int | None = None, lang: str = "en") -> list:
+    """A column of numbers printed as :func:`number` prints each (the same strings),
+    at once: a table of a crank turn holds tens of thousands of them.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from assur.views.report.numbers import numbers
+    >>> numbers([0.42, -0.00001, np.nan, -np.inf, 3.0], 4, "ru")
+    ['0,4200', '0,0000', '—', '−∞', '3,0000']
+    >>> numbers(np.array([2, 3])), numbers([27.5, 1e-9])    # integers; digits None: each alone
+    (['2', '3'], ['27.5', '1e-9'])
+    """
+    a = np.asarray(values)
+    if digits is None or a.dtype.kind not in "f" or a.ndim != 1:
+        return [number(x, digits, lang) for x in (a.tolist() if a.ndim else [a.item()])]
+    out = [f"{x:.{digits}f}" for x in a.tolist()]
+    zero = f"-{0:.{digits}f}"  # what rounds to zero is printed without its minus
+    for i in np.flatnonzero(~np.isfinite(a) | np.signbit(a)).tolist():
+        s = out[i]
+        if s in ("nan", "-nan"):
+            out[i] = "—"
+        elif s in ("inf", "-inf"):
+            out[i] = "∞" if s == "inf" else "−∞"
+        elif s == zero:
+            out[i] = s[1:]
+    return [s.replace(".", ",") for s in out] if lang == "ru" else out
 
 
 def unit_label(text: str, lang: str) -> str:
