@@ -185,11 +185,15 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
     render = _Renderers(jobs_, dict(analysis=analysis, lang=lang, design=design, units=du,
                                     positions=positions), out, formats, dict(
         analysis=analysis, frames=frames, lang=lang, design=design, units=du), jobs)
+    animate = "html" in formats and frames > 0
     with render:
         if "xlsx" in formats:  # while the renderers draw
             step("xlsx")
             written["xlsx"] = [write_xlsx(tables, out / "tables.xlsx", lang=lang,
                                           inputs=_html.model_inputs(analysis, lang, du))]
+        if animate and render.pool is not None:  # the HTML's vector frames, meanwhile too
+            anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design,
+                                      units=du)
         if figured:
             step("figures")
             for job in jobs_:
@@ -215,7 +219,7 @@ def write_report(analysis, outdir, formats=DEFAULT_FORMATS, lang=None, progress=
             step("animation")
             if gif:  # raster frames only for the GIF; the HTML plays vectors
                 written["gif"] = [render.result(("gif", None))]
-            if "html" in formats:
+            if animate and anim is False:  # made here when no renderer runs beside
                 anim = _drawing.animation(analysis, frames=frames, lang=lang, design=design,
                                           units=du)
     if "html" in formats:
