@@ -14,9 +14,11 @@ cache holds — and for the bundled hitch, each figure the median of R fresh pro
 * ``assur analyze`` **csv**: the tables alone, warm; **every format**: CSV, XLSX, the
   HTML report with its figures, PNG, SVG and the GIF, warm;
 * the page's **first export**: a new server process (as ``assur serve`` starts it: the
-  model warmed in the background), its first answer, then the first CSV and XLSX export
-  at 101 positions — the export's own time (after the first answer) and the process's
-  from its start;
+  model warmed in the background, then compiled kernels), its first answer, then the
+  first CSV and XLSX export at 101 positions asked for at once — the export's own time
+  (after the first answer, while the warming goes on) and the process's from its start;
+  and in other processes the first and the second XLSX export once the page is warm
+  (as a user who looks at the page before exporting): the same time;
 
 and, without a model, ``python -c 'import assur'`` and ``assur --version``. Each is
 printed with the issue's target (cold check ≤ 2 s, warm check ≤ 0.3 s, every format
@@ -50,14 +52,21 @@ def post(url, path, body):
                                  headers={"Content-Type": "application/json"})
     with urllib.request.urlopen(req, timeout=600) as r:
         r.read()
-with running(create_app(sys.argv[1])) as url:
+def export(url, fmt):
+    t = time.perf_counter()
+    post(url, "/api/export/" + fmt, {"positions": 101})
+    return time.perf_counter() - t
+app = create_app(sys.argv[1], compiled=True)  # as `assur serve` makes it
+with running(app) as url:
     post(url, "/api/analyze", {"params": {}, "positions": 101})
-    t1 = time.perf_counter()
-    post(url, "/api/export/csv", {"positions": 101})
-    t2 = time.perf_counter()
-    post(url, "/api/export/xlsx", {"positions": 101})
-    t3 = time.perf_counter()
-print(json.dumps({"csv": t2 - t1, "xlsx": t3 - t2, "process": t3 - t0}))
+    if sys.argv[2] == "at once":  # the exports asked for right after the first answer
+        csv, xlsx = export(url, "csv"), export(url, "xlsx")
+        print(json.dumps({"csv": csv, "xlsx": xlsx, "process": time.perf_counter() - t0}))
+    else:  # asked for once the page is warm, as a user who looks at the page first
+        app.state.warming.join()
+        warm = time.perf_counter() - t0
+        first, second = export(url, "xlsx"), export(url, "xlsx")
+        print(json.dumps({"warm": warm, "first": first, "second": second}))
 """
 
 
@@ -115,11 +124,19 @@ def model_section(label, model, work):
     csv = _line("assur analyze --format csv", runs["csv"])
     allf = _line("assur analyze, every format", runs[every], TARGETS["analyze every format"])
     print(f"    {'every format / csv':<34} {allf / csv:6.2f}×   (issue 23: ≤ 2×)")
-    exports = [json.loads(_wall([sys.executable, "-c", EXPORT, str(model)], env, work)[1])
-               for _ in range(R)]
-    _line("page: first CSV export", [e["csv"] for e in exports], TARGETS["first export"])
-    _line("page: first XLSX export", [e["xlsx"] for e in exports], TARGETS["first export"])
+    exports = [json.loads(_wall([sys.executable, "-c", EXPORT, str(model), "at once"], env,
+                                work)[1]) for _ in range(R)]
+    _line("page: first CSV export, at once", [e["csv"] for e in exports],
+          TARGETS["first export"])
+    _line("page: first XLSX export, at once", [e["xlsx"] for e in exports],
+          TARGETS["first export"])
     _line("page: process start → XLSX", [e["process"] for e in exports])
+    later = [json.loads(_wall([sys.executable, "-c", EXPORT, str(model), "warm"], env,
+                              work)[1]) for _ in range(R)]
+    _line("page: process start → warm", [e["warm"] for e in later])
+    _line("page: first XLSX export, warm", [e["first"] for e in later],
+          TARGETS["first export"])
+    _line("page: second XLSX export", [e["second"] for e in later])
 
 
 def main():
