@@ -61,7 +61,10 @@ __all__ = ["SMALL", "LARGE", "RENT", "CALLS", "ready_key", "is_ready", "mark_rea
            "set_calls"]
 
 #: elements (designs × positions) of a call that the numpy evaluation takes at most
-SMALL = 256
+#: (while numba is not in the process, :data:`CALLS` of them): 1–5 ms each for the
+#: bundled structures of 11–20 groups (a crank turn of 361 positions: 1.5 ms), so the
+#: calls cost less than numba's start-up even before :data:`CALLS` stops them
+SMALL = 1024
 
 #: calls evaluated by numpy in a process before the compiled kernels take over; each
 #: costs about 1–3 ms for a ten-group structure, the compiled kernels' first use in a
@@ -203,7 +206,7 @@ def wanted(elements: int, ready=None) -> bool:
     >>> import sys
     >>> from assur.kernel.vector import LARGE, SMALL, set_backend, set_calls, wanted
     >>> set_backend("auto")                   # the rule (whatever $ASSUR_KERNELS says)
-    >>> wanted(SMALL + 1)                     # 257 elements of a ready kernel: compiled
+    >>> wanted(SMALL + 1)                     # 1025 elements of a ready kernel: compiled
     False
     >>> wanted(LARGE, ready=lambda: False), wanted(LARGE + 1, ready=lambda: False)
     (True, False)
