@@ -9,7 +9,7 @@ from tests.helpers.ratings import ARM, TIPPING
 
 def test_a_ratings_figure_in_the_users_units():
     a = io.loads(ARM + TIPPING).analyze()
-    ax = rating_figures(a, units="engineering")["rating_1"].axes[0]
+    ax = rating_figures(a, units="engineering")["loader_tipping"].axes[0]
     assert ax.get_title() == "Tipping of the test loader"
     assert ax.get_xlabel() == "reach of T [mm]" and ax.get_ylabel() == "tipping load at T [kN]"
     x, y = ax.lines[0].get_data()
@@ -30,9 +30,9 @@ def test_a_held_path_is_one_curve_and_a_three_coordinate_grid_is_points():
     from assur.views.report.ratings import rating_figures
 
     loader = rating_figures(io.load(io.bundled("frontloader_zbar")).analyze())
-    lines = loader["rating_3"].axes[0].get_lines()
+    lines = loader["loader_lift"].axes[0].get_lines()
     assert len(lines) == 1 and len(lines[0].get_xdata()) == 13
     assert lines[0].get_linestyle() == "-"
     arm = rating_figures(io.load(io.bundled("backhoe_arm")).analyze())
-    for line in arm["rating_1"].axes[0].get_lines():
+    for line in arm["excavator_digging"].axes[0].get_lines():
         assert line.get_linestyle() == "None" and line.get_marker() == "o"

@@ -22,12 +22,12 @@ from __future__ import annotations
 
 from ._registry import rating_type, register, registry
 from .base import (ROLES, Param, Rating, RatingResult, Series, carried_loads, check_names,
-                   declared, need_cylinders, number, param, with_loads_of)
+                   declared, names_of, need_cylinders, number, param, with_loads_of)
 from .stability import machine_of, tipping_load
 from . import crane as _crane  # noqa: F401  (registers crane_chart)
 from . import digging as _digging  # noqa: F401  (registers excavator_digging)
 from . import loader as _loader  # noqa: F401  (registers the loader ratings)
 
 __all__ = ["ROLES", "Param", "param", "Series", "RatingResult", "Rating", "carried_loads",
-           "with_loads_of", "declared", "check_names", "need_cylinders", "number",
+           "with_loads_of", "declared", "check_names", "need_cylinders", "number", "names_of",
            "register", "registry", "rating_type", "tipping_load", "machine_of"]

@@ -37,7 +37,7 @@ from ...core.quantities import DEFAULT_UNITS
 from ...errors import ModelError
 from ...texts import Text
 
-__all__ = ["ROLES", "Param", "param", "declared", "Series", "RatingResult", "Rating",
+__all__ = ["ROLES", "Param", "param", "declared", "Series", "RatingResult", "Rating", "names_of",
            "carried_loads", "with_loads_of", "number", "check_names", "need_cylinders"]
 
 #: what a parameter of a rating holds, by its role; the file's checks follow the role
@@ -298,6 +298,28 @@ class Rating:
         NotImplementedError
         """
         raise NotImplementedError
+
+
+def names_of(ratings) -> list:
+    """The names of a machine's ratings in its files and links: each its kind's
+    (``crane_chart``), numbered in the file's order where the machine has two of a
+    kind (``loader_lift_1``, ``loader_lift_2``).
+
+    Parameters
+    ----------
+    ratings : sequence of Rating or RatingResult
+        In the model file's order.
+
+    Examples
+    --------
+    >>> from assur.machines.ratings import names_of, rating_type
+    >>> chart, lift = rating_type("crane_chart"), rating_type("loader_lift")
+    >>> names_of([chart(point="D", axis="O"), lift("T", "O"), lift("T", "O")])
+    ['crane_chart', 'loader_lift_1', 'loader_lift_2']
+    """
+    kinds = [getattr(r, "rating", r).type_name for r in ratings]
+    return [k if kinds.count(k) == 1 else f"{k}_{kinds[:i + 1].count(k)}"
+            for i, k in enumerate(kinds)]
 
 
 def number(mech, ref) -> float:

@@ -15,7 +15,8 @@ __all__ = ["rating_figures"]
 
 
 def rating_figures(analysis, lang="en", units=None) -> dict:
-    """``{name: Figure}``, one per rating of ``analysis``: its curves (``y``) over its
+    """``{name: Figure}``, one per rating of ``analysis`` (named by its kind,
+    :func:`assur.machines.ratings.names_of`): its curves (``y``) over its
     abscissa (``x``), one curve per value of its ``group`` (a load chart: one per boom
     position), in the display units (``units``; default: the model file's).
 
@@ -24,15 +25,19 @@ def rating_figures(analysis, lang="en", units=None) -> dict:
     >>> from assur import io
     >>> from assur.views.report.ratings import rating_figures
     >>> figs = rating_figures(io.load(io.bundled("crane_lv184a")).analyze())
-    >>> ax = figs["rating_1"].axes[0]
+    >>> list(figs)
+    ['crane_chart']
+    >>> ax = figs["crane_chart"].axes[0]
     >>> ax.get_xlabel(), ax.get_ylabel()
     ('reach of D [m]', 'lifting capacity at D [N]')
     """
     from ...core.display import unit_system
     lang = check_lang(lang)
     du = unit_system(analysis.mechanism, units)
+    from ...machines.ratings import names_of
     figs = {}
-    for i, r in enumerate(getattr(analysis, "ratings", None) or ()):
+    ratings = list(getattr(analysis, "ratings", None) or ())
+    for r, name in zip(ratings, names_of(ratings)):
         fig = new_figure()
         ax = fig.add_subplot()
         xs = r.get(r.x)
@@ -70,5 +75,5 @@ def rating_figures(analysis, lang="en", units=None) -> dict:
         ax.grid(True, alpha=0.35)
         if r.y:
             ax.legend(fontsize=8)
-        figs[f"rating_{i + 1}"] = fig
+        figs[name] = fig
     return figs

@@ -108,6 +108,9 @@ class Table:
         The number the report shows (``"3"``; the seed-003 hitch: ``"4.1"``, its
         worksheet's), given by :func:`seed_tables` from ``[tables] numbering``;
         empty: the id. :attr:`label` is the one shown.
+    contents : str
+        What the table holds, in its file's name (:func:`table_filename`:
+        ``table_6_crane_chart.csv``); empty: :data:`TABLE_CONTENTS` by its id.
 
     Examples
     --------
@@ -126,6 +129,7 @@ class Table:
     columns: tuple
     notes: tuple = ()
     number: str = ""
+    contents: str = ""
 
     @property
     def label(self) -> str:

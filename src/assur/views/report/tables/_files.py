@@ -21,12 +21,13 @@ __all__ = ["TABLE_CONTENTS", "table_filename", "write_csv", "write_frame_csv", "
 TABLE_CONTENTS = {"2.1": "link_angles", "2.2": "points", "3.1": "analogs", "4.1": "cylinders",
             "G": "capacity_maps", "5.1": "reactions", "5.2": "reactions_with_inertia",
             "D": "crank_dynamics", "V": "velocities", "6.1": "axle_loads", "IC": "ic_check", "L": "lift_test",
-            "F": "formulas", **{f"R{i}": f"rating_{i}" for i in range(1, 100)}}
+            "F": "formulas"}
 
 
 def table_filename(table, ext="csv") -> str:
     """The file of a table: its number as the report shows it (:attr:`Table.label`) and
-    what it holds (:data:`TABLE_CONTENTS`) — ``table_4_cylinders.csv``; a table numbered as
+    what it holds (its :attr:`~Table.contents`, else :data:`TABLE_CONTENTS` by its id) —
+    ``table_4_cylinders.csv``, ``table_6_crane_chart.csv``; a table numbered as
     its seed's worksheet (``[tables] numbering = "seed"``) by that number alone,
     ``table_2_1.csv``, ``table_ic.csv``.
 
@@ -45,7 +46,7 @@ def table_filename(table, ext="csv") -> str:
     """
     if not table.number or table.number == table.id:
         return f"table_{table.id.replace('.', '_').lower()}.{ext}"
-    what = TABLE_CONTENTS.get(table.id, re.sub(r"\W+", "_", table.id.lower()))
+    what = table.contents or TABLE_CONTENTS.get(table.id, re.sub(r"\W+", "_", table.id.lower()))
     return f"table_{table.number.replace('.', '_')}_{what}.{ext}"
 
 
