@@ -36,6 +36,26 @@ def _one_line(r) -> str:
     return " ".join(r.output.split())
 
 
+def _spoil(monkeypatch, module, name, change):
+    """``module.name`` made to return its result after ``change(result)`` has put a
+    value that is not finite in it (on its way to the writer)."""
+    real = getattr(module, name)
+
+    def spoiled(*args, **kwargs):
+        result = real(*args, **kwargs)
+        change(result)
+        return result
+
+    monkeypatch.setattr(module, name, spoiled)
+
+
+def _refused(args) -> str:
+    """The one-line message of a command that must end with exit 1."""
+    r = runner.invoke(app, args)
+    assert r.exit_code == 1, r.output
+    return _one_line(r)
+
+
 def test_the_checker_names_table_column_row_and_key():
     cols = {"t [s]": np.array([0.0, 0.5, 1.0]), "p1 [MPa]": np.array([0.0, 2.0, 3.0]),
             "phase": np.array(["rest", "moving", "moving"]), "n": np.array([1, 2, 3])}
@@ -77,38 +97,26 @@ def test_cycles_of_a_pump_whose_dynamic_forces_vanish_is_refused(tmp_path):
 def test_cycles_refuses_a_table_value_that_is_not_finite(tmp_path, monkeypatch):
     import assur.views.report.cycles as cycles
 
-    sweep = cycles.sweep
-
-    def spoiled(*args, **kwargs):
-        df = sweep(*args, **kwargs)
+    def change(df):
         df.loc[3, "F2_max"] = np.inf
-        return df
 
-    monkeypatch.setattr(cycles, "sweep", spoiled)
+    _spoil(monkeypatch, cycles, "sweep", change)
     out = tmp_path / "out"
-    r = runner.invoke(app, ["cycles", str(io.bundled("crane_lv184a")), "-o", str(out)])
-    assert r.exit_code == 1, r.output
-    assert ("table 'cycles (scenarios)': column 'F2_max' is inf at row 3 (scenario = "
-            in _one_line(r)), r.output
+    msg = _refused(["cycles", str(io.bundled("crane_lv184a")), "-o", str(out)])
+    assert "table 'cycles (scenarios)': column 'F2_max' is inf at row 3 (scenario = " in msg
     assert _written(out) == []
 
 
 def test_simulate_refuses_a_time_series_that_is_not_finite(tmp_path, monkeypatch):
     import assur.dynamics as dynamics
 
-    simulate_model = dynamics.simulate_model
-
-    def spoiled(model, **options):
-        result = simulate_model(model, **options)
+    def change(result):
         result.p1[4] = np.nan
-        return result
 
-    monkeypatch.setattr(dynamics, "simulate_model", spoiled)
+    _spoil(monkeypatch, dynamics, "simulate_model", change)
     out = tmp_path / "out"
-    r = runner.invoke(app, ["simulate", str(io.bundled("adapter_lab6")), "--duration",
-                            "0.1", "-o", str(out)])
-    assert r.exit_code == 1, r.output
-    msg = _one_line(r)
+    msg = _refused(["simulate", str(io.bundled("adapter_lab6")), "--duration", "0.1", "-o",
+                    str(out)])
     assert "table 'simulation.csv': column 'p1 [MPa]' is nan at row 4 (t [s] = " in msg, msg
     assert _written(out) == []
 
@@ -116,19 +124,14 @@ def test_simulate_refuses_a_time_series_that_is_not_finite(tmp_path, monkeypatch
 def test_dxf_refuses_a_drawing_that_is_not_finite(tmp_path, monkeypatch):
     import assur.views.cli._page as page
 
-    assemble = page._assemble
-
-    def spoiled(model):
-        analysis = assemble(model)
+    def change(analysis):
         kin = analysis.kinematics
         kin.x(kin.points[1])[-1] = np.inf  # a view of the result's buffer
-        return analysis
 
-    monkeypatch.setattr(page, "_assemble", spoiled)
+    _spoil(monkeypatch, page, "_assemble", change)
     out = tmp_path / "hitch.dxf"
-    r = runner.invoke(app, ["dxf", str(io.bundled("hitch_003")), "-o", str(out)])
-    assert r.exit_code == 1, r.output
-    assert re.search(r"column 'X34' is inf at row 1 \(S = 0\.67", _one_line(r)), r.output
+    msg = _refused(["dxf", str(io.bundled("hitch_003")), "-o", str(out)])
+    assert re.search(r"column 'X34' is inf at row 1 \(S = 0\.67", msg), msg
     assert not out.exists()
 
 
@@ -150,41 +153,30 @@ def test_fit_refuses_a_parameter_that_is_not_finite(tmp_path, monkeypatch):
 def test_optimize_refuses_a_best_design_that_is_not_finite(tmp_path, monkeypatch):
     import assur.views.cli._synthesis as synthesis
 
-    search = synthesis._search
+    def change(found):
+        found[0].x[1] = np.inf  # (result, executor, seconds): the best design
 
-    def spoiled(*args, **kwargs):
-        res, ex, dt = search(*args, **kwargs)
-        res.x[1] = np.inf
-        return res, ex, dt
-
-    monkeypatch.setattr(synthesis, "_search", spoiled)
+    _spoil(monkeypatch, synthesis, "_search", change)
     out = tmp_path / "out"
-    r = runner.invoke(app, ["optimize", str(io.bundled("hitch_003_design")), "--popsize", "2",
-                            "--maxiter", "1", "--positions", "3", "--no-polish", "-o",
-                            str(out)])
-    assert r.exit_code == 1, r.output
+    msg = _refused(["optimize", str(io.bundled("hitch_003_design")), "--popsize", "2",
+                    "--maxiter", "1", "--positions", "3", "--no-polish", "-o", str(out)])
     assert re.search(r"table 'hitch_003_design_best\.toml \(best design\) \[SI\]': column "
-                     r"'\w+' is inf", _one_line(r)), r.output
+                     r"'\w+' is inf", msg), msg
     assert _written(out) == []
 
 
 def test_tolerance_refuses_a_table_value_that_is_not_finite(tmp_path, monkeypatch):
     import assur.synthesis.tolerance as tolerance
 
-    monte_carlo = tolerance.monte_carlo
+    def change(result):
+        result.nominal[2, 0] = np.inf  # the nominal machine's first output at position 2
 
-    def spoiled(*args, **kwargs):
-        r = monte_carlo(*args, **kwargs)
-        r.nominal[2, 0] = np.inf  # the nominal machine's first output at position 2
-        return r
-
-    monkeypatch.setattr(tolerance, "monte_carlo", spoiled)
+    _spoil(monkeypatch, tolerance, "monte_carlo", change)
     out = tmp_path / "out"
-    r = runner.invoke(app, ["tolerance", str(io.bundled("hitch_003_tolerances")), "--samples",
-                            "20", "-o", str(out)])
-    assert r.exit_code == 1, r.output
+    msg = _refused(["tolerance", str(io.bundled("hitch_003_tolerances")), "--samples", "20",
+                    "-o", str(out)])
     assert re.search(r"table 'tolerance_worst': column 'nominal' is inf at row 0 \(output = "
-                     r"'p\(ГЦ\)", _one_line(r)), r.output
+                     r"'p\(ГЦ\)", msg), msg
     assert _written(out) == []
 
 
