@@ -75,10 +75,8 @@ def number(x, digits: int | None = None, lang: str = "en",
     if isinstance(x, (int, np.integer)):
         return str(int(x))
     x = float(x)
-    if math.isnan(x):
-        return "—"
-    if math.isinf(x):
-        return "∞" if x > 0 else "−∞"
+    if not math.isfinite(x):
+        return _NOT_FINITE[repr(x)]
     if digits is None:
         digits = decimals([x], significant)
         if digits is None:
@@ -92,9 +90,17 @@ def number(x, digits: int | None = None, lang: str = "en",
                 s = s.rstrip("0").rstrip(".")
     else:
         s = f"{x:.{digits}f}"
-    if s.startswith("-") and float(s.replace(",", ".")) == 0.0:
-        s = s[1:]
+    s = _unsigned_zero(s)
     return s.replace(".", ",") if lang == "ru" else s
+
+
+#: a value that is not a number, as a document prints it (by Python's text of it)
+_NOT_FINITE = {"nan": "—", "inf": "∞", "-inf": "−∞"}
+
+
+def _unsigned_zero(s: str) -> str:
+    """A number's text without the minus of a value that rounds to zero ("-0.000")."""
+    return s[1:] if s.startswith("-") and float(s) == 0.0 else s
 
 
 def numbers(values, digits: int | None = None, lang: str = "en") -> list:
@@ -114,15 +120,10 @@ def numbers(values, digits: int | None = None, lang: str = "en") -> list:
     if digits is None or a.dtype.kind not in "f" or a.ndim != 1:
         return [number(x, digits, lang) for x in (a.tolist() if a.ndim else [a.item()])]
     out = [f"{x:.{digits}f}" for x in a.tolist()]
-    zero = f"-{0:.{digits}f}"  # what rounds to zero is printed without its minus
+    # only a value that is not finite or has a minus may print otherwise than above
     for i in np.flatnonzero(~np.isfinite(a) | np.signbit(a)).tolist():
-        s = out[i]
-        if s in ("nan", "-nan"):
-            out[i] = "—"
-        elif s in ("inf", "-inf"):
-            out[i] = "∞" if s == "inf" else "−∞"
-        elif s == zero:
-            out[i] = s[1:]
+        x = float(a[i])
+        out[i] = _NOT_FINITE[repr(x)] if not math.isfinite(x) else _unsigned_zero(out[i])
     return [s.replace(".", ",") for s in out] if lang == "ru" else out
 
 
