@@ -395,3 +395,28 @@ def test_figures_rendered_by_forked_processes_are_the_same(tmp_path):
     assert one["html"][0].read_text(encoding="utf-8") == two["html"][0].read_text(
         encoding="utf-8")
     assert all(p.stat().st_size > 0 for p in two["svg"])
+
+
+def test_each_figure_is_built_once_for_png_svg_and_html(tmp_path, monkeypatch):
+    """Issue 28: a figure is built once and drawn from that one object as PNG, SVG and
+    the HTML report's image (each of its PNG bytes is the report's)."""
+    import base64
+
+    import assur.views.report as report
+    from assur import io
+
+    built = []
+    real = report._build
+
+    def counted(job, *args, **kwargs):
+        built.append(job)
+        return real(job, *args, **kwargs)
+
+    monkeypatch.setattr(report, "_build", counted)
+    a = io.load(io.bundled("steering_lab4")).analyze()
+    files = write_report(a, tmp_path, formats=("png", "svg", "html"), frames=0, jobs=1)
+    assert len(built) == len(set(built)) == len(report._figure_jobs(a)) + 1  # + the drawing
+    assert len(files["svg"]) == len(files["png"])
+    page = files["html"][0].read_text(encoding="utf-8")
+    for p in files["png"]:
+        assert base64.b64encode(p.read_bytes()).decode() in page, p.name
