@@ -14,7 +14,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from .emit import CONTINUITY_TOL
 from .source import CHUNK
-from .vector import LARGE, SMALL, is_vector
+from .vector import LARGE, is_vector
 
 __all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "unwrap_rows",
            "pool", "MIN_ELEMENTS_PER_THREAD"]
@@ -23,6 +23,10 @@ __all__ = ["threads", "set_threads", "threads_for", "run", "check_continuity", "
 #: it saves (a batch of 257 designs at one position, as design conditions solve,
 #: runs in the calling thread)
 MIN_ELEMENTS_PER_THREAD = 4096
+
+#: columns of an unwrap below which numpy's is faster than the compiled loop's call,
+#: once numba is in the process (without it: numpy up to LARGE, numba not started)
+UNWRAP_NUMPY = 256
 
 _threads: list = []
 _pool: list = []
@@ -241,7 +245,7 @@ def unwrap_rows(sv, rows, n):
     >>> [round(float(v), 3) for v in sv[1]]        # not an angle row: unchanged
     [0.1, 0.2, 0.3, 0.4]
     """
-    if sv.shape[1] <= SMALL or ("numba" not in sys.modules and sv.shape[1] <= LARGE):
+    if sv.shape[1] <= UNWRAP_NUMPY or ("numba" not in sys.modules and sv.shape[1] <= LARGE):
         # numpy (the same additions in the same order): a few elements, or a call
         # evaluated by numpy where numba is not started (assur.kernel.vector.LARGE)
         _unwrap_small(sv, rows, n)
