@@ -73,13 +73,17 @@ def _run_report(model, output: str, lang: str, fmts, draw_at=None, frames=30, un
     analysis = _assemble(model)
     positions = _positions(analysis, draw_at, du)
     out = _output_dir(output)
+    # redrawn at each step, not by rich's refresh thread: the report forks its figures'
+    # renderers only from a process with no other thread (report.forkable)
     with Progress(SpinnerColumn(), TextColumn("{task.description}", markup=False,
                                               style="progress.description"),
-                  BarColumn(), TimeElapsedColumn(), console=console, transient=True) as prog:
+                  BarColumn(), TimeElapsedColumn(), console=console, transient=True,
+                  auto_refresh=False) as prog:
         task = prog.add_task("writing the report", total=len(report_steps(fmts, frames)))
+        prog.refresh()
 
         def step(name):
-            prog.update(task, description=f"writing: {name}", advance=1)
+            prog.update(task, description=f"writing: {name}", advance=1, refresh=True)
 
         try:
             files = write_report(analysis, out, formats=fmts, lang=lang, progress=step,

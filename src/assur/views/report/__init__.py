@@ -306,6 +306,29 @@ def _render(job, build, out, formats, anim):
     return made
 
 
+def forkable() -> bool:
+    """Whether this process may fork its figures' renderers: on Linux (where forking is
+    the processes' own way to start), and only while no other thread runs in it — a
+    forked child gets a copy of every lock, held ones too, but not the threads that
+    would release them.
+
+    Examples
+    --------
+    >>> import sys, threading
+    >>> from assur.views.report import forkable
+    >>> forkable() == sys.platform.startswith("linux")   # this thread alone
+    True
+    >>> stop = threading.Event()
+    >>> t = threading.Thread(target=stop.wait); t.start()
+    >>> forkable()                                        # another thread alive
+    False
+    >>> stop.set(); t.join()
+    """
+    import sys
+    import threading
+    return sys.platform.startswith("linux") and threading.active_count() == 1
+
+
 #: what the forked renderers read: the parent's analysis (inherited, not pickled)
 _JOB: dict = {}
 
@@ -321,15 +344,20 @@ class _Renderers:
     run: with ``jobs`` > 1 (0: a process per core) by that many processes forked from
     this one on Linux (where forking is the processes' own way to start; each job
     inherits the figures, nothing is pickled but the files' bytes), the longest jobs
-    first, each taken by the first renderer free; else here, as each is asked for."""
+    first, each taken by the first renderer free; else here, as each is asked for.
+
+    Only a process with no other thread is forked (:func:`forkable`): a fork copies the
+    locks the other threads hold at that instant — an import half done, a kernel
+    compiling in the background, a page's server writing — and a renderer that takes
+    one of them waits forever. With other threads alive (a page's server), the
+    figures are rendered here, one after another."""
 
     def __init__(self, jobs_, build, out, formats, anim, jobs=1):
         import os
-        import sys
         self.jobs_, self.done, self.pool, self.pending = list(jobs_), {}, None, None
         self.args = dict(build=build, out=out, formats=formats, anim=anim)
         n = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
-        self.n = min(n, len(self.jobs_)) if sys.platform.startswith("linux") else 1
+        self.n = min(n, len(self.jobs_)) if forkable() else 1
 
     def __enter__(self):
         if self.n > 1:
