@@ -68,3 +68,24 @@ def test_assur_analyze_writes_its_report_from_one_thread(tmp_path):
     assert out["status"] in (0, None), r.stderr
     assert out["threads"] == [["MainThread"]]
     assert len(list((tmp_path / "out").glob("fig_*.png"))) > 3
+
+
+def test_a_renderer_that_dies_leaves_its_figure_to_this_process(tmp_path, monkeypatch,
+                                                                 caplog):
+    """A renderer killed mid-report (out of memory, a signal) is not waited for: its
+    jobs are drawn here and the files equal a one-process report."""
+    a = io.load(io.bundled("steering_lab4")).analyze()
+    one = write_report(a, tmp_path / "one", formats=("png", "html"), frames=2, jobs=1)
+    parent, real = os.getpid(), report._render
+
+    def dying(job, **kwargs):
+        if os.getpid() != parent and job[0] == "drawing":
+            os._exit(9)  # as a renderer killed by the kernel ends
+        return real(job, **kwargs)
+
+    monkeypatch.setattr(report, "_render", dying)
+    two = write_report(a, tmp_path / "two", formats=("png", "html"), frames=2, jobs=2)
+    assert [p.name for p in one["png"]] == [p.name for p in two["png"]]
+    for p, q in zip(one["png"], two["png"]):
+        assert p.read_bytes() == q.read_bytes(), p.name
+    assert "drawn in this process" in caplog.text

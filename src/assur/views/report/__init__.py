@@ -336,7 +336,7 @@ _JOB: dict = {}
 def _render_forked(i):
     """Job ``i`` of the renderers' list (an index is sent, not the job)."""
     args = dict(_JOB)
-    return i, _render(args.pop("jobs")[i], **args)
+    return _render(args.pop("jobs")[i], **args)
 
 
 class _Renderers:
@@ -350,11 +350,13 @@ class _Renderers:
     locks the other threads hold at that instant — an import half done, a kernel
     compiling in the background, a page's server writing — and a renderer that takes
     one of them waits forever. With other threads alive (a page's server), the
-    figures are rendered here, one after another."""
+    figures are rendered here, one after another. A renderer that dies (killed, out of
+    memory) leaves its jobs to this process: the report is whole either way, and never
+    waits for an answer that cannot come."""
 
     def __init__(self, jobs_, build, out, formats, anim, jobs=1):
         import os
-        self.jobs_, self.done, self.pool, self.pending = list(jobs_), {}, None, None
+        self.jobs_, self.done, self.pool, self.pending = list(jobs_), {}, None, {}
         self.args = dict(build=build, out=out, formats=formats, anim=anim)
         n = (os.cpu_count() or 1) if jobs == 0 else int(jobs)
         self.n = min(n, len(self.jobs_)) if forkable() else 1
@@ -362,29 +364,35 @@ class _Renderers:
     def __enter__(self):
         if self.n > 1:
             import multiprocessing as mp
+            from concurrent.futures import ProcessPoolExecutor
             _JOB.update(self.args, jobs=self.jobs_)
-            self.pool = mp.get_context("fork").Pool(self.n)
+            # every renderer forked here, at once, before the pool's own thread starts
+            self.pool = ProcessPoolExecutor(self.n, mp_context=mp.get_context("fork"))
             # in the list's order (the GIF first), each taken by the first renderer free
-            self.pending = self.pool.imap_unordered(_render_forked, range(len(self.jobs_)))
+            self.pending = {job: self.pool.submit(_render_forked, i)
+                            for i, job in enumerate(self.jobs_)}
         return self
 
     def result(self, job):
         """What ``job`` made (waiting for it)."""
-        if self.pool is None:
-            if job not in self.done:
+        if job not in self.done:
+            if job in self.pending:
+                from concurrent.futures.process import BrokenProcessPool
+                try:
+                    self.done[job] = self.pending[job].result()
+                except BrokenProcessPool:  # its renderer died: made here instead
+                    import logging
+                    logging.getLogger("assur.report").warning(
+                        "a figure renderer ended without its result; %s %s drawn in "
+                        "this process", *job)
+                    self.done[job] = _render(job, **self.args)
+            else:
                 self.done[job] = _render(job, **self.args)
-            return self.done[job]
-        while job not in self.done:
-            i, value = next(self.pending)
-            self.done[self.jobs_[i]] = value
         return self.done[job]
 
     def __exit__(self, *exc):
         if self.pool is not None:
-            if exc[0] is not None:  # a job failed (its error is raised): stop the others
-                self.pool.terminate()
-            else:
-                self.pool.close()
-            self.pool.join()
+            # a job failed (its error is raised): the jobs not begun are dropped
+            self.pool.shutdown(wait=True, cancel_futures=exc[0] is not None)
             _JOB.clear()
         return False
