@@ -235,3 +235,19 @@ def test_a_cylinder_without_a_relief_setting_is_not_above_it():
     # its analysis notes the motion its inertia loads are taken at: a note, not a warning
     assert a.notes and not a.model_warnings
     assert {v.key: v.status for v in verdicts(a, tabs, du)}["warnings"] == "ok"
+
+
+@pytest.mark.parametrize("lang, says", [("en", "below zero: there the cylinder"),
+                                        ("ru", "меньше нуля: в этом положении")])
+def test_a_capacity_below_zero_is_a_warning_that_says_what_it_means(lang, says):
+    """The excavator's arm cylinder lowers the bucket pivot over part of its stroke:
+    its smallest capacity there is below zero, a warning with what that means; a
+    positive smallest capacity stays a plain figure."""
+    a = _analysis("backhoe_arm")
+    du = unit_system(a.mechanism, "file")
+    tables = seed_tables(a, lang, units=du)
+    caps = [v for v in verdicts(a, tables, du, lang) if v.key.startswith("capacity_")]
+    assert {v.status for v in caps} == {"info", "warn"}
+    for v in caps:
+        assert (v.value < 0) == (v.status == "warn") == (says in v.text), v.text
+        assert v.value == {t.id: t for t in tables}[v.table][v.column].min()

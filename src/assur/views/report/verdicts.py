@@ -13,7 +13,8 @@ The verdicts are derived from the content of the analysis and of its tables
     kinematics' failures), with the largest closure residual of table 2.2;
 ``capacity_<symbol>``
     the smallest lift capacity of each capacity column of table 4.1 and where
-    (``info``);
+    (``info``; ``warn`` below zero, with what that means: the cylinder holds no
+    downward load at the point there);
 ``reserve_<symbol>``
     the smallest capacity reserve of each reserve column of table 4.1 (``ok`` at
     ≥ 0 %, ``fail`` below: the capacity is below the weight);
@@ -70,6 +71,13 @@ _TEXT = {
                             "см. раздел «Предупреждения и примечания»"},
     "capacity": {"en": "smallest {label} ({symbol}): {value} at {at}",
                  "ru": "наименьшая {label} ({symbol}): {value} при {at}"},
+    "capacity_negative": {
+        "en": " — below zero: there the cylinder at its relief pressure holds no downward "
+              "load at the point (its working stroke lowers the point at that position, "
+              "or the dead loads alone exceed its force)",
+        "ru": " — меньше нуля: в этом положении гидроцилиндр при давлении настройки "
+              "клапана не удерживает направленную вниз нагрузку в точке (его рабочий ход "
+              "здесь опускает точку либо одни постоянные нагрузки превышают его усилие)"},
     "reserve": {"en": "smallest {label} ({symbol}): {value} at {at}",
                 "ru": "наименьший {label} ({symbol}): {value} при {at}"},
     "reserve_fail": {"en": " — the capacity is below the weight",
@@ -360,8 +368,12 @@ def _capacities(page):
     for col in _find(tab, "c_G", prefix=True):
         if kind_of(col.unit) != "force":
             continue
-        out.append(page.extreme(f"capacity_{col.symbol}", "info", "capacity", tab, col, "min",
-                                label=col.label.get(page.lang, "")))
+        v = page.extreme(f"capacity_{col.symbol}", "info", "capacity", tab, col, "min",
+                         label=col.label.get(page.lang, ""))
+        if v is not None and v.value < 0:
+            v = Verdict(v.key, "warn", v.text + page.t("capacity_negative"), v.anchor,
+                        v.table, v.column, v.row, v.value)
+        out.append(v)
     for col in _find(tab, "c_dG", prefix=True):
         if col.unit != "%":
             continue
