@@ -381,22 +381,6 @@ def test_bad_options(hitch_analysis, tmp_path):
         report_figures.save(fig, tmp_path / "f.jpg")
 
 
-def test_figures_rendered_by_forked_processes_are_the_same(tmp_path):
-    """``jobs=2`` (``assur analyze`` renders with a process per core): the same files,
-    the same PNG bytes and the same HTML report as one process."""
-    from assur import io
-    a = io.load(io.bundled("steering_lab4")).analyze()
-    one = write_report(a, tmp_path / "one", formats=("png", "svg", "html"), frames=3, jobs=1)
-    two = write_report(a, tmp_path / "two", formats=("png", "svg", "html"), frames=3, jobs=2)
-    for fmt in ("png", "svg", "html"):
-        assert [p.name for p in one[fmt]] == [p.name for p in two[fmt]], fmt
-    for p, q in zip(one["png"], two["png"]):
-        assert p.read_bytes() == q.read_bytes(), p.name
-    assert one["html"][0].read_text(encoding="utf-8") == two["html"][0].read_text(
-        encoding="utf-8")
-    assert all(p.stat().st_size > 0 for p in two["svg"])
-
-
 def test_each_figure_is_built_once_for_png_svg_and_html(tmp_path, monkeypatch):
     """Issue 28: a figure is built once and drawn from that one object as PNG, SVG and
     the HTML report's image (each of its PNG bytes is the report's)."""

@@ -1,10 +1,15 @@
-"""The report's figures are rendered by forked processes only from a process with no
-other thread (:func:`assur.views.report.forkable`): a fork copies the locks other
+"""The report's figures rendered by processes forked from this one (``jobs`` > 1, as
+``assur analyze`` does): the same files as one process; only from a process with no
+other thread (:func:`assur.views.report.forkable`) — a fork copies the locks other
 threads hold at that instant (an import half done, a kernel compiling in the
 background, a page's server writing) without the threads that would release them, and
-a renderer that takes one waits forever — the report never ends. ``assur analyze``
-keeps its process single-threaded while it writes (its progress bar is redrawn at each
-step, not by a refresh thread), so its renderers still run in parallel."""
+a renderer that takes one waits forever; a renderer that dies leaves its jobs to this
+process. ``assur analyze`` keeps its process single-threaded while it writes (its
+progress bar is redrawn at each step, not by a refresh thread), so its renderers still
+run in parallel.
+
+The forking cases run in processes of their own: a test process may hold threads other
+tests left (a Dask client's loop, a page's server), and then nothing is forked."""
 
 from __future__ import annotations
 
@@ -13,10 +18,78 @@ import os
 import subprocess
 import sys
 import threading
+from pathlib import Path
 
 from assur import io
 from assur.views import report
 from assur.views.report import write_report
+
+#: the steering drive's report by one process and by ``jobs`` = 2 in a process with no
+#: other thread (argv: output folder, "die" to kill the renderer of the drawing);
+#: prints whether it forked and what the report logged
+FORKED = """
+import json, logging, os, sys
+from pathlib import Path
+from assur import io
+from assur.views import report
+out, die = Path(sys.argv[1]), sys.argv[2] == "die"
+logs = []
+class Keep(logging.Handler):
+    def emit(self, record):
+        logs.append(record.getMessage())
+logging.getLogger("assur.report").addHandler(Keep())
+a = io.load(io.bundled("steering_lab4")).analyze()
+formats = ("png", "svg", "html")
+one = report.write_report(a, out / "one", formats=formats, frames=3, jobs=1)
+parent, real, forked = os.getpid(), report._render, []
+def render(job, **kwargs):
+    if os.getpid() != parent:
+        forked.append(job)  # in a renderer's copy: seen through its files only
+        if die and job[0] == "drawing":
+            os._exit(9)  # as a renderer killed by the kernel ends
+    return real(job, **kwargs)
+report._render = render
+alone = report.forkable()
+two = report.write_report(a, out / "two", formats=formats, frames=3, jobs=2)
+print(json.dumps({"alone": alone, "logs": logs,
+                  "files": {f: [[str(p), str(q)] for p, q in zip(one[f], two[f])]
+                            for f in formats},
+                  "names": {f: [[p.name for p in one[f]], [p.name for p in two[f]]]
+                            for f in formats}}))
+"""
+
+
+def _forked(tmp_path, how):
+    env = dict(os.environ, ASSUR_CACHE_DIR=str(tmp_path / "cache"))
+    r = subprocess.run([sys.executable, "-c", FORKED, str(tmp_path), how],
+                       capture_output=True, text=True, env=env, timeout=300)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def _same(out):
+    for fmt, (one, two) in out["names"].items():
+        assert one == two and one, fmt
+    for p, q in out["files"]["png"] + out["files"]["html"]:
+        assert Path(p).read_bytes() == Path(q).read_bytes(), p
+    assert all(os.path.getsize(q) > 0 for _, q in out["files"]["svg"])
+
+
+def test_figures_rendered_by_forked_processes_are_the_same(tmp_path):
+    """``jobs=2``: the same files, the same PNG bytes and the same HTML report as one
+    process."""
+    out = _forked(tmp_path, "live")
+    assert out["alone"] and out["logs"] == []
+    _same(out)
+
+
+def test_a_renderer_that_dies_leaves_its_figure_to_this_process(tmp_path):
+    """A renderer killed mid-report (out of memory, a signal) is not waited for: its
+    jobs are drawn here, said in the log, and the files equal a one-process report."""
+    out = _forked(tmp_path, "die")
+    assert out["alone"]
+    assert any("drawn in this process" in m for m in out["logs"]), out["logs"]
+    _same(out)
 
 
 def test_no_fork_while_another_thread_runs(tmp_path, monkeypatch):
@@ -68,24 +141,3 @@ def test_assur_analyze_writes_its_report_from_one_thread(tmp_path):
     assert out["status"] in (0, None), r.stderr
     assert out["threads"] == [["MainThread"]]
     assert len(list((tmp_path / "out").glob("fig_*.png"))) > 3
-
-
-def test_a_renderer_that_dies_leaves_its_figure_to_this_process(tmp_path, monkeypatch,
-                                                                 caplog):
-    """A renderer killed mid-report (out of memory, a signal) is not waited for: its
-    jobs are drawn here and the files equal a one-process report."""
-    a = io.load(io.bundled("steering_lab4")).analyze()
-    one = write_report(a, tmp_path / "one", formats=("png", "html"), frames=2, jobs=1)
-    parent, real = os.getpid(), report._render
-
-    def dying(job, **kwargs):
-        if os.getpid() != parent and job[0] == "drawing":
-            os._exit(9)  # as a renderer killed by the kernel ends
-        return real(job, **kwargs)
-
-    monkeypatch.setattr(report, "_render", dying)
-    two = write_report(a, tmp_path / "two", formats=("png", "html"), frames=2, jobs=2)
-    assert [p.name for p in one["png"]] == [p.name for p in two["png"]]
-    for p, q in zip(one["png"], two["png"]):
-        assert p.read_bytes() == q.read_bytes(), p.name
-    assert "drawn in this process" in caplog.text
