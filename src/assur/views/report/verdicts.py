@@ -42,7 +42,7 @@ Russian unit symbols.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -371,8 +371,7 @@ def _capacities(page):
         v = page.extreme(f"capacity_{col.symbol}", "info", "capacity", tab, col, "min",
                          label=col.label.get(page.lang, ""))
         if v is not None and v.value < 0:
-            v = Verdict(v.key, "warn", v.text + page.t("capacity_negative"), v.anchor,
-                        v.table, v.column, v.row, v.value)
+            v = _flagged(v, "warn", page.t("capacity_negative"))
         out.append(v)
     for col in _find(tab, "c_dG", prefix=True):
         if col.unit != "%":
@@ -382,16 +381,19 @@ def _capacities(page):
         if v is None:
             continue
         if v.value < 0:
-            v = Verdict(v.key, "fail", v.text + page.t("reserve_fail"), v.anchor, v.table,
-                        v.column, v.row, v.value)
+            v = _flagged(v, "fail", page.t("reserve_fail"))
         out.append(v)
     return [_done(v) for v in out if v is not None]
 
 
 def _done(v):
     """``v`` with its text made a sentence."""
-    return Verdict(v.key, v.status, _sentence(v.text), v.anchor, v.table, v.column, v.row,
-                   v.value)
+    return replace(v, text=_sentence(v.text))
+
+
+def _flagged(v, status, why):
+    """``v`` with the status ``status`` and ``why`` added to its text."""
+    return replace(v, status=status, text=v.text + why)
 
 
 def _pressure_column(page, tab, name, res):
@@ -486,8 +488,7 @@ def _stability(page):
                              least=value_text(least, "%", page.units, page.lang))
             if v is not None:
                 if v.value < least:
-                    v = Verdict(v.key, "fail", v.text + page.t("stability_fail"), v.anchor,
-                                v.table, v.column, v.row, v.value)
+                    v = _flagged(v, "fail", page.t("stability_fail"))
                 out.append(_done(v))
     for col in _find(tab, "c_Gmax", prefix=True)[:1]:
         if kind_of(col.unit) != "force":
